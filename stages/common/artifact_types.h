@@ -1,0 +1,14 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <google/protobuf/message.h>
+
+namespace areagraph {
+
+// A new, empty message of the artifact type named `proto_type` (as stored in
+// the artifacts table), or nullptr for a type this build does not know.
+std::unique_ptr<google::protobuf::Message> NewArtifactMessage(const std::string& proto_type);
+
+}  // namespace areagraph

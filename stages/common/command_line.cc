@@ -1,0 +1,53 @@
+#include "stages/common/command_line.h"
+
+#include <iostream>
+#include <new>
+
+#include "stages/common/pipeline_options.h"
+#include "store/error.h"
+
+namespace areagraph {
+
+void AddStageFlags(CLI::App& app, StageCommandLine& flags, bool map_required) {
+  app.add_option("--store", flags.store_path, "SQLite artifact store")
+      ->capture_default_str();
+  CLI::Option* map = app.add_option("--map", flags.map_name, "name of the map in the store");
+  if (map_required) map->required();
+  app.add_option("--options", flags.options_file,
+                 "PipelineOptions in protobuf text format (see examples/options/)");
+  app.add_option("--set", flags.overrides,
+                 "override one option, e.g. --set cut.room_width_m=1.1 (repeatable)")
+      ->take_last()
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_flag("--force", flags.force, "recompute even when the result is cached");
+}
+
+proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags) {
+  proto::PipelineOptions options;
+  if (!flags.options_file.empty()) options = ReadOptionsFile(flags.options_file);
+  for (const std::string& assignment : flags.overrides) ApplyOverride(assignment, &options);
+  return options;
+}
+
+int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
+               const std::function<int()>& body) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << tool << ": " << e.what() << " (see --help)\n";
+    return 2;
+  }
+  try {
+    return body();
+  } catch (const std::bad_alloc&) {
+    std::cerr << tool << ": out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << tool << ": " << e.what() << "\n";
+  }
+  return 1;
+}
+
+}  // namespace areagraph

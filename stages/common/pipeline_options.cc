@@ -1,0 +1,162 @@
+#include "stages/common/pipeline_options.h"
+
+#include <fstream>
+#include <sstream>
+
+#include <google/protobuf/io/coded_stream.h>
+#include <google/protobuf/io/tokenizer.h>
+#include <google/protobuf/io/zero_copy_stream_impl_lite.h>
+#include <google/protobuf/text_format.h>
+
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+using google::protobuf::Descriptor;
+using google::protobuf::FieldDescriptor;
+using google::protobuf::Message;
+using google::protobuf::Reflection;
+
+// Collects parse errors so that the thrown message names the line and column.
+class ErrorCollector : public google::protobuf::io::ErrorCollector {
+ public:
+  void AddError(int line, int column, const std::string& message) override {
+    if (first_error.empty()) {
+      first_error = "line " + std::to_string(line + 1) + ", column " +
+                    std::to_string(column + 1) + ": " + message;
+    }
+  }
+  std::string first_error;
+};
+
+std::string JoinKeys(const std::vector<std::string>& keys) {
+  std::string joined;
+  for (const std::string& key : keys) joined += (joined.empty() ? "" : ", ") + key;
+  return joined;
+}
+
+}  // namespace
+
+proto::PipelineOptions ReadOptionsFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw OptionsError("cannot read options file '" + path + "'");
+  std::stringstream text;
+  text << in.rdbuf();
+  proto::PipelineOptions options;
+  google::protobuf::TextFormat::Parser parser;
+  ErrorCollector errors;
+  parser.RecordErrorsTo(&errors);
+  if (!parser.ParseFromString(text.str(), &options)) {
+    throw OptionsError("options file '" + path + "', " + errors.first_error);
+  }
+  return options;
+}
+
+std::vector<std::string> ValidOptionKeys() {
+  std::vector<std::string> keys;
+  const Descriptor* pipeline = proto::PipelineOptions::descriptor();
+  for (int i = 0; i < pipeline->field_count(); ++i) {
+    const FieldDescriptor* stage = pipeline->field(i);
+    const Descriptor* stage_options = stage->message_type();
+    for (int j = 0; j < stage_options->field_count(); ++j) {
+      keys.push_back(stage->name() + "." + stage_options->field(j)->name());
+    }
+  }
+  return keys;
+}
+
+void ApplyOverride(const std::string& assignment, proto::PipelineOptions* options) {
+  const size_t equals = assignment.find('=');
+  const size_t dot = assignment.find('.');
+  if (equals == std::string::npos || dot == std::string::npos || dot > equals) {
+    throw OptionsError("--set expects stage.field=value, got '" + assignment +
+                       "'; valid keys: " + JoinKeys(ValidOptionKeys()));
+  }
+  const std::string stage_name = assignment.substr(0, dot);
+  const std::string field_name = assignment.substr(dot + 1, equals - dot - 1);
+  const std::string value = assignment.substr(equals + 1);
+
+  const FieldDescriptor* stage = proto::PipelineOptions::descriptor()->FindFieldByName(stage_name);
+  const FieldDescriptor* field =
+      stage == nullptr ? nullptr : stage->message_type()->FindFieldByName(field_name);
+  if (field == nullptr) {
+    throw OptionsError("unknown option '" + stage_name + "." + field_name +
+                       "'; valid keys: " + JoinKeys(ValidOptionKeys()));
+  }
+  Message* stage_options = options->GetReflection()->MutableMessage(options, stage);
+  if (!google::protobuf::TextFormat::ParseFieldValueFromString(value, field, stage_options)) {
+    throw OptionsError("option '" + stage_name + "." + field_name + "' expects a " +
+                       field->type_name() + ", got '" + value + "'");
+  }
+}
+
+void FillDefaults(Message* message) {
+  const Descriptor* descriptor = message->GetDescriptor();
+  const Reflection* reflection = message->GetReflection();
+  for (int i = 0; i < descriptor->field_count(); ++i) {
+    const FieldDescriptor* field = descriptor->field(i);
+    if (field->is_repeated()) continue;
+    if (field->cpp_type() == FieldDescriptor::CPPTYPE_MESSAGE) {
+      FillDefaults(reflection->MutableMessage(message, field));
+      continue;
+    }
+    if (reflection->HasField(*message, field)) continue;
+    switch (field->cpp_type()) {
+      case FieldDescriptor::CPPTYPE_INT32:
+        reflection->SetInt32(message, field, field->default_value_int32());
+        break;
+      case FieldDescriptor::CPPTYPE_INT64:
+        reflection->SetInt64(message, field, field->default_value_int64());
+        break;
+      case FieldDescriptor::CPPTYPE_UINT32:
+        reflection->SetUInt32(message, field, field->default_value_uint32());
+        break;
+      case FieldDescriptor::CPPTYPE_UINT64:
+        reflection->SetUInt64(message, field, field->default_value_uint64());
+        break;
+      case FieldDescriptor::CPPTYPE_DOUBLE:
+        reflection->SetDouble(message, field, field->default_value_double());
+        break;
+      case FieldDescriptor::CPPTYPE_FLOAT:
+        reflection->SetFloat(message, field, field->default_value_float());
+        break;
+      case FieldDescriptor::CPPTYPE_BOOL:
+        reflection->SetBool(message, field, field->default_value_bool());
+        break;
+      case FieldDescriptor::CPPTYPE_ENUM:
+        reflection->SetEnum(message, field, field->default_value_enum());
+        break;
+      case FieldDescriptor::CPPTYPE_STRING:
+        reflection->SetString(message, field, field->default_value_string());
+        break;
+      case FieldDescriptor::CPPTYPE_MESSAGE:
+        break;
+    }
+  }
+}
+
+std::string CanonicalBytes(const Message& options) {
+  std::unique_ptr<Message> filled(options.New());
+  filled->CopyFrom(options);
+  FillDefaults(filled.get());
+  std::string bytes;
+  {
+    google::protobuf::io::StringOutputStream raw(&bytes);
+    google::protobuf::io::CodedOutputStream coded(&raw);
+    coded.SetSerializationDeterministic(true);
+    filled->SerializeToCodedStream(&coded);
+  }
+  return bytes;
+}
+
+std::string CanonicalText(const Message& options) {
+  std::unique_ptr<Message> filled(options.New());
+  filled->CopyFrom(options);
+  FillDefaults(filled.get());
+  std::string text;
+  google::protobuf::TextFormat::PrintToString(*filled, &text);
+  return text;
+}
+
+}  // namespace areagraph

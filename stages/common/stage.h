@@ -1,0 +1,76 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <google/protobuf/message.h>
+
+#include "store/artifact_store.h"
+
+namespace areagraph {
+
+// A stage's identity in cache keys. Bump `version` whenever the stage's
+// output changes for the same input, so that cached results are recomputed.
+struct StageInfo {
+  const char* name;
+  int version;
+};
+
+inline constexpr StageInfo kImportStage{"import", 1};
+inline constexpr StageInfo kCleanStage{"clean", 1};
+inline constexpr StageInfo kVoronoiStage{"voronoi", 1};
+inline constexpr StageInfo kPruneStage{"prune", 1};
+inline constexpr StageInfo kCutStage{"cut", 1};
+inline constexpr StageInfo kMergeStage{"merge", 1};
+
+// The stages in pipeline order.
+inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,
+                                           kPruneStage,  kCutStage,   kMergeStage};
+
+// What one stage run did.
+struct StageRun {
+  std::string cache_key;
+  bool cache_hit = false;
+  // Time spent computing, or 0 on a hit.
+  double elapsed_ms = 0;
+};
+
+// Where a stage's inputs came from: the digests that enter its cache key.
+struct StageInputs {
+  std::vector<std::string> digests;
+  // Set by ag-import only: recorded on the map row.
+  std::optional<std::string> source_path;
+  std::optional<std::string> source_digest;
+};
+
+// Runs `compute` for (map, stage) unless the store already holds an artifact
+// with the same cache key, in which case that artifact just becomes the head
+// again. `force` recomputes regardless. The result is written in one
+// transaction.
+StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
+                        const google::protobuf::Message& options, const StageInputs& inputs,
+                        const std::function<std::unique_ptr<google::protobuf::Message>()>& compute,
+                        bool force = false);
+
+// The head artifact of (map, stage) parsed as T, with its cache key. Throws
+// InputError naming the executable to run first when it is missing.
+template <typename T>
+T ReadHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
+                   std::string* cache_key = nullptr);
+
+// Non-template core of ReadHeadArtifact.
+void ParseHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
+                       google::protobuf::Message* message, std::string* cache_key);
+
+template <typename T>
+T ReadHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
+                   std::string* cache_key) {
+  T message;
+  ParseHeadArtifact(store, map_name, stage, &message, cache_key);
+  return message;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,115 @@
+#include "stages/common/pipeline_options.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "store/error.h"
+#include "tests/support/test_support.h"
+
+namespace areagraph {
+namespace {
+
+using testing::TempDir;
+using testing::WriteFile;
+
+TEST(PipelineOptionsTest, OverrideSetsNestedField) {
+  proto::PipelineOptions options;
+  ApplyOverride("cut.room_width_m=1.1", &options);
+  ApplyOverride("clean.outlier_neighbors=12", &options);
+  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.1);
+  EXPECT_EQ(options.clean().outlier_neighbors(), 12);
+  EXPECT_FALSE(options.cut().has_door_width_m());
+}
+
+TEST(PipelineOptionsTest, LaterOverrideWins) {
+  proto::PipelineOptions options;
+  ApplyOverride("cut.room_width_m=1.1", &options);
+  ApplyOverride("cut.room_width_m=2.5", &options);
+  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 2.5);
+}
+
+TEST(PipelineOptionsTest, UnknownKeyNamesValidKeys) {
+  proto::PipelineOptions options;
+  try {
+    ApplyOverride("cut.room_widht_m=1.1", &options);
+    FAIL() << "expected OptionsError";
+  } catch (const OptionsError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("unknown option 'cut.room_widht_m'"), std::string::npos) << message;
+    EXPECT_NE(message.find("cut.room_width_m"), std::string::npos) << message;
+    EXPECT_NE(message.find("import.resolution_m"), std::string::npos) << message;
+  }
+  EXPECT_THROW(ApplyOverride("nostage.x=1", &options), OptionsError);
+  EXPECT_THROW(ApplyOverride("room_width_m=1", &options), OptionsError);
+  EXPECT_THROW(ApplyOverride("cut.room_width_m", &options), OptionsError);
+}
+
+TEST(PipelineOptionsTest, WrongTypeIsAnError) {
+  proto::PipelineOptions options;
+  try {
+    ApplyOverride("cut.room_width_m=wide", &options);
+    FAIL() << "expected OptionsError";
+  } catch (const OptionsError& e) {
+    EXPECT_NE(std::string(e.what()).find("expects a double"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ApplyOverride("clean.outlier_neighbors=1.5", &options), OptionsError);
+  EXPECT_THROW(ApplyOverride("voronoi.keep_rays=maybe", &options), OptionsError);
+  EXPECT_FALSE(options.clean().has_outlier_neighbors());
+}
+
+TEST(PipelineOptionsTest, ValidKeysCoverEveryStageField) {
+  const std::vector<std::string> keys = ValidOptionKeys();
+  for (const char* key : {"import.resolution_m", "clean.robot_width_m",
+                          "prune.boundary_alpha_radius_m", "prune.min_clearance_m",
+                          "cut.room_width_m", "cut.door_width_m", "cut.corridor_width_m"}) {
+    EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
+  }
+}
+
+TEST(PipelineOptionsTest, DefaultsReproduceThePaper) {
+  proto::PipelineOptions options;
+  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.25);
+  EXPECT_DOUBLE_EQ(options.clean().robot_width_m(), 0.5);
+  EXPECT_EQ(options.clean().outlier_neighbors(), 18);
+  EXPECT_DOUBLE_EQ(options.prune().min_clearance_m(), 0.25);
+  EXPECT_DOUBLE_EQ(options.prune().boundary_alpha_radius_m(), 3.0);
+}
+
+TEST(PipelineOptionsTest, ExplicitDefaultGivesSameCanonicalBytes) {
+  proto::CutOptions unset, explicit_default, changed;
+  explicit_default.set_room_width_m(1.25);
+  changed.set_room_width_m(1.3);
+  EXPECT_EQ(CanonicalBytes(unset), CanonicalBytes(explicit_default));
+  EXPECT_NE(CanonicalBytes(unset), CanonicalBytes(changed));
+  EXPECT_EQ(CanonicalText(unset), CanonicalText(explicit_default));
+  EXPECT_NE(CanonicalText(unset).find("room_width_m: 1.25"), std::string::npos);
+}
+
+TEST(PipelineOptionsTest, ReadsTextFormatFile) {
+  TempDir dir;
+  WriteFile(dir.File("o.pbtxt"), "cut { room_width_m: 0.95 }\nclean { outlier_percent: 3.5 }\n");
+  const proto::PipelineOptions options = ReadOptionsFile(dir.File("o.pbtxt"));
+  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 0.95);
+  EXPECT_DOUBLE_EQ(options.clean().outlier_percent(), 3.5);
+}
+
+TEST(PipelineOptionsTest, BadFileNamesLine) {
+  TempDir dir;
+  WriteFile(dir.File("bad.pbtxt"), "cut {\n  room_width: 0.95\n}\n");
+  try {
+    ReadOptionsFile(dir.File("bad.pbtxt"));
+    FAIL() << "expected OptionsError";
+  } catch (const OptionsError& e) {
+    EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(ReadOptionsFile(dir.File("missing.pbtxt")), OptionsError);
+}
+
+TEST(PipelineOptionsTest, ShippedOptionFilesParse) {
+  const proto::PipelineOptions options = ReadOptionsFile(testing::SourcePath("examples/options/default.pbtxt"));
+  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.25);
+}
+
+}  // namespace
+}  // namespace areagraph

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace areagraph::testing {
+
+// A fresh directory under the system temp dir, removed with its contents on
+// destruction.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::string& path() const { return path_; }
+  std::string File(const std::string& name) const { return path_ + "/" + name; }
+
+ private:
+  std::string path_;
+};
+
+// What a finished command did.
+struct CommandResult {
+  int exit_code = -1;  // -1 when killed by a signal
+  int signal = 0;
+  std::string out;
+  std::string err;
+};
+
+// Runs build/bin/<tool> with `args` (no shell), capturing stdout and stderr.
+CommandResult RunTool(const std::string& tool, const std::vector<std::string>& args);
+
+// Runs any program with `args` (argv[0] included), capturing output.
+CommandResult RunProgram(const std::vector<std::string>& argv);
+
+std::string ReadFile(const std::string& path);
+void WriteFile(const std::string& path, const std::string& bytes);
+
+// Path of a file in the checkout or in ../shared/data.
+std::string SourcePath(const std::string& relative);
+std::string SharedDataPath(const std::string& relative);
+// True when ../shared/data is present (tests that need it skip otherwise).
+bool HaveSharedData();
+
+// Number of lines in `text` that are not empty.
+int CountLines(const std::string& text);
+
+}  // namespace areagraph::testing
