@@ -1,0 +1,407 @@
+// The SQLite implementation of ArtifactStore. Only OpenArtifactStore is
+// visible outside this file.
+
+#include <sqlite3.h>
+
+#include <chrono>
+#include <memory>
+#include <thread>
+#include <utility>
+
+#include "store/artifact_store.h"
+#include "store/digest.h"
+#include "store/error.h"
+#include "store/sqlite_connection.h"
+#include "store/sqlite_statement.h"
+#include "store/sqlite_store_sql.h"
+#include "store/sqlite_transaction.h"
+
+namespace areagraph {
+namespace {
+
+// The first characters of a cache key, enough to tell artifacts apart in messages.
+std::string ShortKey(const std::string& cache_key) { return cache_key.substr(0, 12); }
+
+std::string JoinLines(const std::vector<std::string>& lines) {
+  std::string joined;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (i > 0) joined += '\n';
+    joined += lines[i];
+  }
+  return joined;
+}
+
+std::vector<std::string> SplitLines(const std::string& joined) {
+  std::vector<std::string> lines;
+  if (joined.empty()) return lines;
+  size_t start = 0;
+  while (true) {
+    const size_t end = joined.find('\n', start);
+    lines.push_back(joined.substr(start, end - start));
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return lines;
+}
+
+class SqliteArtifactStore : public ArtifactStore {
+ public:
+  SqliteArtifactStore(const std::string& path, StoreMode mode);
+
+  std::vector<MapRecord> ReadAllMaps() override;
+  std::optional<MapRecord> ReadMap(const std::string& map_name) override;
+  std::optional<ArtifactRecord> ReadArtifact(const std::string& map_name,
+                                             const std::string& cache_key) override;
+  std::optional<ArtifactRecord> ReadHead(const std::string& map_name,
+                                         const std::string& stage) override;
+  std::vector<ArtifactRecord> ReadArtifactSummaries(const std::string& map_name) override;
+  void WriteArtifact(const NewArtifact& artifact) override;
+  void UpdateHead(const std::string& map_name, const std::string& cache_key) override;
+
+ private:
+  // Open-time steps, in the order that keeps a bad file untouched.
+  struct SchemaState {
+    int user_version = 0;
+    int64_t schema_objects = 0;  // tables and indexes of any kind
+  };
+  SchemaState ReadSchemaState();
+  void CheckIsAreagraphStore(const SchemaState& state, StoreMode mode);
+  void Exec(const char* sql, const std::string& action);
+  void EnableWriteAheadLog();
+  void CreateSchema();
+  void CreateMapsTable();
+  void CreateArtifactsTable();
+  void CreateHeadsTable();
+  void PrepareStatements();
+
+  std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
+  SqliteTransaction BeginTransaction();
+  MapRecord ReadMapRow(const SqliteStatement& statement) const;
+  // Reads the row of a kRead{Artifact,Head,ArtifactSummaries} statement; the
+  // last column is the payload, or its size in a summary.
+  ArtifactRecord ReadArtifactRow(const SqliteStatement& statement, const std::string& map_name,
+                                 bool with_payload) const;
+  void WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id);
+
+  const std::string path_;
+  const SqliteConnection connection_;  // closes after the statements below
+  sqlite3* const db_;
+
+  std::unique_ptr<SqliteStatement> sql_stmt_begin_;
+  std::unique_ptr<SqliteStatement> sql_stmt_commit_;
+  std::unique_ptr<SqliteStatement> sql_stmt_rollback_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_all_maps_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_map_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_head_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summaries_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_ref_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_id_;
+  std::unique_ptr<SqliteStatement> sql_stmt_upsert_map_;
+  std::unique_ptr<SqliteStatement> sql_stmt_upsert_artifact_;
+  std::unique_ptr<SqliteStatement> sql_stmt_write_head_;
+};
+
+SqliteArtifactStore::SqliteArtifactStore(const std::string& path, StoreMode mode)
+    : path_(path), connection_(path, mode), db_(connection_.get()) {
+  CheckSqlite(db_, path_, sqlite3_busy_timeout(db_, kStoreBusyTimeoutMs),
+              "setting the busy timeout");
+  const SchemaState state = ReadSchemaState();
+  CheckIsAreagraphStore(state, mode);
+  // Only now is the file known to be ours (or new) and may be changed.
+  Exec("PRAGMA foreign_keys = ON", "enabling foreign keys");
+  sql_stmt_begin_ = Prepare(store_sql::kBegin, "starting a transaction");
+  sql_stmt_commit_ = Prepare(store_sql::kCommit, "committing a transaction");
+  sql_stmt_rollback_ = Prepare(store_sql::kRollback, "rolling back a transaction");
+  if (mode == StoreMode::kReadWrite) {
+    if (sqlite3_db_readonly(db_, "main") == 1) {
+      throw StoreError("cannot write store '" + path_ + "': the file is read-only");
+    }
+    if (path_ != kMemoryStorePath) EnableWriteAheadLog();
+    if (state.user_version < kStoreSchemaVersion) CreateSchema();
+  } else if (path_ == kMemoryStorePath) {
+    CreateSchema();  // a private empty store; there is no file to protect
+  }
+  PrepareStatements();
+}
+
+SqliteArtifactStore::SchemaState SqliteArtifactStore::ReadSchemaState() {
+  // Raw calls: a file that is not SQLite fails here, and only here, with
+  // NOTADB. One statement reads both values from one snapshot, so a process
+  // creating the schema at the same moment cannot make a new file look foreign.
+  sqlite3_stmt* statement = nullptr;
+  int rc = sqlite3_prepare_v2(
+      db_, "SELECT user_version, (SELECT count(*) FROM sqlite_master) FROM pragma_user_version", -1,
+      &statement, nullptr);
+  SchemaState state;
+  if (rc == SQLITE_OK) {
+    rc = sqlite3_step(statement);
+    if (rc == SQLITE_ROW) {
+      state.user_version = sqlite3_column_int(statement, 0);
+      state.schema_objects = sqlite3_column_int64(statement, 1);
+    }
+  }
+  sqlite3_finalize(statement);
+  if ((rc & 0xff) == SQLITE_NOTADB) {
+    throw StoreError("'" + path_ + "' is not an areagraph store (not an SQLite database)");
+  }
+  CheckSqlite(db_, path_, rc, "reading the schema version");
+  return state;
+}
+
+void SqliteArtifactStore::CheckIsAreagraphStore(const SchemaState& state, StoreMode mode) {
+  if (state.user_version > kStoreSchemaVersion) {
+    throw StoreError("store '" + path_ + "' has schema version " +
+                     std::to_string(state.user_version) + ", newer than this build's " +
+                     std::to_string(kStoreSchemaVersion) + "; upgrade areagraph");
+  }
+  if (state.user_version > 0) return;
+  // Version 0: a new file, or someone else's database that must stay untouched.
+  if (state.schema_objects > 0) {
+    throw StoreError("'" + path_ + "' is an SQLite database but not an areagraph store");
+  }
+  if (mode == StoreMode::kReadOnly && path_ != kMemoryStorePath) {
+    throw StoreError("'" + path_ + "' is not an areagraph store (it is empty)");
+  }
+}
+
+void SqliteArtifactStore::Exec(const char* sql, const std::string& action) {
+  CheckSqlite(db_, path_, sqlite3_exec(db_, sql, nullptr, nullptr, nullptr), action);
+}
+
+void SqliteArtifactStore::EnableWriteAheadLog() {
+  // Readers then never wait for writers, and a killed writer leaves a log
+  // that the next opener rolls back or replays. Some file systems refuse WAL;
+  // the store then keeps SQLite's rollback journal, which is as safe.
+  // Switching needs a moment of exclusive access and SQLite does not wait for
+  // it through the busy handler, so a process racing to create the same new
+  // store retries here; once the file is in WAL mode this is a plain read.
+  const auto give_up =
+      std::chrono::steady_clock::now() + std::chrono::milliseconds(kStoreBusyTimeoutMs);
+  while (true) {
+    const int rc = sqlite3_exec(db_, "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
+    if ((rc & 0xff) != SQLITE_BUSY || std::chrono::steady_clock::now() > give_up) {
+      CheckSqlite(db_, path_, rc, "switching to the write-ahead log");
+      return;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+}
+
+void SqliteArtifactStore::CreateSchema() {
+  SqliteTransaction transaction = BeginTransaction();
+  CreateMapsTable();
+  CreateArtifactsTable();
+  CreateHeadsTable();
+  Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
+       "setting the schema version");
+  transaction.Commit();
+}
+
+void SqliteArtifactStore::CreateMapsTable() {
+  Exec(store_sql::kCreateMapsTable, "creating the maps table");
+}
+
+void SqliteArtifactStore::CreateArtifactsTable() {
+  Exec(store_sql::kCreateArtifactsTable, "creating the artifacts table");
+  Exec(store_sql::kCreateArtifactsByTimeIndex, "creating the artifacts index");
+}
+
+void SqliteArtifactStore::CreateHeadsTable() {
+  Exec(store_sql::kCreateHeadsTable, "creating the heads table");
+  Exec(store_sql::kCreateHeadsByArtifactIndex, "creating the heads index");
+}
+
+void SqliteArtifactStore::PrepareStatements() {
+  sql_stmt_read_all_maps_ = Prepare(store_sql::kReadAllMaps, "reading the maps");
+  sql_stmt_read_map_ = Prepare(store_sql::kReadMap, "reading a map");
+  sql_stmt_read_artifact_ = Prepare(store_sql::kReadArtifact, "reading an artifact");
+  sql_stmt_read_head_ = Prepare(store_sql::kReadHead, "reading a head artifact");
+  sql_stmt_read_artifact_summaries_ =
+      Prepare(store_sql::kReadArtifactSummaries, "listing the artifacts of a map");
+  sql_stmt_read_artifact_ref_ = Prepare(store_sql::kReadArtifactRef, "finding an artifact");
+  sql_stmt_read_artifact_id_ = Prepare(store_sql::kReadArtifactId, "finding an artifact");
+  sql_stmt_upsert_map_ = Prepare(store_sql::kUpsertMap, "writing a map");
+  sql_stmt_upsert_artifact_ = Prepare(store_sql::kUpsertArtifact, "writing an artifact");
+  sql_stmt_write_head_ = Prepare(store_sql::kWriteHead, "writing a head");
+}
+
+std::unique_ptr<SqliteStatement> SqliteArtifactStore::Prepare(const char* sql,
+                                                              const std::string& action) {
+  return std::make_unique<SqliteStatement>(db_, path_, sql, action);
+}
+
+SqliteTransaction SqliteArtifactStore::BeginTransaction() {
+  return SqliteTransaction(db_, *sql_stmt_begin_, *sql_stmt_commit_, *sql_stmt_rollback_);
+}
+
+MapRecord SqliteArtifactStore::ReadMapRow(const SqliteStatement& statement) const {
+  MapRecord map;
+  map.id = statement.ColumnInt64(0, "maps.id");
+  map.name = statement.ColumnText(1, "maps.name");
+  map.source_path = statement.ColumnText(2, "maps.source_path");
+  map.source_digest = statement.ColumnText(3, "maps.source_digest");
+  return map;
+}
+
+ArtifactRecord SqliteArtifactStore::ReadArtifactRow(const SqliteStatement& statement,
+                                                    const std::string& map_name,
+                                                    bool with_payload) const {
+  ArtifactRecord artifact;
+  artifact.map_name = map_name;
+  artifact.stage = statement.ColumnText(0, "artifacts.stage");
+  artifact.cache_key = statement.ColumnText(1, "artifacts.cache_key");
+  artifact.input_keys = SplitLines(statement.ColumnText(2, "artifacts.input_keys"));
+  artifact.options_text = statement.ColumnText(3, "artifacts.options");
+  artifact.stage_version = static_cast<int>(statement.ColumnInt64(4, "artifacts.stage_version"));
+  artifact.proto_type = statement.ColumnText(5, "artifacts.proto_type");
+  artifact.payload_digest = statement.ColumnText(6, "artifacts.payload_digest");
+  artifact.created_at = statement.ColumnText(7, "artifacts.created_at");
+  artifact.elapsed_ms = statement.ColumnDouble(8, "artifacts.elapsed_ms");
+  artifact.is_head = statement.ColumnInt64(9, "heads.artifact_id") != 0;
+  if (!with_payload) {
+    artifact.payload_bytes = statement.ColumnInt64(10, "length(artifacts.payload)");
+    return artifact;
+  }
+  artifact.payload = statement.ColumnBlob(10, "artifacts.payload");
+  artifact.payload_bytes = static_cast<int64_t>(artifact.payload.size());
+  if (Sha256Hex(artifact.payload) != artifact.payload_digest) {
+    throw StoreError("artifact " + ShortKey(artifact.cache_key) + " of map '" + map_name +
+                     "' in store '" + path_ + "' is corrupt (payload digest mismatch); run ag-" +
+                     artifact.stage + " --store " + path_ + " --map " + map_name +
+                     " --force to recompute it");
+  }
+  return artifact;
+}
+
+std::vector<MapRecord> SqliteArtifactStore::ReadAllMaps() {
+  StatementUse use(*sql_stmt_read_all_maps_);
+  std::vector<MapRecord> maps;
+  while (sql_stmt_read_all_maps_->Step()) maps.push_back(ReadMapRow(*sql_stmt_read_all_maps_));
+  return maps;
+}
+
+std::optional<MapRecord> SqliteArtifactStore::ReadMap(const std::string& map_name) {
+  StatementUse use(*sql_stmt_read_map_);
+  sql_stmt_read_map_->BindText(1, map_name);
+  if (!sql_stmt_read_map_->Step()) return std::nullopt;
+  return ReadMapRow(*sql_stmt_read_map_);
+}
+
+std::optional<ArtifactRecord> SqliteArtifactStore::ReadArtifact(const std::string& map_name,
+                                                                const std::string& cache_key) {
+  StatementUse use(*sql_stmt_read_artifact_);
+  sql_stmt_read_artifact_->BindText(1, map_name);
+  sql_stmt_read_artifact_->BindText(2, cache_key);
+  if (!sql_stmt_read_artifact_->Step()) return std::nullopt;
+  return ReadArtifactRow(*sql_stmt_read_artifact_, map_name, /*with_payload=*/true);
+}
+
+std::optional<ArtifactRecord> SqliteArtifactStore::ReadHead(const std::string& map_name,
+                                                            const std::string& stage) {
+  StatementUse use(*sql_stmt_read_head_);
+  sql_stmt_read_head_->BindText(1, map_name);
+  sql_stmt_read_head_->BindText(2, stage);
+  if (!sql_stmt_read_head_->Step()) return std::nullopt;
+  return ReadArtifactRow(*sql_stmt_read_head_, map_name, /*with_payload=*/true);
+}
+
+std::vector<ArtifactRecord> SqliteArtifactStore::ReadArtifactSummaries(
+    const std::string& map_name) {
+  SqliteStatement& statement = *sql_stmt_read_artifact_summaries_;
+  StatementUse use(statement);
+  statement.BindText(1, map_name);
+  std::vector<ArtifactRecord> summaries;
+  while (statement.Step()) {
+    summaries.push_back(ReadArtifactRow(statement, map_name, /*with_payload=*/false));
+  }
+  return summaries;
+}
+
+void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
+  for (const std::string& key : artifact.input_keys) {
+    if (key.find('\n') != std::string::npos) {
+      throw StoreError("input key of a " + artifact.stage + " artifact contains a line break");
+    }
+  }
+  // Hashing before the transaction keeps the write lock short.
+  const std::string payload_digest = Sha256Hex(artifact.payload);
+  SqliteTransaction transaction = BeginTransaction();
+
+  int64_t map_id = 0;
+  {
+    StatementUse use(*sql_stmt_upsert_map_);
+    sql_stmt_upsert_map_->BindText(1, artifact.map_name);
+    if (artifact.source_path) sql_stmt_upsert_map_->BindText(2, *artifact.source_path);
+    if (artifact.source_digest) sql_stmt_upsert_map_->BindText(3, *artifact.source_digest);
+    sql_stmt_upsert_map_->Step();
+  }
+  {
+    StatementUse use(*sql_stmt_read_map_);
+    sql_stmt_read_map_->BindText(1, artifact.map_name);
+    sql_stmt_read_map_->Step();
+    map_id = sql_stmt_read_map_->ColumnInt64(0, "maps.id");
+  }
+  {
+    SqliteStatement& insert = *sql_stmt_upsert_artifact_;
+    StatementUse use(insert);
+    insert.BindInt64(1, map_id);
+    insert.BindText(2, artifact.stage);
+    insert.BindText(3, artifact.cache_key);
+    insert.BindText(4, JoinLines(artifact.input_keys));
+    insert.BindText(5, artifact.options_text);
+    insert.BindInt64(6, artifact.stage_version);
+    insert.BindText(7, artifact.proto_type);
+    insert.BindBlob(8, artifact.payload);
+    insert.BindText(9, payload_digest);
+    insert.BindDouble(10, artifact.elapsed_ms);
+    insert.Step();
+  }
+  int64_t artifact_id = 0;
+  {
+    StatementUse use(*sql_stmt_read_artifact_id_);
+    sql_stmt_read_artifact_id_->BindInt64(1, map_id);
+    sql_stmt_read_artifact_id_->BindText(2, artifact.cache_key);
+    sql_stmt_read_artifact_id_->Step();
+    artifact_id = sql_stmt_read_artifact_id_->ColumnInt64(0, "artifacts.id");
+  }
+  WriteHead(map_id, artifact.stage, artifact_id);
+  transaction.Commit();
+}
+
+void SqliteArtifactStore::UpdateHead(const std::string& map_name, const std::string& cache_key) {
+  SqliteTransaction transaction = BeginTransaction();
+  int64_t artifact_id = 0, map_id = 0;
+  std::string stage;
+  {
+    SqliteStatement& find = *sql_stmt_read_artifact_ref_;
+    StatementUse use(find);
+    find.BindText(1, map_name);
+    find.BindText(2, cache_key);
+    if (!find.Step()) {
+      throw StoreError("map '" + map_name + "' has no artifact " + ShortKey(cache_key) +
+                       " in store '" + path_ + "'");
+    }
+    artifact_id = find.ColumnInt64(0, "artifacts.id");
+    map_id = find.ColumnInt64(1, "artifacts.map_id");
+    stage = find.ColumnText(2, "artifacts.stage");
+  }
+  WriteHead(map_id, stage, artifact_id);
+  transaction.Commit();
+}
+
+void SqliteArtifactStore::WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id) {
+  StatementUse use(*sql_stmt_write_head_);
+  sql_stmt_write_head_->BindInt64(1, map_id);
+  sql_stmt_write_head_->BindText(2, stage);
+  sql_stmt_write_head_->BindInt64(3, artifact_id);
+  sql_stmt_write_head_->Step();
+}
+
+}  // namespace
+
+std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path, StoreMode mode) {
+  return std::make_unique<SqliteArtifactStore>(path, mode);
+}
+
+}  // namespace areagraph

@@ -1,0 +1,72 @@
+#pragma once
+
+#include <sqlite3.h>
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace areagraph {
+
+// How long a store waits for another process's write lock before giving up.
+constexpr int kStoreBusyTimeoutMs = 10000;
+
+// Throws StoreError unless `rc` is SQLITE_OK, SQLITE_ROW or SQLITE_DONE. Every
+// SQLite return code of the store goes through here, so each failure reads the
+// same way: the store path, SQLite's reason and what the store was doing.
+void CheckSqlite(sqlite3* db, const std::string& store_path, int rc, const std::string& action);
+
+// One statement, prepared once when the store opens and finalized when it
+// closes. `action` names what the statement is for ("reading the head") and
+// ends up in every error it raises. The bind and column helpers check types,
+// so a hand-edited store gives a clear error instead of wrong values.
+class SqliteStatement {
+ public:
+  SqliteStatement(sqlite3* db, const std::string& store_path, const char* sql, std::string action);
+  ~SqliteStatement();
+  SqliteStatement(const SqliteStatement&) = delete;
+  SqliteStatement& operator=(const SqliteStatement&) = delete;
+
+  void BindText(int index, std::string_view text);
+  void BindBlob(int index, std::string_view bytes);
+  void BindInt64(int index, int64_t value);
+  void BindDouble(int index, double value);
+  void BindNull(int index);
+
+  // Runs the statement one step: true when a row is ready, false when done.
+  bool Step();
+
+  // Column readers; `column` is the name used in error messages.
+  std::string ColumnText(int index, const char* column) const;
+  std::string ColumnBlob(int index, const char* column) const;
+  int64_t ColumnInt64(int index, const char* column) const;
+  double ColumnDouble(int index, const char* column) const;
+
+  // Resets the statement and clears its bindings; never throws.
+  void Reset() noexcept;
+
+ private:
+  void Check(int rc) const;
+  void CheckColumnType(int index, const char* column, int expected, const char* expected_name,
+                       int also_allowed = -1) const;
+
+  sqlite3* db_;
+  std::string store_path_;
+  std::string action_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+// Resets a statement when one use of it ends, also when an exception leaves
+// the scope, so the next use starts clean and no read snapshot stays open.
+class StatementUse {
+ public:
+  explicit StatementUse(SqliteStatement& statement) : statement_(statement) {}
+  ~StatementUse() { statement_.Reset(); }
+  StatementUse(const StatementUse&) = delete;
+  StatementUse& operator=(const StatementUse&) = delete;
+
+ private:
+  SqliteStatement& statement_;
+};
+
+}  // namespace areagraph

@@ -1,0 +1,118 @@
+#pragma once
+
+// The SQL of the SQLite artifact store: its schema and every statement it
+// prepares. Kept apart from the store class so that tests can ask SQLite for
+// the query plans and check that lookups use the indexes.
+namespace areagraph::store_sql {
+
+// A map is a name plus the file its latest import came from.
+inline constexpr char kCreateMapsTable[] = R"sql(
+CREATE TABLE IF NOT EXISTS maps (
+  id INTEGER PRIMARY KEY,
+  name TEXT NOT NULL UNIQUE,
+  source_path TEXT NOT NULL DEFAULT '',
+  source_digest TEXT NOT NULL DEFAULT '')
+)sql";
+
+// One row per stage result; input_keys are newline-joined digests. The unique
+// (map_id, cache_key) index serves cache lookups.
+inline constexpr char kCreateArtifactsTable[] = R"sql(
+CREATE TABLE IF NOT EXISTS artifacts (
+  id INTEGER PRIMARY KEY,
+  map_id INTEGER NOT NULL REFERENCES maps(id) ON DELETE CASCADE,
+  stage TEXT NOT NULL,
+  cache_key TEXT NOT NULL,
+  input_keys TEXT NOT NULL,
+  options TEXT NOT NULL,
+  stage_version INTEGER NOT NULL,
+  proto_type TEXT NOT NULL,
+  payload BLOB NOT NULL,
+  payload_digest TEXT NOT NULL,
+  created_at TEXT NOT NULL,
+  elapsed_ms REAL NOT NULL,
+  UNIQUE (map_id, cache_key))
+)sql";
+
+// Listing a map's artifacts oldest first reads this index in order.
+inline constexpr char kCreateArtifactsByTimeIndex[] = R"sql(
+CREATE INDEX IF NOT EXISTS artifacts_by_map_and_time ON artifacts (map_id, created_at))sql";
+
+// The current artifact of each (map, stage).
+inline constexpr char kCreateHeadsTable[] = R"sql(
+CREATE TABLE IF NOT EXISTS heads (
+  map_id INTEGER NOT NULL REFERENCES maps(id) ON DELETE CASCADE,
+  stage TEXT NOT NULL,
+  artifact_id INTEGER NOT NULL REFERENCES artifacts(id) ON DELETE CASCADE,
+  PRIMARY KEY (map_id, stage))
+)sql";
+
+// Deleting an artifact finds the heads that point at it without a scan.
+inline constexpr char kCreateHeadsByArtifactIndex[] = R"sql(
+CREATE INDEX IF NOT EXISTS heads_by_artifact ON heads (artifact_id))sql";
+
+inline constexpr char kBegin[] = "BEGIN IMMEDIATE";
+inline constexpr char kCommit[] = "COMMIT";
+inline constexpr char kRollback[] = "ROLLBACK";
+
+inline constexpr char kReadAllMaps[] =
+    "SELECT id, name, source_path, source_digest FROM maps ORDER BY name";
+inline constexpr char kReadMap[] =
+    "SELECT id, name, source_path, source_digest FROM maps WHERE name = ?1";
+
+// Artifact reads share their first columns; see ReadArtifactRow.
+#define AG_ARTIFACT_COLUMNS                                                        \
+  "a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type, " \
+  "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL"
+#define AG_JOIN_HEAD_OF_ARTIFACT \
+  " LEFT JOIN heads h ON h.map_id = a.map_id AND h.stage = a.stage AND h.artifact_id = a.id"
+
+inline constexpr char kReadArtifact[] =
+    "SELECT " AG_ARTIFACT_COLUMNS
+    ", a.payload FROM maps m JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT
+    " WHERE m.name = ?1 AND a.cache_key = ?2";
+inline constexpr char kReadHead[] =
+    "SELECT " AG_ARTIFACT_COLUMNS
+    ", a.payload FROM maps m"
+    " JOIN heads h ON h.map_id = m.id JOIN artifacts a ON a.id = h.artifact_id"
+    " WHERE m.name = ?1 AND h.stage = ?2";
+// length() reads the BLOB's size from its header without loading the payload.
+inline constexpr char kReadArtifactSummaries[] =
+    "SELECT " AG_ARTIFACT_COLUMNS
+    ", length(a.payload) FROM maps m"
+    " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT
+    " WHERE m.name = ?1 ORDER BY a.created_at, a.id";
+
+#undef AG_ARTIFACT_COLUMNS
+#undef AG_JOIN_HEAD_OF_ARTIFACT
+
+// The parts of an artifact that UpdateHead needs.
+inline constexpr char kReadArtifactRef[] =
+    "SELECT a.id, a.map_id, a.stage FROM maps m JOIN artifacts a ON a.map_id = m.id"
+    " WHERE m.name = ?1 AND a.cache_key = ?2";
+
+// Creates the map, or updates its source only where the caller gave one.
+inline constexpr char kUpsertMap[] = R"sql(
+INSERT INTO maps (name, source_path, source_digest) VALUES (?1, coalesce(?2, ''), coalesce(?3, ''))
+ON CONFLICT (name) DO UPDATE SET
+  source_path = coalesce(?2, source_path), source_digest = coalesce(?3, source_digest))sql";
+
+// Replaces a row with the same (map, key) in place, so its id and any head
+// pointing at it stay valid.
+inline constexpr char kUpsertArtifact[] = R"sql(
+INSERT INTO artifacts (map_id, stage, cache_key, input_keys, options, stage_version, proto_type,
+                       payload, payload_digest, created_at, elapsed_ms)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?10)
+ON CONFLICT (map_id, cache_key) DO UPDATE SET
+  stage = excluded.stage, input_keys = excluded.input_keys, options = excluded.options,
+  stage_version = excluded.stage_version, proto_type = excluded.proto_type,
+  payload = excluded.payload, payload_digest = excluded.payload_digest,
+  created_at = excluded.created_at, elapsed_ms = excluded.elapsed_ms)sql";
+
+inline constexpr char kReadArtifactId[] =
+    "SELECT id FROM artifacts WHERE map_id = ?1 AND cache_key = ?2";
+
+inline constexpr char kWriteHead[] = R"sql(
+INSERT INTO heads (map_id, stage, artifact_id) VALUES (?1, ?2, ?3)
+ON CONFLICT (map_id, stage) DO UPDATE SET artifact_id = excluded.artifact_id)sql";
+
+}  // namespace areagraph::store_sql

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "store/artifact_store.h"
+
+// Test access to a store file that bypasses ArtifactStore: the SQLite C API
+// directly, the way a user editing the file by hand (or bit rot) would.
+namespace areagraph::testing {
+
+// Runs `sql` (one or more statements) on the file, creating it if needed;
+// throws std::runtime_error.
+void ExecSql(const std::string& path, const std::string& sql);
+
+// Column `column` of every row of `sql`, as text.
+std::vector<std::string> QueryColumn(const std::string& path, const std::string& sql,
+                                     int column = 0);
+
+// Overwrites one byte of artifacts.payload in place (the BLOB API, no SQL
+// rewrite), keeping the stored digest.
+void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset);
+
+// A small artifact with every field set.
+NewArtifact MakeArtifact(const std::string& map_name, const std::string& stage,
+                         const std::string& cache_key, const std::string& payload);
+
+}  // namespace areagraph::testing

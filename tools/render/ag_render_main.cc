@@ -1,0 +1,78 @@
+// ag-render: draws a stage's artifact over its map as a PNG.
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <opencv2/imgcodecs.hpp>
+
+#include "stages/common/command_line.h"
+#include "stages/common/stage.h"
+#include "store/error.h"
+#include "tools/render/artifact_drawing.h"
+
+namespace areagraph {
+namespace {
+
+// The cells to draw under a stage's artifact: the raw map for import and
+// clean (so removed obstacles show), the cleaned map after that.
+Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const std::string& stage,
+                  int scale) {
+  proto::MapFrame frame;
+  std::string cells;
+  if (stage == kImportStage.name || stage == kCleanStage.name) {
+    const auto grid = ReadHeadArtifact<proto::GridMap>(store, map, kImportStage);
+    frame = grid.frame();
+    cells = grid.cells();
+  } else {
+    const auto cleaned = ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage);
+    frame = cleaned.frame();
+    cells = cleaned.cells();
+  }
+  if (scale <= 0) scale = DefaultScale(frame.width_px(), frame.height_px());
+  return Canvas(cells, frame.width_px(), frame.height_px(), scale);
+}
+
+void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
+            const std::string& out) {
+  Canvas canvas = BaseCanvas(store, map, stage, scale);
+  if (stage == kCleanStage.name) {
+    DrawCleanedMap(ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage), canvas);
+  } else if (stage == kVoronoiStage.name) {
+    DrawVoronoiDiagram(ReadHeadArtifact<proto::VoronoiDiagram>(store, map, kVoronoiStage), canvas);
+  } else if (stage == kPruneStage.name) {
+    DrawTopologyGraph(ReadHeadArtifact<proto::TopologyGraph>(store, map, kPruneStage), canvas);
+  } else if (stage == kCutStage.name) {
+    DrawCutGraph(ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage), canvas);
+  } else if (stage == kMergeStage.name) {
+    DrawAreaGraph(ReadHeadArtifact<proto::AreaGraph>(store, map, kMergeStage), canvas);
+  } else if (stage != kImportStage.name) {
+    throw InputError("unknown stage '" + stage + "'; use import, clean, voronoi, prune, cut or merge");
+  }
+  bool written = false;
+  try {
+    written = cv::imwrite(out, canvas.image());
+  } catch (const cv::Exception&) {
+  }
+  if (!written) throw InputError("cannot write PNG '" + out + "'");
+}
+
+}  // namespace
+}  // namespace areagraph
+
+int main(int argc, char** argv) {
+  CLI::App app{"Draws the head artifact of one stage over its map as a PNG."};
+  std::string store_path = "areagraph.db", map, stage = "merge", out;
+  int scale = 0;
+  app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
+  app.add_option("--map", map, "map name")->required();
+  app.add_option("--stage", stage, "import, clean, voronoi, prune, cut or merge")
+      ->capture_default_str();
+  app.add_option("--out", out, "PNG file to write")->required();
+  app.add_option("--scale", scale, "output pixels per map cell (default: about 1600 px wide)");
+  return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
+    if (scale < 0 || scale > 16) throw areagraph::InputError("--scale must be between 1 and 16");
+    auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
+    areagraph::Render(*store, map, stage, scale, out);
+    std::cout << "wrote " << out << "\n";
+    return 0;
+  });
+}

@@ -1,0 +1,113 @@
+#include "tools/render/artifact_drawing.h"
+
+#include <algorithm>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "stages/common/map_frame.h"
+
+namespace areagraph {
+namespace {
+
+// BGR colours used across pictures, so that a thing looks the same everywhere.
+const cv::Scalar kOutlier(40, 40, 230), kFurniture(0, 150, 255), kBoundary(200, 90, 20),
+    kPath(90, 40, 20), kDeadEnd(30, 30, 220), kJunction(160, 30, 130), kPassage(0, 170, 0),
+    kText(20, 20, 20);
+
+void DrawVertices(const google::protobuf::RepeatedPtrField<proto::GraphVertex>& vertices,
+                  Canvas& canvas) {
+  for (const proto::GraphVertex& vertex : vertices) {
+    const cv::Scalar colour = vertex.kind() == proto::VERTEX_DEAD_END   ? kDeadEnd
+                              : vertex.kind() == proto::VERTEX_JUNCTION ? kJunction
+                                                                        : kPassage;
+    canvas.Dot(vertex.position(), colour, std::max(2, canvas.scale()));
+  }
+}
+
+void DrawEdges(const google::protobuf::RepeatedPtrField<proto::GraphEdge>& edges, Canvas& canvas,
+               bool colour_by_room) {
+  for (const proto::GraphEdge& edge : edges) {
+    const int colour_id = colour_by_room && edge.room_id() >= 0 ? edge.room_id() : edge.id() + 1000;
+    const cv::Scalar colour = DistinctColour(colour_id);
+    canvas.Fill(edge.polygon(), colour, 0.45);
+    for (const proto::Polygon& absorbed : edge.absorbed()) canvas.Fill(absorbed, colour, 0.45);
+    canvas.Outline(edge.polygon().outer(), colour * 0.7, 1);
+  }
+  for (const proto::GraphEdge& edge : edges) {
+    for (int i = 1; i < edge.path_size(); ++i) {
+      canvas.Line(edge.path(i - 1), edge.path(i), kPath, 2);
+    }
+  }
+}
+
+// Map metres back to canvas pixels for the AreaGraph's metric fields.
+proto::Point2 ToPixel(const MapTransform& transform, const proto::Point2& metres) {
+  const Eigen::Vector2d pixel = transform.WorldToPixel({metres.x(), metres.y()});
+  proto::Point2 point;
+  point.set_x(pixel.x());
+  point.set_y(pixel.y());
+  return point;
+}
+
+}  // namespace
+
+void DrawCleanedMap(const proto::CleanedMap& cleaned, Canvas& canvas) {
+  const int width = cleaned.frame().width_px();
+  canvas.PaintCells(cleaned.removed_outlier_cells(), width, kOutlier);
+  canvas.PaintCells(cleaned.removed_furniture_cells(), width, kFurniture);
+  for (const proto::Polygon& shape : cleaned.furniture_shapes()) {
+    canvas.Outline(shape.outer(), kFurniture, 1);
+  }
+}
+
+void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas) {
+  // Colour by clearance: thin red near obstacles, thick blue in open space.
+  double max_clearance = 1;
+  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
+    max_clearance = std::max(max_clearance, edge.clearance_px());
+  }
+  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
+    if (edge.target() < 0) continue;
+    const double t = std::min(1.0, edge.clearance_px() / max_clearance);
+    const cv::Scalar colour(255 * t, 60, 255 * (1 - t));
+    canvas.Line(voronoi.vertices(edge.source()).position(),
+                voronoi.vertices(edge.target()).position(), colour, t > 0.2 ? 2 : 1);
+  }
+}
+
+void DrawTopologyGraph(const proto::TopologyGraph& graph, Canvas& canvas) {
+  DrawEdges(graph.edges(), canvas, /*colour_by_room=*/false);
+  canvas.Outline(graph.boundary().outer(), kBoundary, 2);
+  DrawVertices(graph.vertices(), canvas);
+}
+
+void DrawCutGraph(const proto::CutGraph& graph, Canvas& canvas) {
+  for (int room = 0; room < graph.room_shapes_size(); ++room) {
+    canvas.Outline(graph.room_shapes(room).outer(), DistinctColour(room) * 0.6, 2);
+  }
+  DrawEdges(graph.edges(), canvas, /*colour_by_room=*/true);
+  canvas.Outline(graph.boundary().outer(), kBoundary, 2);
+  DrawVertices(graph.vertices(), canvas);
+  for (const proto::PassagePoint& passage : graph.passage_points()) {
+    canvas.Dot(passage.position(), kPassage, std::max(3, canvas.scale() + 1));
+  }
+}
+
+void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas) {
+  const MapTransform transform(graph.frame());
+  for (const proto::Area& area : graph.areas()) {
+    canvas.Fill(area.polygon_px(), DistinctColour(area.id()), 0.55);
+    canvas.Outline(area.polygon_px().outer(), DistinctColour(area.id()) * 0.55, 1);
+  }
+  for (const proto::Passage& passage : graph.passages()) {
+    canvas.Line(ToPixel(transform, passage.segment_m().a()),
+                ToPixel(transform, passage.segment_m().b()), kPassage, 3);
+    canvas.Dot(ToPixel(transform, passage.point_m()), kPassage, std::max(3, canvas.scale() + 1));
+  }
+  for (const proto::Area& area : graph.areas()) {
+    canvas.Label(ToPixel(transform, area.centroid_m()), std::to_string(area.id()), kText);
+  }
+}
+
+}  // namespace areagraph

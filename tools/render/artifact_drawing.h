@@ -1,0 +1,15 @@
+#pragma once
+
+#include "proto/artifacts.pb.h"
+#include "tools/render/canvas.h"
+
+namespace areagraph {
+
+// One function per artifact: each draws what that stage found over the map.
+void DrawCleanedMap(const proto::CleanedMap& cleaned, Canvas& canvas);
+void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas);
+void DrawTopologyGraph(const proto::TopologyGraph& graph, Canvas& canvas);
+void DrawCutGraph(const proto::CutGraph& graph, Canvas& canvas);
+void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas);
+
+}  // namespace areagraph

@@ -1,0 +1,112 @@
+#include "tools/render/canvas.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/imgproc.hpp>
+
+#include "proto/artifacts.pb.h"
+
+namespace areagraph {
+namespace {
+
+const cv::Vec3b kFree(255, 255, 255), kOccupied(40, 40, 40), kUnknown(200, 200, 200);
+
+std::vector<cv::Point> RingPoints(const Canvas& canvas, const proto::Ring& ring) {
+  std::vector<cv::Point> points;
+  points.reserve(ring.points_size());
+  for (const proto::Point2& point : ring.points()) points.push_back(canvas.ToCanvas(point));
+  return points;
+}
+
+}  // namespace
+
+Canvas::Canvas(const std::string& cells, int width, int height, int scale) : scale_(scale) {
+  cv::Mat map(height, width, CV_8UC3);
+  for (int i = 0; i < width * height && i < static_cast<int>(cells.size()); ++i) {
+    const uint8_t cell = static_cast<uint8_t>(cells[i]);
+    map.at<cv::Vec3b>(i / width, i % width) =
+        cell == proto::CELL_FREE ? kFree : (cell == proto::CELL_OCCUPIED ? kOccupied : kUnknown);
+  }
+  cv::resize(map, image_, cv::Size(width * scale, height * scale), 0, 0, cv::INTER_NEAREST);
+}
+
+cv::Point Canvas::ToCanvas(const proto::Point2& point) const {
+  // Sub-pixel precision through cv's fixed-point shift (4 bits).
+  return cv::Point(static_cast<int>(std::lround(point.x() * scale_ * 16)),
+                   static_cast<int>(std::lround(point.y() * scale_ * 16)));
+}
+
+void Canvas::Line(const proto::Point2& a, const proto::Point2& b, const cv::Scalar& colour,
+                  int thickness) {
+  cv::line(image_, ToCanvas(a), ToCanvas(b), colour, thickness, cv::LINE_AA, 4);
+}
+
+void Canvas::Dot(const proto::Point2& at, const cv::Scalar& colour, int radius) {
+  cv::circle(image_, ToCanvas(at), radius * 16, colour, cv::FILLED, cv::LINE_AA, 4);
+}
+
+void Canvas::Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness) {
+  if (ring.points_size() < 2) return;
+  const std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, ring)};
+  cv::polylines(image_, rings, true, colour, thickness, cv::LINE_AA, 4);
+}
+
+void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha) {
+  if (polygon.outer().points_size() < 3) return;
+  cv::Mat mask = cv::Mat::zeros(image_.size(), CV_8UC1);
+  std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, polygon.outer())};
+  cv::fillPoly(mask, rings, cv::Scalar(255), cv::LINE_8, 4);
+  for (const proto::Ring& hole : polygon.holes()) {
+    rings = {RingPoints(*this, hole)};
+    cv::fillPoly(mask, rings, cv::Scalar(0), cv::LINE_8, 4);
+  }
+  cv::Mat tinted;
+  cv::addWeighted(image_, 1.0 - alpha, cv::Mat(image_.size(), image_.type(), colour), alpha, 0,
+                  tinted);
+  tinted.copyTo(image_, mask);
+}
+
+void Canvas::Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour) {
+  const double font_scale = std::clamp(0.25 * scale_, 0.4, 0.9);
+  int baseline = 0;
+  const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font_scale, 1, &baseline);
+  const cv::Point origin(static_cast<int>(at.x() * scale_) - size.width / 2,
+                         static_cast<int>(at.y() * scale_) + size.height / 2);
+  cv::putText(image_, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, cv::Scalar(255, 255, 255),
+              3, cv::LINE_AA);
+  cv::putText(image_, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, colour, 1, cv::LINE_AA);
+}
+
+void Canvas::PaintCells(const google::protobuf::RepeatedField<int32_t>& cells, int width,
+                        const cv::Scalar& colour) {
+  for (const int32_t cell : cells) {
+    const cv::Rect rect((cell % width) * scale_, (cell / width) * scale_, scale_, scale_);
+    cv::rectangle(image_, rect, colour, cv::FILLED);
+  }
+}
+
+cv::Scalar DistinctColour(int id) {
+  // Golden-angle hue steps keep neighbouring ids apart; HSV -> BGR by hand.
+  const double hue = std::fmod(id * 137.508, 360.0) / 60.0;
+  const double saturation = id % 2 == 0 ? 0.65 : 0.85, value = id % 3 == 0 ? 0.95 : 0.8;
+  const double c = value * saturation, x = c * (1 - std::fabs(std::fmod(hue, 2.0) - 1));
+  double r = 0, g = 0, b = 0;
+  switch (static_cast<int>(hue)) {
+    case 0: r = c, g = x; break;
+    case 1: r = x, g = c; break;
+    case 2: g = c, b = x; break;
+    case 3: g = x, b = c; break;
+    case 4: r = x, b = c; break;
+    default: r = c, b = x; break;
+  }
+  const double m = value - c;
+  return cv::Scalar((b + m) * 255, (g + m) * 255, (r + m) * 255);
+}
+
+int DefaultScale(int width, int height) {
+  const int longer = std::max(1, std::max(width, height));
+  return std::clamp(1600 / longer, 1, 8);
+}
+
+}  // namespace areagraph

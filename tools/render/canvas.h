@@ -1,0 +1,41 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "proto/geometry.pb.h"
+
+namespace areagraph {
+
+// A picture of a map, upscaled so that thin lines and labels stay readable,
+// with drawing helpers that take pixel coordinates of the map.
+class Canvas {
+ public:
+  // `cells` are CellState bytes (free white, occupied black, unknown grey).
+  Canvas(const std::string& cells, int width, int height, int scale);
+
+  int scale() const { return scale_; }
+  cv::Mat& image() { return image_; }
+
+  cv::Point ToCanvas(const proto::Point2& point) const;
+  void Line(const proto::Point2& a, const proto::Point2& b, const cv::Scalar& colour, int thickness);
+  void Dot(const proto::Point2& at, const cv::Scalar& colour, int radius);
+  void Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness);
+  // Fills a polygon (outer minus holes) blending `colour` with weight `alpha`.
+  void Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha);
+  void Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour);
+  // Paints whole map cells (flat indices), e.g. removed obstacles.
+  void PaintCells(const google::protobuf::RepeatedField<int32_t>& cells, int width,
+                  const cv::Scalar& colour);
+
+ private:
+  int scale_;
+  cv::Mat image_;
+};
+
+// Distinct, well separated colours for ids (golden-angle hues).
+cv::Scalar DistinctColour(int id);
+
+// A scale that makes the longer side about 1600 px, at least 1, at most 8.
+int DefaultScale(int width, int height);
+
+}  // namespace areagraph
