@@ -85,7 +85,10 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
                        "'; valid keys: " + JoinKeys(ValidOptionKeys()));
   }
   Message* stage_options = options->GetReflection()->MutableMessage(options, stage);
-  if (!google::protobuf::TextFormat::ParseFieldValueFromString(value, field, stage_options)) {
+  google::protobuf::TextFormat::Parser parser;
+  ErrorCollector errors;  // keeps protobuf from logging its own line to stderr
+  parser.RecordErrorsTo(&errors);
+  if (!parser.ParseFieldValueFromString(value, field, stage_options)) {
     throw OptionsError("option '" + stage_name + "." + field_name + "' expects a " +
                        field->type_name() + ", got '" + value + "'");
   }

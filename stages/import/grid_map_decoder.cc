@@ -1,0 +1,70 @@
+#include "stages/import/grid_map_decoder.h"
+
+#include "store/error.h"
+
+namespace areagraph {
+
+GreyToCell GreyThresholdRule(const proto::ImportOptions& options) {
+  const int occupied_max = options.occupied_max_grey();
+  const int free_min = options.free_min_grey();
+  if (occupied_max < 0 || free_min > 255 || occupied_max >= free_min) {
+    throw OptionsError("import.occupied_max_grey (" + std::to_string(occupied_max) +
+                       ") and import.free_min_grey (" + std::to_string(free_min) +
+                       ") must satisfy 0 <= occupied_max_grey < free_min_grey <= 255");
+  }
+  GreyToCell rule;
+  for (int grey = 0; grey < 256; ++grey) {
+    rule[grey] = grey >= free_min       ? proto::CELL_FREE
+                 : grey <= occupied_max ? proto::CELL_OCCUPIED
+                                        : proto::CELL_UNKNOWN;
+  }
+  return rule;
+}
+
+GreyToCell MapServerRule(const MapYaml& yaml) {
+  GreyToCell rule;
+  for (int grey = 0; grey < 256; ++grey) {
+    const int value = yaml.negate ? 255 - grey : grey;
+    if (yaml.mode == MapYaml::Mode::kRaw && value > 100) {
+      rule[grey] = proto::CELL_UNKNOWN;
+      continue;
+    }
+    const double occupancy =
+        yaml.mode == MapYaml::Mode::kRaw ? value / 100.0 : (255 - value) / 255.0;
+    rule[grey] = occupancy > yaml.occupied_thresh ? proto::CELL_OCCUPIED
+                 : occupancy < yaml.free_thresh   ? proto::CELL_FREE
+                                                  : proto::CELL_UNKNOWN;
+  }
+  return rule;
+}
+
+std::string ClassifyCells(const cv::Mat& grey, const GreyToCell& rule) {
+  CV_Assert(grey.type() == CV_8UC1);
+  std::string cells(static_cast<size_t>(grey.rows) * grey.cols, '\0');
+  size_t index = 0;
+  for (int row = 0; row < grey.rows; ++row) {
+    const uint8_t* pixels = grey.ptr<uint8_t>(row);
+    for (int col = 0; col < grey.cols; ++col) cells[index++] = static_cast<char>(rule[pixels[col]]);
+  }
+  return cells;
+}
+
+CellCounts CountCells(const std::string& cells) {
+  CellCounts counts;
+  for (const char cell : cells) {
+    switch (cell) {
+      case proto::CELL_FREE:
+        ++counts.free;
+        break;
+      case proto::CELL_OCCUPIED:
+        ++counts.occupied;
+        break;
+      default:
+        ++counts.unknown;
+        break;
+    }
+  }
+  return counts;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,100 @@
+#include "stages/import/import_stage.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <system_error>
+
+#include "stages/import/grey_image.h"
+#include "stages/import/grid_map_decoder.h"
+#include "store/digest.h"
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+namespace fs = std::filesystem;
+
+// `what` names the file for messages, e.g. "image 'a.png'".
+std::string ReadWholeFile(const std::string& path, const std::string& what) {
+  std::error_code error;
+  if (!fs::exists(path, error)) throw InputError(what + " does not exist");
+  if (fs::is_directory(path, error)) throw InputError(what + " is a directory");
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in.is_open() || in.bad()) throw InputError("cannot read " + what);
+  return bytes;
+}
+
+bool IsYamlPath(const std::string& path) {
+  const std::string extension = fs::path(path).extension().string();
+  return extension == ".yaml" || extension == ".yml";
+}
+
+}  // namespace
+
+std::string ImportSource::Digest() const {
+  Sha256 digest;
+  digest.Update(image_bytes);
+  digest.Update(yaml_bytes);
+  return digest.FinishHex();
+}
+
+ImportSource ReadImportSource(const std::string& path) {
+  ImportSource source;
+  source.given_path = path;
+  if (IsYamlPath(path)) {
+    source.yaml_path = path;
+    source.yaml_bytes = ReadWholeFile(path, "map YAML '" + path + "'");
+    source.yaml = ParseMapYaml(source.yaml_bytes, path, /*image_required=*/true);
+    source.image_path = source.yaml->image_path;
+    source.image_bytes = ReadWholeFile(
+        source.image_path, "image '" + source.image_path + "' (named in '" + path + "')");
+    return source;
+  }
+  source.image_path = path;
+  source.image_bytes = ReadWholeFile(path, "image '" + path + "'");
+  // map_server keeps the metadata next to the image under the same stem.
+  const std::string beside = fs::path(path).replace_extension(".yaml").string();
+  std::error_code error;
+  if (fs::is_regular_file(beside, error)) {
+    source.yaml_path = beside;
+    source.yaml_bytes = ReadWholeFile(beside, "map YAML '" + beside + "'");
+    // The image given on the command line wins over the YAML's `image` key.
+    source.yaml = ParseMapYaml(source.yaml_bytes, beside, /*image_required=*/false);
+  }
+  return source;
+}
+
+std::string DefaultMapName(const std::string& path) { return fs::path(path).stem().string(); }
+
+void CheckImportOptions(const proto::ImportOptions& options) {
+  CheckResolution(options.resolution_m(), "import.resolution_m", /*is_option=*/true);
+  if (options.max_pixels() <= 0) {
+    throw OptionsError("import.max_pixels must be positive, got " +
+                       std::to_string(options.max_pixels()));
+  }
+  GreyThresholdRule(options);
+}
+
+proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOptions& options) {
+  CheckImportOptions(options);
+  const GreyToCell rule = source.yaml ? MapServerRule(*source.yaml) : GreyThresholdRule(options);
+  const cv::Mat grey = DecodeGreyImage(source.image_bytes, source.image_path, options.max_pixels());
+
+  proto::GridMap grid;
+  grid.set_format_version(kGridMapFormatVersion);
+  proto::MapFrame* frame = grid.mutable_frame();
+  frame->set_resolution_m(source.yaml ? source.yaml->resolution_m : options.resolution_m());
+  frame->set_origin_x_m(source.yaml ? source.yaml->origin_x_m : 0.0);
+  frame->set_origin_y_m(source.yaml ? source.yaml->origin_y_m : 0.0);
+  frame->set_origin_yaw_rad(source.yaml ? source.yaml->origin_yaw_rad : 0.0);
+  frame->set_width_px(grey.cols);
+  frame->set_height_px(grey.rows);
+  grid.set_cells(ClassifyCells(grey, rule));
+  grid.set_source_path(source.given_path);
+  grid.set_source_digest(source.Digest());
+  return grid;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,50 @@
+#include "stages/import/png_header.h"
+
+#include <string>
+
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+constexpr std::string_view kPngSignature("\x89PNG\r\n\x1a\n", 8);
+// Chunk layout: 4-byte length, 4-byte type, data, 4-byte CRC.
+constexpr size_t kChunkOverhead = 12;
+
+uint32_t ReadBigEndian32(std::string_view bytes, size_t offset) {
+  uint32_t value = 0;
+  for (size_t i = 0; i < 4; ++i) value = (value << 8) | static_cast<uint8_t>(bytes[offset + i]);
+  return value;
+}
+
+}  // namespace
+
+bool HasPngSignature(std::string_view bytes) {
+  return bytes.substr(0, kPngSignature.size()) == kPngSignature;
+}
+
+PngHeader ReadPngHeader(std::string_view bytes, std::string_view path) {
+  const size_t ihdr = kPngSignature.size();
+  if (bytes.size() < ihdr + kChunkOverhead + 13 || bytes.substr(ihdr + 4, 4) != "IHDR") {
+    throw InputError("PNG file '" + std::string(path) + "' is truncated or corrupt: no IHDR chunk");
+  }
+  PngHeader header;
+  header.width = ReadBigEndian32(bytes, ihdr + 8);
+  header.height = ReadBigEndian32(bytes, ihdr + 12);
+
+  size_t offset = ihdr;
+  while (offset + kChunkOverhead <= bytes.size()) {
+    const uint64_t length = ReadBigEndian32(bytes, offset);
+    const std::string_view type = bytes.substr(offset + 4, 4);
+    const uint64_t end = offset + kChunkOverhead + length;
+    if (end > bytes.size()) break;
+    if (type == "IEND") {
+      header.complete = true;
+      break;
+    }
+    offset = static_cast<size_t>(end);
+  }
+  return header;
+}
+
+}  // namespace areagraph
