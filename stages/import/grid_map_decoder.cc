@@ -49,22 +49,5 @@ std::string ClassifyCells(const cv::Mat& grey, const GreyToCell& rule) {
   return cells;
 }
 
-CellCounts CountCells(const std::string& cells) {
-  CellCounts counts;
-  for (const char cell : cells) {
-    switch (cell) {
-      case proto::CELL_FREE:
-        ++counts.free;
-        break;
-      case proto::CELL_OCCUPIED:
-        ++counts.occupied;
-        break;
-      default:
-        ++counts.unknown;
-        break;
-    }
-  }
-  return counts;
-}
 
 }  // namespace areagraph

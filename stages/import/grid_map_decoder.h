@@ -37,12 +37,5 @@ GreyToCell MapServerRule(const MapYaml& yaml);
 // One CellState byte per pixel, row-major from the top row of `grey` (CV_8UC1).
 std::string ClassifyCells(const cv::Mat& grey, const GreyToCell& rule);
 
-// How many cells of each class a GridMap's cells hold.
-struct CellCounts {
-  int64_t free = 0;
-  int64_t occupied = 0;
-  int64_t unknown = 0;
-};
-CellCounts CountCells(const std::string& cells);
 
 }  // namespace areagraph

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "stages/common/grid_cells.h"
 #include "stages/import/grid_map_decoder.h"
 #include "stages/import/import_stage.h"
 #include "tests/support/test_support.h"

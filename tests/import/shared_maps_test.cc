@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "stages/common/grid_cells.h"
 #include "stages/import/grid_map_decoder.h"
 #include "tests/import/import_test_util.h"
 #include "tests/support/test_support.h"
