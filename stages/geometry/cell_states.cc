@@ -1,0 +1,33 @@
+#include "stages/geometry/cell_states.h"
+
+#include "store/error.h"
+
+namespace areagraph {
+
+bool CellStates::TouchesFree(int col, int row) const {
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      if ((dr != 0 || dc != 0) && IsFree(col + dc, row + dr)) return true;
+    }
+  }
+  return false;
+}
+
+void CheckCellStates(const std::string& cells, int width, int height, const std::string& what) {
+  if (width <= 0 || height <= 0) {
+    throw InputError(what + " has an empty frame (" + std::to_string(width) + "x" +
+                     std::to_string(height) + " pixels)");
+  }
+  if (cells.size() != static_cast<size_t>(width) * static_cast<size_t>(height)) {
+    throw InputError(what + " has " + std::to_string(cells.size()) + " cells but its frame is " +
+                     std::to_string(width) + "x" + std::to_string(height));
+  }
+  for (const char cell : cells) {
+    if (!proto::CellState_IsValid(static_cast<uint8_t>(cell))) {
+      throw InputError(what + " has an invalid cell value " +
+                       std::to_string(static_cast<uint8_t>(cell)));
+    }
+  }
+}
+
+}  // namespace areagraph

@@ -1,0 +1,271 @@
+#include "stages/geometry/site_alpha_shape.h"
+
+#include <CGAL/Alpha_shape_2.h>
+#include <CGAL/Alpha_shape_face_base_2.h>
+#include <CGAL/Alpha_shape_vertex_base_2.h>
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+
+#include <deque>
+#include <map>
+
+namespace areagraph {
+namespace {
+
+// Per-face labels. `walked` marks boundary edges already put in a ring.
+struct FaceInfo {
+  int filled_region = -1;
+  int room = -1;
+  bool outside = false;
+  unsigned char walked = 0;
+};
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using VertexBase = CGAL::Alpha_shape_vertex_base_2<Kernel>;
+using FaceBase = CGAL::Alpha_shape_face_base_2<
+    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+using AlphaShape = CGAL::Alpha_shape_2<Delaunay>;
+using Face = AlphaShape::Face_handle;
+
+Eigen::Vector2d ToVector(const Kernel::Point_2& point) { return {point.x(), point.y()}; }
+
+Eigen::Vector2d Centroid(const Face& face) {
+  return (ToVector(face->vertex(0)->point()) + ToVector(face->vertex(1)->point()) +
+          ToVector(face->vertex(2)->point())) /
+         3.0;
+}
+
+double TriangleArea(const Face& face) {
+  const Eigen::Vector2d a = ToVector(face->vertex(0)->point());
+  const Eigen::Vector2d b = ToVector(face->vertex(1)->point());
+  const Eigen::Vector2d c = ToVector(face->vertex(2)->point());
+  return 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+}
+
+double SignedArea(const PointList& ring) {
+  double twice = 0;
+  for (size_t i = 0; i < ring.size(); ++i) {
+    const Eigen::Vector2d& p = ring[i];
+    const Eigen::Vector2d& q = ring[(i + 1) % ring.size()];
+    twice += p.x() * q.y() - q.x() * p.y();
+  }
+  return 0.5 * twice;
+}
+
+proto::Ring ToProtoRing(const PointList& points) {
+  proto::Ring ring;
+  AppendPoints(points, ring.mutable_points());
+  return ring;
+}
+
+}  // namespace
+
+struct SiteAlphaShape::Impl {
+  AlphaShape shape;
+  Face hint;
+  int biggest_region = -1;
+
+  explicit Impl(const std::vector<Kernel::Point_2>& points, double alpha)
+      : shape(points.begin(), points.end(), alpha, AlphaShape::GENERAL) {}
+
+  bool HasFaces() const { return shape.dimension() == 2; }
+
+  // Labels edge-connected groups of `member` faces, crossing only edges that
+  // `connects` accepts; `label` selects the field to write. Returns the count.
+  int LabelRegions(const std::function<bool(const Face&)>& member,
+                   const std::function<bool(const Face&, int)>& connects,
+                   int FaceInfo::*label) {
+    int count = 0;
+    for (Face face : shape.finite_face_handles()) face->info().*label = -1;
+    for (Face seed : shape.finite_face_handles()) {
+      if (seed->info().*label >= 0 || !member(seed)) continue;
+      seed->info().*label = count;
+      std::deque<Face> queue{seed};
+      while (!queue.empty()) {
+        const Face face = queue.front();
+        queue.pop_front();
+        for (int i = 0; i < 3; ++i) {
+          const Face next = face->neighbor(i);
+          if (shape.is_infinite(next) || next->info().*label >= 0) continue;
+          if (!connects(face, i) || !member(next)) continue;
+          next->info().*label = count;
+          queue.push_back(next);
+        }
+      }
+      ++count;
+    }
+    return count;
+  }
+
+  // The closed boundary rings of every labelled region, keyed by label. Each
+  // ring keeps its region on the left; at a vertex where the region touches
+  // itself the walk stays within the faces it came through.
+  std::map<int, std::vector<PointList>> RegionRings(int FaceInfo::*label, int only = -1) {
+    for (Face face : shape.all_face_handles()) face->info().walked = 0;
+    std::map<int, std::vector<PointList>> rings;
+    auto on_boundary = [&](const Face& face, int i) {
+      const Face other = face->neighbor(i);
+      return shape.is_infinite(other) || other->info().*label != face->info().*label;
+    };
+    for (Face start : shape.finite_face_handles()) {
+      const int region = start->info().*label;
+      if (region < 0 || (only >= 0 && region != only)) continue;
+      for (int start_edge = 0; start_edge < 3; ++start_edge) {
+        if ((start->info().walked & (1 << start_edge)) || !on_boundary(start, start_edge)) continue;
+        PointList ring;
+        Face face = start;
+        int edge = start_edge;
+        do {
+          face->info().walked |= static_cast<unsigned char>(1 << edge);
+          ring.push_back(ToVector(face->vertex(Delaunay::ccw(edge))->point()));
+          const auto pivot = face->vertex(Delaunay::cw(edge));
+          // Turn around the edge's end vertex through faces of the region
+          // until the next edge with another region beyond it.
+          edge = Delaunay::cw(face->index(pivot));
+          while (!on_boundary(face, edge)) {
+            face = face->neighbor(edge);
+            edge = Delaunay::cw(face->index(pivot));
+          }
+        } while (face != start || edge != start_edge);
+        rings[region].push_back(std::move(ring));
+      }
+    }
+    return rings;
+  }
+
+  static proto::Polygon ToPolygon(const std::vector<PointList>& rings, bool with_holes) {
+    proto::Polygon polygon;
+    int outer = -1;
+    for (size_t i = 0; i < rings.size(); ++i) {
+      if (outer < 0 || SignedArea(rings[i]) > SignedArea(rings[outer])) outer = static_cast<int>(i);
+    }
+    if (outer < 0) return polygon;
+    *polygon.mutable_outer() = ToProtoRing(rings[outer]);
+    if (with_holes) {
+      for (size_t i = 0; i < rings.size(); ++i) {
+        if (static_cast<int>(i) != outer) *polygon.add_holes() = ToProtoRing(rings[i]);
+      }
+    }
+    return polygon;
+  }
+
+  Face Locate(const Eigen::Vector2d& point) {
+    hint = shape.locate(Kernel::Point_2(point.x(), point.y()), hint);
+    return hint;
+  }
+};
+
+SiteAlphaShape::SiteAlphaShape(const PointList& sites, double alpha_radius_px) {
+  std::vector<Kernel::Point_2> points;
+  points.reserve(sites.size());
+  for (const Eigen::Vector2d& site : sites) points.emplace_back(site.x(), site.y());
+  impl_ = std::make_unique<Impl>(points, alpha_radius_px * alpha_radius_px);
+}
+
+SiteAlphaShape::~SiteAlphaShape() = default;
+
+int SiteAlphaShape::FaceCount() const {
+  return impl_->HasFaces() ? static_cast<int>(impl_->shape.number_of_faces()) : 0;
+}
+
+proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
+  Impl& impl = *impl_;
+  impl.biggest_region = -1;
+  if (!impl.HasFaces()) return proto::Polygon();
+  const int count = impl.LabelRegions(
+      [&](const Face& face) { return impl.shape.classify(face) == AlphaShape::INTERIOR; },
+      [](const Face&, int) { return true; }, &FaceInfo::filled_region);
+  std::vector<double> area(count, 0.0);
+  for (Face face : impl.shape.finite_face_handles()) {
+    if (face->info().filled_region >= 0) area[face->info().filled_region] += TriangleArea(face);
+  }
+  for (int region = 0; region < count; ++region) {
+    if (impl.biggest_region < 0 || area[region] > area[impl.biggest_region]) {
+      impl.biggest_region = region;
+    }
+  }
+  if (impl.biggest_region < 0) return proto::Polygon();
+
+  // Everything reachable from infinity without crossing the biggest region
+  // is outside its outer ring.
+  std::deque<Face> queue;
+  for (Face face : impl.shape.all_face_handles()) {
+    face->info().outside = impl.shape.is_infinite(face);
+    if (face->info().outside) queue.push_back(face);
+  }
+  while (!queue.empty()) {
+    const Face face = queue.front();
+    queue.pop_front();
+    for (int i = 0; i < 3; ++i) {
+      const Face next = face->neighbor(i);
+      if (next->info().outside || next->info().filled_region == impl.biggest_region) continue;
+      next->info().outside = true;
+      queue.push_back(next);
+    }
+  }
+  const auto rings = impl.RegionRings(&FaceInfo::filled_region, impl.biggest_region);
+  const auto found = rings.find(impl.biggest_region);
+  if (found == rings.end()) return proto::Polygon();
+  return Impl::ToPolygon(found->second, /*with_holes=*/false);
+}
+
+bool SiteAlphaShape::InsideBiggestShape(const Eigen::Vector2d& point) {
+  if (!impl_->HasFaces() || impl_->biggest_region < 0) return false;
+  const Face face = impl_->Locate(point);
+  return !impl_->shape.is_infinite(face) && !face->info().outside;
+}
+
+int SiteAlphaShape::DetectRooms(const std::function<bool(const Eigen::Vector2d&)>& inside_boundary) {
+  Impl& impl = *impl_;
+  if (!impl.HasFaces()) return 0;
+  return impl.LabelRegions(
+      [&](const Face& face) {
+        return impl.shape.classify(face) == AlphaShape::EXTERIOR && inside_boundary(Centroid(face));
+      },
+      [&](const Face& face, int i) {
+        return impl.shape.classify(face, i) == AlphaShape::EXTERIOR;
+      },
+      &FaceInfo::room);
+}
+
+std::vector<double> SiteAlphaShape::RoomAreas() {
+  std::vector<double> areas;
+  if (!impl_->HasFaces()) return areas;
+  for (Face face : impl_->shape.finite_face_handles()) {
+    const int room = face->info().room;
+    if (room < 0) continue;
+    if (room >= static_cast<int>(areas.size())) areas.resize(room + 1, 0.0);
+    areas[room] += TriangleArea(face);
+  }
+  return areas;
+}
+
+int SiteAlphaShape::RoomAt(const Eigen::Vector2d& point) {
+  if (!impl_->HasFaces()) return -1;
+  const Face face = impl_->Locate(point);
+  return impl_->shape.is_infinite(face) ? -1 : face->info().room;
+}
+
+void SiteAlphaShape::RenumberRooms(const std::vector<int>& new_ids) {
+  if (!impl_->HasFaces()) return;
+  for (Face face : impl_->shape.finite_face_handles()) {
+    int& room = face->info().room;
+    if (room >= 0) room = room < static_cast<int>(new_ids.size()) ? new_ids[room] : -1;
+  }
+}
+
+std::vector<proto::Polygon> SiteAlphaShape::RoomOutlines() {
+  std::vector<proto::Polygon> outlines;
+  if (!impl_->HasFaces()) return outlines;
+  const auto rings = impl_->RegionRings(&FaceInfo::room);
+  for (const auto& [room, room_rings] : rings) {
+    if (room >= static_cast<int>(outlines.size())) outlines.resize(room + 1);
+    outlines[room] = Impl::ToPolygon(room_rings, /*with_holes=*/true);
+  }
+  return outlines;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "proto/geometry.pb.h"
+#include "stages/geometry/edge_polygon.h"
+
+namespace areagraph {
+
+// The Delaunay triangulation of obstacle sites, classified by one alpha
+// (CGAL Alpha_shape_2, GENERAL mode; alpha = squared radius). Used twice:
+// ag-prune takes the biggest filled region as the map boundary, ag-cut takes
+// the empty regions (faces wider than the alpha disk) as rooms.
+class SiteAlphaShape {
+ public:
+  SiteAlphaShape(const PointList& sites, double alpha_radius_px);
+  ~SiteAlphaShape();
+  SiteAlphaShape(const SiteAlphaShape&) = delete;
+  SiteAlphaShape& operator=(const SiteAlphaShape&) = delete;
+
+  // --- The boundary (ag-prune) ---
+
+  // Finds the biggest edge-connected group of faces inside the alpha shape
+  // and returns its outline (outer ring only: holes are big open rooms, which
+  // still belong to the map). Returns an empty polygon when no face is inside.
+  proto::Polygon BiggestShapeOutline();
+  // True when `point` lies inside the outline found by BiggestShapeOutline.
+  bool InsideBiggestShape(const Eigen::Vector2d& point);
+
+  // --- Rooms (ag-cut) ---
+
+  // Groups the faces outside the alpha shape (an empty disk of the alpha
+  // radius fits) into rooms, connected across edges that are themselves
+  // outside the shape: a door narrower than the disk is a singular edge and
+  // separates two rooms. Faces whose centroid fails `inside_boundary` are no
+  // room. Returns the number of rooms.
+  int DetectRooms(const std::function<bool(const Eigen::Vector2d&)>& inside_boundary);
+  // The area (square pixels) of every room, indexed by room id.
+  std::vector<double> RoomAreas();
+  // The room containing `point`, or -1.
+  int RoomAt(const Eigen::Vector2d& point);
+  // Renumbers rooms: room r becomes new_ids[r] (-1 drops it).
+  void RenumberRooms(const std::vector<int>& new_ids);
+  // Outline (outer ring and holes) of every room, indexed by room id.
+  std::vector<proto::Polygon> RoomOutlines();
+
+  // Number of finite triangles, for reports.
+  int FaceCount() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace areagraph

@@ -1,0 +1,77 @@
+// ag-clean and ag-voronoi as executables, on an example map.
+#include <gtest/gtest.h>
+
+#include "tests/support/test_support.h"
+
+namespace areagraph::testing {
+namespace {
+
+class StageTools : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    store_ = dir_.File("store.db");
+    const CommandResult import =
+        RunTool("ag-import", {"--store", store_, SourcePath("examples/two_rooms.png")});
+    ASSERT_EQ(import.exit_code, 0) << import.err;
+  }
+  CommandResult Run(const std::string& tool, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"--store", store_, "--map", "two_rooms"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunTool(tool, args);
+  }
+
+  TempDir dir_;
+  std::string store_;
+};
+
+TEST_F(StageTools, CleanThenVoronoiComputeOnceAndThenHitTheCache) {
+  CommandResult clean = Run("ag-clean");
+  ASSERT_EQ(clean.exit_code, 0) << clean.err;
+  EXPECT_EQ(CountLines(clean.out), 1);
+  EXPECT_NE(clean.out.find("map 'two_rooms'"), std::string::npos) << clean.out;
+  EXPECT_NE(clean.out.find("(computed)"), std::string::npos) << clean.out;
+
+  CommandResult voronoi = Run("ag-voronoi");
+  ASSERT_EQ(voronoi.exit_code, 0) << voronoi.err;
+  EXPECT_EQ(CountLines(voronoi.out), 1);
+  EXPECT_NE(voronoi.out.find(" sites, "), std::string::npos) << voronoi.out;
+  EXPECT_NE(voronoi.out.find("(computed)"), std::string::npos) << voronoi.out;
+
+  voronoi = Run("ag-voronoi");
+  ASSERT_EQ(voronoi.exit_code, 0) << voronoi.err;
+  EXPECT_NE(voronoi.out.find("(cached)"), std::string::npos) << voronoi.out;
+
+  // New clean options change clean's key and therefore voronoi's.
+  clean = Run("ag-clean", {"--set", "clean.robot_width_m=0.6"});
+  ASSERT_EQ(clean.exit_code, 0) << clean.err;
+  EXPECT_NE(clean.out.find("(computed)"), std::string::npos) << clean.out;
+  voronoi = Run("ag-voronoi");
+  EXPECT_NE(voronoi.out.find("(computed)"), std::string::npos) << voronoi.out;
+}
+
+TEST_F(StageTools, BadOptionsAndMissingInputsFailWithOneLine) {
+  CommandResult result = Run("ag-clean", {"--set", "clean.outlier_percent=-3"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.err,
+            "ag-clean: clean.outlier_percent must be at least 0 and below 100 (got -3)\n");
+
+  result = Run("ag-voronoi");
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(CountLines(result.err), 1);
+  EXPECT_NE(result.err.find("run ag-clean first"), std::string::npos) << result.err;
+
+  result = RunTool("ag-clean", {"--store", store_, "--map", "nosuch"});
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("map 'nosuch' is not in the store"), std::string::npos) << result.err;
+}
+
+TEST_F(StageTools, HelpExitsZero) {
+  for (const char* tool : {"ag-clean", "ag-voronoi"}) {
+    const CommandResult help = RunTool(tool, {"--help"});
+    EXPECT_EQ(help.exit_code, 0) << tool;
+    EXPECT_NE(help.out.find("--store"), std::string::npos) << tool;
+  }
+}
+
+}  // namespace
+}  // namespace areagraph::testing
