@@ -1,0 +1,116 @@
+#include "tools/eval/evaluation_report.h"
+
+#include <google/protobuf/util/json_util.h>
+
+#include <cstdio>
+#include <vector>
+
+#include "store/error.h"
+#include "tools/eval/evaluation_report.pb.h"
+
+namespace areagraph {
+
+namespace {
+
+std::string Fixed3(double value) {
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.3f", value);
+  return text;
+}
+
+std::string OffsetText(const MapEvaluation& map) {
+  return std::to_string(map.gt_offset.x) + "," + std::to_string(map.gt_offset.y);
+}
+
+struct Summary {
+  double mcc, precision, recall;
+};
+
+// Mean (or median) of each score over the maps.
+Summary Summarize(const DatasetEvaluation& dataset, bool median) {
+  std::vector<double> mcc, precision, recall;
+  for (const MapEvaluation& map : dataset.maps) {
+    mcc.push_back(map.mcc);
+    precision.push_back(map.precision);
+    recall.push_back(map.recall);
+  }
+  if (median) return {Median(mcc), Median(precision), Median(recall)};
+  return {Mean(mcc), Mean(precision), Mean(recall)};
+}
+
+eval::MapScores MapMessage(const MapEvaluation& map) {
+  eval::MapScores scores;
+  scores.set_map(map.name);
+  scores.set_result(map.result_path);
+  scores.set_gt(map.gt_path);
+  scores.set_gt_style(GroundTruthStyleName(map.gt_style));
+  scores.set_mcc(map.mcc);
+  scores.set_precision(map.precision);
+  scores.set_recall(map.recall);
+  scores.set_segments_found(map.result_segments);
+  scores.set_segments_gt(map.gt_segments);
+  scores.set_scored_pixels(static_cast<uint32_t>(map.scored_pixels));
+  if (map.gt_cropped) {
+    scores.set_gt_offset_x(map.gt_offset.x);
+    scores.set_gt_offset_y(map.gt_offset.y);
+  }
+  return scores;
+}
+
+void SetSummary(const Summary& summary, eval::SummaryScores* scores) {
+  scores->set_mcc(summary.mcc);
+  scores->set_precision(summary.precision);
+  scores->set_recall(summary.recall);
+}
+
+std::string ToJson(const google::protobuf::Message& message) {
+  google::protobuf::util::JsonPrintOptions options;
+  options.add_whitespace = true;
+  options.preserve_proto_field_names = true;
+  std::string json;
+  if (!google::protobuf::util::MessageToJsonString(message, &json, options).ok()) {
+    throw Error("cannot print the scores as JSON");
+  }
+  return json;
+}
+
+}  // namespace
+
+std::string FormatMapText(const MapEvaluation& map) {
+  std::string text = "MCC " + Fixed3(map.mcc) + "\nprecision " + Fixed3(map.precision) +
+                     "\nrecall " + Fixed3(map.recall) + "\nsegments " +
+                     std::to_string(map.result_segments) + "/" + std::to_string(map.gt_segments) +
+                     "\ngt style " + GroundTruthStyleName(map.gt_style) + "\n";
+  if (map.gt_cropped) text += "gt offset " + OffsetText(map) + "\n";
+  return text;
+}
+
+std::string FormatDatasetMarkdown(const DatasetEvaluation& dataset) {
+  std::string table =
+      "| map | MCC | precision | recall | segments found/GT |\n|---|---|---|---|---|\n";
+  for (const MapEvaluation& map : dataset.maps) {
+    table += "| " + map.name + " | " + Fixed3(map.mcc) + " | " + Fixed3(map.precision) + " | " +
+             Fixed3(map.recall) + " | " + std::to_string(map.result_segments) + "/" +
+             std::to_string(map.gt_segments) + " |\n";
+  }
+  const Summary mean = Summarize(dataset, false), median = Summarize(dataset, true);
+  const std::string count = std::to_string(dataset.maps.size()) + " maps";
+  table += "| **mean** | **" + Fixed3(mean.mcc) + "** | " + Fixed3(mean.precision) + " | " +
+           Fixed3(mean.recall) + " | " + count + " |\n";
+  table += "| **median** | **" + Fixed3(median.mcc) + "** | " + Fixed3(median.precision) + " | " +
+           Fixed3(median.recall) + " | |\n";
+  return table;
+}
+
+std::string FormatMapJson(const MapEvaluation& map) { return ToJson(MapMessage(map)); }
+
+std::string FormatDatasetJson(const DatasetEvaluation& dataset) {
+  eval::DatasetScores scores;
+  for (const MapEvaluation& map : dataset.maps) *scores.add_maps() = MapMessage(map);
+  SetSummary(Summarize(dataset, false), scores.mutable_mean());
+  SetSummary(Summarize(dataset, true), scores.mutable_median());
+  for (const std::string& failure : dataset.failures) scores.add_failures(failure);
+  return ToJson(scores);
+}
+
+}  // namespace areagraph

@@ -1,0 +1,68 @@
+#include "tools/eval/map_evaluation.h"
+
+#include <filesystem>
+#include <opencv2/imgcodecs.hpp>
+
+#include "tools/eval/ground_truth_alignment.h"
+#include "tools/eval/label_image.h"
+#include "tools/eval/precision_recall.h"
+#include "tools/eval/zone_overlaps.h"
+
+namespace areagraph {
+
+MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_labels,
+                               MccVariant variant) {
+  const ZoneOverlaps counts = CountZoneOverlaps(result_labels, gt_labels);
+  const PerZoneMcc mcc = ComputePerZoneMcc(counts, variant);
+  const PrecisionRecall precision_recall = ComputePrecisionRecall(counts);
+  MapEvaluation evaluation;
+  evaluation.mcc = mcc.mean;
+  evaluation.precision = precision_recall.precision;
+  evaluation.recall = precision_recall.recall;
+  evaluation.result_segments = static_cast<int>(counts.result_total.size());
+  evaluation.gt_segments = static_cast<int>(counts.gt_total.size());
+  evaluation.scored_pixels = counts.scored_pixels;
+  return evaluation;
+}
+
+namespace {
+
+cv::Mat ReadGroundTruthLabels(const std::string& path, GroundTruthStyle* style) {
+  const cv::Mat raw = ReadImageFile(path);
+  if (*style == GroundTruthStyle::kAuto) *style = DetectGroundTruthStyle(raw);
+  cv::Mat grey;
+  if (*style == GroundTruthStyle::kLines || *style == GroundTruthStyle::kMaorisLines) {
+    // The way Bormann's and MAORIS' evaluations load it.
+    grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
+  }
+  return GroundTruthLabels(raw, grey, *style);
+}
+
+}  // namespace
+
+MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_path,
+                          const EvaluationOptions& options) {
+  cv::Mat result_labels = ReadSegmentationLabels(result_path, options.reading);
+  if (options.drop_result_segments_px > 0) {
+    DropSmallSegments(&result_labels, options.drop_result_segments_px);
+  }
+  GroundTruthStyle style = options.gt_style;
+  cv::Mat gt_labels = ReadGroundTruthLabels(gt_path, &style);
+  cv::Point offset;
+  const bool crop = gt_labels.size() != result_labels.size() || options.gt_offset.has_value();
+  if (crop) {
+    offset = options.gt_offset ? *options.gt_offset
+                               : FindGroundTruthOffset(gt_labels, result_labels).offset;
+    gt_labels = CropGroundTruth(gt_labels, result_labels.size(), offset);
+  }
+  MapEvaluation evaluation = ScoreLabelImages(result_labels, gt_labels, options.mcc_variant);
+  evaluation.name = std::filesystem::path(result_path).stem().string();
+  evaluation.result_path = result_path;
+  evaluation.gt_path = gt_path;
+  evaluation.gt_style = style;
+  evaluation.gt_cropped = crop;
+  evaluation.gt_offset = offset;
+  return evaluation;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <optional>
+#include <string>
+
+#include "tools/eval/ground_truth.h"
+#include "tools/eval/per_zone_mcc.h"
+#include "tools/eval/segmentation_reader.h"
+
+namespace areagraph {
+
+// Everything that decides how one segmentation is scored.
+struct EvaluationOptions {
+  // kAuto guesses per file (DetectGroundTruthStyle).
+  GroundTruthStyle gt_style = GroundTruthStyle::kAuto;
+  MccVariant mcc_variant = MccVariant::kStandard;
+  SegmentationReading reading = SegmentationReading::kAuto;
+  // Where the segmentation lies in a bigger GT; unset = search for it.
+  std::optional<cv::Point> gt_offset;
+  // Result segments of at most this many pixels are dropped before scoring
+  // (0 keeps all).
+  int drop_result_segments_px = 0;
+};
+
+// The scores of one segmentation against its ground truth.
+struct MapEvaluation {
+  std::string name;
+  std::string result_path;
+  std::string gt_path;
+  GroundTruthStyle gt_style = GroundTruthStyle::kAuto;
+  // Whether the GT was cropped to the segmentation, and where: the
+  // segmentation's top-left pixel in the GT.
+  bool gt_cropped = false;
+  cv::Point gt_offset;
+  double mcc = 0;
+  double precision = 0;
+  double recall = 0;
+  // Distinct labels > 0 in the segmentation and in the GT (after the GT
+  // style's own filtering).
+  int result_segments = 0;
+  int gt_segments = 0;
+  // Pixels inside a segment in both images (the MCC's N).
+  int64_t scored_pixels = 0;
+};
+
+// Scores two label images of the same size (CV_32S).
+MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_labels,
+                               MccVariant variant);
+
+// Reads, labels, aligns and scores one segmentation file against one GT file.
+// Throws InputError for unreadable files and sizes that cannot be aligned.
+MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_path,
+                          const EvaluationOptions& options);
+
+}  // namespace areagraph

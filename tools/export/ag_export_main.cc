@@ -1,0 +1,48 @@
+// ag-export: writes a map's Area Graph (the head ag-merge artifact) as a
+// label image, GeoJSON, osmAG XML or JSON.
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <string>
+
+#include "proto/artifacts.pb.h"
+#include "stages/common/command_line.h"
+#include "stages/common/stage.h"
+#include "store/artifact_store.h"
+#include "store/error.h"
+#include "tools/export/area_graph_export.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "Writes the Area Graph of one map in another format.\n"
+      "  labels   16-bit PNG the size of the map: 0 = no area, area id + 1 inside each area\n"
+      "  geojson  FeatureCollection in map metres: areas as Polygons, passages as LineStrings\n"
+      "  osmag    osmAG XML for JOSM: areas as closed ways, passages as two-node ways\n"
+      "  json     the AreaGraph message as JSON"};
+  std::string store_path = "areagraph.db", map_name, format_name, out_path;
+  areagraph::GeoAnchor anchor;
+  app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
+  app.add_option("--map", map_name, "name of the map in the store")->required();
+  app.add_option("--format", format_name, "labels, geojson, osmag or json")->required();
+  app.add_option("--out", out_path, "file to write")->required();
+  app.add_option("--anchor-lat", anchor.lat_deg,
+                 "osmag: latitude of the map's world origin in degrees (default 31.17947)");
+  app.add_option("--anchor-lon", anchor.lon_deg,
+                 "osmag: longitude of the map's world origin in degrees (default 121.59042)");
+  return areagraph::RunCommand("ag-export", app, argc, argv, [&] {
+    areagraph::ExportSettings settings;
+    settings.format = areagraph::ParseExportFormat(format_name);
+    settings.map_name = map_name;
+    settings.anchor = anchor;
+    if (anchor.lat_deg < -89 || anchor.lat_deg > 89 || anchor.lon_deg < -180 ||
+        anchor.lon_deg > 180) {
+      throw areagraph::OptionsError(
+          "--anchor-lat must be in [-89, 89] and --anchor-lon in "
+          "[-180, 180]");
+    }
+    auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
+    const auto graph = areagraph::ReadHeadArtifact<areagraph::proto::AreaGraph>(
+        *store, map_name, areagraph::kMergeStage);
+    areagraph::WriteExportFile(out_path, areagraph::ExportAreaGraph(graph, settings));
+    return 0;
+  });
+}
