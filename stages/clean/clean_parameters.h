@@ -7,7 +7,8 @@ namespace areagraph {
 
 // CleanOptions checked against one map and converted to pixels.
 struct CleanParameters {
-  // k of CGAL's remove_outliers (the point itself counts as one neighbour).
+  // k of CGAL's remove_outliers (which averages over the point itself and k
+  // more).
   int outlier_neighbors = 18;
   // At most this percentage of the occupied cells is taken as outliers.
   double outlier_percent = 1.5;

@@ -8,39 +8,101 @@
 #include "stages/geometry/alpha_shape.h"
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/near_free_mask.h"
 
 namespace areagraph {
 namespace {
 
-// 8-connected regions of non-free cells: label per cell (0 = free) and the
-// number of labels including 0.
-int LabelObstacleRegions(const std::string& cells, int width, int height, cv::Mat* labels) {
+// 8-connected regions of non-free cells: label per cell (0 = free), and for
+// each label 1 when it belongs to the map's outline: touching the image
+// border, or too big for furniture. Label 0 is never outline.
+std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, int height,
+                                          double max_region_cells, cv::Mat* labels) {
+  const int count = width * height;
   cv::Mat obstacle(height, width, CV_8U);
-  for (int index = 0; index < width * height; ++index) {
+  for (int index = 0; index < count; ++index) {
     obstacle.data[index] = cells[index] == proto::CELL_FREE ? 0 : 255;
   }
-  return cv::connectedComponents(obstacle, *labels, 8, CV_32S);
+  // (connectedComponentsWithStats would also give sizes and boxes, but its
+  // statistics cost three times the labelling.)
+  const int region_count = cv::connectedComponents(obstacle, *labels, 8, CV_32S);
+  const int* label = labels->ptr<int>();
+  std::vector<int> size(region_count, 0);
+  for (int index = 0; index < count; ++index) ++size[label[index]];
+  std::vector<uint8_t> outline(region_count, 0);
+  for (int region = 1; region < region_count; ++region) {
+    outline[region] = size[region] > max_region_cells;
+  }
+  for (int col = 0; col < width; ++col) {
+    outline[label[col]] = outline[label[(height - 1) * width + col]] = 1;
+  }
+  for (int row = 0; row < height; ++row) {
+    outline[label[row * width]] = outline[label[row * width + width - 1]] = 1;
+  }
+  outline[0] = 0;
+  return outline;
 }
 
-// Regions that belong to the map's outline: those touching the image border
-// and those too big for furniture.
-std::vector<bool> OutlineRegions(int width, int height, const cv::Mat& labels, int region_count,
-                                 double max_region_cells) {
-  std::vector<bool> outline(region_count, false);
-  std::vector<int> size(region_count, 0);
+// A region's bounding box, inclusive.
+struct CellBox {
+  int col0 = 1 << 30, row0 = 1 << 30, col1 = -1, row1 = -1;
+};
+
+// The cells that enter the alpha shape, in row-major order: every cell of the
+// regions that may be furniture, and the outline's cells next to free space
+// within `reach` (the disk's diameter) of such a region's box. Alpha-shape
+// components are those of the union of the disks around the points (its
+// nerve), so points farther apart never join, and the shape of a piece out of
+// reach of all other points is the same without them: the outline's other
+// cells cannot change what is furniture. No cells when no region may be.
+std::vector<int> AlphaShapeCells(const std::string& cells, int width, int height,
+                                 const cv::Mat& labels, const std::vector<uint8_t>& outline,
+                                 double reach) {
   const int* label = labels.ptr<int>();
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) {
-      const int region = label[row * width + col];
-      if (region == 0) continue;
-      ++size[region];
-      if (row == 0 || col == 0 || row == height - 1 || col == width - 1) outline[region] = true;
+  std::vector<int> inner;
+  std::vector<CellBox> boxes(outline.size());
+  for (int index = 0; index < width * height; ++index) {
+    const int region = label[index];
+    if (region == 0 || outline[region]) continue;
+    inner.push_back(index);
+    CellBox& box = boxes[region];
+    box.col0 = std::min(box.col0, index % width);
+    box.col1 = std::max(box.col1, index % width);
+    box.row0 = std::min(box.row0, index / width);
+    box.row1 = std::max(box.row1, index / width);
+  }
+  if (inner.empty()) return {};
+
+  // Mark the boxes grown by the reach, unless they would cover most of the
+  // map anyway.
+  const int margin = int(std::ceil(reach)) + 1;
+  double marked_area = 0;
+  for (const CellBox& box : boxes) {
+    if (box.col1 < 0) continue;
+    marked_area += double(box.col1 - box.col0 + 1 + 2 * margin) * (box.row1 - box.row0 + 1 + 2 * margin);
+  }
+  const bool mark_all = marked_area > 0.5 * width * height;
+  std::vector<uint8_t> within_reach(mark_all ? 0 : size_t(width) * height, 0);
+  for (const CellBox& box : mark_all ? std::vector<CellBox>() : boxes) {
+    if (box.col1 < 0) continue;
+    const int col0 = std::max(0, box.col0 - margin);
+    const int col1 = std::min(width - 1, box.col1 + margin);
+    for (int row = std::max(0, box.row0 - margin); row <= std::min(height - 1, box.row1 + margin);
+         ++row) {
+      std::fill(within_reach.begin() + row * width + col0, within_reach.begin() + row * width + col1 + 1,
+                1);
     }
   }
-  for (int region = 1; region < region_count; ++region) {
-    if (size[region] > max_region_cells) outline[region] = true;
+
+  const std::vector<uint8_t> near_free = NearFreeMask(cells, width, height);
+  std::vector<int> edge;
+  for (int index = 0; index < width * height; ++index) {
+    if (label[index] == 0 || !outline[label[index]] || !near_free[index]) continue;
+    if (mark_all || within_reach[index]) edge.push_back(index);
   }
-  return outline;
+  std::vector<int> merged(inner.size() + edge.size());
+  std::merge(inner.begin(), inner.end(), edge.begin(), edge.end(), merged.begin());
+  return merged;
 }
 
 proto::Polygon ConvexOutline(const std::vector<int>& cell_indices, int width) {
@@ -73,26 +135,18 @@ double MaxFurnitureRegionCells(double alpha_radius_px, double max_perimeter_px) 
 FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, double alpha_radius_px,
                                  double max_perimeter_px) {
   cv::Mat labels;
-  const int region_count = LabelObstacleRegions(cells, width, height, &labels);
-  const std::vector<bool> outline =
-      OutlineRegions(width, height, labels, region_count,
-                     MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px));
+  const std::vector<uint8_t> outline = LabelObstacleRegions(
+      cells, width, height, MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px), &labels);
+  const int region_count = int(outline.size());
   const int* label = labels.ptr<int>();
 
-  const CellStates grid(cells, width, height);
-  std::vector<int> point_cells;
-  std::vector<Eigen::Vector2d> points;
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) {
-      const int index = row * width + col;
-      if (label[index] == 0) continue;
-      if (outline[label[index]] && !grid.TouchesFree(col, row)) continue;
-      point_cells.push_back(index);
-      points.push_back(CellCentre(col, row));
-    }
-  }
+  const std::vector<int> point_cells =
+      AlphaShapeCells(cells, width, height, labels, outline, 2 * alpha_radius_px);
   FurnitureRemoval removal;
-  if (points.empty()) return removal;
+  if (point_cells.empty()) return removal;
+  std::vector<Eigen::Vector2d> points;
+  points.reserve(point_cells.size());
+  for (const int index : point_cells) points.push_back(CellCentre(index % width, index / width));
 
   // Pieces: alpha-shape components joined through shared obstacle regions.
   const AlphaComplex complex = ComputeAlphaComplex(points, alpha_radius_px);
@@ -117,10 +171,11 @@ FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, doub
     }
   }
 
-  // Every cell of a furniture piece's regions becomes free.
+  // Every cell of a furniture piece's regions becomes free. Regions that are
+  // not outline entered the alpha shape in full, so their cells are points.
   std::vector<std::vector<int>> piece_cells(piece_count);
-  for (int index = 0; index < width * height; ++index) {
-    if (label[index] == 0 || outline[label[index]]) continue;
+  for (const int index : point_cells) {
+    if (outline[label[index]]) continue;
     const int piece = piece_of_component[component_of_region[label[index]]];
     if (is_outline[piece] || perimeter[piece] >= max_perimeter_px) continue;
     piece_cells[piece].push_back(index);

@@ -1,5 +1,9 @@
 #include "stages/clean/outlier_removal.h"
 
+#include <algorithm>
+#include <cmath>
+
+#include "stages/clean/outlier_candidates.h"
 #include "stages/clean/outlier_points.h"
 #include "stages/geometry/cell_states.h"
 
@@ -26,6 +30,21 @@ bool CanFree(const CellStates& grid, int col, int row) {
   return runs == 1;
 }
 
+// The candidates and every occupied cell within their reach: the points
+// among which each candidate's nearest neighbours are the same as among all
+// occupied cells. Flat indices, increasing.
+std::vector<int> CandidateNeighbourhoods(const OccupiedRows& occupied,
+                                         const std::vector<OutlierCandidate>& candidates) {
+  std::vector<int> members;
+  for (const OutlierCandidate& candidate : candidates) {
+    occupied.ForEachWithin(candidate.cell % occupied.width(), candidate.cell / occupied.width(),
+                           candidate.reach2, [&](int cell, long) { members.push_back(cell); });
+  }
+  std::sort(members.begin(), members.end());
+  members.erase(std::unique(members.begin(), members.end()), members.end());
+  return members;
+}
+
 }  // namespace
 
 double StraightWallScore(int neighbors) {
@@ -40,25 +59,51 @@ double StraightWallScore(int neighbors) {
 
 std::vector<int> RemoveOutlierCells(std::string& cells, int width, int height, int neighbors,
                                     double percent) {
-  std::vector<int> occupied;
+  const OccupiedRows occupied(cells, width, height);
+  if (occupied.count() < 2 || percent <= 0) return {};
+  // CGAL 5.5 averages over neighbors + 1 points (the point itself first); a
+  // tiny margin so that points exactly as dense as a straight wall stay.
+  const double min_score = StraightWallScore(neighbors + 1) * (1 + 1e-9);
+  // remove_outliers compares scores with the square of threshold_distance.
+  const double threshold = std::sqrt(min_score);
+  const std::vector<OutlierCandidate> candidates =
+      FindOutlierCandidates(occupied, neighbors, threshold * threshold);
+
+  // remove_outliers itself, on the candidates and their neighbourhoods only:
+  // it scores each candidate as it would among all occupied cells, and keeps
+  // those at or above the threshold (the percentage is applied below).
+  const std::vector<int> members = CandidateNeighbourhoods(occupied, candidates);
   std::vector<Eigen::Vector2d> centres;
-  for (int index = 0; index < width * height; ++index) {
-    if (cells[index] != proto::CELL_OCCUPIED) continue;
-    occupied.push_back(index);
-    centres.push_back(CellCentre(index % width, index / width));
+  centres.reserve(members.size());
+  for (const int index : members) centres.push_back(CellCentre(index % width, index / width));
+  std::vector<OutlierCandidate> outliers;
+  size_t next = 0;
+  for (const int point : FindOutlierPoints(centres, neighbors, 100, min_score)) {
+    while (next < candidates.size() && candidates[next].cell < members[point]) ++next;
+    if (next < candidates.size() && candidates[next].cell == members[point]) {
+      outliers.push_back(candidates[next]);
+    }
   }
-  if (occupied.size() < 2) return {};
-  // A tiny margin so that points exactly as dense as a straight wall stay.
-  const double min_score = StraightWallScore(neighbors) * (1 + 1e-9);
-  const std::vector<int> outliers = FindOutlierPoints(centres, neighbors, percent, min_score);
+  // At most `percent` % of all occupied cells, the highest scores first, as
+  // remove_outliers counts them (ties go to the earlier cell).
+  const size_t keep = size_t(double(occupied.count()) * ((100.0 - percent) / 100.0));
+  const size_t most = size_t(occupied.count()) - keep;
+  if (outliers.size() > most) {
+    std::stable_sort(outliers.begin(), outliers.end(),
+                     [](const OutlierCandidate& a, const OutlierCandidate& b) {
+                       return a.score > b.score;
+                     });
+    outliers.resize(most);
+    std::sort(outliers.begin(), outliers.end(),
+              [](const OutlierCandidate& a, const OutlierCandidate& b) { return a.cell < b.cell; });
+  }
 
   const CellStates grid(cells, width, height);
   std::vector<int> removed;
-  for (const int point : outliers) {
-    const int index = occupied[point];
-    if (CanFree(grid, index % width, index / width)) {
-      cells[index] = proto::CELL_FREE;
-      removed.push_back(index);
+  for (const OutlierCandidate& outlier : outliers) {
+    if (CanFree(grid, outlier.cell % width, outlier.cell / width)) {
+      cells[outlier.cell] = proto::CELL_FREE;
+      removed.push_back(outlier.cell);
     }
   }
   return removed;

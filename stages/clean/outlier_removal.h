@@ -7,6 +7,10 @@ namespace areagraph {
 
 // Step (a) of the paper's preprocessing: CGAL's remove_outliers over the
 // centres of all occupied cells (at most `percent` % of them, k neighbours).
+// Only the cells that can reach the score threshold (FindOutlierCandidates)
+// and their neighbourhoods go through remove_outliers, which scores them
+// exactly as among all occupied cells; when more than `percent` % reach it,
+// the highest scores win, ties going to the earlier cell.
 // What it finds only becomes free where that cannot change the map's
 // structure, checked cell by cell in row-major order on the updated grid:
 // - the cell is occupied and has free 8-neighbours;
@@ -20,8 +24,9 @@ namespace areagraph {
 std::vector<int> RemoveOutlierCells(std::string& cells, int width, int height, int neighbors,
                                     double percent);
 
-// The remove_outliers score (mean squared distance to the k nearest points,
-// itself included) of a point inside an endless straight one-pixel line.
+// The mean squared distance from a point inside an endless straight one-pixel
+// line to its `neighbors` nearest points of the line, itself included. (The
+// remove_outliers score with k neighbours averages over k + 1 points.)
 double StraightWallScore(int neighbors);
 
 }  // namespace areagraph

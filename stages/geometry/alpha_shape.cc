@@ -1,33 +1,21 @@
 #include "stages/geometry/alpha_shape.h"
 
-#include <CGAL/Alpha_shape_2.h>
-#include <CGAL/Alpha_shape_face_base_2.h>
-#include <CGAL/Alpha_shape_vertex_base_2.h>
-
-#include <numeric>
-
 #include "stages/geometry/cgal_types.h"
 #include "stages/geometry/disjoint_sets.h"
 
 namespace areagraph {
 namespace {
 
-using cgal::Kernel;
-using AlphaVertexBase =
-    CGAL::Alpha_shape_vertex_base_2<Kernel,
-                                    CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>>;
-using AlphaFaceBase = CGAL::Alpha_shape_face_base_2<Kernel>;
-using AlphaTds = CGAL::Triangulation_data_structure_2<AlphaVertexBase, AlphaFaceBase>;
-using AlphaDelaunay = CGAL::Delaunay_triangulation_2<Kernel, AlphaTds>;
-using AlphaShape = CGAL::Alpha_shape_2<AlphaDelaunay>;
+using cgal::SiteDelaunay;
+using Face = SiteDelaunay::Face_handle;
 
-// Points on one line (or a single point): Alpha_shape_2 only handles full
-// dimension, so join consecutive points closer than the disk's diameter.
-void CollinearComplex(const AlphaDelaunay& dt, double alpha_radius, DisjointSets& sets,
+// Points on one line (or a single point): there are no faces, so join
+// consecutive points closer than the disk's diameter.
+void CollinearComplex(const SiteDelaunay& dt, double alpha_radius, DisjointSets& sets,
                       AlphaComplex& complex) {
   for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const auto a = e->first->vertex(AlphaDelaunay::cw(e->second));
-    const auto b = e->first->vertex(AlphaDelaunay::ccw(e->second));
+    const auto a = e->first->vertex(SiteDelaunay::cw(e->second));
+    const auto b = e->first->vertex(SiteDelaunay::ccw(e->second));
     if (CGAL::squared_distance(a->point(), b->point()) <= 4 * alpha_radius * alpha_radius) {
       sets.Union(a->info(), b->info());
       complex.boundary_edges.push_back({a->info(), b->info(), true});
@@ -37,33 +25,79 @@ void CollinearComplex(const AlphaDelaunay& dt, double alpha_radius, DisjointSets
 
 }  // namespace
 
+// The complex for one alpha straight from the Delaunay triangulation, with
+// the rules (and the very functors, so ties on the pixel grid come out the
+// same) of CGAL's Alpha_shape_2 in GENERAL mode, which would first sort every
+// face and edge by the alpha at which it appears:
+// - a finite face is interior when its squared circumradius is <= alpha;
+// - an edge of one or two interior faces is regular or interior;
+// - an edge of no interior face is singular when its own smallest circle
+//   (half its length) fits, i.e. squared half-length <= alpha, and is empty:
+//   no opposite vertex lies strictly inside it ("not attached").
 AlphaComplex ComputeAlphaComplex(const std::vector<Eigen::Vector2d>& points, double alpha_radius) {
   AlphaComplex complex;
   DisjointSets sets(points.size());
   const auto indexed = cgal::IndexedPoints(points);
-  AlphaDelaunay dt(indexed.begin(), indexed.end());
+  SiteDelaunay dt(indexed.begin(), indexed.end());
   if (dt.dimension() < 2) {
     CollinearComplex(dt, alpha_radius, sets, complex);
-  } else {
-    const AlphaShape shape(dt, alpha_radius * alpha_radius, AlphaShape::GENERAL);
-    for (auto e = shape.finite_edges_begin(); e != shape.finite_edges_end(); ++e) {
-      const auto type = shape.classify(*e);
-      if (type == AlphaShape::EXTERIOR) continue;
-      auto face = e->first;
-      int i = e->second;
-      sets.Union(face->vertex(AlphaShape::cw(i))->info(), face->vertex(AlphaShape::ccw(i))->info());
-      if (type == AlphaShape::INTERIOR) continue;
-      if (type == AlphaShape::REGULAR && shape.classify(face) != AlphaShape::INTERIOR) {
-        const auto neighbor = face->neighbor(i);
-        i = neighbor->index(face);
+    complex.component_of_point = sets.DenseLabels(&complex.component_count);
+    return complex;
+  }
+
+  const double alpha = alpha_radius * alpha_radius;
+  const auto& traits = dt.geom_traits();
+  const auto squared_radius = traits.compute_squared_radius_2_object();
+  const auto side_of_bounded_circle = traits.side_of_bounded_circle_2_object();
+  // Face info: the finite faces' numbers in iteration order, -1 for the
+  // infinite ones.
+  std::vector<char> interior;
+  interior.reserve(dt.number_of_faces());
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    f->info() = int(interior.size());
+    const double face_alpha =
+        squared_radius(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    interior.push_back(face_alpha <= alpha);
+  }
+  auto is_interior = [&](const Face& face) { return face->info() >= 0 && interior[face->info()]; };
+  // An opposite vertex strictly inside the edge's diametral circle.
+  auto attached = [&](const Face& face, int i) {
+    return face->info() >= 0 &&
+           side_of_bounded_circle(face->vertex(SiteDelaunay::cw(i))->point(),
+                                  face->vertex(SiteDelaunay::ccw(i))->point(),
+                                  face->vertex(i)->point()) == CGAL::ON_BOUNDED_SIDE;
+  };
+
+  // Each edge once, from its finite face with the lower number. (CGAL's edge
+  // iterator picks the side by comparing face addresses, which would make
+  // the order of boundary_edges depend on the heap's history.)
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    for (int k = 0; k < 3; ++k) {
+      const Face neighbor = f->neighbor(k);
+      if (neighbor->info() >= 0 && neighbor->info() < f->info()) continue;
+      const int interior_faces = is_interior(f) + is_interior(neighbor);
+      const auto a = f->vertex(SiteDelaunay::cw(k));
+      const auto b = f->vertex(SiteDelaunay::ccw(k));
+      bool singular = false;
+      if (interior_faces == 0) {
+        if (squared_radius(b->point(), a->point()) > alpha) continue;
+        if (attached(f, k) || attached(neighbor, neighbor->index(f))) continue;
+        singular = true;
+      }
+      sets.Union(a->info(), b->info());
+      if (interior_faces == 2) continue;
+      Face face = f;
+      int i = k;
+      if (!singular && !is_interior(f)) {
+        i = neighbor->index(f);
         face = neighbor;
       }
       // CGAL faces are counter-clockwise in the plane's own (y up) sense, so
       // the face lies on the CGAL-left of ccw(i) -> cw(i), which is the left
       // of cw(i) -> ccw(i) when y points down.
-      complex.boundary_edges.push_back({face->vertex(AlphaShape::cw(i))->info(),
-                                        face->vertex(AlphaShape::ccw(i))->info(),
-                                        type == AlphaShape::SINGULAR});
+      complex.boundary_edges.push_back({face->vertex(SiteDelaunay::cw(i))->info(),
+                                        face->vertex(SiteDelaunay::ccw(i))->info(), singular});
     }
   }
   complex.component_of_point = sets.DenseLabels(&complex.component_count);

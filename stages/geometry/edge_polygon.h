@@ -1,9 +1,9 @@
 #pragma once
 
-#include <vector>
+#include <google/protobuf/repeated_field.h>
 
 #include <Eigen/Core>
-#include <google/protobuf/repeated_field.h>
+#include <vector>
 
 #include "proto/artifacts.pb.h"
 

@@ -1,27 +1,26 @@
 #include "stages/geometry/obstacle_sites.h"
 
+#include "proto/artifacts.pb.h"
 #include "stages/geometry/cell_states.h"
+#include "stages/geometry/near_free_mask.h"
 
 namespace areagraph {
 
 std::vector<int> ObstacleSiteCells(const std::string& cells, int width, int height) {
-  const CellStates grid(cells, width, height);
+  const std::vector<uint8_t> near_free = NearFreeMask(cells, width, height);
   std::vector<int> sites;
-  for (int row = 0; row < height; ++row) {
-    for (int col = 0; col < width; ++col) {
-      if (!grid.IsFree(col, row) && grid.TouchesFree(col, row)) {
-        sites.push_back(grid.Index(col, row));
-      }
-    }
+  const int count = width * height;
+  for (int index = 0; index < count; ++index) {
+    if (near_free[index] && cells[index] != proto::CELL_FREE) sites.push_back(index);
   }
   return sites;
 }
 
 std::vector<Eigen::Vector2d> ObstacleSites(const std::string& cells, int width, int height) {
+  const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
   std::vector<Eigen::Vector2d> centres;
-  for (const int index : ObstacleSiteCells(cells, width, height)) {
-    centres.push_back(CellCentre(index % width, index / width));
-  }
+  centres.reserve(site_cells.size());
+  for (const int index : site_cells) centres.push_back(CellCentre(index % width, index / width));
   return centres;
 }
 

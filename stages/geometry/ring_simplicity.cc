@@ -13,7 +13,9 @@ struct Segment {
   int index;
 };
 
-double Cross(const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); }
+double Cross(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
+  return u.x() * v.y() - u.y() * v.x();
+}
 
 int Orientation(const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
   const double c = Cross(q - p, r - p);

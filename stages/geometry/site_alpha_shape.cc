@@ -23,8 +23,9 @@ struct FaceInfo {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Alpha_shape_vertex_base_2<Kernel>;
-using FaceBase = CGAL::Alpha_shape_face_base_2<
-    Kernel, CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
+using FaceBase =
+    CGAL::Alpha_shape_face_base_2<Kernel,
+                                  CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 using AlphaShape = CGAL::Alpha_shape_2<Delaunay>;
@@ -76,8 +77,7 @@ struct SiteAlphaShape::Impl {
   // Labels edge-connected groups of `member` faces, crossing only edges that
   // `connects` accepts; `label` selects the field to write. Returns the count.
   int LabelRegions(const std::function<bool(const Face&)>& member,
-                   const std::function<bool(const Face&, int)>& connects,
-                   int FaceInfo::*label) {
+                   const std::function<bool(const Face&, int)>& connects, int FaceInfo::*label) {
     int count = 0;
     for (Face face : shape.finite_face_handles()) face->info().*label = -1;
     for (Face seed : shape.finite_face_handles()) {
@@ -175,22 +175,10 @@ proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
   Impl& impl = *impl_;
   impl.biggest_region = -1;
   if (!impl.HasFaces()) return proto::Polygon();
-  const int count = impl.LabelRegions(
-      [&](const Face& face) { return impl.shape.classify(face) == AlphaShape::INTERIOR; },
-      [](const Face&, int) { return true; }, &FaceInfo::filled_region);
-  std::vector<double> area(count, 0.0);
-  for (Face face : impl.shape.finite_face_handles()) {
-    if (face->info().filled_region >= 0) area[face->info().filled_region] += TriangleArea(face);
-  }
-  for (int region = 0; region < count; ++region) {
-    if (impl.biggest_region < 0 || area[region] > area[impl.biggest_region]) {
-      impl.biggest_region = region;
-    }
-  }
-  if (impl.biggest_region < 0) return proto::Polygon();
 
-  // Everything reachable from infinity without crossing the biggest region
-  // is outside its outer ring.
+  // Outside: what infinity reaches without crossing the alpha complex. Edges
+  // of the complex (singular ones too) are walls, so a thin wall whose
+  // sliver triangles are wider than alpha still closes the map.
   std::deque<Face> queue;
   for (Face face : impl.shape.all_face_handles()) {
     face->info().outside = impl.shape.is_infinite(face);
@@ -201,11 +189,25 @@ proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
     queue.pop_front();
     for (int i = 0; i < 3; ++i) {
       const Face next = face->neighbor(i);
-      if (next->info().outside || next->info().filled_region == impl.biggest_region) continue;
+      if (next->info().outside || impl.shape.classify(face, i) != AlphaShape::EXTERIOR) continue;
       next->info().outside = true;
       queue.push_back(next);
     }
   }
+  // The enclosed faces in edge-connected pieces; the biggest is the map.
+  const int count =
+      impl.LabelRegions([](const Face& face) { return !face->info().outside; },
+                        [](const Face&, int) { return true; }, &FaceInfo::filled_region);
+  std::vector<double> area(count, 0.0);
+  for (Face face : impl.shape.finite_face_handles()) {
+    if (face->info().filled_region >= 0) area[face->info().filled_region] += TriangleArea(face);
+  }
+  for (int region = 0; region < count; ++region) {
+    if (impl.biggest_region < 0 || area[region] > area[impl.biggest_region]) {
+      impl.biggest_region = region;
+    }
+  }
+  if (impl.biggest_region < 0) return proto::Polygon();
   const auto rings = impl.RegionRings(&FaceInfo::filled_region, impl.biggest_region);
   const auto found = rings.find(impl.biggest_region);
   if (found == rings.end()) return proto::Polygon();
@@ -215,19 +217,18 @@ proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
 bool SiteAlphaShape::InsideBiggestShape(const Eigen::Vector2d& point) {
   if (!impl_->HasFaces() || impl_->biggest_region < 0) return false;
   const Face face = impl_->Locate(point);
-  return !impl_->shape.is_infinite(face) && !face->info().outside;
+  return !impl_->shape.is_infinite(face) && face->info().filled_region == impl_->biggest_region;
 }
 
-int SiteAlphaShape::DetectRooms(const std::function<bool(const Eigen::Vector2d&)>& inside_boundary) {
+int SiteAlphaShape::DetectRooms(
+    const std::function<bool(const Eigen::Vector2d&)>& inside_boundary) {
   Impl& impl = *impl_;
   if (!impl.HasFaces()) return 0;
   return impl.LabelRegions(
       [&](const Face& face) {
         return impl.shape.classify(face) == AlphaShape::EXTERIOR && inside_boundary(Centroid(face));
       },
-      [&](const Face& face, int i) {
-        return impl.shape.classify(face, i) == AlphaShape::EXTERIOR;
-      },
+      [&](const Face& face, int i) { return impl.shape.classify(face, i) == AlphaShape::EXTERIOR; },
       &FaceInfo::room);
 }
 

@@ -1,10 +1,9 @@
 #pragma once
 
+#include <Eigen/Core>
 #include <functional>
 #include <memory>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "proto/geometry.pb.h"
 #include "stages/geometry/edge_polygon.h"
@@ -13,8 +12,8 @@ namespace areagraph {
 
 // The Delaunay triangulation of obstacle sites, classified by one alpha
 // (CGAL Alpha_shape_2, GENERAL mode; alpha = squared radius). Used twice:
-// ag-prune takes the biggest filled region as the map boundary, ag-cut takes
-// the empty regions (faces wider than the alpha disk) as rooms.
+// ag-prune takes the biggest region the shape encloses as the map boundary,
+// ag-cut takes the empty regions (faces wider than the alpha disk) as rooms.
 class SiteAlphaShape {
  public:
   SiteAlphaShape(const PointList& sites, double alpha_radius_px);
@@ -24,11 +23,13 @@ class SiteAlphaShape {
 
   // --- The boundary (ag-prune) ---
 
-  // Finds the biggest edge-connected group of faces inside the alpha shape
-  // and returns its outline (outer ring only: holes are big open rooms, which
-  // still belong to the map). Returns an empty polygon when no face is inside.
+  // The biggest alpha shape: the faces that the alpha complex (its regular
+  // and singular edges) encloses, that is that infinity cannot reach without
+  // crossing one of its edges, grouped into edge-connected pieces; returns
+  // the outer ring of the piece with the biggest area (rooms wider than alpha
+  // are inside it, not holes). Empty when nothing is enclosed.
   proto::Polygon BiggestShapeOutline();
-  // True when `point` lies inside the outline found by BiggestShapeOutline.
+  // True when `point` lies in the piece found by BiggestShapeOutline.
   bool InsideBiggestShape(const Eigen::Vector2d& point);
 
   // --- Rooms (ag-cut) ---

@@ -11,26 +11,32 @@ namespace {
 using cgal::SiteDelaunay;
 using Face = SiteDelaunay::Face_handle;
 
-// Numbers the finite faces (face info) and merges neighbours whose
-// circumcircles are the same circle: the fourth point lying exactly on the
-// circle is an exact predicate, so no tolerance is involved.
-DisjointSets MergeCocircularFaces(SiteDelaunay& dt, int* face_count) {
+// Numbers the finite faces (face info, in iteration order; infinite faces
+// get -1).
+int NumberFaces(SiteDelaunay& dt) {
   int count = 0;
   for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) f->info() = count++;
-  DisjointSets sets(count);
+  return count;
+}
+
+// Merges neighbouring faces whose circumcircles are the same circle: the
+// fourth point lying exactly on the circle is an exact predicate, so no
+// tolerance is involved.
+DisjointSets MergeCocircularFaces(const SiteDelaunay& dt, int face_count) {
+  DisjointSets sets(face_count);
   const auto side_of_circle = dt.geom_traits().side_of_oriented_circle_2_object();
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const Face f = e->first;
-    const Face n = f->neighbor(e->second);
-    if (dt.is_infinite(f) || dt.is_infinite(n)) continue;
-    const auto& opposite = n->vertex(n->index(f))->point();
-    if (side_of_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
-                       opposite) == CGAL::ON_ORIENTED_BOUNDARY) {
-      sets.Union(f->info(), n->info());
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    for (int i = 0; i < 3; ++i) {
+      const Face n = f->neighbor(i);
+      if (n->info() < f->info()) continue;  // infinite, or seen from the other side
+      const auto& opposite = n->vertex(n->index(f))->point();
+      if (side_of_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
+                         opposite) == CGAL::ON_ORIENTED_BOUNDARY) {
+        sets.Union(f->info(), n->info());
+      }
     }
   }
-  *face_count = count;
   return sets;
 }
 
@@ -65,8 +71,8 @@ proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& si
   SiteDelaunay dt(indexed.begin(), indexed.end());
   if (dt.dimension() < 2) return diagram;
 
-  int face_count = 0;
-  DisjointSets cocircular = MergeCocircularFaces(dt, &face_count);
+  const int face_count = NumberFaces(dt);
+  DisjointSets cocircular = MergeCocircularFaces(dt, face_count);
   int vertex_count = 0;
   const std::vector<int> vertex_of_face = cocircular.DenseLabels(&vertex_count);
 
@@ -87,48 +93,49 @@ proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& si
     vertex->set_clearance_px(clearances[v]);
   }
 
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    // Walk from a finite face towards its neighbour across the Delaunay edge.
-    Face face = e->first;
-    int i = e->second;
-    if (dt.is_infinite(face)) {
-      const Face neighbor = face->neighbor(i);
-      i = neighbor->index(face);
-      face = neighbor;
-    }
-    const Face other = face->neighbor(i);
-    const bool is_ray = dt.is_infinite(other);
-    if (is_ray && !options.keep_rays) continue;
-    const int source = vertex_of_face[face->info()];
-    const int target = is_ray ? -1 : vertex_of_face[other->info()];
-    if (source == target) continue;
+  // Each Delaunay edge once, from its finite face with the lower number
+  // towards the other face. (CGAL's edge iterator picks the side by comparing
+  // face addresses, which would make the output depend on the heap's history.)
+  diagram.mutable_edges()->Reserve(int(dt.number_of_vertices() + face_count));
+  for (auto face = dt.finite_faces_begin(); face != dt.finite_faces_end(); ++face) {
+    for (int i = 0; i < 3; ++i) {
+      const Face other = face->neighbor(i);
+      const bool is_ray = other->info() < 0;
+      if (!is_ray && other->info() < face->info()) continue;
+      if (is_ray && !options.keep_rays) continue;
+      const int source = vertex_of_face[face->info()];
+      const int target = is_ray ? -1 : vertex_of_face[other->info()];
+      if (source == target) continue;
 
-    // `face` is counter-clockwise in CGAL's (y up) sense, so moving out of it
-    // across the edge ccw(i) -> cw(i), vertex ccw(i) is on the CGAL-right,
-    // which is the left when y points down.
-    const auto left = face->vertex(SiteDelaunay::ccw(i));
-    const auto right = face->vertex(SiteDelaunay::cw(i));
-    const Eigen::Vector2d left_site = cgal::ToEigen(left->point());
-    const Eigen::Vector2d right_site = cgal::ToEigen(right->point());
+      // `face` is counter-clockwise in CGAL's (y up) sense, so moving out of
+      // it across the edge ccw(i) -> cw(i), vertex ccw(i) is on the
+      // CGAL-right, which is the left when y points down.
+      const auto left = face->vertex(SiteDelaunay::ccw(i));
+      const auto right = face->vertex(SiteDelaunay::cw(i));
+      const Eigen::Vector2d left_site = cgal::ToEigen(left->point());
+      const Eigen::Vector2d right_site = cgal::ToEigen(right->point());
 
-    proto::VoronoiEdge* edge = diagram.add_edges();
-    edge->set_source(source);
-    edge->set_target(target);
-    edge->set_left_site(left->info());
-    edge->set_right_site(right->info());
-    if (is_ray) {
-      // Perpendicular to the hull edge, pointing away from the face: the face
-      // is on the CGAL-left of left_site -> right_site, so take its right normal.
-      const Eigen::Vector2d along = right_site - left_site;
-      const Eigen::Vector2d direction = Eigen::Vector2d(along.y(), -along.x()).normalized();
-      SetPoint(direction, edge->mutable_ray_direction());
-      edge->set_clearance_px(EdgeClearance(positions[source], direction, INFINITY,
-                                           clearances[source], clearances[source], left_site,
-                                           right_site));
-    } else {
-      edge->set_clearance_px(EdgeClearance(positions[source], positions[target] - positions[source],
-                                           1.0, clearances[source], clearances[target], left_site,
-                                           right_site));
+      proto::VoronoiEdge* edge = diagram.add_edges();
+      edge->set_source(source);
+      edge->set_target(target);
+      edge->set_left_site(left->info());
+      edge->set_right_site(right->info());
+      if (is_ray) {
+        // Perpendicular to the hull edge, pointing away from the face: the
+        // face is on the CGAL-left of left_site -> right_site, so take its
+        // right normal.
+        const Eigen::Vector2d along = right_site - left_site;
+        const Eigen::Vector2d direction = Eigen::Vector2d(along.y(), -along.x()).normalized();
+        SetPoint(direction, edge->mutable_ray_direction());
+        edge->set_clearance_px(EdgeClearance(positions[source], direction, INFINITY,
+                                             clearances[source], clearances[source], left_site,
+                                             right_site));
+      } else {
+        edge->set_clearance_px(EdgeClearance(positions[source],
+                                             positions[target] - positions[source], 1.0,
+                                             clearances[source], clearances[target], left_site,
+                                             right_site));
+      }
     }
   }
   return diagram;

@@ -1,0 +1,152 @@
+#include "stages/cut/cut_graph_builder.h"
+
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include "stages/cut/cut_planning.h"
+#include "stages/cut/edge_track.h"
+#include "stages/cut/room_width.h"
+#include "stages/geometry/cell_grid.h"
+#include "stages/geometry/obstacle_sites.h"
+#include "stages/geometry/polygon_raster.h"
+#include "stages/geometry/site_alpha_shape.h"
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+// The piece closest to a polygon that the edge absorbed. A dead end's
+// polygon starts at the junction where it was removed, which lies on the
+// edge's path, so this finds the piece it hung from.
+size_t NearestPiece(const std::vector<proto::GraphEdge>& pieces, const proto::Ring& ring) {
+  size_t nearest = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < pieces.size(); ++k) {
+    for (const proto::Point2& p : pieces[k].path()) {
+      for (const proto::Point2& q : ring.points()) {
+        const double d = std::hypot(p.x() - q.x(), p.y() - q.y());
+        if (d < best) best = d, nearest = k;
+      }
+    }
+  }
+  return nearest;
+}
+
+void CheckTopology(const proto::TopologyGraph& topology, const std::string& what) {
+  const int vertex_count = topology.vertices_size();
+  for (const proto::GraphEdge& edge : topology.edges()) {
+    if (edge.source() < 0 || edge.source() >= vertex_count || edge.target() < 0 ||
+        edge.target() >= vertex_count) {
+      throw InputError(what + ": the Topology Graph artifact is corrupt: edge " +
+                       std::to_string(edge.id()) + " names a vertex that does not exist");
+    }
+  }
+  if (topology.edges_size() == 0) {
+    throw InputError(what + ": the Topology Graph has no edges; run ag-prune again");
+  }
+}
+
+// A room must at least hold the disk of diameter W; smaller ones are slivers
+// where a corridor about W wide bulges a little.
+void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count) {
+  const double min_area = M_PI * room_width_px * room_width_px / 4;
+  const std::vector<double> areas = shape->RoomAreas();
+  std::vector<int> renumber(*room_count, -1);
+  int kept = 0;
+  for (int room = 0; room < *room_count; ++room) {
+    if (room < static_cast<int>(areas.size()) && areas[room] >= min_area) renumber[room] = kept++;
+  }
+  shape->RenumberRooms(renumber);
+  *room_count = kept;
+}
+
+}  // namespace
+
+proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
+                              const proto::CutOptions& options, const std::string& map_name) {
+  const std::string what = "map '" + map_name + "'";
+  const CellGrid grid(map, what);
+  const double room_width_px = RoomWidthM(options, map.frame()) / grid.resolution_m();
+  CheckTopology(topology, what);
+
+  const cv::Mat inside = PolygonMask(topology.boundary(), cv::Size(grid.width(), grid.height()));
+  auto inside_boundary = [&](const Eigen::Vector2d& p) {
+    const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
+    return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
+  };
+  SiteAlphaShape shape(ObstacleSites(map.cells(), grid.width(), grid.height()), room_width_px / 2);
+  int room_count = shape.DetectRooms(inside_boundary);
+  DropSmallRooms(room_width_px, &shape, &room_count);
+  auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };
+
+  proto::CutGraph out;
+  out.set_format_version(1);
+  *out.mutable_frame() = map.frame();
+  *out.mutable_boundary() = topology.boundary();
+  *out.mutable_vertices() = topology.vertices();
+
+  std::map<int, int> room_ids;  // old room id -> kept room id
+  auto keep_room = [&](int room) {
+    if (room < 0) return -1;
+    auto [it, added] = room_ids.emplace(room, static_cast<int>(room_ids.size()));
+    return it->second;
+  };
+
+  for (const proto::GraphEdge& edge : topology.edges()) {
+    const EdgeTrack track(edge);
+    const bool source_dead = topology.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END;
+    const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
+    const std::vector<EdgePiece> plan =
+        PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at);
+
+    std::vector<proto::GraphEdge> pieces;
+    if (plan.size() == 1) {
+      pieces.push_back(edge);
+      pieces.back().clear_absorbed();
+    } else {
+      for (const EdgePiece& piece : plan) pieces.push_back(track.Piece(piece.begin, piece.end));
+    }
+    int from_vertex = edge.source();
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      proto::GraphEdge& piece = pieces[k];
+      piece.set_room_id(keep_room(plan[k].room));
+      piece.set_source(from_vertex);
+      if (k + 1 == pieces.size()) {
+        piece.set_target(edge.target());
+        break;
+      }
+      // A cut: a new passage vertex between this piece and the next.
+      proto::GraphVertex* vertex = out.add_vertices();
+      vertex->set_id(out.vertices_size() - 1);
+      *vertex->mutable_position() = piece.path(piece.path_size() - 1);
+      vertex->set_kind(proto::VERTEX_PASSAGE);
+      vertex->set_clearance_px(piece.clearance_px(piece.clearance_px_size() - 1));
+      proto::PassagePoint* passage = out.add_passage_points();
+      passage->set_id(out.passage_points_size() - 1);
+      *passage->mutable_position() = vertex->position();
+      passage->set_vertex(vertex->id());
+      passage->set_clearance_px(vertex->clearance_px());
+      piece.set_target(vertex->id());
+      from_vertex = vertex->id();
+    }
+    for (const proto::Polygon& absorbed : edge.absorbed()) {
+      const size_t k = pieces.size() == 1 ? 0 : NearestPiece(pieces, absorbed.outer());
+      *pieces[k].add_absorbed() = absorbed;
+    }
+    for (proto::GraphEdge& piece : pieces) {
+      piece.set_id(out.edges_size());
+      *out.add_edges() = std::move(piece);
+    }
+  }
+
+  std::vector<int> renumber(room_count, -1);
+  for (const auto& [old_id, new_id] : room_ids) renumber[old_id] = new_id;
+  shape.RenumberRooms(renumber);
+  std::vector<proto::Polygon> outlines = shape.RoomOutlines();
+  outlines.resize(room_ids.size());
+  for (proto::Polygon& outline : outlines) *out.add_room_shapes() = std::move(outline);
+  return out;
+}
+
+}  // namespace areagraph

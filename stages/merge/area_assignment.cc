@@ -1,0 +1,100 @@
+#include "stages/merge/area_assignment.h"
+
+#include <algorithm>
+#include <map>
+
+#include "stages/geometry/disjoint_sets.h"
+
+namespace areagraph {
+namespace {
+
+bool IsStub(const proto::CutGraph& graph, const proto::GraphEdge& edge, int* junction) {
+  if (edge.room_id() >= 0 || edge.source() == edge.target()) return false;
+  const proto::GraphVertex& source = graph.vertices(edge.source());
+  const proto::GraphVertex& target = graph.vertices(edge.target());
+  const proto::GraphVertex* passage = nullptr;
+  const proto::GraphVertex* fork = nullptr;
+  if (source.kind() == proto::VERTEX_PASSAGE && target.kind() == proto::VERTEX_JUNCTION) {
+    passage = &source, fork = &target;
+  } else if (target.kind() == proto::VERTEX_PASSAGE && source.kind() == proto::VERTEX_JUNCTION) {
+    passage = &target, fork = &source;
+  } else {
+    return false;
+  }
+  *junction = fork->id();
+  return edge.length_px() <= passage->clearance_px() + fork->clearance_px();
+}
+
+}  // namespace
+
+void AreaPlan::MergeInto(int from, int into) {
+  for (int e : areas[from].edges) area_of_edge[e] = into;
+  Area& target = areas[into];
+  target.edges.insert(target.edges.end(), areas[from].edges.begin(), areas[from].edges.end());
+  std::sort(target.edges.begin(), target.edges.end());
+  areas.erase(areas.begin() + from);
+  for (int& area : area_of_edge) {
+    if (area > from) --area;
+  }
+}
+
+AreaPlan AssignAreas(const proto::CutGraph& graph) {
+  const int edge_count = graph.edges_size();
+  DisjointSets groups(edge_count);
+  std::map<int, int> first_edge_of_room;
+  std::vector<std::vector<int>> edges_at(graph.vertices_size());
+  for (int e = 0; e < edge_count; ++e) {
+    const proto::GraphEdge& edge = graph.edges(e);
+    edges_at[edge.source()].push_back(e);
+    if (edge.target() != edge.source()) edges_at[edge.target()].push_back(e);
+    if (edge.room_id() < 0) continue;
+    const auto [it, added] = first_edge_of_room.emplace(edge.room_id(), e);
+    if (!added) groups.Union(it->second, e);
+  }
+  for (int e = 0; e < edge_count; ++e) {
+    int junction = -1;
+    if (!IsStub(graph, graph.edges(e), &junction)) continue;
+    // The longest other room-less edge at the junction, else the longest one.
+    int best = -1;
+    for (int other : edges_at[junction]) {
+      if (other == e) continue;
+      const bool roomless = graph.edges(other).room_id() < 0;
+      if (best < 0) {
+        best = other;
+        continue;
+      }
+      const bool best_roomless = graph.edges(best).room_id() < 0;
+      if (roomless != best_roomless
+              ? roomless
+              : graph.edges(other).length_px() > graph.edges(best).length_px()) {
+        best = other;
+      }
+    }
+    if (best >= 0) groups.Union(e, best);
+  }
+
+  AreaPlan plan;
+  plan.area_of_edge.assign(edge_count, -1);
+  std::map<int, int> area_of_group;
+  for (int e = 0; e < edge_count; ++e) {
+    const auto [it, added] =
+        area_of_group.emplace(groups.Find(e), static_cast<int>(plan.areas.size()));
+    if (added) plan.areas.emplace_back();
+    plan.area_of_edge[e] = it->second;
+    plan.areas[it->second].edges.push_back(e);
+  }
+  for (AreaPlan::Area& area : plan.areas) {
+    bool dead_end = false;
+    for (int e : area.edges) {
+      const proto::GraphEdge& edge = graph.edges(e);
+      if (edge.room_id() >= 0) area.room_id = edge.room_id();
+      dead_end = dead_end || graph.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END ||
+                 graph.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
+    }
+    area.kind = area.room_id >= 0 ? proto::AREA_ROOM
+                                  : (dead_end ? proto::AREA_DEAD_END : proto::AREA_CORRIDOR);
+  }
+  return plan;
+}
+
+}  // namespace areagraph

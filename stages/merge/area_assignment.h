@@ -1,0 +1,34 @@
+#pragma once
+
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+
+namespace areagraph {
+
+// Which CutGraph edges make up each area.
+struct AreaPlan {
+  struct Area {
+    proto::AreaKind kind = proto::AREA_CORRIDOR;
+    // The room of a room area, else -1.
+    int room_id = -1;
+    std::vector<int> edges;
+  };
+  std::vector<Area> areas;
+  // Area index of every edge (by position in CutGraph.edges).
+  std::vector<int> area_of_edge;
+
+  // Moves all edges of area `from` to area `into` and removes `from`
+  // (indices of later areas shift down by one).
+  void MergeInto(int from, int into);
+};
+
+// The areas of a CutGraph: all edges of one room form one room area; every
+// room-less edge is an area of its own (a dead end when it ends at a dead
+// end, else a corridor), except a stub: a room-less edge from a junction to a
+// passage point that is no longer than the clearances at its two ends (it
+// lies inside their free disks, like the bit of corridor in front of a door)
+// joins the longest other room-less edge at its junction.
+AreaPlan AssignAreas(const proto::CutGraph& graph);
+
+}  // namespace areagraph

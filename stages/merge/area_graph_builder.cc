@@ -1,0 +1,234 @@
+#include "stages/merge/area_graph_builder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "stages/common/map_frame.h"
+#include "stages/geometry/cell_grid.h"
+#include "stages/geometry/edge_polygon.h"
+#include "stages/merge/area_assignment.h"
+#include "stages/merge/passage_finder.h"
+#include "stages/merge/region_outline.h"
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+// Douglas-Peucker tolerance for area outlines (px). Below half a cell, so
+// no cell centre changes sides: polygons and raster agree cell by cell.
+constexpr double kOutlineTolerancePx = 0.45;
+
+void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
+  if (graph.edges_size() == 0) {
+    throw InputError(what + ": no Area Graph: the cut graph has no edges");
+  }
+  for (const proto::GraphEdge& edge : graph.edges()) {
+    const bool ok = edge.source() >= 0 && edge.source() < graph.vertices_size() &&
+                    edge.target() >= 0 && edge.target() < graph.vertices_size() &&
+                    edge.path_size() >= 2 && edge.left_sites_size() == edge.path_size() - 1 &&
+                    edge.right_sites_size() == edge.path_size() - 1;
+    if (!ok) {
+      throw InputError(what + ": the CutGraph artifact is corrupt (edge " +
+                       std::to_string(edge.id()) + ")");
+    }
+  }
+}
+
+// The areas that share a graph vertex with each area.
+std::vector<std::set<int>> GraphNeighbours(const proto::CutGraph& graph, const AreaPlan& plan) {
+  std::vector<std::set<int>> areas_at(graph.vertices_size());
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    areas_at[graph.edges(e).source()].insert(plan.area_of_edge[e]);
+    areas_at[graph.edges(e).target()].insert(plan.area_of_edge[e]);
+  }
+  std::vector<std::set<int>> neighbours(plan.areas.size());
+  for (const std::set<int>& at : areas_at) {
+    for (int a : at) {
+      for (int b : at) {
+        if (a != b) neighbours[a].insert(b);
+      }
+    }
+  }
+  return neighbours;
+}
+
+// Folds areas with fewer than `min_cells` cells into a neighbour: one that
+// shares a vertex and a border, else the one with the longest border, else
+// (no cells at all) the biggest that shares a vertex.
+void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* plan,
+                    AreaRaster* raster) {
+  std::set<int> unfoldable;
+  for (;;) {
+    int smallest = -1;
+    for (size_t k = 0; k < plan->areas.size(); ++k) {
+      if (raster->cell_count[k] >= min_cells || unfoldable.count(static_cast<int>(k))) continue;
+      if (smallest < 0 || raster->cell_count[k] < raster->cell_count[smallest]) {
+        smallest = static_cast<int>(k);
+      }
+    }
+    if (smallest < 0 || plan->areas.size() < 2) return;
+    const std::vector<std::set<int>> neighbours = GraphNeighbours(graph, *plan);
+    const int64_t count = static_cast<int64_t>(plan->areas.size());
+    std::vector<int64_t> border(count, 0);
+    for (const auto& [key, length] : SharedBorders(*raster)) {
+      const int a = static_cast<int>(key / count), b = static_cast<int>(key % count);
+      if (a == smallest) border[b] = length;
+      if (b == smallest) border[a] = length;
+    }
+    auto pick = [&](auto score, bool graph_only) {
+      int best = -1;
+      for (int k = 0; k < count; ++k) {
+        if (k == smallest || (graph_only && !neighbours[smallest].count(k))) continue;
+        if (score(k) <= 0) continue;
+        if (best < 0 || score(k) > score(best)) best = k;
+      }
+      return best;
+    };
+    auto by_border = [&](int k) { return border[k]; };
+    auto by_size = [&](int k) { return raster->cell_count[k] + 1; };
+    int into = pick(by_border, true);
+    if (into < 0) into = pick(by_border, false);
+    if (into < 0 && raster->cell_count[smallest] == 0) into = pick(by_size, true);
+    if (into < 0) {
+      unfoldable.insert(smallest);
+      continue;
+    }
+    plan->MergeInto(smallest, into);
+    MergeAreaCells(smallest, into, raster);
+    // Indices above `smallest` shifted down.
+    std::set<int> shifted;
+    for (int k : unfoldable) shifted.insert(k > smallest ? k - 1 : k);
+    unfoldable = std::move(shifted);
+  }
+}
+
+// The paths of areas that run through a vertex (two or more of their edge
+// ends meet there), at every vertex where one does.
+std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph,
+                                                    const AreaPlan& plan) {
+  std::vector<std::map<int, std::vector<int>>> ends(graph.vertices_size());
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    ends[graph.edges(e).source()][plan.area_of_edge[e]].push_back(e);
+    ends[graph.edges(e).target()][plan.area_of_edge[e]].push_back(e);
+  }
+  std::vector<std::pair<PointList, int>> paths;
+  for (const auto& at_vertex : ends) {
+    for (const auto& [area, edges] : at_vertex) {
+      if (edges.size() < 2) continue;
+      for (int e : edges) paths.emplace_back(ToPointList(graph.edges(e).path()), area);
+    }
+  }
+  return paths;
+}
+
+proto::Ring ToRing(const PointList& points, const MapTransform* transform) {
+  proto::Ring ring;
+  for (const Eigen::Vector2d& p : points) {
+    *ring.add_points() = ToProtoPoint(transform ? transform->PixelToWorld(p) : p);
+  }
+  return ring;
+}
+
+}  // namespace
+
+void CheckMergeOptions(const proto::MergeOptions& options) {
+  if (!std::isfinite(options.min_area_m2()) || options.min_area_m2() < 0) {
+    throw OptionsError("merge.min_area_m2 must be zero or more square metres, got " +
+                       std::to_string(options.min_area_m2()));
+  }
+}
+
+proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
+                                const proto::MergeOptions& options, const std::string& map_name,
+                                AreaRaster* raster_out) {
+  CheckMergeOptions(options);
+  const std::string what = "map '" + map_name + "'";
+  const CellGrid grid(map, what);
+  CheckCutGraph(graph, what);
+  const double cell_m2 = grid.resolution_m() * grid.resolution_m();
+
+  AreaPlan plan = AssignAreas(graph);
+  std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
+  std::vector<std::vector<PointList>> paths(plan.areas.size());
+  for (size_t k = 0; k < plan.areas.size(); ++k) {
+    for (int e : plan.areas[k].edges) {
+      paths[k].push_back(ToPointList(graph.edges(e).path()));
+      polygons[k].push_back(&graph.edges(e).polygon());
+      for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
+        polygons[k].push_back(&absorbed);
+      }
+    }
+  }
+  AreaRaster raster =
+      PartitionFreeSpace(grid, graph.boundary(), polygons, paths, ThroughPaths(graph, plan));
+  const int64_t min_cells =
+      std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
+  FoldSmallAreas(graph, min_cells, &plan, &raster);
+  if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
+                  [](int64_t n) { return n == 0; })) {
+    throw InputError(what + ": no Area Graph: no free cell lies inside the map's boundary");
+  }
+
+  // Bounding box and centroid of every area, in one pass.
+  const int area_count = static_cast<int>(plan.areas.size());
+  std::vector<cv::Rect> box(area_count);
+  std::vector<Eigen::Vector2d> centre_sum(area_count, Eigen::Vector2d::Zero());
+  for (int r = 0; r < raster.labels.rows; ++r) {
+    const int* row = raster.labels.ptr<int>(r);
+    for (int c = 0; c < raster.labels.cols; ++c) {
+      if (row[c] == 0) continue;
+      const int k = row[c] - 1;
+      box[k] = box[k].area() == 0 ? cv::Rect(c, r, 1, 1) : (box[k] | cv::Rect(c, r, 1, 1));
+      centre_sum[k] += Eigen::Vector2d(c + 0.5, r + 0.5);
+    }
+  }
+
+  const MapTransform transform(map.frame());
+  proto::AreaGraph out;
+  out.set_format_version(1);
+  *out.mutable_frame() = map.frame();
+  std::vector<int> area_id(area_count, -1);
+  for (int k = 0; k < area_count; ++k) {
+    if (raster.cell_count[k] == 0) continue;  // left out: nothing to draw
+    area_id[k] = out.areas_size();
+    proto::Area* area = out.add_areas();
+    area->set_id(area_id[k]);
+    const RegionOutline outline =
+        SimplifyOutline(TraceRegionOutline(raster.labels, k + 1, box[k]), kOutlineTolerancePx);
+    *area->mutable_polygon_px()->mutable_outer() = ToRing(outline.outer, nullptr);
+    *area->mutable_polygon_m()->mutable_outer() = ToRing(outline.outer, &transform);
+    for (const PointList& hole : outline.holes) {
+      *area->mutable_polygon_px()->add_holes() = ToRing(hole, nullptr);
+      *area->mutable_polygon_m()->add_holes() = ToRing(hole, &transform);
+    }
+    area->set_area_m2(raster.cell_count[k] * cell_m2);
+    *area->mutable_centroid_m() = ToProtoPoint(
+        transform.PixelToWorld(centre_sum[k] / static_cast<double>(raster.cell_count[k])));
+    area->set_kind(plan.areas[k].kind);
+    for (int e : plan.areas[k].edges) area->add_topology_edge_ids(graph.edges(e).id());
+  }
+
+  std::vector<int> final_area_of_edge(graph.edges_size(), -1);
+  for (int e = 0; e < graph.edges_size(); ++e)
+    final_area_of_edge[e] = area_id[plan.area_of_edge[e]];
+  for (const PassagePlan& plan_passage : FindPassages(graph, final_area_of_edge)) {
+    proto::Passage* passage = out.add_passages();
+    passage->set_id(out.passages_size() - 1);
+    passage->set_area_a(plan_passage.area_a);
+    passage->set_area_b(plan_passage.area_b);
+    *passage->mutable_point_m() = ToProtoPoint(transform.PixelToWorld(plan_passage.point));
+    *passage->mutable_segment_m()->mutable_a() =
+        ToProtoPoint(transform.PixelToWorld(plan_passage.side_a));
+    *passage->mutable_segment_m()->mutable_b() =
+        ToProtoPoint(transform.PixelToWorld(plan_passage.side_b));
+    passage->set_width_m(plan_passage.width_px * grid.resolution_m());
+    out.mutable_areas(plan_passage.area_a)->add_passage_ids(passage->id());
+    out.mutable_areas(plan_passage.area_b)->add_passage_ids(passage->id());
+  }
+  if (raster_out != nullptr) *raster_out = std::move(raster);
+  return out;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <string>
+
+#include "proto/artifacts.pb.h"
+#include "proto/pipeline_options.pb.h"
+#include "stages/merge/area_raster.h"
+
+namespace areagraph {
+
+// Throws OptionsError when merge.min_area_m2 is negative or not finite.
+void CheckMergeOptions(const proto::MergeOptions& options);
+
+// ag-merge: the Area Graph. The CutGraph's edges are grouped into areas
+// (AssignAreas); the areas split the map's free cells inside the boundary
+// among themselves (PartitionFreeSpace), so they never overlap and each is
+// one piece; areas smaller than merge.min_area_m2 (and areas left without
+// cells) fold into the neighbour they share the longest border with. Every
+// area's polygon is traced along cell edges and lightly simplified; the
+// passages are where areas meet at graph vertices (FindPassages). When
+// `raster` is given it receives the final label image. Throws InputError
+// naming `map_name` for an unusable CutGraph.
+proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
+                                const proto::MergeOptions& options, const std::string& map_name,
+                                AreaRaster* raster = nullptr);
+
+}  // namespace areagraph

@@ -1,0 +1,78 @@
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+#include "stages/geometry/edge_polygon.h"
+
+namespace areagraph {
+
+// A vertex of the graph being pruned: a Voronoi vertex that is (or may
+// become) a dead end or a junction.
+struct ChainVertex {
+  Eigen::Vector2d position;
+  double clearance_px = 0;
+  // Set on one vertex of a pure cycle, which has no vertex of degree != 2.
+  bool forced_junction = false;
+};
+
+// A chain of Voronoi edges between two vertices, with the sites of the faces
+// on either side of each segment (oriented from source to target) and the
+// polygons of the dead ends it absorbed.
+struct ChainEdge {
+  int source = -1;
+  int target = -1;
+  PointList path;
+  PointList left_sites;
+  PointList right_sites;
+  std::vector<double> clearance_px;
+  // Smallest clearance of the Voronoi edges along the chain.
+  double min_clearance_px = 0;
+  std::vector<proto::Polygon> absorbed;
+  bool removed = false;
+
+  double Length() const { return PathLength(path); }
+  // The same chain walked from target to source.
+  ChainEdge Reversed() const;
+  // Appends `next`, which must start where this chain ends.
+  void Append(const ChainEdge& next);
+  // The edge's own polygon followed by everything it absorbed.
+  std::vector<proto::Polygon> AllPolygons() const;
+};
+
+// One end of an edge at a vertex: which edge, and whether it is the edge's
+// target end. A self-loop has two incidences at its vertex.
+struct Incidence {
+  int edge = -1;
+  bool at_target = false;
+};
+
+// The multigraph of chains that ag-prune reduces to the Topology Graph.
+class ChainGraph {
+ public:
+  std::vector<ChainVertex> vertices;
+  std::vector<ChainEdge> edges;
+
+  // The live edge ends at each vertex.
+  std::vector<std::vector<Incidence>> Incidences() const;
+
+  // Replaces every maximal path through vertices of degree 2 by one edge.
+  // Pure cycles get one vertex marked as a forced junction.
+  void JoinDegreeTwoChains();
+
+  // Removes every edge outside the connected group with the largest total
+  // edge length.
+  void KeepBiggestGroup();
+
+  // Drops removed edges (edge indices change; vertex indices do not).
+  void CompactEdges();
+
+  int LiveEdgeCount() const;
+};
+
+// Direction in which the edge end `incidence` leaves its vertex, as an angle
+// in pixel coordinates (growing clockwise on screen).
+double LeavingAngle(const ChainEdge& edge, bool at_target);
+
+}  // namespace areagraph

@@ -1,0 +1,199 @@
+#include "stages/prune/topology_graph_builder.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "stages/geometry/cell_grid.h"
+#include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/site_alpha_shape.h"
+#include "stages/prune/chain_graph.h"
+#include "stages/prune/chain_pruning.h"
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+// Voronoi vertices closer than this (pixels) are one vertex: grid maps have
+// many co-circular sites, whose Voronoi vertices coincide.
+constexpr double kSamePointPx = 1e-6;
+
+std::string Metres(double value) {
+  std::ostringstream out;
+  out << value << " m";
+  return out.str();
+}
+
+// Throws when a Voronoi edge names a vertex or site that does not exist.
+void CheckIndex(int index, int size, const char* element, int edge, const std::string& what) {
+  if (index < 0 || index >= size) {
+    throw InputError(what + ": the Voronoi diagram artifact is corrupt: edge " +
+                     std::to_string(edge) + " names " + element + " " + std::to_string(index) +
+                     " of " + std::to_string(size));
+  }
+}
+
+// The Voronoi edges that survive the boundary, free-cell and clearance
+// filters, as one-segment chains.
+ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const CellGrid& grid,
+                                SiteAlphaShape& boundary_shape, double min_clearance_px,
+                                const std::string& what) {
+  const int vertex_count = diagram.vertices_size();
+  const int site_count = diagram.sites_size();
+  std::vector<char> keep(vertex_count, 0);
+  for (int v = 0; v < vertex_count; ++v) {
+    const Eigen::Vector2d p = FromProtoPoint(diagram.vertices(v).position());
+    keep[v] = grid.FreeAt(p) && boundary_shape.InsideBiggestShape(p);
+  }
+
+  DisjointSets same_point(vertex_count);
+  std::vector<int> kept_edges;
+  for (int e = 0; e < diagram.edges_size(); ++e) {
+    const proto::VoronoiEdge& edge = diagram.edges(e);
+    CheckIndex(edge.source(), vertex_count, "vertex", e, what);
+    if (edge.target() < 0) continue;  // a ray
+    CheckIndex(edge.target(), vertex_count, "vertex", e, what);
+    CheckIndex(edge.left_site(), site_count, "site", e, what);
+    CheckIndex(edge.right_site(), site_count, "site", e, what);
+    if (!keep[edge.source()] || !keep[edge.target()]) continue;
+    if (!(edge.clearance_px() >= min_clearance_px)) continue;
+    const Eigen::Vector2d a = FromProtoPoint(diagram.vertices(edge.source()).position());
+    const Eigen::Vector2d b = FromProtoPoint(diagram.vertices(edge.target()).position());
+    if ((a - b).norm() < kSamePointPx) {
+      same_point.Union(edge.source(), edge.target());
+    } else {
+      kept_edges.push_back(e);
+    }
+  }
+
+  ChainGraph graph;
+  std::vector<int> chain_vertex(vertex_count, -1);
+  auto vertex_of = [&](int voronoi_vertex) {
+    const int root = same_point.Find(voronoi_vertex);
+    if (chain_vertex[root] < 0) {
+      chain_vertex[root] = static_cast<int>(graph.vertices.size());
+      const proto::VoronoiVertex& v = diagram.vertices(root);
+      graph.vertices.push_back({FromProtoPoint(v.position()), v.clearance_px(), false});
+    }
+    return chain_vertex[root];
+  };
+  for (int e : kept_edges) {
+    const proto::VoronoiEdge& edge = diagram.edges(e);
+    ChainEdge chain;
+    chain.source = vertex_of(edge.source());
+    chain.target = vertex_of(edge.target());
+    if (chain.source == chain.target) continue;
+    const ChainVertex& s = graph.vertices[chain.source];
+    const ChainVertex& t = graph.vertices[chain.target];
+    chain.path = {s.position, t.position};
+    chain.clearance_px = {s.clearance_px, t.clearance_px};
+    chain.left_sites = {FromProtoPoint(diagram.sites(edge.left_site()))};
+    chain.right_sites = {FromProtoPoint(diagram.sites(edge.right_site()))};
+    chain.min_clearance_px = edge.clearance_px();
+    graph.edges.push_back(std::move(chain));
+  }
+  return graph;
+}
+
+proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& frame,
+                             proto::Polygon boundary) {
+  proto::TopologyGraph out;
+  out.set_format_version(1);
+  *out.mutable_frame() = frame;
+  *out.mutable_boundary() = std::move(boundary);
+
+  const auto incidences = graph.Incidences();
+  std::vector<int> new_id(graph.vertices.size(), -1);
+  for (size_t v = 0; v < graph.vertices.size(); ++v) {
+    if (incidences[v].empty()) continue;
+    new_id[v] = out.vertices_size();
+    proto::GraphVertex* vertex = out.add_vertices();
+    vertex->set_id(new_id[v]);
+    *vertex->mutable_position() = ToProtoPoint(graph.vertices[v].position);
+    vertex->set_kind(incidences[v].size() == 1 ? proto::VERTEX_DEAD_END : proto::VERTEX_JUNCTION);
+    vertex->set_clearance_px(graph.vertices[v].clearance_px);
+  }
+  for (const ChainEdge& chain : graph.edges) {
+    if (chain.removed) continue;
+    proto::GraphEdge* edge = out.add_edges();
+    edge->set_id(out.edges_size() - 1);
+    edge->set_source(new_id[chain.source]);
+    edge->set_target(new_id[chain.target]);
+    AppendPoints(chain.path, edge->mutable_path());
+    AppendPoints(chain.left_sites, edge->mutable_left_sites());
+    AppendPoints(chain.right_sites, edge->mutable_right_sites());
+    for (double c : chain.clearance_px) edge->add_clearance_px(c);
+    for (const proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = polygon;
+    edge->set_length_px(chain.Length());
+    edge->set_min_clearance_px(chain.min_clearance_px);
+    UpdateEdgePolygons(edge);
+  }
+  return out;
+}
+
+}  // namespace
+
+void CheckPruneOptions(const proto::PruneOptions& options) {
+  auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw OptionsError(message);
+  };
+  const double radius = options.boundary_alpha_radius_m();
+  require(std::isfinite(radius) && radius > 0,
+          "prune.boundary_alpha_radius_m must be a positive number of metres, got " +
+              std::to_string(radius));
+  const double clearance = options.min_clearance_m();
+  require(std::isfinite(clearance) && clearance >= 0,
+          "prune.min_clearance_m must be zero or more metres, got " + std::to_string(clearance));
+  const double dead_end = options.dead_end_max_length_m();
+  require(
+      std::isfinite(dead_end) && dead_end >= 0,
+      "prune.dead_end_max_length_m must be zero or more metres, got " + std::to_string(dead_end));
+  require(options.dead_end_passes() >= 0 && options.dead_end_passes() <= 1000,
+          "prune.dead_end_passes must be between 0 and 1000, got " +
+              std::to_string(options.dead_end_passes()));
+}
+
+proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
+                                        const proto::CleanedMap& map,
+                                        const proto::PruneOptions& options,
+                                        const std::string& map_name) {
+  CheckPruneOptions(options);
+  const std::string what = "map '" + map_name + "'";
+  const CellGrid grid(map, what);
+  const double resolution = grid.resolution_m();
+  const double map_size_px = std::hypot(grid.width(), grid.height());
+  if (options.min_clearance_m() / resolution > map_size_px) {
+    throw OptionsError("prune.min_clearance_m = " + Metres(options.min_clearance_m()) +
+                       " is larger than the whole map");
+  }
+
+  const PointList sites = ToPointList(diagram.sites());
+  if (sites.size() < 3) {
+    throw InputError(what + ": no Topology Graph: the map has " + std::to_string(sites.size()) +
+                     " obstacle cells next to free space, too few to enclose any");
+  }
+  SiteAlphaShape boundary_shape(sites, options.boundary_alpha_radius_m() / resolution);
+  proto::Polygon boundary = boundary_shape.BiggestShapeOutline();
+  if (boundary.outer().points_size() < 3) {
+    throw InputError(what +
+                     ": no Topology Graph: the obstacles enclose no space (no alpha shape with " +
+                     Metres(options.boundary_alpha_radius_m()) + " radius)");
+  }
+
+  const double min_clearance_px = options.min_clearance_m() / resolution;
+  ChainGraph graph = FilteredVoronoiGraph(diagram, grid, boundary_shape, min_clearance_px, what);
+  graph.JoinDegreeTwoChains();
+  if (graph.edges.empty()) {
+    throw InputError(what + ": no Topology Graph: no Voronoi edge inside the boundary keeps " +
+                     Metres(options.min_clearance_m()) + " away from obstacles");
+  }
+  const double dead_end_px = options.dead_end_max_length_m() / resolution;
+  for (int pass = 0; pass < options.dead_end_passes(); ++pass) {
+    if (RemoveShortDeadEnds(&graph, dead_end_px) == 0) break;
+    graph.JoinDegreeTwoChains();
+  }
+  if (MergeCloseJunctions(&graph) > 0) graph.JoinDegreeTwoChains();
+  graph.KeepBiggestGroup();
+  return ToProto(graph, map.frame(), std::move(boundary));
+}
+
+}  // namespace areagraph

@@ -1,0 +1,166 @@
+// The area stages on drawn floor plans: the number of areas and passages,
+// where the passages are, and the invariants every Area Graph must meet.
+#include <gtest/gtest.h>
+
+#include "tests/geometry_areas/area_test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::DrawDoor;
+using floorplan::DrawMaze;
+using floorplan::DrawRegion;
+using floorplan::DrawRoom;
+using floorplan::FloorPlan;
+using floorplan::RectM;
+using floorplan::WallDirection;
+
+// A passage's point in plan metres (y down from the top), for maps whose
+// origin is (0, 0).
+Eigen::Vector2d PlanPoint(const proto::Passage& passage, const proto::CleanedMap& map) {
+  const double height_m = map.frame().height_px() * map.frame().resolution_m();
+  return {passage.point_m().x(), height_m - passage.point_m().y()};
+}
+
+TEST(AreaStagesTest, OneRoomIsOneArea) {
+  FloorPlan plan(6, 5);
+  DrawRoom(plan, {0.5, 0.5, 5, 4});
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  ASSERT_EQ(stages.areas.areas_size(), 1);
+  EXPECT_EQ(stages.areas.passages_size(), 0);
+  EXPECT_EQ(stages.areas.areas(0).kind(), proto::AREA_ROOM);
+  // The free inside is about 4.85 x 3.85 m.
+  EXPECT_NEAR(stages.areas.areas(0).area_m2(), 4.85 * 3.85, 0.5);
+}
+
+TEST(AreaStagesTest, TwoRoomsJoinedByADoorAreTwoAreasWithOnePassage) {
+  FloorPlan plan(9.5, 5);
+  DrawRoom(plan, {0.5, 0.5, 4, 4});
+  DrawRoom(plan, {4.5, 0.5, 4.5, 4});
+  DrawDoor(plan, 4.5, 2.5, 0.9, WallDirection::kVertical);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  ASSERT_EQ(stages.areas.areas_size(), 2);
+  ASSERT_EQ(stages.areas.passages_size(), 1);
+  const proto::Passage& door = stages.areas.passages(0);
+  EXPECT_LT((PlanPoint(door, map) - Eigen::Vector2d(4.5, 2.5)).norm(), 0.3);
+  EXPECT_NEAR(door.width_m(), 0.9, 0.15);
+  const int left = AreaAt(stages.areas, 2.5, 2.5), right = AreaAt(stages.areas, 6.5, 2.5);
+  EXPECT_NE(left, -1);
+  EXPECT_NE(right, -1);
+  EXPECT_NE(left, right);
+  EXPECT_EQ(std::set<int>({door.area_a(), door.area_b()}), std::set<int>({left, right}));
+}
+
+TEST(AreaStagesTest, CorridorWithThreeRoomsIsFourAreasWithThreePassages) {
+  FloorPlan plan(11, 6.5);
+  const double room_width = 10.0 / 3;
+  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
+  DrawRoom(plan, {0.5, 4.0, 10, 1.75});  // about 1.6 m free between the walls
+  std::vector<double> doors;
+  for (int i = 0; i < 3; ++i) {
+    doors.push_back(0.5 + (i + 0.5) * room_width);
+    DrawDoor(plan, doors.back(), 4.0, 0.9, WallDirection::kHorizontal);
+  }
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  ASSERT_EQ(stages.areas.areas_size(), 4);
+  ASSERT_EQ(stages.areas.passages_size(), 3);
+  const int corridor = AreaAt(stages.areas, 5.5, 4.9);
+  ASSERT_NE(corridor, -1);
+  for (const proto::Passage& passage : stages.areas.passages()) {
+    EXPECT_TRUE(passage.area_a() == corridor || passage.area_b() == corridor);
+    EXPECT_NEAR(passage.width_m(), 0.9, 0.15);
+    const Eigen::Vector2d at = PlanPoint(passage, map);
+    double nearest = 1e9;
+    for (double x : doors) nearest = std::min(nearest, (at - Eigen::Vector2d(x, 4.0)).norm());
+    EXPECT_LT(nearest, 0.3) << "passage at " << at.transpose();
+  }
+}
+
+TEST(AreaStagesTest, MazeHasOneAreaPerTopologyGraphEdge) {
+  FloorPlan plan(6.75, 6.75);
+  // 1.15 m cells with 0.15 m walls: corridors 1.0 m wide.
+  DrawMaze(plan, {0.5, 0.5, 5.75, 5.75}, 5, 5, 7);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_room_width_m(2.0);
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.cut.room_shapes_size(), 0);
+  EXPECT_EQ(stages.cut.edges_size(), stages.topology.edges_size());
+  // This maze has two junctions, four dead ends and one corridor between them.
+  EXPECT_GE(stages.topology.edges_size(), 5);
+  ASSERT_EQ(stages.areas.areas_size(), stages.topology.edges_size());
+  int corridors = 0;
+  for (const proto::Area& area : stages.areas.areas()) {
+    ASSERT_EQ(area.topology_edge_ids_size(), 1);
+    const proto::GraphEdge& edge = stages.cut.edges(area.topology_edge_ids(0));
+    const proto::VertexKind source = stages.cut.vertices(edge.source()).kind();
+    const proto::VertexKind target = stages.cut.vertices(edge.target()).kind();
+    // Dead end to junction, or junction to junction.
+    EXPECT_TRUE(source == proto::VERTEX_JUNCTION || target == proto::VERTEX_JUNCTION);
+    EXPECT_EQ(area.kind(), source == target ? proto::AREA_CORRIDOR : proto::AREA_DEAD_END);
+    corridors += area.kind() == proto::AREA_CORRIDOR;
+  }
+  EXPECT_GE(corridors, 1);
+}
+
+TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
+  FloorPlan plan(7.5, 7.5);
+  // 1.0 m free between the walls, W = 1.25 m.
+  DrawRegion(plan, {{0.5, 0.5, 1.15, 6.5}, {0.5, 5.85, 6.5, 1.15}});
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.cut.room_shapes_size(), 0);
+  ASSERT_EQ(stages.areas.areas_size(), 1);
+  EXPECT_EQ(stages.areas.passages_size(), 0);
+}
+
+TEST(AreaStagesTest, NarrowerRoomWidthStrategyMakesTheCorridorARoom) {
+  // Door 0.9 < corridor 1.6: W = 1.0 m. The corridor still holds the disk,
+  // so the result matches the fixed W of 1.25 m.
+  FloorPlan plan(11, 6.5);
+  const double room_width = 10.0 / 3;
+  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
+  DrawRoom(plan, {0.5, 4.0, 10, 1.75});
+  for (int i = 0; i < 3; ++i) {
+    DrawDoor(plan, 0.5 + (i + 0.5) * room_width, 4.0, 0.9, WallDirection::kHorizontal);
+  }
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_door_width_m(0.9);
+  options.mutable_cut()->set_corridor_width_m(1.6);
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.areas.areas_size(), 4);
+  EXPECT_EQ(stages.areas.passages_size(), 3);
+  for (const proto::Area& area : stages.areas.areas()) EXPECT_EQ(area.kind(), proto::AREA_ROOM);
+}
+
+TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
+  FloorPlan plan(11, 6.5);
+  const double room_width = 10.0 / 3;
+  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
+  DrawRoom(plan, {0.5, 4.0, 10, 1.75});
+  for (int i = 0; i < 3; ++i) {
+    DrawDoor(plan, 0.5 + (i + 0.5) * room_width, 4.0, 0.9, WallDirection::kHorizontal);
+  }
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  proto::PipelineOptions options;
+  // The rooms hold about 10.5 m2 each, the corridor about 15.5 m2.
+  options.mutable_merge()->set_min_area_m2(12);
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.areas.areas_size(), 1);
+  EXPECT_EQ(stages.areas.passages_size(), 0);
+}
+
+}  // namespace
+}  // namespace areagraph::testing

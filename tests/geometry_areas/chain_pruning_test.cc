@@ -1,0 +1,123 @@
+// Joining Voronoi chains and removing dead ends with their polygons.
+#include "stages/prune/chain_pruning.h"
+
+#include <gtest/gtest.h>
+
+#include "stages/prune/chain_graph.h"
+
+namespace areagraph {
+namespace {
+
+// A straight chain from a to b in `steps` segments, with the walls `half`
+// away on either side (left is -y for a chain along +x, pixel coordinates).
+ChainEdge Chain(int source, int target, Eigen::Vector2d a, Eigen::Vector2d b, int steps,
+                double half) {
+  ChainEdge edge;
+  edge.source = source;
+  edge.target = target;
+  const Eigen::Vector2d along = (b - a).normalized();
+  const Eigen::Vector2d left(along.y(), -along.x());
+  for (int i = 0; i <= steps; ++i) {
+    edge.path.push_back(a + (b - a) * i / steps);
+    edge.clearance_px.push_back(half);
+  }
+  for (int i = 0; i < steps; ++i) {
+    const Eigen::Vector2d mid = a + (b - a) * (i + 0.5) / steps;
+    edge.left_sites.push_back(mid + half * left);
+    edge.right_sites.push_back(mid - half * left);
+  }
+  edge.min_clearance_px = half;
+  return edge;
+}
+
+ChainGraph Star(double short_arm) {
+  ChainGraph graph;
+  graph.vertices = {
+      {{0, 0}, 10}, {{100, 0}, 10}, {{-100, 0}, 10}, {{0, 100}, 10}, {{0, -short_arm}, 10}};
+  graph.edges = {Chain(0, 1, {0, 0}, {100, 0}, 10, 10), Chain(0, 2, {0, 0}, {-100, 0}, 10, 10),
+                 Chain(0, 3, {0, 0}, {0, 100}, 10, 10),
+                 Chain(0, 4, {0, 0}, {0, -short_arm}, 3, 10)};
+  return graph;
+}
+
+TEST(ChainGraphTest, DegreeTwoChainsJoinAndCyclesKeepOneJunction) {
+  ChainGraph graph;
+  graph.vertices = {{{0, 0}, 5}, {{10, 0}, 5}, {{20, 0}, 5}, {{30, 0}, 5}};
+  graph.edges = {Chain(0, 1, {0, 0}, {10, 0}, 2, 5), Chain(2, 1, {20, 0}, {10, 0}, 2, 5),
+                 Chain(2, 3, {20, 0}, {30, 0}, 2, 5)};
+  graph.JoinDegreeTwoChains();
+  ASSERT_EQ(graph.edges.size(), 1u);
+  const ChainEdge& joined = graph.edges[0];
+  EXPECT_EQ(joined.path.size(), 7u);
+  EXPECT_EQ(joined.left_sites.size(), 6u);
+  EXPECT_DOUBLE_EQ(joined.Length(), 30);
+  // The reversed middle chain has its sides swapped back: left is -y.
+  for (const Eigen::Vector2d& site : joined.left_sites) EXPECT_LT(site.y(), 0);
+
+  ChainGraph cycle;
+  cycle.vertices = {{{0, 0}, 5}, {{10, 0}, 5}, {{10, 10}, 5}};
+  cycle.edges = {Chain(0, 1, {0, 0}, {10, 0}, 1, 5), Chain(1, 2, {10, 0}, {10, 10}, 1, 5),
+                 Chain(2, 0, {10, 10}, {0, 0}, 1, 5)};
+  cycle.JoinDegreeTwoChains();
+  ASSERT_EQ(cycle.edges.size(), 1u);
+  EXPECT_EQ(cycle.edges[0].source, cycle.edges[0].target);
+  EXPECT_TRUE(cycle.vertices[cycle.edges[0].source].forced_junction);
+}
+
+TEST(ChainPruningTest, ShortDeadEndGoesAndItsPolygonIsAbsorbed) {
+  ChainGraph graph = Star(30);
+  EXPECT_EQ(RemoveShortDeadEnds(&graph, 50), 1);
+  EXPECT_TRUE(graph.edges[3].removed);
+  // Clockwise on screen from straight up (-y) comes +x (edge 0), but that is
+  // a dead end too, so the previous one, -x (edge 1), takes the polygon.
+  ASSERT_EQ(graph.edges[1].absorbed.size(), 1u);
+  EXPECT_EQ(graph.edges[0].absorbed.size() + graph.edges[2].absorbed.size(), 0u);
+  graph.JoinDegreeTwoChains();
+  ASSERT_EQ(graph.edges.size(), 3u);  // still a junction of three
+  size_t absorbed = 0;
+  for (const ChainEdge& edge : graph.edges) absorbed += edge.absorbed.size();
+  EXPECT_EQ(absorbed, 1u);
+}
+
+TEST(ChainPruningTest, LongDeadEndStaysAndTheLastEdgeIsNeverRemoved) {
+  ChainGraph graph = Star(80);
+  EXPECT_EQ(RemoveShortDeadEnds(&graph, 50), 0);
+
+  ChainGraph single;
+  single.vertices = {{{0, 0}, 5}, {{10, 0}, 5}};
+  single.edges = {Chain(0, 1, {0, 0}, {10, 0}, 2, 5)};
+  EXPECT_EQ(RemoveShortDeadEnds(&single, 50), 0);
+  EXPECT_FALSE(single.edges[0].removed);
+}
+
+TEST(ChainPruningTest, CornerSpurGoesWhateverItsLength) {
+  ChainGraph graph = Star(80);
+  // Arm 3 now separates one obstacle cell from the rest: a spur.
+  for (Eigen::Vector2d& site : graph.edges[3].left_sites) site = {-20, -90};
+  EXPECT_TRUE(IsCornerSpur(graph.edges[3]));
+  EXPECT_FALSE(IsCornerSpur(graph.edges[0]));
+  EXPECT_EQ(RemoveShortDeadEnds(&graph, 50), 1);
+  EXPECT_TRUE(graph.edges[3].removed);
+}
+
+TEST(ChainPruningTest, JunctionsCloserThanTheirClearanceMerge) {
+  ChainGraph graph;
+  graph.vertices = {{{0, 0}, 20},    {{10, 0}, 15},  {{-100, 0}, 10},
+                    {{0, -100}, 10}, {{110, 0}, 10}, {{10, 100}, 10}};
+  graph.edges = {Chain(0, 1, {0, 0}, {10, 0}, 2, 15), Chain(2, 0, {-100, 0}, {0, 0}, 5, 10),
+                 Chain(3, 0, {0, -100}, {0, 0}, 5, 10), Chain(1, 4, {10, 0}, {110, 0}, 5, 10),
+                 Chain(1, 5, {10, 0}, {10, 100}, 5, 10)};
+  EXPECT_EQ(MergeCloseJunctions(&graph), 1);
+  ASSERT_EQ(graph.edges.size(), 4u);
+  for (const ChainEdge& edge : graph.edges) {
+    EXPECT_TRUE(edge.source == 0 || edge.target == 0);
+    EXPECT_TRUE(edge.path.front() == Eigen::Vector2d(0, 0) ||
+                edge.path.back() == Eigen::Vector2d(0, 0));
+    EXPECT_EQ(edge.left_sites.size() + 1, edge.path.size());
+  }
+  // The edges of the dropped junction run along the merged edge to it.
+  EXPECT_DOUBLE_EQ(graph.edges[2].Length() + graph.edges[3].Length(), 220);
+}
+
+}  // namespace
+}  // namespace areagraph
