@@ -70,9 +70,13 @@ void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas) {
   for (const proto::VoronoiEdge& edge : voronoi.edges()) {
     if (edge.target() < 0) continue;
     const double t = std::min(1.0, edge.clearance_px() / max_clearance);
-    const cv::Scalar colour(255 * t, 60, 255 * (1 - t));
+    // Edges that hug the obstacles are the bulk of the diagram but not its
+    // skeleton: keep them faint so the medial axis stands out.
+    const bool hugs_obstacle = edge.clearance_px() < 2.0;
+    const cv::Scalar colour =
+        hugs_obstacle ? cv::Scalar(225, 215, 250) : cv::Scalar(255 * t, 60, 255 * (1 - t));
     canvas.Line(voronoi.vertices(edge.source()).position(),
-                voronoi.vertices(edge.target()).position(), colour, t > 0.2 ? 2 : 1);
+                voronoi.vertices(edge.target()).position(), colour, hugs_obstacle ? 1 : 2);
   }
 }
 
