@@ -12,6 +12,7 @@ PACKAGES=(
   libssl-dev libyaml-cpp-dev libcli11-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev
+  time  # /usr/bin/time: peak memory in tools/bench-speed.sh
 )
 
 missing=()

@@ -53,6 +53,12 @@ CleanParameters CheckCleanOptions(const proto::CleanOptions& options,
                        Number(max_perimeter) + ")");
   }
   parameters.furniture_max_perimeter_px = max_perimeter / resolution;
+  const double island_m2 = options.unknown_island_max_m2();
+  if (!std::isfinite(island_m2) || island_m2 < 0) {
+    throw OptionsError("clean.unknown_island_max_m2 must be a number of square metres >= 0 (got " +
+                       Number(island_m2) + ")");
+  }
+  parameters.unknown_island_max_cells = island_m2 / (resolution * resolution);
   return parameters;
 }
 

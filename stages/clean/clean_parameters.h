@@ -16,6 +16,8 @@ struct CleanParameters {
   double alpha_radius_px = 5;
   // Components with a shorter alpha-shape boundary are furniture.
   double furniture_max_perimeter_px = 80;
+  // Unknown islands of at most this many cells become free.
+  double unknown_island_max_cells = 0;
 };
 
 // Throws OptionsError (one line naming the option) for values that are not

@@ -5,6 +5,7 @@
 #include "stages/clean/clean_parameters.h"
 #include "stages/clean/furniture_removal.h"
 #include "stages/clean/outlier_removal.h"
+#include "stages/clean/unknown_islands.h"
 #include "stages/geometry/cell_states.h"
 #include "store/error.h"
 
@@ -24,6 +25,8 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
   }
 
   std::string cells = map.cells();
+  std::vector<int> islands =
+      FreeUnknownIslands(cells, width, height, parameters.unknown_island_max_cells);
   const std::vector<int> outliers = RemoveOutlierCells(
       cells, width, height, parameters.outlier_neighbors, parameters.outlier_percent);
   const FurnitureRemoval furniture = RemoveFurniture(
@@ -34,8 +37,9 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
   *cleaned.mutable_frame() = map.frame();
   cleaned.set_cells(std::move(cells));
   cleaned.mutable_removed_outlier_cells()->Add(outliers.begin(), outliers.end());
-  cleaned.mutable_removed_furniture_cells()->Add(furniture.removed_cells.begin(),
-                                                 furniture.removed_cells.end());
+  islands.insert(islands.end(), furniture.removed_cells.begin(), furniture.removed_cells.end());
+  std::sort(islands.begin(), islands.end());
+  cleaned.mutable_removed_furniture_cells()->Add(islands.begin(), islands.end());
   for (const proto::Polygon& shape : furniture.shapes) *cleaned.add_furniture_shapes() = shape;
   return cleaned;
 }

@@ -43,62 +43,39 @@ std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, i
   return outline;
 }
 
-// A region's bounding box, inclusive.
-struct CellBox {
-  int col0 = 1 << 30, row0 = 1 << 30, col1 = -1, row1 = -1;
-};
-
 // The cells that enter the alpha shape, in row-major order: every cell of the
 // regions that may be furniture, and the outline's cells next to free space
-// within `reach` (the disk's diameter) of such a region's box. Alpha-shape
-// components are those of the union of the disks around the points (its
-// nerve), so points farther apart never join, and the shape of a piece out of
-// reach of all other points is the same without them: the outline's other
-// cells cannot change what is furniture. No cells when no region may be.
+// within `reach` (the disk's diameter) of such a cell. Alpha-shape components
+// are those of the union of the disks around the points (its nerve), so
+// points farther apart never join, and the shape of a piece out of reach of
+// all other points is the same without them: the outline's other cells cannot
+// change what is furniture. No cells when no region may be furniture.
 std::vector<int> AlphaShapeCells(const std::string& cells, int width, int height,
                                  const cv::Mat& labels, const std::vector<uint8_t>& outline,
                                  double reach) {
   const int* label = labels.ptr<int>();
   std::vector<int> inner;
-  std::vector<CellBox> boxes(outline.size());
+  cv::Mat inner_mask(height, width, CV_8U, cv::Scalar(0));
   for (int index = 0; index < width * height; ++index) {
     const int region = label[index];
     if (region == 0 || outline[region]) continue;
     inner.push_back(index);
-    CellBox& box = boxes[region];
-    box.col0 = std::min(box.col0, index % width);
-    box.col1 = std::max(box.col1, index % width);
-    box.row0 = std::min(box.row0, index / width);
-    box.row1 = std::max(box.row1, index / width);
+    inner_mask.data[index] = 1;
   }
   if (inner.empty()) return {};
-
-  // Mark the boxes grown by the reach, unless they would cover most of the
-  // map anyway.
+  // Within a square around the inner cells: a little more than the reach.
   const int margin = int(std::ceil(reach)) + 1;
-  double marked_area = 0;
-  for (const CellBox& box : boxes) {
-    if (box.col1 < 0) continue;
-    marked_area += double(box.col1 - box.col0 + 1 + 2 * margin) * (box.row1 - box.row0 + 1 + 2 * margin);
-  }
-  const bool mark_all = marked_area > 0.5 * width * height;
-  std::vector<uint8_t> within_reach(mark_all ? 0 : size_t(width) * height, 0);
-  for (const CellBox& box : mark_all ? std::vector<CellBox>() : boxes) {
-    if (box.col1 < 0) continue;
-    const int col0 = std::max(0, box.col0 - margin);
-    const int col1 = std::min(width - 1, box.col1 + margin);
-    for (int row = std::max(0, box.row0 - margin); row <= std::min(height - 1, box.row1 + margin);
-         ++row) {
-      std::fill(within_reach.begin() + row * width + col0, within_reach.begin() + row * width + col1 + 1,
-                1);
-    }
-  }
+  cv::Mat within_reach;
+  cv::dilate(inner_mask, within_reach,
+             cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * margin + 1, 2 * margin + 1)));
 
   const std::vector<uint8_t> near_free = NearFreeMask(cells, width, height);
   std::vector<int> edge;
   for (int index = 0; index < width * height; ++index) {
-    if (label[index] == 0 || !outline[label[index]] || !near_free[index]) continue;
-    if (mark_all || within_reach[index]) edge.push_back(index);
+    if (within_reach.data[index] && near_free[index] && label[index] != 0 &&
+        outline[label[index]]) {
+      edge.push_back(index);
+    }
   }
   std::vector<int> merged(inner.size() + edge.size());
   std::merge(inner.begin(), inner.end(), edge.begin(), edge.end(), merged.begin());

@@ -19,7 +19,9 @@ std::vector<int> OccupiedRows::Cells() const {
   std::vector<int> cells;
   cells.reserve(cols_.size());
   for (int row = 0; row < height_; ++row) {
-    for (int i = row_start_[row]; i < row_start_[row + 1]; ++i) cells.push_back(row * width_ + cols_[i]);
+    for (int i = row_start_[row]; i < row_start_[row + 1]; ++i) {
+      cells.push_back(row * width_ + cols_[i]);
+    }
   }
   return cells;
 }

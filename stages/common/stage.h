@@ -20,11 +20,13 @@ struct StageInfo {
 };
 
 inline constexpr StageInfo kImportStage{"import", 1};
-inline constexpr StageInfo kCleanStage{"clean", 1};
-inline constexpr StageInfo kVoronoiStage{"voronoi", 1};
+// clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
+inline constexpr StageInfo kCleanStage{"clean", 3};
+inline constexpr StageInfo kVoronoiStage{"voronoi", 2};  // 2: edges in face order
 inline constexpr StageInfo kPruneStage{"prune", 1};
 inline constexpr StageInfo kCutStage{"cut", 1};
-inline constexpr StageInfo kMergeStage{"merge", 1};
+// merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
+inline constexpr StageInfo kMergeStage{"merge", 2};
 
 // The stages in pipeline order.
 inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,

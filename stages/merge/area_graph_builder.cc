@@ -60,6 +60,7 @@ std::vector<std::set<int>> GraphNeighbours(const proto::CutGraph& graph, const A
 void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* plan,
                     AreaRaster* raster) {
   std::set<int> unfoldable;
+  std::vector<cv::Rect> box = AreaBoxes(*raster);
   for (;;) {
     int smallest = -1;
     for (size_t k = 0; k < plan->areas.size(); ++k) {
@@ -71,12 +72,7 @@ void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* p
     if (smallest < 0 || plan->areas.size() < 2) return;
     const std::vector<std::set<int>> neighbours = GraphNeighbours(graph, *plan);
     const int64_t count = static_cast<int64_t>(plan->areas.size());
-    std::vector<int64_t> border(count, 0);
-    for (const auto& [key, length] : SharedBorders(*raster)) {
-      const int a = static_cast<int>(key / count), b = static_cast<int>(key % count);
-      if (a == smallest) border[b] = length;
-      if (b == smallest) border[a] = length;
-    }
+    const std::vector<int64_t> border = BordersOf(*raster, smallest, box[smallest]);
     auto pick = [&](auto score, bool graph_only) {
       int best = -1;
       for (int k = 0; k < count; ++k) {
@@ -97,6 +93,10 @@ void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* p
     }
     plan->MergeInto(smallest, into);
     MergeAreaCells(smallest, into, raster);
+    if (box[smallest].area() > 0) {
+      box[into] = box[into].area() == 0 ? box[smallest] : (box[into] | box[smallest]);
+    }
+    box.erase(box.begin() + smallest);
     // Indices above `smallest` shifted down.
     std::set<int> shifted;
     for (int k : unfoldable) shifted.insert(k > smallest ? k - 1 : k);
@@ -138,6 +138,10 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
     throw OptionsError("merge.min_area_m2 must be zero or more square metres, got " +
                        std::to_string(options.min_area_m2()));
   }
+  if (!std::isfinite(options.grow_min_gap_m()) || options.grow_min_gap_m() < 0) {
+    throw OptionsError("merge.grow_min_gap_m must be zero or more metres, got " +
+                       std::to_string(options.grow_min_gap_m()));
+  }
 }
 
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
@@ -161,8 +165,18 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
       }
     }
   }
+  cv::Mat removed;
+  if (!options.cover_removed_obstacles()) {
+    removed = cv::Mat::zeros(grid.height(), grid.width(), CV_8U);
+    for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
+      for (const int index : *list) {
+        if (index >= 0 && index < grid.width() * grid.height()) removed.data[index] = 1;
+      }
+    }
+  }
   AreaRaster raster =
-      PartitionFreeSpace(grid, graph.boundary(), polygons, paths, ThroughPaths(graph, plan));
+      PartitionFreeSpace(grid, graph.boundary(), polygons, paths, ThroughPaths(graph, plan),
+                         options.grow_min_gap_m() / grid.resolution_m(), removed);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);

@@ -8,14 +8,18 @@
 
 namespace areagraph {
 
-// Throws OptionsError when merge.min_area_m2 is negative or not finite.
+// Throws OptionsError when merge.min_area_m2 or merge.grow_min_gap_m is
+// negative or not finite.
 void CheckMergeOptions(const proto::MergeOptions& options);
 
 // ag-merge: the Area Graph. The CutGraph's edges are grouped into areas
 // (AssignAreas); the areas split the map's free cells inside the boundary
 // among themselves (PartitionFreeSpace), so they never overlap and each is
-// one piece; areas smaller than merge.min_area_m2 (and areas left without
-// cells) fold into the neighbour they share the longest border with. Every
+// one piece; cells that ag-clean freed stay out unless
+// merge.cover_removed_obstacles, and free space behind gaps narrower than
+// merge.grow_min_gap_m that no edge reaches stays unlabelled; areas smaller
+// than merge.min_area_m2 (and areas left without cells) fold into the
+// neighbour they share the longest border with. Every
 // area's polygon is traced along cell edges and lightly simplified; the
 // passages are where areas meet at graph vertices (FindPassages). When
 // `raster` is given it receives the final label image. Throws InputError

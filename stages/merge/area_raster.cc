@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
-#include <map>
 #include <opencv2/imgproc.hpp>
 
 #include "stages/geometry/polygon_raster.h"
@@ -14,13 +13,17 @@ namespace {
 constexpr int kDx[4] = {1, -1, 0, 0};
 constexpr int kDy[4] = {0, 0, 1, -1};
 
-// Breadth-first growth of all labels into unlabelled domain cells.
+// Label of the cells that free space the graph never reached claims while
+// growing; cleared to 0 afterwards.
+constexpr int kUnreached = -1;
+
+// Breadth-first growth of all labels (kUnreached too) into unlabelled domain cells.
 void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
   std::deque<cv::Point> queue;
   for (int r = 0; r < labels->rows; ++r) {
     const int* row = labels->ptr<int>(r);
     for (int c = 0; c < labels->cols; ++c) {
-      if (row[c] > 0) queue.emplace_back(c, r);
+      if (row[c] != 0) queue.emplace_back(c, r);
     }
   }
   while (!queue.empty()) {
@@ -47,7 +50,7 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   for (int r = 0; r < labels->rows; ++r) {
     for (int c = 0; c < labels->cols; ++c) {
       const int label = labels->at<int>(r, c);
-      if (label == 0 || piece.at<int>(r, c) >= 0) continue;
+      if (label <= 0 || piece.at<int>(r, c) >= 0) continue;
       const int id = static_cast<int>(piece_size.size());
       piece_size.push_back(0);
       piece_path.push_back(0);
@@ -85,6 +88,44 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   }
 }
 
+// Marks kUnreached on the unlabelled cells of the cores (free cells at least
+// min_gap_px / 2 from any non-free cell, 4-connected pieces) that no area's
+// polygons or paths reach and that are big enough to be a room.
+void MarkUnreachedCores(const CellGrid& grid, const cv::Mat& domain, double min_gap_px,
+                        cv::Mat* labels) {
+  cv::Mat free_cells(labels->size(), CV_8U);
+  for (int r = 0; r < free_cells.rows; ++r) {
+    uint8_t* row = free_cells.ptr<uint8_t>(r);
+    for (int c = 0; c < free_cells.cols; ++c) row[c] = grid.IsFree(c, r) ? 255 : 0;
+  }
+  cv::Mat distance;
+  cv::distanceTransform(free_cells, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  cv::Mat core = (distance >= 0.5 * min_gap_px) & (domain != 0);
+  cv::Mat pieces;
+  const int count = cv::connectedComponents(core, pieces, 4, CV_32S);
+  std::vector<uint8_t> reached(count, 0);
+  std::vector<int64_t> size(count, 0);
+  for (int r = 0; r < pieces.rows; ++r) {
+    for (int c = 0; c < pieces.cols; ++c) {
+      const int piece = pieces.at<int>(r, c);
+      ++size[piece];
+      if (labels->at<int>(r, c) > 0) reached[piece] = 1;
+    }
+  }
+  // Pockets in clutter are no room: a core must span (2 gaps)^2 to stay unreached.
+  const double min_core_cells = 4 * min_gap_px * min_gap_px;
+  for (int piece = 1; piece < count; ++piece) {
+    if (size[piece] < min_core_cells) reached[piece] = 1;
+  }
+  for (int r = 0; r < pieces.rows; ++r) {
+    for (int c = 0; c < pieces.cols; ++c) {
+      const int piece = pieces.at<int>(r, c);
+      int& label = labels->at<int>(r, c);
+      if (piece > 0 && !reached[piece] && label == 0) label = kUnreached;
+    }
+  }
+}
+
 void CountCells(AreaRaster* raster) {
   std::fill(raster->cell_count.begin(), raster->cell_count.end(), 0);
   for (int r = 0; r < raster->labels.rows; ++r) {
@@ -100,14 +141,16 @@ void CountCells(AreaRaster* raster) {
 AreaRaster PartitionFreeSpace(const CellGrid& grid, const proto::Polygon& boundary,
                               const std::vector<std::vector<const proto::Polygon*>>& area_polygons,
                               const std::vector<std::vector<PointList>>& area_paths,
-                              const std::vector<std::pair<PointList, int>>& through_paths) {
+                              const std::vector<std::pair<PointList, int>>& through_paths,
+                              double min_gap_px, const cv::Mat& keep_out) {
   const cv::Size size(grid.width(), grid.height());
   cv::Mat domain = PolygonMask(boundary, size);
   AreaRaster raster;
   for (int r = 0; r < size.height; ++r) {
     uint8_t* row = domain.ptr<uint8_t>(r);
     for (int c = 0; c < size.width; ++c) {
-      row[c] = row[c] && grid.IsFree(c, r) ? 1 : 0;
+      const bool kept_out = !keep_out.empty() && keep_out.at<uint8_t>(r, c) != 0;
+      row[c] = row[c] && grid.IsFree(c, r) && !kept_out ? 1 : 0;
       raster.domain_cells += row[c];
     }
   }
@@ -132,9 +175,11 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, const proto::Polygon& bounda
   }
   for (const auto& [path, area] : through_paths) draw_path(path, area);
   raster.labels.setTo(0, domain == 0);
+  if (min_gap_px > 0) MarkUnreachedCores(grid, domain, min_gap_px, &raster.labels);
   GrowLabels(domain, &raster.labels);
   KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
   GrowLabels(domain, &raster.labels);
+  raster.labels.setTo(0, raster.labels == kUnreached);
   raster.cell_count.assign(area_polygons.size(), 0);
   CountCells(&raster);
   return raster;
@@ -153,24 +198,36 @@ void MergeAreaCells(int from, int into, AreaRaster* raster) {
   raster->cell_count.erase(raster->cell_count.begin() + from);
 }
 
-std::vector<std::pair<int64_t, int64_t>> SharedBorders(const AreaRaster& raster) {
-  const int64_t count = static_cast<int64_t>(raster.cell_count.size());
-  std::map<int64_t, int64_t> borders;
+std::vector<int64_t> BordersOf(const AreaRaster& raster, int area, const cv::Rect& box) {
+  std::vector<int64_t> border(raster.cell_count.size(), 0);
   const cv::Mat& labels = raster.labels;
-  for (int r = 0; r < labels.rows; ++r) {
-    for (int c = 0; c < labels.cols; ++c) {
-      const int a = labels.at<int>(r, c);
-      if (a == 0) continue;
-      const int right = c + 1 < labels.cols ? labels.at<int>(r, c + 1) : 0;
-      const int below = r + 1 < labels.rows ? labels.at<int>(r + 1, c) : 0;
-      for (const int b : {right, below}) {
-        if (b == 0 || b == a) continue;
-        const int64_t lo = std::min(a, b) - 1, hi = std::max(a, b) - 1;
-        ++borders[lo * count + hi];
+  const int label = area + 1;
+  const cv::Rect inside = box & cv::Rect(0, 0, labels.cols, labels.rows);
+  for (int r = inside.y; r < inside.br().y; ++r) {
+    for (int c = inside.x; c < inside.br().x; ++c) {
+      if (labels.at<int>(r, c) != label) continue;
+      for (int k = 0; k < 4; ++k) {
+        const int x = c + kDx[k], y = r + kDy[k];
+        if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) continue;
+        const int other = labels.at<int>(y, x);
+        if (other > 0 && other != label) ++border[other - 1];
       }
     }
   }
-  return {borders.begin(), borders.end()};
+  return border;
+}
+
+std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
+  std::vector<cv::Rect> box(raster.cell_count.size());
+  for (int r = 0; r < raster.labels.rows; ++r) {
+    const int* row = raster.labels.ptr<int>(r);
+    for (int c = 0; c < raster.labels.cols; ++c) {
+      if (row[c] <= 0) continue;
+      cv::Rect& b = box[row[c] - 1];
+      b = b.area() == 0 ? cv::Rect(c, r, 1, 1) : (b | cv::Rect(c, r, 1, 1));
+    }
+  }
+  return box;
 }
 
 }  // namespace areagraph

@@ -28,17 +28,32 @@ struct AreaRaster {
 // is one connected piece and no two overlap. `through_paths` (path, area) are painted last: the
 // paths of an area that runs through a graph vertex (it has several edges there), which a
 // neighbour's path through the same cells would otherwise cut apart.
+//
+// With `min_gap_px` > 0 the growth does not pass gaps narrower than that:
+// the free cells at least min_gap_px / 2 from every non-free cell form
+// cores, split at such gaps; a core of at least (2 min_gap_px)^2 cells that
+// no area's polygons or paths touch is free space the graph never reached
+// (a room behind a door too narrow for the Topology Graph), and it claims,
+// competing in the same growth, the cells nearer to it, which then stay
+// unlabelled.
+//
+// Cells where `keep_out` (CV_8U, map size, optional) is non-zero are not
+// part of the domain: no area covers them.
 AreaRaster PartitionFreeSpace(const CellGrid& grid, const proto::Polygon& boundary,
                               const std::vector<std::vector<const proto::Polygon*>>& area_polygons,
                               const std::vector<std::vector<PointList>>& area_paths,
-                              const std::vector<std::pair<PointList, int>>& through_paths);
+                              const std::vector<std::pair<PointList, int>>& through_paths,
+                              double min_gap_px = 0, const cv::Mat& keep_out = cv::Mat());
 
 // Gives the cells of area `from` to area `into` and drops `from` (later
 // areas' labels shift down by one).
 void MergeAreaCells(int from, int into, AreaRaster* raster);
 
-// How many cell sides area a shares with area b, for every touching pair
-// (a < b), keyed a * area_count + b.
-std::vector<std::pair<int64_t, int64_t>> SharedBorders(const AreaRaster& raster);
+// How many cell sides area `area` shares with each area (indexed by area),
+// looking only at its cells inside `box` (which must hold all of them).
+std::vector<int64_t> BordersOf(const AreaRaster& raster, int area, const cv::Rect& box);
+
+// The bounding box of every area's cells (empty for an area without cells).
+std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster);
 
 }  // namespace areagraph

@@ -4,7 +4,9 @@
 #include <CGAL/Polygon_2.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <deque>
+#include <opencv2/imgproc.hpp>
 #include <set>
 
 #include "stages/common/map_frame.h"
@@ -57,12 +59,55 @@ cv::Rect Bounds(const proto::Ring& ring, cv::Size size) {
   return box & cv::Rect(0, 0, size.width, size.height);
 }
 
-// Free cells inside the boundary that are 4-connected (through such cells)
-// to a labelled cell.
+// Cells of the cores (free cells at least min_gap_px / 2 from every
+// non-free cell, in 4-connected pieces of at least (2 min_gap_px)^2 cells)
+// that hold no labelled cell, widened by min_gap_px / 2: free space behind a
+// gap narrower than min_gap_px that no area reached. Empty for min_gap_px 0.
+cv::Mat UnreachedRooms(const AreaRaster& raster, const proto::CleanedMap& map,
+                       double min_gap_px) {
+  const cv::Size size = raster.labels.size();
+  cv::Mat unreached = cv::Mat::zeros(size, CV_8U);
+  if (min_gap_px <= 0) return unreached;
+  cv::Mat free_cells(size, CV_8U);
+  for (int r = 0; r < size.height; ++r) {
+    for (int c = 0; c < size.width; ++c) {
+      free_cells.at<uint8_t>(r, c) =
+          map.cells()[static_cast<size_t>(r) * size.width + c] == proto::CELL_FREE ? 255 : 0;
+    }
+  }
+  cv::Mat distance, pieces;
+  cv::distanceTransform(free_cells, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const int count = cv::connectedComponents(distance >= 0.5 * min_gap_px, pieces, 4, CV_32S);
+  std::vector<int64_t> cells(count, 0);
+  std::vector<bool> labelled(count, false);
+  for (int r = 0; r < size.height; ++r) {
+    for (int c = 0; c < size.width; ++c) {
+      const int piece = pieces.at<int>(r, c);
+      ++cells[piece];
+      if (raster.labels.at<int>(r, c) > 0) labelled[piece] = true;
+    }
+  }
+  for (int r = 0; r < size.height; ++r) {
+    for (int c = 0; c < size.width; ++c) {
+      const int piece = pieces.at<int>(r, c);
+      if (piece > 0 && !labelled[piece] && cells[piece] >= 4 * min_gap_px * min_gap_px) {
+        unreached.at<uint8_t>(r, c) = 255;
+      }
+    }
+  }
+  const int reach = static_cast<int>(std::ceil(0.5 * min_gap_px));
+  cv::dilate(unreached, unreached,
+             cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(2 * reach + 1, 2 * reach + 1)));
+  return unreached;
+}
+
+// Free cells inside the boundary that are 4-connected (through such cells,
+// outside UnreachedRooms) to a labelled cell, those included.
 int64_t ReachableCells(const AreaRaster& raster, const proto::CleanedMap& map,
-                       const proto::Polygon& boundary) {
+                       const proto::Polygon& boundary, double min_gap_px) {
   const cv::Size size = raster.labels.size();
   const cv::Mat inside = PolygonMask(boundary, size);
+  const cv::Mat unreached = UnreachedRooms(raster, map, min_gap_px);
   cv::Mat seen = cv::Mat::zeros(size, CV_8U);
   std::deque<cv::Point> queue;
   for (int r = 0; r < size.height; ++r) {
@@ -82,7 +127,7 @@ int64_t ReachableCells(const AreaRaster& raster, const proto::CleanedMap& map,
         continue;
       }
       if (map.cells()[static_cast<size_t>(q.y) * size.width + q.x] != proto::CELL_FREE ||
-          !inside.at<uint8_t>(q)) {
+          !inside.at<uint8_t>(q) || unreached.at<uint8_t>(q)) {
         continue;
       }
       seen.at<uint8_t>(q) = 1;
@@ -117,6 +162,7 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) 
 AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options,
                          const std::string& map_name) {
   AreaStages stages;
+  stages.options = options;
   stages.diagram = ComputeVoronoiStage(map, options.voronoi(), map_name);
   stages.topology = BuildTopologyGraph(stages.diagram, map, options.prune(), map_name);
   stages.cut = BuildCutGraph(stages.topology, map, options.cut(), map_name);
@@ -179,7 +225,10 @@ void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap
   ASSERT_GT(raster.domain_cells, 0);
   EXPECT_GE(static_cast<double>(covered) / raster.domain_cells, min_coverage);
   EXPECT_GE(static_cast<double>(polygon_cells) / raster.domain_cells, min_coverage);
-  EXPECT_GE(static_cast<double>(covered) / ReachableCells(raster, map, stages.cut.boundary()),
+  const double min_gap_px =
+      stages.options.merge().grow_min_gap_m() / map.frame().resolution_m();
+  EXPECT_GE(static_cast<double>(covered) /
+                ReachableCells(raster, map, stages.cut.boundary(), min_gap_px),
             0.99);
 
   // Passages join two areas that meet there.

@@ -15,6 +15,8 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m =
 
 // Everything the area stages make for one map.
 struct AreaStages {
+  // The options they ran with.
+  proto::PipelineOptions options;
   proto::VoronoiDiagram diagram;
   proto::TopologyGraph topology;
   proto::CutGraph cut;
@@ -34,7 +36,9 @@ AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOpti
 // - the areas cover at least `min_coverage` of the free cells inside the
 //   boundary, in the raster and in the polygons, and at least 99 % of those
 //   that are reachable (4-connected through free cells inside the boundary)
-//   from some area: real maps have closed-off pockets, such as courtyards;
+//   from some area: real maps have closed-off pockets, such as courtyards,
+//   and rooms behind gaps narrower than merge.grow_min_gap_m that no area
+//   reached do not count;
 // - every passage joins two different existing areas, and both have cells
 //   next to the passage point;
 // - the areas are connected through the passages;

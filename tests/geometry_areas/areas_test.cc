@@ -90,6 +90,9 @@ TEST(AreaStagesTest, MazeHasOneAreaPerTopologyGraphEdge) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_m(2.0);
+  // The paper's areas: every one kept, however small (the default folds
+  // areas below merge.min_area_m2, and these dead ends hold about 1-3 m2).
+  options.mutable_merge()->set_min_area_m2(0);
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map);
   EXPECT_EQ(stages.cut.room_shapes_size(), 0);
@@ -160,6 +163,104 @@ TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
   ExpectAreaGraphInvariants(stages, map);
   EXPECT_EQ(stages.areas.areas_size(), 1);
   EXPECT_EQ(stages.areas.passages_size(), 0);
+}
+
+// A door narrower than twice the clearance keeps the Topology Graph out of
+// the small room (only the biggest connected group is kept), so no area's
+// edge reaches it: the big room's area must not grow through the door.
+TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
+  FloorPlan plan(9.5, 5);
+  DrawRoom(plan, {0.5, 0.5, 5, 4});
+  DrawRoom(plan, {5.5, 0.5, 3.5, 4});
+  DrawDoor(plan, 5.5, 2.5, 0.35, WallDirection::kVertical);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  // The small room is 40 % of the free space.
+  ExpectAreaGraphInvariants(stages, map, /*min_coverage=*/0.55);
+  ASSERT_EQ(stages.areas.areas_size(), 1);
+  EXPECT_NE(AreaAt(stages.areas, 3, 2.5), -1);
+  EXPECT_EQ(AreaAt(stages.areas, 7.25, 2.5), -1);
+  EXPECT_EQ(AreaAt(stages.areas, 6, 1), -1);
+  // The big room is covered up to the door.
+  EXPECT_NEAR(stages.areas.areas(0).area_m2(), 4.85 * 3.85, 0.5);
+
+  // Growing everywhere (merge.grow_min_gap_m = 0) floods the small room too.
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_grow_min_gap_m(0);
+  const AreaStages flooded = RunAreaStages(map, options);
+  ASSERT_EQ(flooded.areas.areas_size(), 1);
+  EXPECT_NE(AreaAt(flooded.areas, 7.25, 2.5), -1);
+}
+
+// A door as wide as the limit still lets the areas grow: the room behind
+// it is reached by the graph and gets its own area.
+TEST(AreaStagesTest, NormalDoorsAreNotGrowthLimits) {
+  FloorPlan plan(9.5, 5);
+  DrawRoom(plan, {0.5, 0.5, 5, 4});
+  DrawRoom(plan, {5.5, 0.5, 3.5, 4});
+  DrawDoor(plan, 5.5, 2.5, 0.8, WallDirection::kVertical);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_NE(AreaAt(stages.areas, 3, 2.5), -1);
+  EXPECT_NE(AreaAt(stages.areas, 7.25, 2.5), -1);
+}
+
+// A 1 m wide alcove off a room is a dead-end area of its own in the paper;
+// at about 2.3 m2 it is below merge.min_area_m2 (4 m2 by default) and folds
+// into the room.
+TEST(AreaStagesTest, TinyAreasFoldIntoTheirRoomByDefault) {
+  FloorPlan plan(9, 5);
+  DrawRoom(plan, {0.5, 0.5, 5, 4});
+  DrawRoom(plan, {5.5, 1.6, 2.5, 1.0});
+  DrawDoor(plan, 5.5, 2.1, 0.8, WallDirection::kVertical);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+
+  proto::PipelineOptions paper;
+  paper.mutable_merge()->set_min_area_m2(0);
+  const AreaStages kept = RunAreaStages(map, paper);
+  ExpectAreaGraphInvariants(kept, map);
+  EXPECT_EQ(kept.areas.areas_size(), 2);
+  const int room = AreaAt(kept.areas, 3, 2.5), niche = AreaAt(kept.areas, 7, 2.1);
+  EXPECT_NE(room, -1);
+  EXPECT_NE(niche, -1);
+  EXPECT_NE(room, niche);
+
+  const AreaStages folded = RunAreaStages(map);
+  ExpectAreaGraphInvariants(folded, map);
+  ASSERT_EQ(folded.areas.areas_size(), 1);
+  EXPECT_EQ(folded.areas.passages_size(), 0);
+  EXPECT_EQ(AreaAt(folded.areas, 7, 2.1), 0);
+  EXPECT_EQ(AreaAt(folded.areas, 3, 2.5), 0);
+}
+
+// Cells that ag-clean freed (outliers, furniture) are no area's by default;
+// merge.cover_removed_obstacles = true (the paper) covers them too.
+TEST(AreaStagesTest, RemovedObstacleCellsStayOutsideTheAreas) {
+  FloorPlan plan(6, 5);
+  DrawRoom(plan, {0.5, 0.5, 5, 4});
+  proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const int width = map.frame().width_px();
+  // Three cells in the room that cleaning freed.
+  const std::vector<int> removed = {40 * width + 40, 40 * width + 41, 60 * width + 70};
+  for (int index : removed) map.add_removed_outlier_cells(index);
+  map.add_removed_furniture_cells(50 * width + 30);
+
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  ASSERT_EQ(stages.areas.areas_size(), 1);
+  for (int index : {removed[0], removed[1], removed[2], 50 * width + 30}) {
+    EXPECT_EQ(stages.raster.labels.at<int>(index / width, index % width), 0);
+  }
+  EXPECT_EQ(stages.raster.labels.at<int>(40, 42), 1);
+
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_cover_removed_obstacles(true);
+  const AreaStages covered = RunAreaStages(map, options);
+  ASSERT_EQ(covered.areas.areas_size(), 1);
+  for (int index : removed) {
+    EXPECT_EQ(covered.raster.labels.at<int>(index / width, index % width), 1);
+  }
 }
 
 }  // namespace

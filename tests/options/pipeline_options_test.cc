@@ -109,6 +109,12 @@ TEST(PipelineOptionsTest, BadFileNamesLine) {
 TEST(PipelineOptionsTest, ShippedOptionFilesParse) {
   const proto::PipelineOptions options = ReadOptionsFile(testing::SourcePath("examples/options/default.pbtxt"));
   EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.25);
+  // default.pbtxt spells out the built-in defaults.
+  EXPECT_EQ(CanonicalText(options), CanonicalText(proto::PipelineOptions()));
+  const proto::PipelineOptions paper =
+      ReadOptionsFile(testing::SourcePath("examples/options/paper.pbtxt"));
+  EXPECT_EQ(paper.merge().min_area_m2(), 0);
+  EXPECT_TRUE(paper.merge().cover_removed_obstacles());
 }
 
 }  // namespace

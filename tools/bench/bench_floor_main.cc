@@ -43,7 +43,9 @@ FloorTimes TimeFloor(const std::string& path, int repeat) {
     whole.push_back(decode.back() + sites.back() + delaunay.back());
     times.size = std::to_string(width) + "x" + std::to_string(height);
     times.sites = centres.size();
-    if (faces == 0 && centres.size() > 2) std::fprintf(stderr, "%s: sites on one line\n", path.c_str());
+    if (faces == 0 && centres.size() > 2) {
+      std::fprintf(stderr, "%s: sites on one line\n", path.c_str());
+    }
   }
   times.decode_ms = Median(decode);
   times.sites_ms = Median(sites);
