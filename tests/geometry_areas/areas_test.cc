@@ -23,6 +23,21 @@ Eigen::Vector2d PlanPoint(const proto::Passage& passage, const proto::CleanedMap
   return {passage.point_m().x(), height_m - passage.point_m().y()};
 }
 
+// Three 10/3 m wide rooms above a corridor with about 1.6 m free between its
+// walls, each joined to it by a 0.9 m door; the doors' x go to `door_xs`.
+FloorPlan CorridorWithThreeRooms(std::vector<double>* door_xs = nullptr) {
+  FloorPlan plan(11, 6.5);
+  const double room_width = 10.0 / 3;
+  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
+  DrawRoom(plan, {0.5, 4.0, 10, 1.75});
+  for (int i = 0; i < 3; ++i) {
+    const double door_x = 0.5 + (i + 0.5) * room_width;
+    if (door_xs != nullptr) door_xs->push_back(door_x);
+    DrawDoor(plan, door_x, 4.0, 0.9, WallDirection::kHorizontal);
+  }
+  return plan;
+}
+
 TEST(AreaStagesTest, OneRoomIsOneArea) {
   FloorPlan plan(6, 5);
   DrawRoom(plan, {0.5, 0.5, 5, 4});
@@ -57,15 +72,8 @@ TEST(AreaStagesTest, TwoRoomsJoinedByADoorAreTwoAreasWithOnePassage) {
 }
 
 TEST(AreaStagesTest, CorridorWithThreeRoomsIsFourAreasWithThreePassages) {
-  FloorPlan plan(11, 6.5);
-  const double room_width = 10.0 / 3;
-  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
-  DrawRoom(plan, {0.5, 4.0, 10, 1.75});  // about 1.6 m free between the walls
   std::vector<double> doors;
-  for (int i = 0; i < 3; ++i) {
-    doors.push_back(0.5 + (i + 0.5) * room_width);
-    DrawDoor(plan, doors.back(), 4.0, 0.9, WallDirection::kHorizontal);
-  }
+  const FloorPlan plan = CorridorWithThreeRooms(&doors);
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   const AreaStages stages = RunAreaStages(map);
   ExpectAreaGraphInvariants(stages, map);
@@ -129,13 +137,7 @@ TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
 TEST(AreaStagesTest, NarrowerRoomWidthStrategyMakesTheCorridorARoom) {
   // Door 0.9 < corridor 1.6: W = 1.0 m. The corridor still holds the disk,
   // so the result matches the fixed W of 1.25 m.
-  FloorPlan plan(11, 6.5);
-  const double room_width = 10.0 / 3;
-  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
-  DrawRoom(plan, {0.5, 4.0, 10, 1.75});
-  for (int i = 0; i < 3; ++i) {
-    DrawDoor(plan, 0.5 + (i + 0.5) * room_width, 4.0, 0.9, WallDirection::kHorizontal);
-  }
+  const FloorPlan plan = CorridorWithThreeRooms();
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
   options.mutable_cut()->set_door_width_m(0.9);
@@ -148,13 +150,7 @@ TEST(AreaStagesTest, NarrowerRoomWidthStrategyMakesTheCorridorARoom) {
 }
 
 TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
-  FloorPlan plan(11, 6.5);
-  const double room_width = 10.0 / 3;
-  for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * room_width, 0.5, room_width, 3.5});
-  DrawRoom(plan, {0.5, 4.0, 10, 1.75});
-  for (int i = 0; i < 3; ++i) {
-    DrawDoor(plan, 0.5 + (i + 0.5) * room_width, 4.0, 0.9, WallDirection::kHorizontal);
-  }
+  const FloorPlan plan = CorridorWithThreeRooms();
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
   // The rooms hold about 10.5 m2 each, the corridor about 15.5 m2.
