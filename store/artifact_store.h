@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,6 +52,32 @@ struct NewArtifact {
   std::optional<std::string> source_digest;
 };
 
+// A map that failed in a runner, with the stage it failed in. Keyed by map
+// name, not by the maps table: a map whose import failed has no map row.
+struct FailureRecord {
+  std::string map_name;
+  std::string stage;
+  std::string message;
+  std::string source_path;
+  std::string failed_at;  // UTC, ISO 8601; filled in by the store
+};
+
+// What `ag-store verify` found wrong with one artifact.
+struct VerifyProblem {
+  std::string map_name;
+  std::string stage;
+  std::string cache_key;
+  std::string problem;
+};
+
+// What CollectGarbage or MergeFrom changed.
+struct MaintenanceCounts {
+  int64_t maps = 0;
+  int64_t artifacts = 0;
+  int64_t payload_bytes = 0;
+  int64_t failures = 0;
+};
+
 // The artifact store. One SQLite file (or ":memory:") holds maps, artifacts
 // and the head of each (map, stage). Every Write*/Update* is one transaction.
 // Errors are thrown as StoreError with a message fit for the user.
@@ -77,6 +104,39 @@ class ArtifactStore {
   virtual void WriteArtifact(const NewArtifact& artifact) = 0;
   // Makes an existing artifact the head of its (map, stage); for cache hits.
   virtual void UpdateHead(const std::string& map_name, const std::string& cache_key) = 0;
+
+  // Cheap cache checks for runners: no payload is read.
+  virtual bool HasArtifact(const std::string& map_name, const std::string& cache_key) = 0;
+  virtual std::optional<std::string> ReadHeadKey(const std::string& map_name,
+                                                 const std::string& stage) = 0;
+
+  // Failures recorded by runners; at most one per map, the latest.
+  virtual void RecordFailure(const FailureRecord& failure) = 0;
+  virtual void ClearFailure(const std::string& map_name) = 0;
+  virtual std::vector<FailureRecord> ReadFailures() = 0;
+
+  // Maintenance (ag-store). Verify reads every payload, one at a time, and
+  // checks its digest and that it is well-formed protobuf wire format (the
+  // store does not know the message types); it also checks that every head
+  // points at an artifact of its own map and stage, and that every input key
+  // of a non-import artifact names an artifact of the same map (an import's
+  // input is a file digest). `progress` hears (done, total) after each artifact.
+  virtual std::vector<VerifyProblem> Verify(
+      const std::function<void(int64_t, int64_t)>& progress = nullptr) = 0;
+  // Deletes artifacts that no head reaches, directly or through input keys
+  // (followed within the map), and then maps left without any artifact, in
+  // one transaction. Counts what was deleted; the file shrinks only after
+  // VacuumArtifactStore (store/store_maintenance.h).
+  virtual MaintenanceCounts CollectGarbage() = 0;
+  // Copies the maps, artifacts, heads and failures of the store at `path`
+  // into this one, in one transaction, and counts what was new. Maps match by
+  // name and artifacts by (map, cache key); an artifact both stores hold is
+  // kept as it is here. A (map, stage) head both hold goes to the artifact
+  // created later (a tie keeps this store's), and the map's source follows
+  // its import head. A failure goes to the later one, and is dropped when the
+  // merged map has a head created after it. Throws StoreError when `path` is
+  // this store, or not an areagraph store of this build's schema or older.
+  virtual MaintenanceCounts MergeFrom(const std::string& path) = 0;
 };
 
 enum class StoreMode { kReadWrite, kReadOnly };
@@ -87,7 +147,9 @@ enum class StoreMode { kReadWrite, kReadOnly };
 std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path,
                                                  StoreMode mode = StoreMode::kReadWrite);
 
-// The schema version this build writes and the newest it reads.
-constexpr int kStoreSchemaVersion = 1;
+// The schema version this build writes and the newest it reads. 2 added the
+// failures table; a version-1 store is upgraded when opened read-write, and
+// read as it is (without failures) when opened read-only.
+constexpr int kStoreSchemaVersion = 2;
 
 }  // namespace areagraph

@@ -1,5 +1,7 @@
-// The SQLite implementation of ArtifactStore. Only OpenArtifactStore is
-// visible outside this file.
+// The SQLite implementation of ArtifactStore: opening and upgrading the
+// file, reads, writes and failures. Maintenance is in sqlite_store_maintenance.cc.
+
+#include "store/sqlite_artifact_store.h"
 
 #include <sqlite3.h>
 
@@ -8,28 +10,16 @@
 #include <thread>
 #include <utility>
 
-#include "store/artifact_store.h"
 #include "store/digest.h"
 #include "store/error.h"
-#include "store/sqlite_connection.h"
-#include "store/sqlite_statement.h"
 #include "store/sqlite_store_sql.h"
-#include "store/sqlite_transaction.h"
 
 namespace areagraph {
-namespace {
 
-// The first characters of a cache key, enough to tell artifacts apart in messages.
-std::string ShortKey(const std::string& cache_key) { return cache_key.substr(0, 12); }
+using store_internal::ShortKey;
+using store_internal::SplitLines;
 
-std::string JoinLines(const std::vector<std::string>& lines) {
-  std::string joined;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    if (i > 0) joined += '\n';
-    joined += lines[i];
-  }
-  return joined;
-}
+namespace store_internal {
 
 std::vector<std::string> SplitLines(const std::string& joined) {
   std::vector<std::string> lines;
@@ -44,63 +34,20 @@ std::vector<std::string> SplitLines(const std::string& joined) {
   return lines;
 }
 
-class SqliteArtifactStore : public ArtifactStore {
- public:
-  SqliteArtifactStore(const std::string& path, StoreMode mode);
+}  // namespace store_internal
 
-  std::vector<MapRecord> ReadAllMaps() override;
-  std::optional<MapRecord> ReadMap(const std::string& map_name) override;
-  std::optional<ArtifactRecord> ReadArtifact(const std::string& map_name,
-                                             const std::string& cache_key) override;
-  std::optional<ArtifactRecord> ReadHead(const std::string& map_name,
-                                         const std::string& stage) override;
-  std::vector<ArtifactRecord> ReadArtifactSummaries(const std::string& map_name) override;
-  void WriteArtifact(const NewArtifact& artifact) override;
-  void UpdateHead(const std::string& map_name, const std::string& cache_key) override;
+namespace {
 
- private:
-  // Open-time steps, in the order that keeps a bad file untouched.
-  struct SchemaState {
-    int user_version = 0;
-    int64_t schema_objects = 0;  // tables and indexes of any kind
-  };
-  SchemaState ReadSchemaState();
-  void CheckIsAreagraphStore(const SchemaState& state, StoreMode mode);
-  void Exec(const char* sql, const std::string& action);
-  void EnableWriteAheadLog();
-  void CreateSchema();
-  void CreateMapsTable();
-  void CreateArtifactsTable();
-  void CreateHeadsTable();
-  void PrepareStatements();
+std::string JoinLines(const std::vector<std::string>& lines) {
+  std::string joined;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    if (i > 0) joined += '\n';
+    joined += lines[i];
+  }
+  return joined;
+}
 
-  std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
-  SqliteTransaction BeginTransaction();
-  MapRecord ReadMapRow(const SqliteStatement& statement) const;
-  // Reads the row of a kRead{Artifact,Head,ArtifactSummaries} statement; the
-  // last column is the payload, or its size in a summary.
-  ArtifactRecord ReadArtifactRow(const SqliteStatement& statement, const std::string& map_name,
-                                 bool with_payload) const;
-  void WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id);
-
-  const std::string path_;
-  const SqliteConnection connection_;  // closes after the statements below
-  sqlite3* const db_;
-
-  std::unique_ptr<SqliteStatement> sql_stmt_begin_;
-  std::unique_ptr<SqliteStatement> sql_stmt_commit_;
-  std::unique_ptr<SqliteStatement> sql_stmt_rollback_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_all_maps_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_map_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_head_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summaries_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_ref_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_id_;
-  std::unique_ptr<SqliteStatement> sql_stmt_upsert_map_;
-  std::unique_ptr<SqliteStatement> sql_stmt_upsert_artifact_;
-  std::unique_ptr<SqliteStatement> sql_stmt_write_head_;
-};
+}  // namespace
 
 SqliteArtifactStore::SqliteArtifactStore(const std::string& path, StoreMode mode)
     : path_(path), connection_(path, mode), db_(connection_.get()) {
@@ -118,9 +65,12 @@ SqliteArtifactStore::SqliteArtifactStore(const std::string& path, StoreMode mode
       throw StoreError("cannot write store '" + path_ + "': the file is read-only");
     }
     if (path_ != kMemoryStorePath) EnableWriteAheadLog();
-    if (state.user_version < kStoreSchemaVersion) CreateSchema();
+    schema_version_ = state.user_version;
+    if (schema_version_ < kStoreSchemaVersion) CreateOrUpgradeSchema();
   } else if (path_ == kMemoryStorePath) {
-    CreateSchema();  // a private empty store; there is no file to protect
+    CreateOrUpgradeSchema();  // a private empty store; there is no file to protect
+  } else {
+    schema_version_ = state.user_version;  // read as it is, even if older
   }
   PrepareStatements();
 }
@@ -188,14 +138,24 @@ void SqliteArtifactStore::EnableWriteAheadLog() {
   }
 }
 
-void SqliteArtifactStore::CreateSchema() {
+void SqliteArtifactStore::CreateOrUpgradeSchema() {
   SqliteTransaction transaction = BeginTransaction();
-  CreateMapsTable();
-  CreateArtifactsTable();
-  CreateHeadsTable();
-  Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
-       "setting the schema version");
+  // Read again under the write lock: another process may have just created
+  // or upgraded the schema. The version moves with the tables in this one
+  // transaction, so a failed upgrade leaves the old store as it was.
+  const int version = ReadSchemaState().user_version;
+  if (version == 0) {
+    CreateMapsTable();
+    CreateArtifactsTable();
+    CreateHeadsTable();
+  }
+  if (version < 2) Exec(store_sql::kCreateFailuresTable, "creating the failures table");
+  if (version < kStoreSchemaVersion) {
+    Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
+         "setting the schema version");
+  }
   transaction.Commit();
+  schema_version_ = kStoreSchemaVersion;
 }
 
 void SqliteArtifactStore::CreateMapsTable() {
@@ -224,6 +184,13 @@ void SqliteArtifactStore::PrepareStatements() {
   sql_stmt_upsert_map_ = Prepare(store_sql::kUpsertMap, "writing a map");
   sql_stmt_upsert_artifact_ = Prepare(store_sql::kUpsertArtifact, "writing an artifact");
   sql_stmt_write_head_ = Prepare(store_sql::kWriteHead, "writing a head");
+  sql_stmt_has_artifact_ = Prepare(store_sql::kHasArtifact, "looking up an artifact");
+  sql_stmt_read_head_key_ = Prepare(store_sql::kReadHeadKey, "looking up a head");
+  if (HasFailuresTable()) {
+    sql_stmt_record_failure_ = Prepare(store_sql::kRecordFailure, "recording a failure");
+    sql_stmt_clear_failure_ = Prepare(store_sql::kClearFailure, "clearing a failure");
+    sql_stmt_read_failures_ = Prepare(store_sql::kReadFailures, "reading the failures");
+  }
 }
 
 std::unique_ptr<SqliteStatement> SqliteArtifactStore::Prepare(const char* sql,
@@ -398,7 +365,60 @@ void SqliteArtifactStore::WriteHead(int64_t map_id, const std::string& stage, in
   sql_stmt_write_head_->Step();
 }
 
-}  // namespace
+bool SqliteArtifactStore::HasArtifact(const std::string& map_name, const std::string& cache_key) {
+  StatementUse use(*sql_stmt_has_artifact_);
+  sql_stmt_has_artifact_->BindText(1, map_name);
+  sql_stmt_has_artifact_->BindText(2, cache_key);
+  return sql_stmt_has_artifact_->Step();
+}
+
+std::optional<std::string> SqliteArtifactStore::ReadHeadKey(const std::string& map_name,
+                                                            const std::string& stage) {
+  StatementUse use(*sql_stmt_read_head_key_);
+  sql_stmt_read_head_key_->BindText(1, map_name);
+  sql_stmt_read_head_key_->BindText(2, stage);
+  if (!sql_stmt_read_head_key_->Step()) return std::nullopt;
+  return sql_stmt_read_head_key_->ColumnText(0, "artifacts.cache_key");
+}
+
+void SqliteArtifactStore::RecordFailure(const FailureRecord& failure) {
+  if (!HasFailuresTable()) {
+    throw StoreError("store '" + path_ + "' has schema version " +
+                     std::to_string(schema_version_) +
+                     " without failures; open it for writing to upgrade it");
+  }
+  // One statement: its own transaction, waiting on the busy timeout.
+  StatementUse use(*sql_stmt_record_failure_);
+  sql_stmt_record_failure_->BindText(1, failure.map_name);
+  sql_stmt_record_failure_->BindText(2, failure.stage);
+  sql_stmt_record_failure_->BindText(3, failure.message);
+  sql_stmt_record_failure_->BindText(4, failure.source_path);
+  sql_stmt_record_failure_->Step();
+}
+
+void SqliteArtifactStore::ClearFailure(const std::string& map_name) {
+  if (!HasFailuresTable()) return;  // nothing can be recorded, so nothing to clear
+  StatementUse use(*sql_stmt_clear_failure_);
+  sql_stmt_clear_failure_->BindText(1, map_name);
+  sql_stmt_clear_failure_->Step();
+}
+
+std::vector<FailureRecord> SqliteArtifactStore::ReadFailures() {
+  std::vector<FailureRecord> failures;
+  if (!HasFailuresTable()) return failures;
+  SqliteStatement& statement = *sql_stmt_read_failures_;
+  StatementUse use(statement);
+  while (statement.Step()) {
+    FailureRecord failure;
+    failure.map_name = statement.ColumnText(0, "failures.map_name");
+    failure.stage = statement.ColumnText(1, "failures.stage");
+    failure.message = statement.ColumnText(2, "failures.message");
+    failure.source_path = statement.ColumnText(3, "failures.source_path");
+    failure.failed_at = statement.ColumnText(4, "failures.failed_at");
+    failures.push_back(std::move(failure));
+  }
+  return failures;
+}
 
 std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path, StoreMode mode) {
   return std::make_unique<SqliteArtifactStore>(path, mode);

@@ -107,11 +107,15 @@ std::string SqliteStatement::ColumnText(int index, const char* column) const {
 }
 
 std::string SqliteStatement::ColumnBlob(int index, const char* column) const {
+  return std::string(ColumnBlobView(index, column));
+}
+
+std::string_view SqliteStatement::ColumnBlobView(int index, const char* column) const {
   CheckColumnType(index, column, SQLITE_BLOB, "BLOB");
   const void* data = sqlite3_column_blob(stmt_, index);
   const int size = sqlite3_column_bytes(stmt_, index);
-  if (data == nullptr || size == 0) return std::string();
-  return std::string(static_cast<const char*>(data), static_cast<size_t>(size));
+  if (data == nullptr || size == 0) return std::string_view();
+  return std::string_view(static_cast<const char*>(data), static_cast<size_t>(size));
 }
 
 int64_t SqliteStatement::ColumnInt64(int index, const char* column) const {

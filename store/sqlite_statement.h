@@ -39,6 +39,8 @@ class SqliteStatement {
   // Column readers; `column` is the name used in error messages.
   std::string ColumnText(int index, const char* column) const;
   std::string ColumnBlob(int index, const char* column) const;
+  // The BLOB without a copy; valid until the next Step or Reset.
+  std::string_view ColumnBlobView(int index, const char* column) const;
   int64_t ColumnInt64(int index, const char* column) const;
   double ColumnDouble(int index, const char* column) const;
 

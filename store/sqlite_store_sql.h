@@ -50,6 +50,18 @@ CREATE TABLE IF NOT EXISTS heads (
 inline constexpr char kCreateHeadsByArtifactIndex[] = R"sql(
 CREATE INDEX IF NOT EXISTS heads_by_artifact ON heads (artifact_id))sql";
 
+// Schema 2: the latest failure of each map, by name (a map whose import
+// failed has no maps row). Plain CREATE: upgrading must fail, not skip, if
+// something else already took the name.
+inline constexpr char kCreateFailuresTable[] = R"sql(
+CREATE TABLE failures (
+  map_name TEXT PRIMARY KEY,
+  stage TEXT NOT NULL,
+  message TEXT NOT NULL,
+  source_path TEXT NOT NULL DEFAULT '',
+  failed_at TEXT NOT NULL)
+)sql";
+
 inline constexpr char kBegin[] = "BEGIN IMMEDIATE";
 inline constexpr char kCommit[] = "COMMIT";
 inline constexpr char kRollback[] = "ROLLBACK";
@@ -110,6 +122,26 @@ ON CONFLICT (map_id, cache_key) DO UPDATE SET
 
 inline constexpr char kReadArtifactId[] =
     "SELECT id FROM artifacts WHERE map_id = ?1 AND cache_key = ?2";
+
+// Cache checks that never touch a payload.
+inline constexpr char kHasArtifact[] =
+    "SELECT 1 FROM maps m JOIN artifacts a ON a.map_id = m.id"
+    " WHERE m.name = ?1 AND a.cache_key = ?2";
+inline constexpr char kReadHeadKey[] =
+    "SELECT a.cache_key FROM maps m"
+    " JOIN heads h ON h.map_id = m.id JOIN artifacts a ON a.id = h.artifact_id"
+    " WHERE m.name = ?1 AND h.stage = ?2";
+
+// Times as in artifacts.created_at, so the two compare as text.
+inline constexpr char kRecordFailure[] = R"sql(
+INSERT INTO failures (map_name, stage, message, source_path, failed_at)
+VALUES (?1, ?2, ?3, ?4, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))
+ON CONFLICT (map_name) DO UPDATE SET
+  stage = excluded.stage, message = excluded.message, source_path = excluded.source_path,
+  failed_at = excluded.failed_at)sql";
+inline constexpr char kClearFailure[] = "DELETE FROM failures WHERE map_name = ?1";
+inline constexpr char kReadFailures[] =
+    "SELECT map_name, stage, message, source_path, failed_at FROM failures ORDER BY map_name";
 
 inline constexpr char kWriteHead[] = R"sql(
 INSERT INTO heads (map_id, stage, artifact_id) VALUES (?1, ?2, ?3)

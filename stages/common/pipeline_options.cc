@@ -1,6 +1,7 @@
 #include "stages/common/pipeline_options.h"
 
 #include <fstream>
+#include <regex>
 #include <sstream>
 
 #include <google/protobuf/io/coded_stream.h>
@@ -36,6 +37,49 @@ std::string JoinKeys(const std::vector<std::string>& keys) {
   return joined;
 }
 
+// Numeric options that also take the word `auto`: `auto` sets the bool
+// `auto_field` (which makes the stage estimate the number from the map); a
+// number turns it off again.
+struct AutoOption {
+  const char* stage;
+  const char* number_field;
+  const char* auto_field;
+};
+constexpr AutoOption kAutoOptions[] = {{"cut", "room_width_m", "room_width_auto"}};
+
+Message* StageMessage(proto::PipelineOptions* options, const std::string& stage_name) {
+  const FieldDescriptor* stage = proto::PipelineOptions::descriptor()->FindFieldByName(stage_name);
+  return options->GetReflection()->MutableMessage(options, stage);
+}
+
+void SetAuto(Message* stage_options, const AutoOption& option, bool on) {
+  const FieldDescriptor* field = stage_options->GetDescriptor()->FindFieldByName(option.auto_field);
+  stage_options->GetReflection()->SetBool(stage_options, field, on);
+}
+
+// `room_width_m: auto` -> `room_width_auto: true`, before the text parser
+// (which wants a number) sees it.
+std::string RewriteAutoWords(std::string text) {
+  for (const AutoOption& option : kAutoOptions) {
+    const std::regex word(std::string("\\b") + option.number_field + "\\s*:\\s*auto\\b");
+    text = std::regex_replace(text, word, std::string(option.auto_field) + ": true");
+  }
+  return text;
+}
+
+// A number given in a file without a word on `auto` means that number.
+void NumbersTurnAutoOff(proto::PipelineOptions* options) {
+  for (const AutoOption& option : kAutoOptions) {
+    Message* stage_options = StageMessage(options, option.stage);
+    const Descriptor* descriptor = stage_options->GetDescriptor();
+    const Reflection* reflection = stage_options->GetReflection();
+    if (reflection->HasField(*stage_options, descriptor->FindFieldByName(option.number_field)) &&
+        !reflection->HasField(*stage_options, descriptor->FindFieldByName(option.auto_field))) {
+      SetAuto(stage_options, option, false);
+    }
+  }
+}
+
 }  // namespace
 
 proto::PipelineOptions ReadOptionsFile(const std::string& path) {
@@ -47,9 +91,10 @@ proto::PipelineOptions ReadOptionsFile(const std::string& path) {
   google::protobuf::TextFormat::Parser parser;
   ErrorCollector errors;
   parser.RecordErrorsTo(&errors);
-  if (!parser.ParseFromString(text.str(), &options)) {
+  if (!parser.ParseFromString(RewriteAutoWords(text.str()), &options)) {
     throw OptionsError("options file '" + path + "', " + errors.first_error);
   }
+  NumbersTurnAutoOff(&options);
   return options;
 }
 
@@ -85,13 +130,23 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
                        "'; valid keys: " + JoinKeys(ValidOptionKeys()));
   }
   Message* stage_options = options->GetReflection()->MutableMessage(options, stage);
+  const AutoOption* auto_option = nullptr;
+  for (const AutoOption& option : kAutoOptions) {
+    if (stage_name == option.stage && field_name == option.number_field) auto_option = &option;
+  }
+  if (auto_option != nullptr && value == "auto") {
+    SetAuto(stage_options, *auto_option, true);
+    return;
+  }
   google::protobuf::TextFormat::Parser parser;
   ErrorCollector errors;  // keeps protobuf from logging its own line to stderr
   parser.RecordErrorsTo(&errors);
   if (!parser.ParseFieldValueFromString(value, field, stage_options)) {
     throw OptionsError("option '" + stage_name + "." + field_name + "' expects a " +
-                       field->type_name() + ", got '" + value + "'");
+                       field->type_name() + (auto_option != nullptr ? " or auto" : "") +
+                       ", got '" + value + "'");
   }
+  if (auto_option != nullptr) SetAuto(stage_options, *auto_option, false);
 }
 
 void FillDefaults(Message* message) {

@@ -10,11 +10,14 @@
 namespace areagraph {
 
 // Reads a PipelineOptions text-format file. Throws OptionsError on a missing
-// file or a parse error (with line and column).
+// file or a parse error (with line and column). `room_width_m: auto` means
+// `room_width_auto: true`; a number for room_width_m without a
+// room_width_auto line means that number (auto off).
 proto::PipelineOptions ReadOptionsFile(const std::string& path);
 
 // Applies one "stage.field=value" override, for example
-// "cut.room_width_m=1.1". Throws OptionsError naming the valid keys when the
+// "cut.room_width_m=1.1". "cut.room_width_m=auto" sets cut.room_width_auto
+// and a number clears it. Throws OptionsError naming the valid keys when the
 // key is unknown, and saying the expected type when the value does not parse.
 void ApplyOverride(const std::string& assignment, proto::PipelineOptions* options);
 

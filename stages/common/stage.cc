@@ -8,20 +8,25 @@
 
 namespace areagraph {
 
+std::string StageCacheKey(const StageInfo& stage, const google::protobuf::Message& options,
+                          const std::vector<std::string>& input_keys) {
+  return ComputeCacheKey(stage.name, stage.version, CanonicalBytes(options), input_keys);
+}
+
 StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
                         const google::protobuf::Message& options, const StageInputs& inputs,
                         const std::function<std::unique_ptr<google::protobuf::Message>()>& compute,
                         bool force) {
   StageRun run;
-  run.cache_key =
-      ComputeCacheKey(stage.name, stage.version, CanonicalBytes(options), inputs.digests);
+  run.cache_key = StageCacheKey(stage, options, inputs.digests);
   if (!force) {
-    const std::optional<ArtifactRecord> head = store.ReadHead(map_name, stage.name);
-    if (head && head->cache_key == run.cache_key) {
+    // Key lookups only: a hit costs no payload read. A damaged payload shows
+    // when a later stage reads it (or with ag-store verify).
+    if (store.ReadHeadKey(map_name, stage.name) == run.cache_key) {
       run.cache_hit = true;
       return run;
     }
-    if (store.ReadArtifact(map_name, run.cache_key)) {
+    if (store.HasArtifact(map_name, run.cache_key)) {
       store.UpdateHead(map_name, run.cache_key);
       run.cache_hit = true;
       return run;

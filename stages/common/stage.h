@@ -24,7 +24,8 @@ inline constexpr StageInfo kImportStage{"import", 1};
 inline constexpr StageInfo kCleanStage{"clean", 3};
 inline constexpr StageInfo kVoronoiStage{"voronoi", 2};  // 2: edges in face order
 inline constexpr StageInfo kPruneStage{"prune", 1};
-inline constexpr StageInfo kCutStage{"cut", 1};
+// cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
+inline constexpr StageInfo kCutStage{"cut", 2};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 inline constexpr StageInfo kMergeStage{"merge", 2};
 
@@ -47,6 +48,10 @@ struct StageInputs {
   std::optional<std::string> source_path;
   std::optional<std::string> source_digest;
 };
+
+// The cache key of a stage run: what RunCachedStage looks up and stores.
+std::string StageCacheKey(const StageInfo& stage, const google::protobuf::Message& options,
+                          const std::vector<std::string>& input_keys);
 
 // Runs `compute` for (map, stage) unless the store already holds an artifact
 // with the same cache key, in which case that artifact just becomes the head

@@ -67,8 +67,9 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
                               const proto::CutOptions& options, const std::string& map_name) {
   const std::string what = "map '" + map_name + "'";
   const CellGrid grid(map, what);
-  const double room_width_px = RoomWidthM(options, map.frame()) / grid.resolution_m();
   CheckTopology(topology, what);
+  const proto::RoomWidthEstimate room_width = ChooseRoomWidth(options, map.frame(), topology);
+  const double room_width_px = room_width.room_width_m() / grid.resolution_m();
 
   const cv::Mat inside = PolygonMask(topology.boundary(), cv::Size(grid.width(), grid.height()));
   auto inside_boundary = [&](const Eigen::Vector2d& p) {
@@ -85,6 +86,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   *out.mutable_frame() = map.frame();
   *out.mutable_boundary() = topology.boundary();
   *out.mutable_vertices() = topology.vertices();
+  *out.mutable_room_width() = room_width;
 
   std::map<int, int> room_ids;  // old room id -> kept room id
   auto keep_room = [&](int room) {

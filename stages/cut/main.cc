@@ -13,8 +13,8 @@ using namespace areagraph;
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "Detects rooms (alpha shapes with alpha = (W/2)^2, W from cut.room_width_m or the "
-      "door/corridor strategy) and cuts the edges of a map's head TopologyGraph (run ag-prune "
+      "Detects rooms (alpha shapes with alpha = (W/2)^2, W from cut.room_width_m, the "
+      "door/corridor strategy or, with cut.room_width_m=auto, estimated from the map) and cuts the edges of a map's head TopologyGraph (run ag-prune "
       "first) where they leave a room (the paper's Alg. 3). Stores a CutGraph."};
   StageCommandLine flags;
   AddStageFlags(app, flags);
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
         ReadHeadArtifact<proto::TopologyGraph>(*store, flags.map_name, kPruneStage, &topology_key);
     const auto map =
         ReadHeadArtifact<proto::CleanedMap>(*store, flags.map_name, kCleanStage, &map_key);
-    const double room_width_m = RoomWidthM(options.cut(), map.frame());
+    RoomWidthM(options.cut(), map.frame());  // bad options fail before any work
     StageInputs inputs;
     inputs.digests = {topology_key, map_key};
     const StageRun run = RunCachedStage(
@@ -38,9 +38,10 @@ int main(int argc, char** argv) {
         flags.force);
     const auto graph = ReadHeadArtifact<proto::CutGraph>(*store, flags.map_name, kCutStage);
     std::printf(
-        "ag-cut: map '%s': W = %.2f m, %d rooms, %d passage points, %d edges, %.0f ms, key %.12s "
+        "ag-cut: map '%s': W = %.2f m%s, %d rooms, %d passage points, %d edges, %.0f ms, key %.12s "
         "(%s)\n",
-        flags.map_name.c_str(), room_width_m, graph.room_shapes_size(), graph.passage_points_size(),
+        flags.map_name.c_str(), graph.room_width().room_width_m(),
+        graph.room_width().automatic() ? " (auto)" : "", graph.room_shapes_size(), graph.passage_points_size(),
         graph.edges_size(), run.elapsed_ms, run.cache_key.c_str(),
         run.cache_hit ? "cached" : "computed");
     return 0;

@@ -4,6 +4,7 @@
 #include <sstream>
 #include <string>
 
+#include "stages/cut/width_estimate.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -19,6 +20,15 @@ void CheckWidth(double value, const char* name) {
   if (!std::isfinite(value) || value < 0) {
     throw OptionsError(std::string(name) + " must be a positive number of metres, got " +
                        Text(value));
+  }
+}
+
+void CheckFitsMap(double width, const proto::MapFrame& frame) {
+  const double map_width_m = frame.width_px() * frame.resolution_m();
+  const double map_height_m = frame.height_px() * frame.resolution_m();
+  if (width > std::max(map_width_m, map_height_m)) {
+    throw OptionsError("the room width W = " + Text(width) + " m is wider than the map (" +
+                       Text(map_width_m) + " x " + Text(map_height_m) + " m)");
   }
 }
 
@@ -44,13 +54,25 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
   if (!std::isfinite(width) || !(width > 0)) {
     throw OptionsError("cut.room_width_m must be a positive number of metres, got " + Text(width));
   }
-  const double map_width_m = frame.width_px() * frame.resolution_m();
-  const double map_height_m = frame.height_px() * frame.resolution_m();
-  if (width > std::max(map_width_m, map_height_m)) {
-    throw OptionsError("the room width W = " + Text(width) + " m is wider than the map (" +
-                       Text(map_width_m) + " x " + Text(map_height_m) + " m)");
-  }
+  CheckFitsMap(width, frame);
   return width;
+}
+
+proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
+                                         const proto::MapFrame& frame,
+                                         const proto::TopologyGraph& topology) {
+  const double fixed = RoomWidthM(options, frame);
+  const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
+  proto::RoomWidthEstimate estimate;
+  if (options.room_width_auto() && !strategy) {
+    estimate = EstimateRoomWidth(topology, frame.resolution_m(), fixed,
+                                 options.room_width_above_doors());
+    CheckFitsMap(estimate.room_width_m(), frame);
+  } else {
+    estimate.set_room_width_m(fixed);
+    estimate.set_automatic(false);
+  }
+  return estimate;
 }
 
 }  // namespace areagraph

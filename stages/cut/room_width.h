@@ -12,6 +12,16 @@ namespace areagraph {
 // cut.room_width_m otherwise. Throws OptionsError for a non-positive or
 // non-finite result, for one width without the other, and for a W wider
 // than the whole map.
+// Ignores cut.room_width_auto.
 double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame);
+
+// The W that ag-cut uses, and how it came about: RoomWidthM when door and
+// corridor widths are given or cut.room_width_auto is off, else
+// EstimateRoomWidth on the Topology Graph (falling back to
+// cut.room_width_m when it finds neither doors nor corridors). Throws as
+// RoomWidthM does.
+proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
+                                         const proto::MapFrame& frame,
+                                         const proto::TopologyGraph& topology);
 
 }  // namespace areagraph

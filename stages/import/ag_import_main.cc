@@ -50,13 +50,9 @@ int Import(StageCommandLine& flags, const std::string& image, const CLI::Option&
   // Everything that can be wrong with the input fails here, before the store.
   const proto::GridMap grid = ImportGridMap(source, options.import());
 
-  StageInputs inputs;
-  inputs.digests = {grid.source_digest()};
-  inputs.source_path = grid.source_path();
-  inputs.source_digest = grid.source_digest();
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
   const StageRun run = RunCachedStage(
-      *store, map_name, kImportStage, options.import(), inputs,
+      *store, map_name, kImportStage, options.import(), ImportInputs(source),
       [&grid] { return std::make_unique<proto::GridMap>(grid); }, flags.force);
 
   std::cout << Summary(map_name, grid, run) << "\n";

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <memory>
 #include <system_error>
 
 #include "stages/import/grey_image.h"
@@ -95,6 +96,26 @@ proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOpti
   grid.set_source_path(source.given_path);
   grid.set_source_digest(source.Digest());
   return grid;
+}
+
+StageInputs ImportInputs(const ImportSource& source) {
+  StageInputs inputs;
+  inputs.digests = {source.Digest()};
+  inputs.source_path = source.given_path;
+  inputs.source_digest = inputs.digests[0];
+  return inputs;
+}
+
+std::string ImportCacheKey(const ImportSource& source, const proto::ImportOptions& options) {
+  return StageCacheKey(kImportStage, options, ImportInputs(source).digests);
+}
+
+StageRun RunImportStage(ArtifactStore& store, const std::string& map_name,
+                        const ImportSource& source, const proto::ImportOptions& options,
+                        bool force) {
+  return RunCachedStage(
+      store, map_name, kImportStage, options, ImportInputs(source),
+      [&] { return std::make_unique<proto::GridMap>(ImportGridMap(source, options)); }, force);
 }
 
 }  // namespace areagraph

@@ -5,7 +5,9 @@
 
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
+#include "stages/common/stage.h"
 #include "stages/import/map_yaml.h"
+#include "store/artifact_store.h"
 
 namespace areagraph {
 
@@ -45,5 +47,18 @@ void CheckImportOptions(const proto::ImportOptions& options);
 // thresholds apply; without, options.resolution_m, a zero origin and the
 // grey thresholds of GreyThresholdRule. Throws InputError or OptionsError.
 proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOptions& options);
+
+// What enters the import's cache key and map row for `source`.
+StageInputs ImportInputs(const ImportSource& source);
+
+// The cache key RunImportStage gives `source` with `options`, without decoding.
+std::string ImportCacheKey(const ImportSource& source, const proto::ImportOptions& options);
+
+// Stores `source` as the map's GridMap through the cache, decoding it only on
+// a miss (ag-run's path; ag-import decodes first so that bad input never opens
+// the store).
+StageRun RunImportStage(ArtifactStore& store, const std::string& map_name,
+                        const ImportSource& source, const proto::ImportOptions& options,
+                        bool force);
 
 }  // namespace areagraph

@@ -8,73 +8,140 @@
 #include "stages/merge/area_graph_builder.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "stages/voronoi/voronoi_stage.h"
+#include "store/error.h"
 
 namespace areagraph {
 namespace {
 
-StageInputs InputsOf(std::vector<std::string> keys) {
-  StageInputs inputs;
-  inputs.digests = std::move(keys);
-  return inputs;
+using MessagePtr = std::unique_ptr<google::protobuf::Message>;
+
+bool IsStage(const StageInfo& stage, const StageInfo& other) {
+  return std::string(stage.name) == other.name;
+}
+
+// The artifact with `cache_key`, parsed as T. Inputs are read by key, not as
+// heads, so that the payload is the one whose key entered the cache key even
+// when another process moves a head meanwhile.
+template <typename T>
+T ReadInput(ArtifactStore& store, const std::string& map_name, const std::string& cache_key) {
+  const std::optional<ArtifactRecord> record = store.ReadArtifact(map_name, cache_key);
+  T message;
+  if (!record || record->proto_type != message.GetTypeName() ||
+      !message.ParseFromString(record->payload)) {
+    throw StoreError("artifact " + cache_key.substr(0, 12) + " of map '" + map_name +
+                     "' is missing or not a valid " + message.GetTypeName());
+  }
+  return message;
+}
+
+// The head key of (map, stage), or the error that names the stage to run first.
+std::string InputKey(ArtifactStore& store, const std::string& map_name, const StageInfo& stage) {
+  if (std::optional<std::string> key = store.ReadHeadKey(map_name, stage.name)) return *key;
+  if (!store.ReadMap(map_name)) {
+    throw InputError("map '" + map_name + "' is not in the store; run ag-import first");
+  }
+  throw InputError("map '" + map_name + "' has no " + stage.name + " artifact; run ag-" +
+                   stage.name + " first");
+}
+
+// Computes one step from the input artifacts named by `keys` (PipelineSteps order).
+MessagePtr ComputeStep(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
+                       const std::vector<std::string>& keys,
+                       const proto::PipelineOptions& options) {
+  if (IsStage(stage, kCleanStage)) {
+    return std::make_unique<proto::CleanedMap>(CleanGridMap(
+        ReadInput<proto::GridMap>(store, map_name, keys[0]), options.clean(), map_name));
+  }
+  // Every later step reads the cleaned map, last among its inputs.
+  const auto cleaned = ReadInput<proto::CleanedMap>(store, map_name, keys.back());
+  if (IsStage(stage, kVoronoiStage)) {
+    return std::make_unique<proto::VoronoiDiagram>(
+        ComputeVoronoiStage(cleaned, options.voronoi(), map_name));
+  }
+  if (IsStage(stage, kPruneStage)) {
+    return std::make_unique<proto::TopologyGraph>(BuildTopologyGraph(
+        ReadInput<proto::VoronoiDiagram>(store, map_name, keys[0]), cleaned, options.prune(),
+        map_name));
+  }
+  if (IsStage(stage, kCutStage)) {
+    return std::make_unique<proto::CutGraph>(BuildCutGraph(
+        ReadInput<proto::TopologyGraph>(store, map_name, keys[0]), cleaned, options.cut(),
+        map_name));
+  }
+  return std::make_unique<proto::AreaGraph>(BuildAreaGraph(
+      ReadInput<proto::CutGraph>(store, map_name, keys[0]), cleaned, options.merge(), map_name));
+}
+
+size_t StepIndex(const std::string& stage_name) {
+  const std::vector<PipelineStep>& steps = PipelineSteps();
+  for (size_t i = 0; i < steps.size(); ++i) {
+    if (stage_name == steps[i].stage.name) return i;
+  }
+  throw OptionsError("'" + stage_name + "' is not a stage after import");
 }
 
 }  // namespace
 
+const std::vector<PipelineStep>& PipelineSteps() {
+  static const std::vector<PipelineStep> steps = {
+      {kCleanStage, {kImportStage}},
+      {kVoronoiStage, {kCleanStage}},
+      {kPruneStage, {kVoronoiStage, kCleanStage}},
+      {kCutStage, {kPruneStage, kCleanStage}},
+      {kMergeStage, {kCutStage, kCleanStage}},
+  };
+  return steps;
+}
+
+const google::protobuf::Message& StageOptionsOf(const proto::PipelineOptions& options,
+                                                const StageInfo& stage) {
+  if (IsStage(stage, kImportStage)) return options.import();
+  if (IsStage(stage, kCleanStage)) return options.clean();
+  if (IsStage(stage, kVoronoiStage)) return options.voronoi();
+  if (IsStage(stage, kPruneStage)) return options.prune();
+  if (IsStage(stage, kCutStage)) return options.cut();
+  return options.merge();
+}
+
+std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
+                                          const proto::PipelineOptions& options) {
+  std::vector<std::string> keys;
+  auto key_of = [&](const StageInfo& stage) -> const std::string& {
+    if (IsStage(stage, kImportStage)) return import_key;
+    return keys[StepIndex(stage.name)];
+  };
+  for (const PipelineStep& step : PipelineSteps()) {
+    std::vector<std::string> input_keys;
+    for (const StageInfo& input : step.inputs) input_keys.push_back(key_of(input));
+    keys.push_back(StageCacheKey(step.stage, StageOptionsOf(options, step.stage), input_keys));
+  }
+  return keys;
+}
+
+void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
+                    const proto::PipelineOptions& options, bool force,
+                    const PipelineObserver& observer, const std::string& first_stage,
+                    const std::string& last_stage) {
+  const std::vector<PipelineStep>& steps = PipelineSteps();
+  const size_t first = StepIndex(first_stage), last = StepIndex(last_stage);
+  for (size_t i = first; i <= last; ++i) {
+    const PipelineStep& step = steps[i];
+    if (observer.on_start) observer.on_start(step.stage);
+    StageInputs inputs;
+    for (const StageInfo& input : step.inputs) {
+      inputs.digests.push_back(InputKey(store, map_name, input));
+    }
+    const StageRun run = RunCachedStage(
+        store, map_name, step.stage, StageOptionsOf(options, step.stage), inputs,
+        [&] { return ComputeStep(store, map_name, step.stage, inputs.digests, options); }, force);
+    if (observer.on_done) observer.on_done(step.stage, run);
+  }
+}
+
 void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
                     const proto::PipelineOptions& options, bool force,
                     const std::function<void(const StageInfo&, const StageRun&)>& on_stage) {
-  std::string grid_key, cleaned_key, diagram_key, topology_key, cut_key;
-  const auto grid = ReadHeadArtifact<proto::GridMap>(store, map_name, kImportStage, &grid_key);
-  on_stage(kCleanStage, RunCachedStage(
-                            store, map_name, kCleanStage, options.clean(), InputsOf({grid_key}),
-                            [&] {
-                              return std::make_unique<proto::CleanedMap>(
-                                  CleanGridMap(grid, options.clean(), map_name));
-                            },
-                            force));
-  const auto cleaned =
-      ReadHeadArtifact<proto::CleanedMap>(store, map_name, kCleanStage, &cleaned_key);
-
-  on_stage(kVoronoiStage,
-           RunCachedStage(
-               store, map_name, kVoronoiStage, options.voronoi(), InputsOf({cleaned_key}),
-               [&] {
-                 return std::make_unique<proto::VoronoiDiagram>(
-                     ComputeVoronoiStage(cleaned, options.voronoi(), map_name));
-               },
-               force));
-  const auto diagram =
-      ReadHeadArtifact<proto::VoronoiDiagram>(store, map_name, kVoronoiStage, &diagram_key);
-
-  on_stage(kPruneStage,
-           RunCachedStage(
-               store, map_name, kPruneStage, options.prune(), InputsOf({diagram_key, cleaned_key}),
-               [&] {
-                 return std::make_unique<proto::TopologyGraph>(
-                     BuildTopologyGraph(diagram, cleaned, options.prune(), map_name));
-               },
-               force));
-  const auto topology =
-      ReadHeadArtifact<proto::TopologyGraph>(store, map_name, kPruneStage, &topology_key);
-
-  on_stage(kCutStage,
-           RunCachedStage(
-               store, map_name, kCutStage, options.cut(), InputsOf({topology_key, cleaned_key}),
-               [&] {
-                 return std::make_unique<proto::CutGraph>(
-                     BuildCutGraph(topology, cleaned, options.cut(), map_name));
-               },
-               force));
-  const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map_name, kCutStage, &cut_key);
-
-  on_stage(kMergeStage,
-           RunCachedStage(
-               store, map_name, kMergeStage, options.merge(), InputsOf({cut_key, cleaned_key}),
-               [&] {
-                 return std::make_unique<proto::AreaGraph>(
-                     BuildAreaGraph(cut, cleaned, options.merge(), map_name));
-               },
-               force));
+  RunMapPipeline(store, map_name, options, force, PipelineObserver{nullptr, on_stage});
 }
 
 }  // namespace areagraph

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include <google/protobuf/util/json_util.h>
 
@@ -9,6 +11,7 @@
 #include "stages/common/artifact_types.h"
 #include "stages/common/grid_cells.h"
 #include "store/error.h"
+#include "tools/inspect/failure_report.h"
 
 namespace areagraph {
 namespace {
@@ -48,6 +51,7 @@ void PrintMapList(ArtifactStore& store, std::ostream& out) {
   const std::vector<MapRecord> maps = store.ReadAllMaps();
   if (maps.empty()) {
     out << "no maps in the store; add one with ag-import\n";
+    PrintFailedMapsNote(store.ReadFailures(), out);  // e.g. every import failed
     return;
   }
   char line[512];
@@ -59,10 +63,24 @@ void PrintMapList(ArtifactStore& store, std::ostream& out) {
                   map.source_path.c_str());
     out << line;
   }
+  PrintFailedMapsNote(store.ReadFailures(), out);
 }
 
 void PrintArtifactList(ArtifactStore& store, const std::string& map_name, std::ostream& out) {
-  if (!store.ReadMap(map_name)) throw InputError("map '" + map_name + "' is not in the store");
+  std::optional<FailureRecord> failure;
+  for (FailureRecord& recorded : store.ReadFailures()) {
+    if (recorded.map_name == map_name) failure = std::move(recorded);
+  }
+  const auto print_failure = [&] {
+    if (!failure) return;
+    out << "failed in " << failure->stage << " at " << failure->failed_at << ": "
+        << failure->message << "\n";
+  };
+  if (!store.ReadMap(map_name)) {
+    if (!failure) throw InputError("map '" + map_name + "' is not in the store");
+    out << "map '" << map_name << "' has no artifacts; it ";
+    return print_failure();
+  }
   char line[512];
   std::snprintf(line, sizeof(line), "%-8s %-12s %10s %10s  %-20s %s\n", "stage", "key", "bytes",
                 "ms", "created (UTC)", "head");
@@ -74,6 +92,7 @@ void PrintArtifactList(ArtifactStore& store, const std::string& map_name, std::o
                   artifact.created_at.c_str(), artifact.is_head ? "*" : "");
     out << line;
   }
+  print_failure();
 }
 
 ArtifactRecord FindArtifact(ArtifactStore& store, const std::string& map_name,
@@ -100,6 +119,23 @@ ArtifactRecord FindArtifact(ArtifactStore& store, const std::string& map_name,
   return *store.ReadArtifact(map_name, found);
 }
 
+// W and, when it was estimated, the doors and corridors behind it.
+static void PrintRoomWidth(const proto::RoomWidthEstimate& estimate, std::ostream& out) {
+  out << "room width W: " << estimate.room_width_m() << " m"
+      << (estimate.automatic() ? " (auto)" : "") << "\n";
+  if (!estimate.automatic()) return;
+  out << "widest door: " << estimate.widest_door_m()
+      << " m, narrowest corridor: " << estimate.narrowest_corridor_m() << " m\n";
+  for (const proto::DetectedWidth& door : estimate.doors()) {
+    out << "  door " << door.width_m() << " m at (" << door.position().x() << ", "
+        << door.position().y() << ") px\n";
+  }
+  for (const proto::DetectedWidth& corridor : estimate.corridors()) {
+    out << "  corridor " << corridor.width_m() << " m, " << corridor.length_m() << " m long, at ("
+        << corridor.position().x() << ", " << corridor.position().y() << ") px\n";
+  }
+}
+
 void PrintArtifactSummary(const ArtifactRecord& artifact, std::ostream& out) {
   out << "map: " << artifact.map_name << "\nstage: " << artifact.stage << " (version "
       << artifact.stage_version << ")\nkey: " << artifact.cache_key
@@ -124,6 +160,7 @@ void PrintArtifactSummary(const ArtifactRecord& artifact, std::ostream& out) {
   } else if (const auto* cut = dynamic_cast<const proto::CutGraph*>(message.get())) {
     out << "cut graph: " << cut->room_shapes_size() << " rooms, " << cut->edges_size()
         << " edges, " << cut->passage_points_size() << " passage points\n";
+    PrintRoomWidth(cut->room_width(), out);
   } else if (const auto* areas = dynamic_cast<const proto::AreaGraph*>(message.get())) {
     out << "area graph: " << areas->areas_size() << " areas, " << areas->passages_size()
         << " passages\n";

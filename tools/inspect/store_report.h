@@ -7,11 +7,13 @@
 
 namespace areagraph {
 
-// One line per map: name, source, number of artifacts and of failed stages.
+// One line per map: name, number of artifacts, source; then the maps that
+// failed (recorded by runners), which may include maps without artifacts.
 void PrintMapList(ArtifactStore& store, std::ostream& out);
 
 // One line per artifact of a map: stage, short key, bytes, elapsed time,
-// creation time, and whether it is the head of its stage.
+// creation time, and whether it is the head of its stage; then the map's
+// failure if one is recorded. A map with only a failure prints just that.
 void PrintArtifactList(ArtifactStore& store, const std::string& map_name, std::ostream& out);
 
 // Finds one artifact of a map by stage (its head) or by key prefix.

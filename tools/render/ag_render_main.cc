@@ -32,7 +32,7 @@ Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const std::strin
 }
 
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
-            const std::string& out) {
+            bool doors, const std::string& out) {
   Canvas canvas = BaseCanvas(store, map, stage, scale);
   if (stage == kCleanStage.name) {
     DrawCleanedMap(ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage), canvas);
@@ -46,6 +46,10 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     DrawAreaGraph(ReadHeadArtifact<proto::AreaGraph>(store, map, kMergeStage), canvas);
   } else if (stage != kImportStage.name) {
     throw InputError("unknown stage '" + stage + "'; use import, clean, voronoi, prune, cut or merge");
+  }
+  if (doors) {
+    const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
+    DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
   }
   bool written = false;
   try {
@@ -62,16 +66,20 @@ int main(int argc, char** argv) {
   CLI::App app{"Draws the head artifact of one stage over its map as a PNG."};
   std::string store_path = "areagraph.db", map, stage = "merge", out;
   int scale = 0;
+  bool doors = false;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map, "map name")->required();
   app.add_option("--stage", stage, "import, clean, voronoi, prune, cut or merge")
       ->capture_default_str();
   app.add_option("--out", out, "PNG file to write")->required();
+  app.add_flag("--doors", doors,
+               "also draw the doors (rings) and corridors (dots) that ag-cut found for "
+               "cut.room_width_m=auto");
   app.add_option("--scale", scale, "output pixels per map cell (default: about 1600 px wide)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
     if (scale < 0 || scale > 16) throw areagraph::InputError("--scale must be between 1 and 16");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
-    areagraph::Render(*store, map, stage, scale, out);
+    areagraph::Render(*store, map, stage, scale, doors, out);
     std::cout << "wrote " << out << "\n";
     return 0;
   });

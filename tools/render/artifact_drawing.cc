@@ -4,6 +4,7 @@
 #include <string>
 
 #include <Eigen/Core>
+#include <opencv2/imgproc.hpp>
 
 #include "stages/common/map_frame.h"
 
@@ -111,6 +112,19 @@ void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas) {
   }
   for (const proto::Area& area : graph.areas()) {
     canvas.Label(ToPixel(transform, area.centroid_m()), std::to_string(area.id()), kText);
+  }
+}
+
+void DrawDetectedWidths(const proto::RoomWidthEstimate& estimate, double resolution_m,
+                        Canvas& canvas) {
+  const cv::Scalar door_colour(200, 0, 200), corridor_colour(200, 160, 0);  // BGR
+  for (const proto::DetectedWidth& corridor : estimate.corridors()) {
+    canvas.Dot(corridor.position(), corridor_colour, std::max(3, canvas.scale() + 1));
+  }
+  for (const proto::DetectedWidth& door : estimate.doors()) {
+    const int radius_px = static_cast<int>(door.width_m() / resolution_m / 2 * canvas.scale());
+    cv::circle(canvas.image(), canvas.ToCanvas(door.position()), std::max(3, radius_px),
+               door_colour, 2, cv::LINE_AA);
   }
 }
 

@@ -11,5 +11,9 @@ void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas);
 void DrawTopologyGraph(const proto::TopologyGraph& graph, Canvas& canvas);
 void DrawCutGraph(const proto::CutGraph& graph, Canvas& canvas);
 void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas);
+// The doors (magenta rings, their width across) and corridors (cyan dots)
+// that ag-cut found when it estimated W (cut.room_width_m=auto).
+void DrawDetectedWidths(const proto::RoomWidthEstimate& estimate, double resolution_m,
+                        Canvas& canvas);
 
 }  // namespace areagraph

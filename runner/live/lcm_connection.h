@@ -1,0 +1,34 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <lcm/lcm-cpp.hpp>
+
+namespace areagraph {
+
+// `url` made safe for areagraph: traffic never leaves this host. A udpm URL
+// without ttl gets ttl=0; one with any other ttl is refused. memq:// (in
+// process) is local by nature; other providers (tcpq, file) are refused.
+// Throws OptionsError saying what to use instead.
+std::string HostLocalLcmUrl(const std::string& url);
+
+// An LCM instance on HostLocalLcmUrl(url). Throws Error with the likely fix
+// when LCM cannot start (bad address, no multicast route).
+std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url);
+
+// Sets up receiving right away rather than at the first wait, so that no
+// message sent after this returns is missed (udpm binds its socket and runs
+// its self-test here). Throws Error with the likely fix.
+void StartReceiving(lcm::LCM& lcm, const std::string& url);
+
+// Waits up to `timeout_ms` for one message and dispatches it. Throws Error
+// when LCM fails, e.g. when udpm's receive self-test finds no route.
+// Returns true when a message was handled, false on timeout or when a
+// signal interrupted the wait.
+bool HandleOneMessage(lcm::LCM& lcm, int timeout_ms, const std::string& url);
+
+// How to give this host a multicast route on loopback, for error messages.
+std::string MulticastRouteHint();
+
+}  // namespace areagraph

@@ -1,0 +1,104 @@
+#include "runner/run/manifest_reader.h"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+
+#include "store/error.h"
+
+namespace areagraph {
+namespace {
+
+std::string Trim(const std::string& text) {
+  const size_t first = text.find_first_not_of(" \t\r");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+std::vector<std::string> SplitTsv(const std::string& line) {
+  std::vector<std::string> cells;
+  size_t start = 0;
+  while (true) {
+    const size_t tab = line.find('\t', start);
+    cells.push_back(Trim(line.substr(start, tab - start)));
+    if (tab == std::string::npos) return cells;
+    start = tab + 1;
+  }
+}
+
+// One CSV line; quoted cells may hold commas and doubled quotes.
+std::vector<std::string> SplitCsv(const std::string& line, const std::string& where) {
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false, was_quoted = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cell += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cell += c;
+      }
+    } else if (c == '"' && Trim(cell).empty()) {
+      quoted = was_quoted = true;
+      cell.clear();
+    } else if (c == ',') {
+      cells.push_back(was_quoted ? cell : Trim(cell));
+      cell.clear();
+      was_quoted = false;
+    } else {
+      cell += c;
+    }
+  }
+  if (quoted) throw InputError(where + ": a quoted field is not closed");
+  cells.push_back(was_quoted ? cell : Trim(cell));
+  return cells;
+}
+
+}  // namespace
+
+ManifestTable ReadManifest(const std::string& path) {
+  std::ifstream file(path);
+  if (!file) throw InputError("cannot read manifest '" + path + "'");
+  const bool csv = path.size() >= 4 && (path.substr(path.size() - 4) == ".csv" ||
+                                        path.substr(path.size() - 4) == ".CSV");
+  ManifestTable table;
+  std::string line;
+  for (int number = 1; std::getline(file, line); ++number) {
+    const std::string where = path + ":" + std::to_string(number);
+    if (line.find('\0') != std::string::npos) {
+      throw InputError(where + ": not a text line (the manifest must be TSV or CSV text)");
+    }
+    const std::string trimmed = Trim(line);
+    if (trimmed.empty() || trimmed[0] == '#') continue;
+    std::vector<std::string> cells = csv ? SplitCsv(line, where) : SplitTsv(line);
+    if (table.header.empty()) {
+      std::set<std::string> seen;
+      for (const std::string& column : cells) {
+        if (column.empty()) throw InputError(where + ": a header column has no name");
+        if (!seen.insert(column).second) {
+          throw InputError(where + ": column '" + column + "' appears twice");
+        }
+      }
+      if (!seen.count("path")) {
+        throw InputError(where + ": the header has no `path` column (columns: path, name, " +
+                         "option keys)");
+      }
+      table.header = std::move(cells);
+      continue;
+    }
+    if (cells.size() != table.header.size()) {
+      throw InputError(where + ": " + std::to_string(cells.size()) + " fields, but the header has " +
+                       std::to_string(table.header.size()));
+    }
+    table.rows.push_back({number, std::move(cells)});
+  }
+  if (file.bad()) throw InputError("cannot read manifest '" + path + "'");
+  if (table.header.empty()) throw InputError("manifest '" + path + "' is empty");
+  return table;
+}
+
+}  // namespace areagraph

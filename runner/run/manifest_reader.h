@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace areagraph {
+
+struct ManifestRow {
+  int line = 0;  // 1-based line in the file
+  std::vector<std::string> cells;
+};
+
+// A manifest's header (column names) and rows, every row as wide as the header.
+struct ManifestTable {
+  std::vector<std::string> header;
+  std::vector<ManifestRow> rows;
+};
+
+// Reads a TSV (.tsv: tab-separated, no quoting) or CSV (.csv: comma-separated,
+// RFC 4180 double quotes within one line) manifest. Blank lines and lines
+// starting with '#' are skipped. Throws InputError with file and line for an
+// unreadable file, a missing `path` column, a repeated column, or a row whose
+// width differs from the header's.
+ManifestTable ReadManifest(const std::string& path);
+
+}  // namespace areagraph

@@ -1,0 +1,216 @@
+#include "runner/run/process_pool.h"
+
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
+#include <exception>
+
+#include "store/error.h"
+
+namespace areagraph {
+
+// A task end marker: a line holding only this field.
+constexpr char kTaskDone[] = ".";
+
+struct ProcessPool::Worker {
+  pid_t pid = -1;
+  int task_fd = -1;   // parent writes task numbers
+  int event_fd = -1;  // parent reads event lines
+  int task = -1;      // the task in progress, or -1 when idle
+  std::string buffer;
+};
+
+namespace {
+
+bool WriteAll(int fd, const char* data, size_t size) {
+  while (size > 0) {
+    const ssize_t written = write(fd, data, size);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return false;
+    data += written;
+    size -= static_cast<size_t>(written);
+  }
+  return true;
+}
+
+bool ReadAll(int fd, char* data, size_t size) {
+  while (size > 0) {
+    const ssize_t got = read(fd, data, size);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return false;
+    data += got;
+    size -= static_cast<size_t>(got);
+  }
+  return true;
+}
+
+std::vector<std::string> SplitFields(const std::string& line) {
+  std::vector<std::string> fields;
+  size_t start = 0;
+  while (true) {
+    const size_t tab = line.find('\t', start);
+    fields.push_back(line.substr(start, tab - start));
+    if (tab == std::string::npos) return fields;
+    start = tab + 1;
+  }
+}
+
+std::string DescribeExit(int status) {
+  if (WIFSIGNALED(status)) {
+    const int signal = WTERMSIG(status);
+    return "the worker process died of signal " + std::to_string(signal) + " (" +
+           strsignal(signal) + ")";
+  }
+  return "the worker process exited with status " + std::to_string(WEXITSTATUS(status));
+}
+
+}  // namespace
+
+void EventWriter::Write(const std::vector<std::string>& fields) {
+  std::string line;
+  for (size_t i = 0; i < fields.size(); ++i) {
+    if (i > 0) line += '\t';
+    for (char c : fields[i]) line += (c == '\t' || c == '\n' || c == '\r') ? ' ' : c;
+  }
+  line += '\n';
+  if (!WriteAll(fd_, line.data(), line.size())) _exit(3);  // the parent is gone
+}
+
+ProcessPool::ProcessPool(int jobs, Work work, OnEvent on_event, OnTaskEnd on_task_end,
+                         std::function<void()> on_tick)
+    : jobs_(jobs),
+      work_(std::move(work)),
+      on_event_(std::move(on_event)),
+      on_task_end_(std::move(on_task_end)),
+      on_tick_(std::move(on_tick)) {}
+
+void ProcessPool::WorkerLoop(int task_fd, int event_fd) {
+  EventWriter events(event_fd);
+  int task = 0;
+  while (ReadAll(task_fd, reinterpret_cast<char*>(&task), sizeof(task)) && task >= 0) {
+    try {
+      work_(task, events);
+    } catch (const std::exception& error) {
+      events.Write({"!", error.what()});
+    }
+    events.Write({kTaskDone});
+  }
+  std::fflush(nullptr);
+  _exit(0);  // no destructors or atexit handlers of the parent's objects
+}
+
+void ProcessPool::StartWorker(Worker& worker, const std::vector<Worker>& workers) {
+  int task_pipe[2], event_pipe[2];
+  if (pipe(task_pipe) != 0 || pipe(event_pipe) != 0) {
+    throw Error(std::string("cannot create a pipe for a worker: ") + std::strerror(errno));
+  }
+  const pid_t parent = getpid();
+  std::fflush(nullptr);  // nothing buffered is written twice
+  const pid_t pid = fork();
+  if (pid < 0) throw Error(std::string("cannot fork a worker: ") + std::strerror(errno));
+  if (pid == 0) {
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != parent) _exit(4);  // the parent died before prctl
+    signal(SIGPIPE, SIG_DFL);
+    for (const Worker& other : workers) {
+      if (other.task_fd >= 0) close(other.task_fd);
+      if (other.event_fd >= 0) close(other.event_fd);
+    }
+    close(task_pipe[1]);
+    close(event_pipe[0]);
+    WorkerLoop(task_pipe[0], event_pipe[1]);
+  }
+  close(task_pipe[0]);
+  close(event_pipe[1]);
+  worker.pid = pid;
+  worker.task_fd = task_pipe[1];
+  worker.event_fd = event_pipe[0];
+  worker.task = -1;
+  worker.buffer.clear();
+}
+
+void ProcessPool::Assign(Worker& worker) {
+  int task = -1;
+  if (next_task_ < task_count_) task = next_task_++;
+  worker.task = task;
+  // A failed write means the worker died; its closed event pipe reports that.
+  WriteAll(worker.task_fd, reinterpret_cast<const char*>(&task), sizeof(task));
+  if (task < 0) {
+    close(worker.task_fd);
+    worker.task_fd = -1;
+  }
+}
+
+bool ProcessPool::ReadEvents(Worker& worker) {
+  char chunk[4096];
+  const ssize_t got = read(worker.event_fd, chunk, sizeof(chunk));
+  if (got < 0 && errno == EINTR) return true;
+  if (got <= 0) return false;
+  worker.buffer.append(chunk, static_cast<size_t>(got));
+  size_t end;
+  while ((end = worker.buffer.find('\n')) != std::string::npos) {
+    const std::vector<std::string> fields = SplitFields(worker.buffer.substr(0, end));
+    worker.buffer.erase(0, end + 1);
+    if (worker.task < 0) continue;
+    if (fields.size() == 1 && fields[0] == kTaskDone) {
+      on_task_end_(worker.task, "");
+      Assign(worker);
+    } else {
+      on_event_(worker.task, fields);
+    }
+  }
+  return true;
+}
+
+void ProcessPool::Reap(Worker& worker) {
+  int status = 0;
+  while (waitpid(worker.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  close(worker.event_fd);
+  if (worker.task_fd >= 0) close(worker.task_fd);
+  const int task = worker.task;
+  worker = Worker{};
+  if (task >= 0) on_task_end_(task, DescribeExit(status));
+}
+
+void ProcessPool::Run(int task_count) {
+  signal(SIGPIPE, SIG_IGN);  // a dead worker's pipe must not kill the runner
+  task_count_ = task_count;
+  next_task_ = 0;
+  std::vector<Worker> workers(static_cast<size_t>(std::max(1, std::min(jobs_, task_count))));
+  if (task_count == 0) return;
+  for (Worker& worker : workers) {
+    StartWorker(worker, workers);
+    Assign(worker);
+  }
+  while (true) {
+    std::vector<pollfd> fds;
+    std::vector<Worker*> owners;
+    for (Worker& worker : workers) {
+      if (worker.pid < 0) continue;
+      fds.push_back({worker.event_fd, POLLIN, 0});
+      owners.push_back(&worker);
+    }
+    if (fds.empty()) return;
+    const int ready = poll(fds.data(), fds.size(), 200);
+    if (on_tick_) on_tick_();
+    if (ready <= 0) continue;
+    for (size_t i = 0; i < fds.size(); ++i) {
+      if (fds[i].revents == 0) continue;
+      Worker& worker = *owners[i];
+      if (ReadEvents(worker)) continue;
+      Reap(worker);
+      if (next_task_ < task_count_) {
+        StartWorker(worker, workers);
+        Assign(worker);
+      }
+    }
+  }
+}
+
+}  // namespace areagraph

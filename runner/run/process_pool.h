@@ -1,0 +1,61 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace areagraph {
+
+// How a worker reports on its task: one line of tab-separated fields per call.
+class EventWriter {
+ public:
+  explicit EventWriter(int fd) : fd_(fd) {}
+  // Tabs and line breaks inside a field become spaces.
+  void Write(const std::vector<std::string>& fields);
+
+ private:
+  int fd_;
+};
+
+// Runs tasks 0..n-1 in worker processes forked from this one, so that a task
+// that crashes (a segfault inside CGAL, an abort) takes down only its worker:
+// the pool reports it and forks a replacement. Workers are forked from this
+// process, so they share everything it built before Run (the task list, the
+// options); the caller must not hold an SQLite connection across Run, since
+// SQLite connections must not cross fork(). Workers die with the parent
+// (PR_SET_PDEATHSIG), so killing the runner stops everything.
+class ProcessPool {
+ public:
+  // Runs in a worker for each task it is given.
+  using Work = std::function<void(int task, EventWriter& events)>;
+  // Runs in the parent for each line a worker writes about `task`.
+  using OnEvent = std::function<void(int task, const std::vector<std::string>& fields)>;
+  // Runs in the parent when `task` has ended: `crash` is empty when the
+  // worker finished it, else what killed the worker.
+  using OnTaskEnd = std::function<void(int task, const std::string& crash)>;
+
+  ProcessPool(int jobs, Work work, OnEvent on_event, OnTaskEnd on_task_end,
+              std::function<void()> on_tick = nullptr);
+
+  // Runs every task; returns when all have ended and all workers are gone.
+  // Throws Error when a worker cannot be forked at all.
+  void Run(int task_count);
+
+ private:
+  struct Worker;
+  void StartWorker(Worker& worker, const std::vector<Worker>& workers);
+  [[noreturn]] void WorkerLoop(int task_fd, int event_fd);
+  void Assign(Worker& worker);
+  bool ReadEvents(Worker& worker);
+  void Reap(Worker& worker);
+
+  int jobs_;
+  Work work_;
+  OnEvent on_event_;
+  OnTaskEnd on_task_end_;
+  std::function<void()> on_tick_;
+  int next_task_ = 0;
+  int task_count_ = 0;
+};
+
+}  // namespace areagraph

@@ -1,0 +1,225 @@
+#include "stages/cut/width_estimate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "stages/cut/edge_track.h"
+#include "stages/geometry/edge_polygon.h"
+
+namespace areagraph {
+namespace {
+
+// One edge sampled about every pixel: free width (m) and arc length (m).
+struct WidthProfile {
+  int source = 0;
+  int target = 0;
+  std::vector<Eigen::Vector2d> points;
+  std::vector<double> width_m;
+  std::vector<double> arc_m;
+};
+
+WidthProfile SampleEdge(const proto::GraphEdge& edge, double resolution_m) {
+  const EdgeTrack track(edge);
+  WidthProfile profile;
+  profile.source = edge.source();
+  profile.target = edge.target();
+  auto add = [&](const PathPosition& at) {
+    profile.points.push_back(track.PointAt(at));
+    profile.width_m.push_back(std::max(0.0, 2 * track.ClearanceAt(at) - 1) * resolution_m);
+    profile.arc_m.push_back(track.ArcAt(at) * resolution_m);
+  };
+  for (int segment = 0; segment < track.segment_count(); ++segment) {
+    const double length = (track.path()[segment + 1] - track.path()[segment]).norm();
+    const int steps = std::max(1, static_cast<int>(std::ceil(length)));
+    for (int k = 0; k < steps; ++k) add({segment, static_cast<double>(k) / steps});
+  }
+  add(track.End());
+  return profile;
+}
+
+// The widest point within `reach_m` of vertex `vertex` on the edges that
+// meet there, except edge `except`; 0 when there are none.
+double WidestNearVertex(const std::vector<WidthProfile>& profiles,
+                        const std::vector<std::vector<int>>& incident, int vertex, int except,
+                        double reach_m) {
+  double widest = 0;
+  for (int e : incident[vertex]) {
+    const WidthProfile& p = profiles[e];
+    const size_t n = p.width_m.size();
+    if (e != except && p.source == vertex) {
+      for (size_t i = 0; i < n && p.arc_m[i] <= reach_m; ++i) widest = std::max(widest, p.width_m[i]);
+    }
+    if (e != except && p.target == vertex) {
+      const double end = p.arc_m.back();
+      for (size_t i = n; i-- > 0 && end - p.arc_m[i] <= reach_m;) {
+        widest = std::max(widest, p.width_m[i]);
+      }
+    }
+  }
+  return widest;
+}
+
+bool IsConstriction(double narrowest, double widest_beside) {
+  return widest_beside >= narrowest + std::max(kDoorRiseM, kDoorRiseRatio * narrowest);
+}
+
+void FindDoors(const std::vector<WidthProfile>& profiles,
+               const std::vector<std::vector<int>>& incident, std::vector<proto::DetectedWidth>* doors) {
+  for (size_t e = 0; e < profiles.size(); ++e) {
+    const WidthProfile& p = profiles[e];
+    const int n = static_cast<int>(p.width_m.size());
+    int run_start = -1;  // a run of equal narrowest samples (a door's depth)
+    for (int i = 0; i <= n; ++i) {
+      bool door = false;
+      if (i < n) {
+        double left = 0, right = 0;
+        bool narrowest = true;
+        int j = i - 1;
+        for (; j >= 0 && p.arc_m[i] - p.arc_m[j] <= kDoorReachM; --j) {
+          narrowest &= p.width_m[j] >= p.width_m[i];
+          left = std::max(left, p.width_m[j]);
+        }
+        if (j < 0) {
+          left = std::max(left, WidestNearVertex(profiles, incident, p.source, e,
+                                                 kDoorReachM - p.arc_m[i]));
+        }
+        for (j = i + 1; j < n && p.arc_m[j] - p.arc_m[i] <= kDoorReachM; ++j) {
+          narrowest &= p.width_m[j] >= p.width_m[i];
+          right = std::max(right, p.width_m[j]);
+        }
+        if (j >= n) {
+          right = std::max(right, WidestNearVertex(profiles, incident, p.target, e,
+                                                   kDoorReachM - (p.arc_m.back() - p.arc_m[i])));
+        }
+        door = narrowest && IsConstriction(p.width_m[i], left) &&
+               IsConstriction(p.width_m[i], right);
+      }
+      if (door && run_start < 0) run_start = i;
+      if (!door && run_start >= 0) {
+        const int middle = (run_start + i - 1) / 2;
+        proto::DetectedWidth found;
+        found.mutable_position()->set_x(p.points[middle].x());
+        found.mutable_position()->set_y(p.points[middle].y());
+        found.set_width_m(p.width_m[middle]);
+        doors->push_back(found);
+        run_start = -1;
+      }
+    }
+  }
+}
+
+void FindCorridors(const std::vector<WidthProfile>& profiles,
+                   std::vector<proto::DetectedWidth>* corridors) {
+  for (const WidthProfile& p : profiles) {
+    const size_t n = p.width_m.size();
+    size_t i = 0;
+    while (i < n) {
+      double low = p.width_m[i], high = p.width_m[i];
+      size_t j = i + 1;
+      for (; j < n; ++j) {
+        const double new_low = std::min(low, p.width_m[j]), new_high = std::max(high, p.width_m[j]);
+        if (new_high - new_low > std::max(kCorridorToleranceM, 0.1 * new_low)) break;
+        low = new_low, high = new_high;
+      }
+      const double length = p.arc_m[j - 1] - p.arc_m[i];
+      if (length < kCorridorMinLengthM) {
+        ++i;
+        continue;
+      }
+      std::vector<double> widths(p.width_m.begin() + i, p.width_m.begin() + j);
+      std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+      const size_t middle = (i + j - 1) / 2;
+      proto::DetectedWidth found;
+      found.mutable_position()->set_x(p.points[middle].x());
+      found.mutable_position()->set_y(p.points[middle].y());
+      found.set_width_m(widths[widths.size() / 2]);
+      found.set_length_m(length);
+      corridors->push_back(found);
+      i = j;
+    }
+  }
+}
+
+// Keeps the widest of doors closer than kDoorReachM to each other (one door
+// seen from two edges), widest first.
+std::vector<proto::DetectedWidth> OnePerPlace(std::vector<proto::DetectedWidth> doors,
+                                              double resolution_m) {
+  std::sort(doors.begin(), doors.end(),
+            [](const auto& a, const auto& b) { return a.width_m() > b.width_m(); });
+  std::vector<proto::DetectedWidth> kept;
+  for (const proto::DetectedWidth& door : doors) {
+    bool near = false;
+    for (const proto::DetectedWidth& other : kept) {
+      const double d = std::hypot(door.position().x() - other.position().x(),
+                                  door.position().y() - other.position().y());
+      near |= d * resolution_m < kDoorReachM;
+    }
+    if (!near) kept.push_back(door);
+  }
+  return kept;
+}
+
+// The widest door that is not a lone outlier: the 90th percentile once
+// there are enough doors to have one.
+double WidestDoorM(const std::vector<proto::DetectedWidth>& doors_widest_first) {
+  if (doors_widest_first.empty()) return 0;
+  const size_t skip = doors_widest_first.size() / 10;
+  return doors_widest_first[skip].width_m();
+}
+
+// The narrowest width that corridors run for at least kCorridorMinTotalM
+// (summed over the stretches at most that wide): one short gap between a
+// desk and a wall is no corridor.
+double NarrowestCorridorM(std::vector<proto::DetectedWidth> corridors) {
+  std::sort(corridors.begin(), corridors.end(),
+            [](const auto& a, const auto& b) { return a.width_m() < b.width_m(); });
+  double total = 0;
+  for (const proto::DetectedWidth& corridor : corridors) {
+    total += corridor.length_m();
+    if (total >= kCorridorMinTotalM) return corridor.width_m();
+  }
+  return 0;
+}
+
+}  // namespace
+
+proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
+                                           double resolution_m, double fallback_m,
+                                           bool above_doors) {
+  std::vector<WidthProfile> profiles;
+  std::vector<std::vector<int>> incident(topology.vertices_size());
+  for (const proto::GraphEdge& edge : topology.edges()) {
+    profiles.push_back(SampleEdge(edge, resolution_m));
+    incident[edge.source()].push_back(static_cast<int>(profiles.size()) - 1);
+    if (edge.target() != edge.source()) {
+      incident[edge.target()].push_back(static_cast<int>(profiles.size()) - 1);
+    }
+  }
+  std::vector<proto::DetectedWidth> doors, corridors;
+  FindDoors(profiles, incident, &doors);
+  FindCorridors(profiles, &corridors);
+  doors = OnePerPlace(std::move(doors), resolution_m);
+
+  proto::RoomWidthEstimate estimate;
+  estimate.set_automatic(true);
+  for (const auto& door : doors) *estimate.add_doors() = door;
+  for (const auto& corridor : corridors) *estimate.add_corridors() = corridor;
+  const double door = WidestDoorM(doors);
+  const double corridor = NarrowestCorridorM(corridors);
+  estimate.set_widest_door_m(door);
+  estimate.set_narrowest_corridor_m(corridor);
+  double width = fallback_m;
+  // Widths within kSameWidthM count as equal, and then W stays above the
+  // door: a disk that passes doors merges rooms, which costs far more than
+  // a corridor cut in two.
+  if (door > 0 && (above_doors || corridor <= 0 || door < corridor + kSameWidthM)) {
+    width = door + 0.1;
+  } else if (corridor > 0) {
+    width = corridor - 0.1;
+  }
+  estimate.set_room_width_m(std::max(width, kMinRoomWidthM));
+  return estimate;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "proto/artifacts.pb.h"
+
+namespace areagraph {
+
+// Doors and corridors read from the clearance along the Topology Graph's
+// edges (free width = 2 * clearance - 1 px, since the sites are obstacle cell
+// centres):
+// - a door is the narrowest point of an edge within kDoorReachM on both
+//   sides, where the width grows by at least kDoorRise (absolute and
+//   relative) on both sides within that reach, looking past the edge's ends
+//   into the edges that meet there: a constriction between wider spaces;
+// - a corridor is a stretch of at least kCorridorMinLengthM along one edge
+//   whose width stays within kCorridorTolerance of its narrowest point.
+// Returns the doors (one per place, widest first) and corridors found, the
+// widest door (a high quantile, so that one stray wide gap does not decide)
+// and the narrowest corridor (the narrowest width that corridors keep for
+// kCorridorMinTotalM in all), and W by the paper's rule: door + 0.1 m when
+// the door is narrower than the corridor (or within kSameWidthM), else
+// corridor - 0.1 m; one of them alone decides when the other is missing;
+// `fallback_m` when neither was found. `above_doors`: door + 0.1 m whenever
+// a door was found. Never below kMinRoomWidthM.
+proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
+                                           double resolution_m, double fallback_m,
+                                           bool above_doors = false);
+
+inline constexpr double kDoorReachM = 1.5;
+inline constexpr double kDoorRiseM = 0.25;
+inline constexpr double kDoorRiseRatio = 0.25;
+inline constexpr double kCorridorMinLengthM = 2.5;
+inline constexpr double kCorridorToleranceM = 0.1;
+inline constexpr double kCorridorMinTotalM = 5.0;
+inline constexpr double kSameWidthM = 0.1;
+inline constexpr double kMinRoomWidthM = 0.6;
+
+}  // namespace areagraph

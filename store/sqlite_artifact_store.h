@@ -1,0 +1,115 @@
+#pragma once
+
+// The SQLite implementation of ArtifactStore, internal to store/: others get
+// it through OpenArtifactStore. Split over sqlite_artifact_store.cc (opening,
+// reads, writes, failures) and sqlite_store_maintenance.cc (verify, gc, merge).
+
+#include <sqlite3.h>
+
+#include <memory>
+#include <string>
+
+#include "store/artifact_store.h"
+#include "store/sqlite_connection.h"
+#include "store/sqlite_statement.h"
+#include "store/sqlite_transaction.h"
+
+namespace areagraph {
+
+class SqliteArtifactStore : public ArtifactStore {
+ public:
+  SqliteArtifactStore(const std::string& path, StoreMode mode);
+
+  std::vector<MapRecord> ReadAllMaps() override;
+  std::optional<MapRecord> ReadMap(const std::string& map_name) override;
+  std::optional<ArtifactRecord> ReadArtifact(const std::string& map_name,
+                                             const std::string& cache_key) override;
+  std::optional<ArtifactRecord> ReadHead(const std::string& map_name,
+                                         const std::string& stage) override;
+  std::vector<ArtifactRecord> ReadArtifactSummaries(const std::string& map_name) override;
+  void WriteArtifact(const NewArtifact& artifact) override;
+  void UpdateHead(const std::string& map_name, const std::string& cache_key) override;
+
+  bool HasArtifact(const std::string& map_name, const std::string& cache_key) override;
+  std::optional<std::string> ReadHeadKey(const std::string& map_name,
+                                         const std::string& stage) override;
+
+  void RecordFailure(const FailureRecord& failure) override;
+  void ClearFailure(const std::string& map_name) override;
+  std::vector<FailureRecord> ReadFailures() override;
+
+  std::vector<VerifyProblem> Verify(const std::function<void(int64_t, int64_t)>& progress) override;
+  MaintenanceCounts CollectGarbage() override;
+  MaintenanceCounts MergeFrom(const std::string& path) override;
+
+ private:
+  // Open-time steps, in the order that keeps a bad file untouched.
+  struct SchemaState {
+    int user_version = 0;
+    int64_t schema_objects = 0;  // tables and indexes of any kind
+  };
+  SchemaState ReadSchemaState();
+  void CheckIsAreagraphStore(const SchemaState& state, StoreMode mode);
+  void Exec(const char* sql, const std::string& action);
+  void EnableWriteAheadLog();
+  // Creates the schema, or upgrades an older one, in one transaction.
+  void CreateOrUpgradeSchema();
+  void CreateMapsTable();
+  void CreateArtifactsTable();
+  void CreateHeadsTable();
+  void PrepareStatements();
+  // The failures statements need schema 2; a read-only version-1 store has none.
+  bool HasFailuresTable() const { return schema_version_ >= 2; }
+
+  std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
+  SqliteTransaction BeginTransaction();
+  MapRecord ReadMapRow(const SqliteStatement& statement) const;
+  // Reads the row of a kRead{Artifact,Head,ArtifactSummaries} statement; the
+  // last column is the payload, or its size in a summary.
+  ArtifactRecord ReadArtifactRow(const SqliteStatement& statement, const std::string& map_name,
+                                 bool with_payload) const;
+  void WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id);
+
+  // Maintenance helpers (sqlite_store_maintenance.cc).
+  void CheckArtifactRow(SqliteStatement& row, std::vector<VerifyProblem>& problems);
+  void FindBrokenHeads(std::vector<VerifyProblem>& problems);
+  void CheckCanMergeFrom(const std::string& path);
+  MaintenanceCounts CopyFromMergeSource(int source_version);
+
+  const std::string path_;
+  const SqliteConnection connection_;  // closes after the statements below
+  sqlite3* const db_;
+  int schema_version_ = 0;  // of the open file, after any upgrade
+
+  std::unique_ptr<SqliteStatement> sql_stmt_begin_;
+  std::unique_ptr<SqliteStatement> sql_stmt_commit_;
+  std::unique_ptr<SqliteStatement> sql_stmt_rollback_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_all_maps_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_map_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_head_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summaries_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_ref_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_id_;
+  std::unique_ptr<SqliteStatement> sql_stmt_upsert_map_;
+  std::unique_ptr<SqliteStatement> sql_stmt_upsert_artifact_;
+  std::unique_ptr<SqliteStatement> sql_stmt_write_head_;
+  std::unique_ptr<SqliteStatement> sql_stmt_has_artifact_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_head_key_;
+  // Null when !HasFailuresTable().
+  std::unique_ptr<SqliteStatement> sql_stmt_record_failure_;
+  std::unique_ptr<SqliteStatement> sql_stmt_clear_failure_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_failures_;
+};
+
+namespace store_internal {
+
+// The first characters of a cache key, enough to tell artifacts apart in messages.
+inline std::string ShortKey(const std::string& cache_key) { return cache_key.substr(0, 12); }
+
+// Input keys are stored newline-joined.
+std::vector<std::string> SplitLines(const std::string& joined);
+
+}  // namespace store_internal
+
+}  // namespace areagraph

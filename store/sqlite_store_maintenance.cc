@@ -1,0 +1,287 @@
+// Maintenance of the SQLite store: Verify, CollectGarbage, MergeFrom and
+// VacuumArtifactStore (ag-store).
+
+#include <sqlite3.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <unordered_set>
+
+#include "store/digest.h"
+#include "store/error.h"
+#include "store/protobuf_wire.h"
+#include "store/sqlite_artifact_store.h"
+#include "store/sqlite_store_maintenance_sql.h"
+#include "store/store_maintenance.h"
+
+namespace areagraph {
+
+using store_internal::ShortKey;
+using store_internal::SplitLines;
+
+namespace {
+
+// One read snapshot over several statements, so counts and rows agree while
+// other processes write. Ends (COMMIT of nothing) when the scope ends.
+class ReadSnapshot {
+ public:
+  ReadSnapshot(sqlite3* db, const std::string& path) : db_(db) {
+    CheckSqlite(db, path, sqlite3_exec(db, store_sql::kBeginRead, nullptr, nullptr, nullptr),
+                "starting a read");
+  }
+  ~ReadSnapshot() { sqlite3_exec(db_, store_sql::kEndRead, nullptr, nullptr, nullptr); }
+  ReadSnapshot(const ReadSnapshot&) = delete;
+  ReadSnapshot& operator=(const ReadSnapshot&) = delete;
+
+ private:
+  sqlite3* db_;
+};
+
+// Detaches the merge source when the merge ends, also on an error (after the
+// transaction has rolled back, since this is constructed before it).
+class MergeSourceAttachment {
+ public:
+  explicit MergeSourceAttachment(sqlite3* db) : db_(db) {}
+  ~MergeSourceAttachment() {
+    sqlite3_exec(db_, store_sql::kDetachMergeSource, nullptr, nullptr, nullptr);
+  }
+  MergeSourceAttachment(const MergeSourceAttachment&) = delete;
+  MergeSourceAttachment& operator=(const MergeSourceAttachment&) = delete;
+
+ private:
+  sqlite3* db_;
+};
+
+// A URI that opens `path` read-only (this SQLite build interprets URIs).
+std::string ReadOnlyUri(const std::string& path) {
+  std::string uri = "file:";
+  for (const unsigned char c : path) {
+    if (std::isalnum(c) || c == '/' || c == '.' || c == '_' || c == '-' || c == '~') {
+      uri += static_cast<char>(c);
+    } else {
+      char escaped[4];
+      std::snprintf(escaped, sizeof(escaped), "%%%02X", c);
+      uri += escaped;
+    }
+  }
+  return uri + "?mode=ro";
+}
+
+// Runs one statement to its end and returns how many rows it changed.
+int64_t Run(sqlite3* db, const std::string& store_path, const char* sql,
+            const std::string& action) {
+  SqliteStatement statement(db, store_path, sql, action);
+  StatementUse use(statement);
+  while (statement.Step()) {
+  }
+  return sqlite3_changes(db);
+}
+
+}  // namespace
+
+std::vector<VerifyProblem> SqliteArtifactStore::Verify(
+    const std::function<void(int64_t, int64_t)>& progress) {
+  std::vector<VerifyProblem> problems;
+  ReadSnapshot snapshot(db_, path_);
+  int64_t total = 0;
+  {
+    SqliteStatement count(db_, path_, store_sql::kCountArtifacts, "counting the artifacts");
+    StatementUse use(count);
+    count.Step();
+    total = count.ColumnInt64(0, "count(*)");
+  }
+  SqliteStatement rows(db_, path_, store_sql::kVerifyArtifacts, "verifying the artifacts");
+  StatementUse use(rows);
+  int64_t done = 0;
+  while (rows.Step()) {  // one payload in memory at a time
+    CheckArtifactRow(rows, problems);
+    ++done;
+    if (progress) progress(done, std::max(total, done));
+  }
+  FindBrokenHeads(problems);
+  return problems;
+}
+
+void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
+                                           std::vector<VerifyProblem>& problems) {
+  VerifyProblem found;
+  const auto report = [&](const std::string& problem) {
+    found.problem = problem;
+    problems.push_back(found);
+  };
+  try {
+    const int64_t id = row.ColumnInt64(0, "artifacts.id");
+    const int64_t map_id = row.ColumnInt64(1, "artifacts.map_id");
+    found.map_name = row.ColumnText(3, "maps.name");
+    found.stage = row.ColumnText(4, "artifacts.stage");
+    found.cache_key = row.ColumnText(5, "artifacts.cache_key");
+    if (row.ColumnInt64(2, "maps.id") == 0) {
+      return report("artifact row " + std::to_string(id) + " belongs to no map");
+    }
+    const std::string_view payload = row.ColumnBlobView(8, "artifacts.payload");
+    if (Sha256Hex(payload) != row.ColumnText(7, "artifacts.payload_digest")) {
+      return report("payload digest mismatch (corrupt); recompute it with ag-" + found.stage +
+                    " --force");
+    }
+    if (!IsWellFormedProtobuf(payload)) return report("payload is not protobuf wire format");
+    if (found.stage == "import") return;  // its input is the digest of a file, not an artifact
+    for (const std::string& key : SplitLines(row.ColumnText(6, "artifacts.input_keys"))) {
+      StatementUse use_lookup(*sql_stmt_read_artifact_id_);
+      sql_stmt_read_artifact_id_->BindInt64(1, map_id);
+      sql_stmt_read_artifact_id_->BindText(2, key);
+      if (!sql_stmt_read_artifact_id_->Step()) {
+        report("input " + ShortKey(key) + " is not an artifact of the map");
+      }
+    }
+  } catch (const StoreError& error) {
+    report(error.what());  // a hand-edited row: reported, and the check goes on
+  }
+}
+
+void SqliteArtifactStore::FindBrokenHeads(std::vector<VerifyProblem>& problems) {
+  SqliteStatement heads(db_, path_, store_sql::kFindBrokenHeads, "checking the heads");
+  StatementUse use(heads);
+  while (heads.Step()) {
+    VerifyProblem problem;
+    problem.map_name = heads.ColumnText(0, "maps.name");
+    problem.stage = heads.ColumnText(1, "heads.stage");
+    problem.cache_key = heads.ColumnText(2, "artifacts.cache_key");
+    problem.problem = heads.ColumnText(3, "problem");
+    problems.push_back(std::move(problem));
+  }
+}
+
+MaintenanceCounts SqliteArtifactStore::CollectGarbage() {
+  MaintenanceCounts counts;
+  SqliteTransaction transaction = BeginTransaction();
+  // Walk from the heads through input keys; ids only, so memory stays small.
+  std::unordered_set<int64_t> kept;
+  std::vector<int64_t> to_visit;
+  {
+    SqliteStatement heads(db_, path_, store_sql::kReadHeadArtifactIds, "reading the heads");
+    StatementUse use(heads);
+    while (heads.Step()) {
+      const int64_t id = heads.ColumnInt64(0, "heads.artifact_id");
+      if (kept.insert(id).second) to_visit.push_back(id);
+    }
+  }
+  SqliteStatement inputs(db_, path_, store_sql::kReadArtifactInputs, "reading input keys");
+  while (!to_visit.empty()) {
+    const int64_t id = to_visit.back();
+    to_visit.pop_back();
+    int64_t map_id = 0;
+    std::vector<std::string> keys;
+    {
+      StatementUse use(inputs);
+      inputs.BindInt64(1, id);
+      if (!inputs.Step()) continue;  // a broken head; verify reports it
+      map_id = inputs.ColumnInt64(0, "artifacts.map_id");
+      keys = SplitLines(inputs.ColumnText(1, "artifacts.input_keys"));
+    }
+    for (const std::string& key : keys) {
+      StatementUse use(*sql_stmt_read_artifact_id_);
+      sql_stmt_read_artifact_id_->BindInt64(1, map_id);
+      sql_stmt_read_artifact_id_->BindText(2, key);
+      if (!sql_stmt_read_artifact_id_->Step()) continue;  // e.g. an import's file digest
+      const int64_t input_id = sql_stmt_read_artifact_id_->ColumnInt64(0, "artifacts.id");
+      if (kept.insert(input_id).second) to_visit.push_back(input_id);
+    }
+  }
+  std::vector<int64_t> garbage;
+  {
+    SqliteStatement sizes(db_, path_, store_sql::kListArtifactSizes, "listing the artifacts");
+    StatementUse use(sizes);
+    while (sizes.Step()) {
+      const int64_t id = sizes.ColumnInt64(0, "artifacts.id");
+      if (kept.count(id) > 0) continue;
+      garbage.push_back(id);
+      counts.payload_bytes += sizes.ColumnInt64(1, "length(artifacts.payload)");
+    }
+  }
+  SqliteStatement erase(db_, path_, store_sql::kDeleteArtifact, "deleting an artifact");
+  for (const int64_t id : garbage) {
+    StatementUse use(erase);
+    erase.BindInt64(1, id);
+    erase.Step();
+  }
+  counts.artifacts = static_cast<int64_t>(garbage.size());
+  counts.maps = Run(db_, path_, store_sql::kDeleteEmptyMaps, "deleting empty maps");
+  transaction.Commit();
+  return counts;
+}
+
+void SqliteArtifactStore::CheckCanMergeFrom(const std::string& path) {
+  if (path == kMemoryStorePath) {
+    throw StoreError("cannot merge from '" + path + "': it is always a new, empty store");
+  }
+  std::error_code ignored;
+  if (path_ != kMemoryStorePath && std::filesystem::equivalent(path, path_, ignored)) {
+    throw StoreError("cannot merge store '" + path + "' into itself");
+  }
+  // The usual open checks: exists, is SQLite, is ours, is not newer.
+  OpenArtifactStore(path, StoreMode::kReadOnly);
+}
+
+MaintenanceCounts SqliteArtifactStore::MergeFrom(const std::string& path) {
+  CheckCanMergeFrom(path);
+  {
+    SqliteStatement attach(db_, path_, store_sql::kAttachMergeSource,
+                           "attaching store '" + path + "'");
+    StatementUse use(attach);
+    attach.BindText(1, ReadOnlyUri(path));
+    attach.Step();
+  }
+  MergeSourceAttachment attachment(db_);
+  int64_t source_version = 0;
+  {
+    SqliteStatement version(db_, path_, store_sql::kReadMergeSourceVersion,
+                            "reading the schema version of '" + path + "'");
+    StatementUse use(version);
+    version.Step();
+    source_version = version.ColumnInt64(0, "user_version");
+  }
+  if (source_version < 1 || source_version > kStoreSchemaVersion) {  // changed since checked
+    throw StoreError("store '" + path + "' changed while being merged; try again");
+  }
+  return CopyFromMergeSource(static_cast<int>(source_version));
+}
+
+MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(int source_version) {
+  MaintenanceCounts counts;
+  SqliteTransaction transaction = BeginTransaction();
+  const auto run = [this](const char* sql, const char* action) {
+    return Run(db_, path_, sql, std::string("merging: ") + action);
+  };
+  counts.maps = run(store_sql::kMergeMaps, "copying maps");
+  {
+    SqliteStatement count(db_, path_, store_sql::kCountNewArtifacts, "merging: counting");
+    StatementUse use(count);
+    count.Step();
+    counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
+  }
+  counts.artifacts = run(store_sql::kMergeArtifacts, "copying artifacts");
+  run(store_sql::kCreateWinningHeads, "comparing heads");
+  run(store_sql::kFindWinningHeads, "comparing heads");
+  run(store_sql::kMergeMapSources, "updating map sources");
+  run(store_sql::kMergeHeads, "copying heads");
+  run(store_sql::kDropWinningHeads, "comparing heads");
+  if (source_version >= 2) counts.failures = run(store_sql::kMergeFailures, "copying failures");
+  run(store_sql::kDropOutdatedFailures, "dropping outdated failures");
+  transaction.Commit();
+  return counts;
+}
+
+void VacuumArtifactStore(const std::string& path) {
+  OpenArtifactStore(path, StoreMode::kReadOnly);  // the usual checks; never creates a file
+  const SqliteConnection connection(path, StoreMode::kReadWrite);
+  sqlite3* db = connection.get();
+  CheckSqlite(db, path, sqlite3_busy_timeout(db, kStoreBusyTimeoutMs), "setting the busy timeout");
+  CheckSqlite(db, path, sqlite3_exec(db, "VACUUM", nullptr, nullptr, nullptr), "vacuuming");
+  CheckSqlite(db, path,
+              sqlite3_exec(db, "PRAGMA wal_checkpoint(TRUNCATE)", nullptr, nullptr, nullptr),
+              "writing the log back after vacuuming");
+}
+
+}  // namespace areagraph

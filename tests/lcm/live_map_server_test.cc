@@ -1,0 +1,151 @@
+// ag-live's server in process over memq://: the real pipeline on a small
+// example map, the cache, and bad input.
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+
+#include "runner/live/area_graph_publisher.h"
+#include "runner/live/lcm_conversion.h"
+#include "runner/live/live_map_server.h"
+#include "stages/common/stage.h"
+#include "stages/import/import_stage.h"
+#include "tests/support/test_support.h"
+#include "tools/listen/area_graph_listener.h"
+
+namespace areagraph {
+namespace {
+
+proto::GridMap ExampleGrid(const std::string& file) {
+  return ImportGridMap(ReadImportSource(testing::SourcePath("examples/" + file)),
+                       proto::ImportOptions());
+}
+
+// A server and a listener sharing one memq:// instance and an in-memory store.
+class LiveMapServerTest : public ::testing::Test {
+ protected:
+  void SendGrid(const std::string& name, const proto::GridMap& grid, int64_t utime = 1) {
+    const areagraph_lcm::grid_map_t message = ToLcmGridMap(name, utime, grid);
+    publisher_.connection().publish(kGridMapChannel, &message);
+  }
+  void SendBytes(const std::string& bytes) {
+    publisher_.connection().publish(kGridMapChannel, bytes.data(),
+                                    static_cast<unsigned>(bytes.size()));
+  }
+  // Takes what the server published; Serve dispatched it to the listener
+  // already when both were queued together, so this only drains.
+  void DrainListener() {
+    while (listener_.Listen(0)) {
+    }
+  }
+
+  std::unique_ptr<ArtifactStore> store_ = OpenArtifactStore(":memory:");
+  AreaGraphPublisher publisher_{"memq://"};
+  std::ostringstream out_, log_, heard_, listener_log_;
+  LiveMapServer server_{*store_, publisher_, proto::PipelineOptions(), out_, log_};
+  AreaGraphListener listener_{publisher_.connection(), publisher_.url(), nullptr, heard_,
+                              listener_log_};
+};
+
+TEST_F(LiveMapServerTest, PublishesTheGraphAndASecondIdenticalMapIsCached) {
+  const proto::GridMap grid = ExampleGrid("two_rooms.png");
+  SendGrid("two_rooms", grid, 1);
+  EXPECT_EQ(server_.Serve(1000), 1);
+  std::smatch match;
+  const std::string first = out_.str();
+  ASSERT_TRUE(std::regex_match(
+      first, match,
+      std::regex("two_rooms: (\\d+) areas, (\\d+) passages, key ([0-9a-f]{12}), computed 6 of "
+                 "6 stages in \\d+ ms\n")))
+      << first << log_.str();
+  std::string merge_key;
+  const auto graph = ReadHeadArtifact<proto::AreaGraph>(*store_, "two_rooms", kMergeStage,
+                                                        &merge_key);
+  EXPECT_GE(graph.areas_size(), 2);
+  EXPECT_EQ(match[1].str(), std::to_string(graph.areas_size()));
+  EXPECT_EQ(match[3].str(), merge_key.substr(0, 12));
+  DrainListener();
+  EXPECT_EQ(heard_.str(), "map two_rooms: " + match[1].str() + " areas, " + match[2].str() +
+                              " passages, key " + match[3].str() + "\n");
+
+  const std::string import_key = *store_->ReadHeadKey("two_rooms", "import");
+  const size_t artifacts = store_->ReadArtifactSummaries("two_rooms").size();
+  EXPECT_EQ(artifacts, 6u);
+  SendGrid("two_rooms", grid, 2);  // a new utime, the same grid
+  EXPECT_EQ(server_.Serve(1000), 1);
+  EXPECT_EQ(out_.str(), first + "two_rooms: " + match[1].str() + " areas, " + match[2].str() +
+                            " passages, key " + match[3].str() + ", cached\n");
+  EXPECT_EQ(store_->ReadArtifactSummaries("two_rooms").size(), artifacts);
+  EXPECT_EQ(*store_->ReadHeadKey("two_rooms", "import"), import_key);
+  DrainListener();
+  EXPECT_EQ(listener_.graphs_received(), 2);
+  EXPECT_EQ(log_.str(), "");
+}
+
+TEST_F(LiveMapServerTest, StoresTheGridAsTheMapsImportWithItsDigest) {
+  const proto::GridMap grid = ExampleGrid("two_rooms.png");
+  SendGrid("lab", grid);
+  ASSERT_EQ(server_.Serve(1000), 1);
+  const auto stored = ReadHeadArtifact<proto::GridMap>(*store_, "lab", kImportStage);
+  EXPECT_EQ(stored.cells(), grid.cells());
+  EXPECT_EQ(stored.source_path(), "LCM channel MAP");
+  EXPECT_EQ(stored.source_digest(), LiveGridDigest(grid));
+  EXPECT_EQ(store_->ReadMap("lab")->source_digest, LiveGridDigest(grid));
+}
+
+TEST_F(LiveMapServerTest, SkipsMalformedMessagesAndKeepsServing) {
+  SendBytes(std::string(100, '\x5a'));
+  areagraph_lcm::grid_map_t invalid = ToLcmGridMap("lab", 1, ExampleGrid("two_rooms.png"));
+  invalid.cells[0] = 101;
+  publisher_.connection().publish(kGridMapChannel, &invalid);
+  SendGrid("lab", ExampleGrid("two_rooms.png"));
+  EXPECT_EQ(server_.Serve(1000), 1);
+  EXPECT_EQ(server_.messages_rejected(), 2);
+  EXPECT_EQ(server_.maps_handled(), 1);
+  EXPECT_NE(log_.str().find("ag-live: skipped a malformed message on MAP (100 bytes): not a "
+                            "message of type grid_map_t"),
+            std::string::npos)
+      << log_.str();
+  EXPECT_NE(log_.str().find("grid_map_t 'lab': cell (0, 0) has value 101"), std::string::npos)
+      << log_.str();
+  EXPECT_NE(out_.str().find("lab: "), std::string::npos);
+  EXPECT_TRUE(store_->ReadHeadKey("lab", "merge").has_value());
+}
+
+TEST_F(LiveMapServerTest, AFailingMapIsRecordedAndTheNextOneServed) {
+  // Nothing but free space: no walls to build a Voronoi diagram from.
+  proto::GridMap empty = ExampleGrid("two_rooms.png");
+  empty.set_cells(std::string(empty.cells().size(), static_cast<char>(proto::CELL_FREE)));
+  SendGrid("empty", empty);
+  EXPECT_EQ(server_.Serve(1000), 1);
+  EXPECT_EQ(server_.maps_failed(), 1);
+  EXPECT_NE(log_.str().find("ag-live: map 'empty' failed in "), std::string::npos) << log_.str();
+  EXPECT_NE(log_.str().find("; still serving"), std::string::npos);
+  const auto failures = store_->ReadFailures();
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].map_name, "empty");
+  EXPECT_EQ(failures[0].source_path, "LCM channel MAP");
+  EXPECT_NE(log_.str().find("failed in " + failures[0].stage + ": " + failures[0].message),
+            std::string::npos)
+      << log_.str();
+  EXPECT_NE(failures[0].stage, "import");
+  EXPECT_EQ(out_.str(), "");
+
+  SendGrid("two_rooms", ExampleGrid("two_rooms.png"));
+  EXPECT_EQ(server_.Serve(1000), 1);
+  EXPECT_NE(out_.str().find("two_rooms: "), std::string::npos);
+  EXPECT_EQ(server_.maps_failed(), 1);
+}
+
+TEST_F(LiveMapServerTest, HandlesOnlyTheNewestQueuedGridOfAMap) {
+  SendGrid("lab", ExampleGrid("two_rooms.png"), 1);
+  const proto::GridMap newer = ExampleGrid("corridor_rooms.png");
+  SendGrid("lab", newer, 2);
+  EXPECT_EQ(server_.Serve(1000), 1);
+  EXPECT_NE(log_.str().find("map 'lab': a newer grid arrived"), std::string::npos) << log_.str();
+  const auto stored = ReadHeadArtifact<proto::GridMap>(*store_, "lab", kImportStage);
+  EXPECT_EQ(stored.source_digest(), LiveGridDigest(newer));
+}
+
+}  // namespace
+}  // namespace areagraph

@@ -1,0 +1,122 @@
+#include "runner/run/map_collection.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "runner/run/manifest_reader.h"
+#include "store/error.h"
+#include "tests/support/test_support.h"
+
+namespace areagraph {
+namespace {
+
+using testing::TempDir;
+using testing::WriteFile;
+
+// The message of what `body` throws as E, or "" when it does not throw.
+template <typename E, typename F>
+std::string ErrorOf(F body) {
+  try {
+    body();
+  } catch (const E& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(MapCollectionTest, DirectoryIsSearchedRecursivelyAndNamedByRelativePath) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.File("floor1/wing"));
+  WriteFile(dir.File("b.png"), "x");
+  WriteFile(dir.File("floor1/wing/a.pgm"), "x");
+  WriteFile(dir.File("floor1/notes.txt"), "x");
+  WriteFile(dir.File("floor1/a.yaml"), "x");
+  const std::vector<MapEntry> maps = CollectMaps({dir.path()});
+  ASSERT_EQ(maps.size(), 2u);
+  EXPECT_EQ(maps[0].name, "b");
+  EXPECT_EQ(maps[1].name, "floor1/wing/a");
+  EXPECT_EQ(maps[1].path, dir.File("floor1/wing/a.pgm"));
+}
+
+TEST(MapCollectionTest, SameNameTwiceIsRefused) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.File("x"));
+  WriteFile(dir.File("a.png"), "x");
+  WriteFile(dir.File("x/a.png"), "x");
+  const std::string error =
+      ErrorOf<InputError>([&] { CollectMaps({dir.File("a.png"), dir.File("x/a.png")}); });
+  EXPECT_NE(error.find("second map named 'a'"), std::string::npos) << error;
+}
+
+TEST(MapCollectionTest, MissingPathIsRefused) {
+  const std::string error = ErrorOf<InputError>([] { CollectMaps({"/no/such/map.png"}); });
+  EXPECT_NE(error.find("/no/such/map.png"), std::string::npos) << error;
+}
+
+TEST(MapCollectionTest, TsvManifestGivesNamesPathsAndOptions) {
+  TempDir dir;
+  WriteFile(dir.File("list.tsv"),
+            "# maps of floor 2\npath\tname\tcut.room_width_m\n"
+            "a.png\tfirst\t1.1\n\nsub/b.png\t\t\n");
+  const std::vector<MapEntry> maps = CollectMaps({dir.File("list.tsv")});
+  ASSERT_EQ(maps.size(), 2u);
+  EXPECT_EQ(maps[0].name, "first");
+  EXPECT_EQ(maps[0].path, dir.File("a.png"));
+  EXPECT_EQ(maps[0].overrides, std::vector<std::string>{"cut.room_width_m=1.1"});
+  EXPECT_EQ(maps[0].origin, dir.File("list.tsv") + ":3");
+  EXPECT_EQ(maps[1].name, "b");
+  EXPECT_TRUE(maps[1].overrides.empty());
+  const proto::PipelineOptions options = OptionsForMap(proto::PipelineOptions(), maps[0]);
+  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.1);
+}
+
+TEST(MapCollectionTest, CsvManifestHonoursQuotes) {
+  TempDir dir;
+  WriteFile(dir.File("list.csv"), "name,path\n\"north, wing\",\"/maps/a b.png\"\n");
+  const ManifestTable table = ReadManifest(dir.File("list.csv"));
+  ASSERT_EQ(table.rows.size(), 1u);
+  EXPECT_EQ(table.rows[0].cells, (std::vector<std::string>{"north, wing", "/maps/a b.png"}));
+}
+
+TEST(MapCollectionTest, ManifestRowOfWrongWidthNamesItsLine) {
+  TempDir dir;
+  WriteFile(dir.File("list.csv"), "path,name\na.png,a\nb.png\n");
+  const std::string error = ErrorOf<InputError>([&] { CollectMaps({dir.File("list.csv")}); });
+  EXPECT_NE(error.find("list.csv:3: 1 fields, but the header has 2"), std::string::npos) << error;
+}
+
+TEST(MapCollectionTest, ManifestWithoutPathColumnIsRefused) {
+  TempDir dir;
+  WriteFile(dir.File("list.tsv"), "file\tname\na.png\ta\n");
+  const std::string error = ErrorOf<InputError>([&] { CollectMaps({dir.File("list.tsv")}); });
+  EXPECT_NE(error.find("no `path` column"), std::string::npos) << error;
+}
+
+TEST(MapCollectionTest, ManifestColumnThatIsNoOptionListsTheValidKeys) {
+  TempDir dir;
+  WriteFile(dir.File("list.tsv"), "path\tcut.room_widht_m\na.png\t1\n");
+  const std::string error = ErrorOf<OptionsError>([&] { CollectMaps({dir.File("list.tsv")}); });
+  EXPECT_NE(error.find("'cut.room_widht_m' is not an option"), std::string::npos) << error;
+  EXPECT_NE(error.find("cut.room_width_m"), std::string::npos) << error;
+}
+
+TEST(MapCollectionTest, ManifestValueOfWrongTypeNamesTheRow) {
+  TempDir dir;
+  WriteFile(dir.File("list.tsv"), "path\tcut.room_width_m\na.png\twide\n");
+  const std::vector<MapEntry> maps = CollectMaps({dir.File("list.tsv")});
+  ASSERT_EQ(maps.size(), 1u);
+  const std::string error =
+      ErrorOf<OptionsError>([&] { OptionsForMap(proto::PipelineOptions(), maps[0]); });
+  EXPECT_NE(error.find("list.tsv:2"), std::string::npos) << error;
+}
+
+TEST(MapCollectionTest, BinaryManifestIsRefused) {
+  TempDir dir;
+  WriteFile(dir.File("list.tsv"), std::string("path\n\0\x01\x02", 8));
+  const std::string error = ErrorOf<InputError>([&] { CollectMaps({dir.File("list.tsv")}); });
+  EXPECT_NE(error.find("list.tsv:2"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace areagraph

@@ -1,0 +1,86 @@
+#include "tools/listen/area_graph_listener.h"
+
+#include <climits>
+#include <sstream>
+
+#include "runner/live/area_graph_publisher.h"
+#include "runner/live/lcm_connection.h"
+#include "runner/live/lcm_conversion.h"
+#include "stages/common/stage.h"
+#include "store/cache_key.h"
+#include "store/error.h"
+
+namespace areagraph {
+
+std::string DescribeAreaGraph(const areagraph_lcm::area_graph_t& message) {
+  std::ostringstream line;
+  line << "map " << message.map_name << ": " << message.num_areas << " areas, "
+       << message.num_passages << " passages, key " << message.artifact_key.substr(0, 12);
+  return line.str();
+}
+
+std::string ReceivedAreaGraphKey(const std::string& published_key) {
+  return ComputeCacheKey("received-over-lcm", 1, "", {published_key});
+}
+
+bool StoreReceivedAreaGraph(ArtifactStore& store, const areagraph_lcm::area_graph_t& message) {
+  const proto::AreaGraph graph = AreaGraphFromLcm(message);
+  if (message.artifact_key.empty() || message.artifact_key.find('\n') != std::string::npos) {
+    throw InputError("area_graph_t for map '" + message.map_name + "' has no usable artifact key");
+  }
+  const std::string key = ReceivedAreaGraphKey(message.artifact_key);
+  if (store.HasArtifact(message.map_name, key)) {
+    store.UpdateHead(message.map_name, key);
+    return false;
+  }
+  NewArtifact artifact;
+  artifact.map_name = message.map_name;
+  artifact.stage = kMergeStage.name;
+  artifact.cache_key = key;
+  artifact.input_keys = {message.artifact_key};
+  artifact.stage_version = 0;
+  artifact.proto_type = graph.GetTypeName();
+  artifact.payload = graph.SerializeAsString();
+  store.WriteArtifact(artifact);
+  return true;
+}
+
+AreaGraphListener::AreaGraphListener(lcm::LCM& lcm, std::string url, ArtifactStore* store,
+                                     std::ostream& out, std::ostream& log)
+    : lcm_(lcm), url_(std::move(url)), store_(store), out_(out), log_(log) {
+  subscription_ = lcm_.subscribe(kAreaGraphChannel, &AreaGraphListener::OnMessage, this);
+  StartReceiving(lcm_, url_);
+}
+
+AreaGraphListener::~AreaGraphListener() { lcm_.unsubscribe(subscription_); }
+
+bool AreaGraphListener::Listen(int timeout_ms) { return HandleOneMessage(lcm_, timeout_ms, url_); }
+
+void AreaGraphListener::OnMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  areagraph_lcm::area_graph_t message;
+  try {
+    if (buffer->data_size > static_cast<uint32_t>(INT_MAX)) throw InputError("message too big");
+    message = DecodeAreaGraphMessage(buffer->data, static_cast<int>(buffer->data_size));
+    // Checked even without a store, so that what is printed is a valid graph.
+    AreaGraphFromLcm(message);
+  } catch (const std::exception& error) {
+    ++messages_rejected_;
+    log_ << "ag-listen: skipped a malformed message on " << channel << " (" << buffer->data_size
+         << " bytes): " << error.what() << std::endl;
+    return;
+  }
+  ++graphs_received_;
+  std::string stored;
+  if (store_ != nullptr) {
+    try {
+      stored = StoreReceivedAreaGraph(*store_, message) ? ", stored" : ", already stored";
+    } catch (const std::exception& error) {
+      stored = ", not stored";
+      log_ << "ag-listen: cannot store the graph of map '" << message.map_name
+           << "': " << error.what() << std::endl;
+    }
+  }
+  out_ << DescribeAreaGraph(message) << stored << std::endl;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,145 @@
+#include "tools/store/store_commands.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "store/artifact_store.h"
+#include "store/error.h"
+#include "store/store_maintenance.h"
+#include "tools/inspect/failure_report.h"
+
+namespace areagraph {
+namespace {
+
+std::string Plural(int64_t count, const std::string& noun) {
+  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
+std::string FormatBytes(int64_t bytes) {
+  std::string text = Plural(bytes, "byte");
+  if (bytes >= (1 << 20)) {
+    char mib[32];
+    std::snprintf(mib, sizeof(mib), " (%.1f MiB)", static_cast<double>(bytes) / (1 << 20));
+    text += mib;
+  }
+  return text;
+}
+
+// The store's size on disk: the file and its write-ahead log.
+int64_t StoreFileBytes(const std::string& path) {
+  std::error_code missing;
+  int64_t bytes = 0;
+  for (const std::string& file : {path, path + "-wal"}) {
+    const auto size = std::filesystem::file_size(file, missing);
+    if (!missing) bytes += static_cast<int64_t>(size);
+  }
+  return bytes;
+}
+
+// Refuses a store that does not exist yet, with the store's own message:
+// gc and verify must never create one.
+void CheckStoreExists(const std::string& path) { OpenArtifactStore(path, StoreMode::kReadOnly); }
+
+// "verifying 1200/5000 artifacts" on stderr, redrawn in place. Only stores
+// that take a while show it, so small ones print nothing extra.
+class ProgressLine {
+ public:
+  void Update(int64_t done, int64_t total) {
+    const auto now = std::chrono::steady_clock::now();
+    if (now - start_ < std::chrono::milliseconds(500)) return;
+    if (shown_ && now - last_ < std::chrono::milliseconds(100) && done < total) return;
+    std::fprintf(stderr, "\rverifying %lld/%lld artifacts (%lld%%)", static_cast<long long>(done),
+                 static_cast<long long>(total), static_cast<long long>(100 * done / total));
+    std::fflush(stderr);
+    shown_ = true;
+    last_ = now;
+  }
+  ~ProgressLine() {
+    if (shown_) std::fputs("\r\033[K", stderr);  // clear the line for the report
+  }
+
+ private:
+  const std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_;
+  bool shown_ = false;
+};
+
+std::string OrDash(const std::string& text) { return text.empty() ? "-" : text; }
+
+}  // namespace
+
+int MergeStores(const std::string& output, const std::vector<std::string>& inputs,
+                std::ostream& out) {
+  for (const std::string& input : inputs) OpenArtifactStore(input, StoreMode::kReadOnly);
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(output);
+  for (const std::string& input : inputs) {
+    const MaintenanceCounts added = store->MergeFrom(input);
+    out << input << ": added " << Plural(added.maps, "map") << ", "
+        << Plural(added.artifacts, "artifact") << " (" << FormatBytes(added.payload_bytes)
+        << " of payload), " << Plural(added.failures, "failure") << "\n";
+  }
+  out << "merged " << Plural(static_cast<int64_t>(inputs.size()), "store") << " into " << output
+      << "\n";
+  return 0;
+}
+
+int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream& out) {
+  CheckStoreExists(store_path);
+  MaintenanceCounts removed;
+  {
+    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path);
+    removed = store->CollectGarbage();
+  }
+  if (removed.artifacts == 0 && removed.maps == 0) {
+    out << "nothing to remove: every artifact is reachable from a head\n";
+  } else {
+    out << "removed " << Plural(removed.artifacts, "artifact") << " ("
+        << FormatBytes(removed.payload_bytes) << " of payload) and "
+        << Plural(removed.maps, "empty map") << "\n";
+  }
+  if (vacuum) {
+    const int64_t before = StoreFileBytes(store_path);
+    VacuumArtifactStore(store_path);
+    out << "vacuumed " << store_path << ": " << FormatBytes(before) << " -> "
+        << FormatBytes(StoreFileBytes(store_path)) << " on disk\n";
+  }
+  return 0;
+}
+
+int VerifyStore(const std::string& store_path, bool progress, std::ostream& out) {
+  const std::unique_ptr<ArtifactStore> store =
+      OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  int64_t checked = 0;
+  std::vector<VerifyProblem> problems;
+  {
+    ProgressLine line;
+    problems = store->Verify([&](int64_t done, int64_t total) {
+      checked = done;
+      if (progress) line.Update(done, total);
+    });
+  }
+  for (const VerifyProblem& problem : problems) {
+    out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "
+        << OrDash(problem.cache_key.substr(0, 12)) << ": " << problem.problem << "\n";
+  }
+  out << "checked " << Plural(checked, "artifact") << ": "
+      << (problems.empty() ? "no problems" : Plural(static_cast<int64_t>(problems.size()),
+                                                     "problem"))
+      << "\n";
+  return problems.empty() ? 0 : 1;
+}
+
+int ListStoreFailures(const std::string& store_path, bool json, std::ostream& out) {
+  const std::unique_ptr<ArtifactStore> store =
+      OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  if (json) {
+    PrintFailuresJson(store->ReadFailures(), out);
+  } else {
+    PrintFailureList(store->ReadFailures(), out);
+  }
+  return 0;
+}
+
+}  // namespace areagraph

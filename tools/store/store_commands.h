@@ -1,0 +1,29 @@
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace areagraph {
+
+// The subcommands of ag-store. Each prints its report to `out` and returns
+// the exit code; errors are thrown (StoreError etc.) for RunCommand.
+
+// Copies every store in `inputs` into `output` (created if needed), one
+// transaction per input, and prints per input what was new. All inputs are
+// checked before `output` is opened, so a typo creates nothing.
+int MergeStores(const std::string& output, const std::vector<std::string>& inputs,
+                std::ostream& out);
+
+// Drops the artifacts no head reaches and prints what was freed; `vacuum`
+// then gives the space back to the file system and prints the file sizes.
+int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream& out);
+
+// Checks every artifact; prints one line per problem and a summary. Returns 1
+// when there are problems. `progress` shows a progress line on stderr.
+int VerifyStore(const std::string& store_path, bool progress, std::ostream& out);
+
+// The failures recorded by runners, as a table or JSON.
+int ListStoreFailures(const std::string& store_path, bool json, std::ostream& out);
+
+}  // namespace areagraph
