@@ -1,30 +1,39 @@
 #!/usr/bin/env bash
 # Segmentation quality benchmark. Runs the pipeline on the Area Graph paper's
-# 16 maps (with the paper's per-map W and noise from data_setting, and with the
-# fixed W = 1.25 m) and on MAORIS' 20 RobotMap maps (defaults), scores every
-# result with ag-eval against the human ground truth, and prints Markdown
-# tables that also score the published results shipped with the data.
+# 16 maps (with the defaults, which estimate W; with the paper's per-map W and
+# noise from data_setting; and with the fixed W = 1.25 m) and on MAORIS' 20
+# RobotMap maps (defaults), scores every result with ag-eval against the human
+# ground truth, and prints Markdown tables that also score the published
+# results shipped with the data. --build DIR uses the executables of an
+# existing build (DIR/bin) instead of building build/.
 #
-#   tools/bench-quality.sh [--data DIR] [--out DIR]
+#   tools/bench-quality.sh [--data DIR] [--out DIR] [--build DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 DATA=../shared/data
 OUT=out/bench-quality
+BUILD=
 while [ $# -gt 0 ]; do
   case "$1" in
     --data) DATA=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
-    -h|--help) sed -n '2,8p' "$0"; exit 0 ;;
+    --build) BUILD=$2; shift 2 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) echo "bench-quality: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
 AG=$DATA/areagraph
 RM=$DATA/maoris/RobotMap
 [ -d "$AG/input" ] || { echo "bench-quality: no data at $AG/input (use --data)" >&2; exit 1; }
-tools/build.sh >/dev/null
-BIN=build/bin
+if [ -n "$BUILD" ]; then
+  BIN=$BUILD/bin
+  [ -x "$BIN/ag-pipeline" ] || { echo "bench-quality: no ag-pipeline in $BIN" >&2; exit 1; }
+else
+  tools/build.sh >/dev/null
+  BIN=build/bin
+fi
 rm -rf "$OUT"
-mkdir -p "$OUT"/{strategy,fixed,maoris}
+mkdir -p "$OUT"/{auto,strategy,fixed,maoris}
 STORE=$OUT/store.db
 
 # data_setting lists, per section, "<map>.png <value>" lines.
@@ -52,6 +61,7 @@ for image in "$AG"/input/*.png; do
   noise_set=()
   [ -n "$noise" ] && noise_set=(--set "clean.outlier_percent=$noise")
   echo "areagraph/$name: W=${w:-1.25 (none given)} noise=${noise:-default}" >&2
+  run_map "$image" "$name" "$OUT/auto"
   run_map "$image" "$name" "$OUT/strategy" --set "cut.room_width_m=${w:-1.25}" "${noise_set[@]}"
   run_map "$image" "$name" "$OUT/fixed" --set cut.room_width_m=1.25 "${noise_set[@]}"
 done
@@ -96,6 +106,7 @@ T=$OUT/tables
 mkdir -p "$T"
 for variant in standard maoris; do
   flags=(--mcc-variant "$variant")
+  mcc_column "$OUT/auto" "$AG/GT" "${flags[@]}" >"$T/ours-auto-$variant"
   mcc_column "$OUT/strategy" "$AG/GT" "${flags[@]}" >"$T/ours-strategy-$variant"
   mcc_column "$OUT/fixed" "$AG/GT" "${flags[@]}" >"$T/ours-fixed-$variant"
   mcc_column "$AG/strategy_w" "$AG/GT" "${flags[@]}" --drop-result-px 100 >"$T/paper-strategy-$variant"
@@ -110,7 +121,7 @@ done
 echo "## Segmentation quality, $(date -u +%Y-%m-%d)"
 for variant in standard maoris; do
   join_table "areagraph/ (16 maps), MCC ($variant)" \
-    "ours, strategy W:$T/ours-strategy-$variant" "ours, W = 1.25:$T/ours-fixed-$variant" \
+    "ours, defaults (auto W):$T/ours-auto-$variant" "ours, strategy W:$T/ours-strategy-$variant" "ours, W = 1.25:$T/ours-fixed-$variant" \
     "paper code, strategy W:$T/paper-strategy-$variant" "paper code, W = 1.25:$T/paper-fixed-$variant"
   join_table "maoris/RobotMap (20 maps), MCC ($variant)" \
     "ours, defaults:$T/ours-maoris-$variant" "MAORIS:$T/maoris-$variant" \

@@ -7,13 +7,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 MAP=examples/office_small.png
 if [ $# -gt 0 ] && [[ "$1" != --* ]]; then MAP=$1; shift; fi
-tools/build.sh >/dev/null
 mkdir -p out
+tools/build.sh >out/build.log 2>&1 || { tail -n 30 out/build.log >&2; echo "demo: build failed (out/build.log)" >&2; exit 1; }
 STORE=out/demo.db
 BIN=build/bin
 name=$(basename "${MAP%.*}")
-"$BIN/ag-import" --store "$STORE" "$MAP"
-"$BIN/ag-pipeline" --store "$STORE" --map "$name" "$@"
+"$BIN/ag-run" --store "$STORE" --jobs 1 "$@" "$MAP"
 for stage in clean voronoi prune cut merge; do
   "$BIN/ag-render" --store "$STORE" --map "$name" --stage "$stage" --out "out/$name-$stage.png"
 done

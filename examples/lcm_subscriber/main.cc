@@ -7,9 +7,8 @@
 //   COUNT  exit after this many graphs (default: run until killed)
 #include <cstdlib>
 #include <iostream>
-#include <string>
-
 #include <lcm/lcm-cpp.hpp>
+#include <string>
 
 #include "areagraph_lcm/area_graph_t.hpp"
 
@@ -33,9 +32,9 @@ class AreaGraphPrinter {
   void OnAreaGraph(const lcm::ReceiveBuffer*, const std::string& channel,
                    const areagraph_lcm::area_graph_t* graph) {
     ++received_;
-    std::cout << channel << ": map '" << graph->map_name << "', " << graph->num_areas
-              << " areas, " << graph->num_passages << " passages (key "
-              << graph->artifact_key.substr(0, 12) << ")\n";
+    std::cout << channel << ": map '" << graph->map_name << "', " << graph->num_areas << " areas, "
+              << graph->num_passages << " passages (key " << graph->artifact_key.substr(0, 12)
+              << ")\n";
     for (const areagraph_lcm::area_t& area : graph->areas) {
       std::cout << "  area " << area.id << ": " << KindName(area.kind) << ", " << area.area_m2
                 << " m2, centroid (" << area.centroid_x << ", " << area.centroid_y << "), "

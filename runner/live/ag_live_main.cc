@@ -44,23 +44,25 @@ int Live(const LiveFlags& flags) {
   if (options.import().max_pixels() <= 0) {
     throw OptionsError("import.max_pixels must be positive");
   }
-  AreaGraphPublisher publisher(flags.url);
+  // Everything that can fail without the network fails before LCM starts.
+  const std::string url = ReceivingLcmUrl(flags.url);
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.stage.store_path);
+  AreaGraphPublisher publisher(url);
   LiveMapServer server(*store, publisher, options, std::cout, std::cerr);
   InstallStopHandlers();
   std::cerr << "ag-live: serving on " << publisher.url() << ": grids on " << kGridMapChannel
-            << ", Area Graphs on " << kAreaGraphChannel << ", store '"
-            << flags.stage.store_path << "'" << std::endl;
+            << ", Area Graphs on " << kAreaGraphChannel << ", store '" << flags.stage.store_path
+            << "'" << std::endl;
 
   using Clock = std::chrono::steady_clock;
   const Clock::time_point deadline =
-      Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(flags.timeout_s));
+      Clock::now() +
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(flags.timeout_s));
   while (!stop_requested && (flags.count == 0 || server.maps_handled() < flags.count)) {
     int wait_ms = 200;
     if (flags.timeout_s > 0) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline -
-                                                                              Clock::now());
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now());
       if (left.count() <= 0) break;
       wait_ms = static_cast<int>(std::min<int64_t>(wait_ms, left.count()));
     }
@@ -90,8 +92,7 @@ int main(int argc, char** argv) {
   LiveFlags flags;
   app.add_option("--url", flags.url, "LCM URL; udpm must keep ttl=0 (traffic stays on the host)")
       ->capture_default_str();
-  app.add_option("--store", flags.stage.store_path, "SQLite artifact store")
-      ->capture_default_str();
+  app.add_option("--store", flags.stage.store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--options", flags.stage.options_file,
                  "PipelineOptions in protobuf text format (see examples/options/)");
   app.add_option("--set", flags.stage.overrides,

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <lcm/lcm-cpp.hpp>
 #include <memory>
 #include <string>
-
-#include <lcm/lcm-cpp.hpp>
 
 #include "proto/artifacts.pb.h"
 

@@ -84,8 +84,9 @@ proto::GridMap GridMapFromLcm(const areagraph_lcm::grid_map_t& message, int64_t 
   const int64_t width = message.width;
   const int64_t height = message.height;
   if (width * height > max_cells) {
-    Reject(name, std::to_string(width) + "x" + std::to_string(height) + " cells exceed the limit of " +
-                     std::to_string(max_cells) + " (import.max_pixels)");
+    Reject(name, std::to_string(width) + "x" + std::to_string(height) +
+                     " cells exceed the limit of " + std::to_string(max_cells) +
+                     " (import.max_pixels)");
   }
   if (message.num_cells != width * height ||
       static_cast<int64_t>(message.cells.size()) != width * height) {

@@ -52,6 +52,15 @@ std::string HostLocalLcmUrl(const std::string& url) {
   return has_ttl ? url : url + "&ttl=0";
 }
 
+std::string ReceivingLcmUrl(const std::string& url) {
+  const std::string local_url = HostLocalLcmUrl(url);
+  if (local_url.rfind("udpm://", 0) != 0 || local_url.find("recv_buf_size=") != std::string::npos) {
+    return local_url;
+  }
+  // HostLocalLcmUrl always leaves a query (ttl=0) on udpm URLs.
+  return local_url + "&recv_buf_size=" + std::to_string(kReceiveBufferBytes);
+}
+
 std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url) {
   const std::string local_url = HostLocalLcmUrl(url);
   auto lcm = std::make_unique<lcm::LCM>(local_url);

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <lcm/lcm-cpp.hpp>
 #include <memory>
 #include <string>
-
-#include <lcm/lcm-cpp.hpp>
 
 namespace areagraph {
 
@@ -13,13 +12,23 @@ namespace areagraph {
 // Throws OptionsError saying what to use instead.
 std::string HostLocalLcmUrl(const std::string& url);
 
+// Kernel receive buffer that receivers ask for: a grid map arrives as one
+// burst of UDP fragments, and with the kernel's usual default (208 KiB) a
+// 1400 x 1400 map was lost in tests. The kernel caps the request
+// at net.core.rmem_max (LCM warns then); larger maps need that raised.
+inline constexpr int kReceiveBufferBytes = 8 << 20;
+
+// HostLocalLcmUrl(url) for a process that receives: udpm URLs without
+// recv_buf_size get kReceiveBufferBytes.
+std::string ReceivingLcmUrl(const std::string& url);
+
 // An LCM instance on HostLocalLcmUrl(url). Throws Error with the likely fix
 // when LCM cannot start (bad address, no multicast route).
 std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url);
 
 // Sets up receiving right away rather than at the first wait, so that no
-// message sent after this returns is missed (udpm binds its socket and runs
-// its self-test here). Throws Error with the likely fix.
+// message sent after this returns is missed (udpm sets up its receive
+// socket and thread here). Throws Error with the likely fix.
 void StartReceiving(lcm::LCM& lcm, const std::string& url);
 
 // Waits up to `timeout_ms` for one message and dispatches it. Throws Error

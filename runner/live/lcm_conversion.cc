@@ -130,7 +130,8 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
   CheckFinite(name, message.origin_x_m, "origin_x_m");
   CheckFinite(name, message.origin_y_m, "origin_y_m");
   CheckFinite(name, message.origin_yaw_rad, "origin_yaw_rad");
-  if (message.width_px <= 0 || message.height_px <= 0) Reject(name, "the grid size is not positive");
+  if (message.width_px <= 0 || message.height_px <= 0)
+    Reject(name, "the grid size is not positive");
 
   proto::AreaGraph graph;
   graph.set_format_version(kReceivedAreaGraphFormatVersion);
@@ -146,8 +147,10 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
   std::set<int32_t> area_ids;
   for (const areagraph_lcm::area_t& lcm_area : message.areas) {
     const std::string what = "area " + std::to_string(lcm_area.id);
-    if (!area_ids.insert(lcm_area.id).second) Reject(name, "two areas have id " + std::to_string(lcm_area.id));
-    if (lcm_area.kind < areagraph_lcm::area_t::ROOM || lcm_area.kind > areagraph_lcm::area_t::DEAD_END) {
+    if (!area_ids.insert(lcm_area.id).second)
+      Reject(name, "two areas have id " + std::to_string(lcm_area.id));
+    if (lcm_area.kind < areagraph_lcm::area_t::ROOM ||
+        lcm_area.kind > areagraph_lcm::area_t::DEAD_END) {
       Reject(name, what + " has unknown kind " + std::to_string(lcm_area.kind));
     }
     proto::Area* area = graph.add_areas();
@@ -171,7 +174,8 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
   std::set<int32_t> passage_ids;
   for (const areagraph_lcm::passage_t& lcm_passage : message.passages) {
     const std::string what = "passage " + std::to_string(lcm_passage.id);
-    if (!passage_ids.insert(lcm_passage.id).second) Reject(name, "two passages have id " + std::to_string(lcm_passage.id));
+    if (!passage_ids.insert(lcm_passage.id).second)
+      Reject(name, "two passages have id " + std::to_string(lcm_passage.id));
     if (area_ids.count(lcm_passage.area_a) == 0 || area_ids.count(lcm_passage.area_b) == 0) {
       Reject(name, what + " joins an area that is not in the graph");
     }
@@ -200,15 +204,19 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
 }
 
 void CheckLcmMapName(const std::string& name) {
-  if (name.empty() || name.size() > 128) {
-    throw InputError("map name must have 1 to 128 characters, got " + std::to_string(name.size()));
+  if (name.empty() || name.size() > 256) {
+    throw InputError("map name must have 1 to 256 characters, got " + std::to_string(name.size()));
   }
+  // '/' is allowed: ag-run names the maps of a directory by their relative path.
   for (char c : name) {
     const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                         (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+                         (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.' || c == '/';
     if (!allowed) {
-      throw InputError("map name may only hold letters, digits, '_', '-' and '.'");
+      throw InputError("map name may only hold letters, digits, '_', '-', '.' and '/'");
     }
+  }
+  if (name.front() == '/' || ("/" + name + "/").find("/../") != std::string::npos) {
+    throw InputError("map name '" + name + "' must not start with '/' or contain '..'");
   }
 }
 
@@ -218,7 +226,9 @@ namespace {
 template <typename Message>
 Message DecodeChecked(const void* data, int size, int (*encoded_size)(const void*, int)) {
   const std::string type = Message::getTypeName();
-  if (data == nullptr || size < 8) throw InputError("not a message of type " + type + ": only " + std::to_string(size) + " bytes");
+  if (data == nullptr || size < 8) {
+    throw InputError("not a message of type " + type + ": only " + std::to_string(size) + " bytes");
+  }
   // The fingerprint comes first so that a message of another type says so.
   int64_t fingerprint = 0;
   __int64_t_decode_array(data, 0, size, &fingerprint, 1);
@@ -226,7 +236,9 @@ Message DecodeChecked(const void* data, int size, int (*encoded_size)(const void
     throw InputError("not a message of type " + type + " (type fingerprint does not match)");
   }
   const int expected = encoded_size(data, size);
-  if (expected < 0) throw InputError("malformed " + type + ": truncated or with impossible array sizes");
+  if (expected < 0) {
+    throw InputError("malformed " + type + ": truncated or with impossible array sizes");
+  }
   if (expected != size) {
     throw InputError("malformed " + type + ": " + std::to_string(size - expected) +
                      " bytes after the message");

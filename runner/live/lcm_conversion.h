@@ -49,7 +49,7 @@ proto::GridMap GridMapFromLcm(const areagraph_lcm::grid_map_t& message,
                               int64_t max_cells = kMaxLcmGridCells);
 
 // Throws InputError unless `name` is a usable map name from the network:
-// 1..128 characters from letters, digits, '_', '-' and '.'.
+// 1..256 characters from letters, digits, '_', '-', '.' and '/' (not leading, no '..').
 void CheckLcmMapName(const std::string& name);
 
 // Decodes a grid_map_t from raw LCM bytes. The cell count is checked against

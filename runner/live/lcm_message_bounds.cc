@@ -80,16 +80,16 @@ int GridMapEncodedSize(const void* data, int size) {
 int AreaGraphEncodedSize(const void* data, int size) {
   EncodedBytes bytes(data, size);
   bytes.Skip(kFingerprintBytes);
-  bytes.SkipString();          // map_name
-  bytes.SkipString();          // artifact_key
-  bytes.Skip(4 * 8 + 2 * 4);   // resolution, origin, width_px, height_px
+  bytes.SkipString();         // map_name
+  bytes.SkipString();         // artifact_key
+  bytes.Skip(4 * 8 + 2 * 4);  // resolution, origin, width_px, height_px
   const int32_t areas = bytes.Count(kAreaMinBytes);
   for (int32_t i = 0; bytes.ok() && i < areas; ++i) {
     bytes.Skip(4 + 1);  // id, kind
     bytes.SkipRing();   // outer
     const int32_t holes = bytes.Count(kRingMinBytes);
     for (int32_t h = 0; bytes.ok() && h < holes; ++h) bytes.SkipRing();
-    bytes.Skip(3 * 8);  // area_m2, centroid
+    bytes.Skip(3 * 8);                        // area_m2, centroid
     bytes.Skip(int64_t{bytes.Count(4)} * 4);  // passage_ids
   }
   bytes.Skip(int64_t{bytes.Count(kPassageBytes)} * kPassageBytes);

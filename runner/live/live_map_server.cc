@@ -42,8 +42,8 @@ std::string LiveGridDigest(const proto::GridMap& grid) {
 LiveMapServer::LiveMapServer(ArtifactStore& store, AreaGraphPublisher& publisher,
                              proto::PipelineOptions options, std::ostream& out, std::ostream& log)
     : store_(store), publisher_(publisher), options_(std::move(options)), out_(out), log_(log) {
-  subscription_ = publisher_.connection().subscribe(kGridMapChannel, &LiveMapServer::OnGridMessage,
-                                                    this);
+  subscription_ =
+      publisher_.connection().subscribe(kGridMapChannel, &LiveMapServer::OnGridMessage, this);
   StartReceiving(publisher_.connection(), publisher_.url());
 }
 
@@ -105,9 +105,8 @@ void LiveMapServer::HandleMap(const std::string& map_name, proto::GridMap grid) 
     compute_ms += run.elapsed_ms;
   };
   try {
-    count(kImportStage,
-          RunCachedStage(store_, map_name, kImportStage, options_.import(), inputs,
-                         [&grid] { return std::make_unique<proto::GridMap>(grid); }));
+    count(kImportStage, RunCachedStage(store_, map_name, kImportStage, options_.import(), inputs,
+                                       [&grid] { return std::make_unique<proto::GridMap>(grid); }));
     RunMapPipeline(store_, map_name, options_, /*force=*/false, count);
     std::string key;
     const auto graph = ReadHeadArtifact<proto::AreaGraph>(store_, map_name, kMergeStage, &key);
@@ -126,8 +125,8 @@ void LiveMapServer::HandleMap(const std::string& map_name, proto::GridMap grid) 
     out_ << line.str() << std::endl;
   } catch (const std::exception& error) {
     ++maps_failed_;
-    log_ << "ag-live: map '" << map_name << "' failed in " << failing_stage << ": "
-         << error.what() << "; still serving" << std::endl;
+    log_ << "ag-live: map '" << map_name << "' failed in " << failing_stage << ": " << error.what()
+         << "; still serving" << std::endl;
     try {
       store_.RecordFailure({map_name, failing_stage, error.what(), LiveSourcePath(), ""});
     } catch (const std::exception& store_error) {

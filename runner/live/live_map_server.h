@@ -1,11 +1,10 @@
 #pragma once
 
 #include <cstdint>
+#include <lcm/lcm-cpp.hpp>
 #include <map>
 #include <ostream>
 #include <string>
-
-#include <lcm/lcm-cpp.hpp>
 
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
@@ -27,8 +26,8 @@ class LiveMapServer {
  public:
   // Subscribes to MAP on `publisher`'s LCM instance and starts receiving.
   // `out` gets one line per map handled, `log` one line per problem.
-  LiveMapServer(ArtifactStore& store, AreaGraphPublisher& publisher,
-                proto::PipelineOptions options, std::ostream& out, std::ostream& log);
+  LiveMapServer(ArtifactStore& store, AreaGraphPublisher& publisher, proto::PipelineOptions options,
+                std::ostream& out, std::ostream& log);
   ~LiveMapServer();
   LiveMapServer(const LiveMapServer&) = delete;
   LiveMapServer& operator=(const LiveMapServer&) = delete;

@@ -138,10 +138,10 @@ int Run(const RunFlags& flags) {
   }
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
+  const GraphPublisher publish = MakePublisher(flags.publish_url);
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork().
   OpenArtifactStore(settings.store_path).reset();
-  const GraphPublisher publish = MakePublisher(flags.publish_url);
 
   ProgressDisplay progress(static_cast<int>(tasks.size()), isatty(STDERR_FILENO) == 1);
   RunReport report(tasks, progress);

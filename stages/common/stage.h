@@ -27,7 +27,8 @@ inline constexpr StageInfo kPruneStage{"prune", 1};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 inline constexpr StageInfo kCutStage{"cut", 2};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
-inline constexpr StageInfo kMergeStage{"merge", 2};
+// merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
+inline constexpr StageInfo kMergeStage{"merge", 3};
 
 // The stages in pipeline order.
 inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,

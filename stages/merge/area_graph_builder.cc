@@ -9,8 +9,10 @@
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/corridor_joining.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/region_outline.h"
+#include "stages/merge/unreached_regions.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -154,6 +156,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);
+  if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
   std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
   std::vector<std::vector<PointList>> paths(plan.areas.size());
   for (size_t k = 0; k < plan.areas.size(); ++k) {
@@ -180,6 +183,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);
+  if (options.unreached_regions_as_areas()) {
+    AddUnreachedRegions(grid, graph.boundary(), removed,
+                        options.grow_min_gap_m() / grid.resolution_m() / 2, min_cells, &plan,
+                        &raster);
+  }
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
     throw InputError(what + ": no Area Graph: no free cell lies inside the map's boundary");

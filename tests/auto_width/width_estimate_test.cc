@@ -136,5 +136,19 @@ TEST(WidthEstimateTest, CutGraphStoresTheEstimateAndUsesIt) {
   EXPECT_EQ(fixed.cut.room_width().doors_size(), 0);
 }
 
+TEST(WidthEstimateTest, CorridorWithoutDoorsBecomesOneRoomUnderAuto) {
+  // An L-shaped corridor, 1.0 m free: no doors, so W = corridor - 0.1 m and
+  // the corridor holds the disk: one room, one area.
+  FloorPlan plan(7.5, 7.5);
+  floorplan::DrawRegion(plan, {{0.5, 0.5, 1.15, 6.5}, {0.5, 5.85, 6.5, 1.15}});
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);  // defaults: auto
+  EXPECT_EQ(stages.cut.room_width().doors_size(), 0);
+  EXPECT_NEAR(stages.cut.room_width().narrowest_corridor_m(), 1.0, 0.1);
+  EXPECT_NEAR(stages.cut.room_width().room_width_m(), 0.9, 0.1);
+  EXPECT_EQ(stages.cut.room_shapes_size(), 1);
+  EXPECT_EQ(stages.areas.areas_size(), 1);
+}
+
 }  // namespace
 }  // namespace areagraph::testing

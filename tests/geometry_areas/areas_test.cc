@@ -98,9 +98,11 @@ TEST(AreaStagesTest, MazeHasOneAreaPerTopologyGraphEdge) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_m(2.0);
+  options.mutable_cut()->set_room_width_auto(false);  // a fixed W (auto is the default)
   // The paper's areas: every one kept, however small (the default folds
   // areas below merge.min_area_m2, and these dead ends hold about 1-3 m2).
   options.mutable_merge()->set_min_area_m2(0);
+  options.mutable_merge()->set_join_corridor_pieces(false);  // the paper: one area per edge
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map);
   EXPECT_EQ(stages.cut.room_shapes_size(), 0);
@@ -127,7 +129,10 @@ TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
   // 1.0 m free between the walls, W = 1.25 m.
   DrawRegion(plan, {{0.5, 0.5, 1.15, 6.5}, {0.5, 5.85, 6.5, 1.15}});
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
-  const AreaStages stages = RunAreaStages(map);
+  // A fixed W (auto, the default, takes corridor - 0.1 m here: one room).
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_room_width_auto(false);
+  const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map);
   EXPECT_EQ(stages.cut.room_shapes_size(), 0);
   ASSERT_EQ(stages.areas.areas_size(), 1);
@@ -170,7 +175,10 @@ TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
   DrawRoom(plan, {5.5, 0.5, 3.5, 4});
   DrawDoor(plan, 5.5, 2.5, 0.35, WallDirection::kVertical);
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
-  const AreaStages stages = RunAreaStages(map);
+  // The paper's clearance (the default, 0.15 m, lets 0.3 m gaps through).
+  proto::PipelineOptions options;
+  options.mutable_prune()->set_min_clearance_m(0.25);
+  const AreaStages stages = RunAreaStages(map, options);
   // The small room is 40 % of the free space.
   ExpectAreaGraphInvariants(stages, map, /*min_coverage=*/0.55);
   ASSERT_EQ(stages.areas.areas_size(), 1);
@@ -181,7 +189,6 @@ TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
   EXPECT_NEAR(stages.areas.areas(0).area_m2(), 4.85 * 3.85, 0.5);
 
   // Growing everywhere (merge.grow_min_gap_m = 0) floods the small room too.
-  proto::PipelineOptions options;
   options.mutable_merge()->set_grow_min_gap_m(0);
   const AreaStages flooded = RunAreaStages(map, options);
   ASSERT_EQ(flooded.areas.areas_size(), 1);

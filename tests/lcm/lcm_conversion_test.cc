@@ -1,11 +1,12 @@
 // GridMap <-> grid_map_t and AreaGraph <-> area_graph_t, and the checks on
 // what arrives over the network.
+#include "runner/live/lcm_conversion.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "runner/live/lcm_conversion.h"
 #include "stages/common/map_frame.h"
 #include "store/error.h"
 #include "tests/lcm/lcm_test_maps.h"
@@ -46,8 +47,8 @@ TEST(GridMapConversion, ClassifiesProbabilitiesLikeMapSaver) {
   message.cells = {25, 26, 64, 65, 1, 99};
   const proto::GridMap grid = GridMapFromLcm(message);
   // The top row (ROS row 1) comes first.
-  const std::string expected = {proto::CELL_OCCUPIED, proto::CELL_FREE, proto::CELL_OCCUPIED,
-                                proto::CELL_FREE, proto::CELL_UNKNOWN, proto::CELL_UNKNOWN};
+  const std::string expected = {proto::CELL_OCCUPIED, proto::CELL_FREE,    proto::CELL_OCCUPIED,
+                                proto::CELL_FREE,     proto::CELL_UNKNOWN, proto::CELL_UNKNOWN};
   EXPECT_EQ(grid.cells(), expected);
 }
 
@@ -61,9 +62,9 @@ TEST(GridMapConversion, RejectsInvalidGrids) {
   using M = areagraph_lcm::grid_map_t;
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.resolution_m = 0; })); },
                             "grid_map_t 'lab': resolution_m must be positive and finite, got 0"));
-  EXPECT_TRUE(ThrowsMessage(
-      [&] { GridMapFromLcm(with([](M& m) { m.resolution_m = std::nan(""); })); },
-      "resolution_m must be positive and finite"));
+  EXPECT_TRUE(
+      ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.resolution_m = std::nan(""); })); },
+                    "resolution_m must be positive and finite"));
   EXPECT_TRUE(ThrowsMessage(
       [&] {
         GridMapFromLcm(with([](M& m) { m.origin_x_m = std::numeric_limits<double>::infinity(); }));
@@ -73,9 +74,8 @@ TEST(GridMapConversion, RejectsInvalidGrids) {
                             "size 0x2 is not positive"));
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.width = 4; })); },
                             "has 6 cells (num_cells 6) but width * height is 8"));
-  EXPECT_TRUE(ThrowsMessage(
-      [&] { GridMapFromLcm(with([](M& m) { m.cells.pop_back(); })); },
-      "has 5 cells (num_cells 6) but width * height is 6"));
+  EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.cells.pop_back(); })); },
+                            "has 5 cells (num_cells 6) but width * height is 6"));
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.cells[4] = 101; })); },
                             "cell (1, 1) has value 101; valid are -1 (unknown) and 0..100"));
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.cells[0] = -2; })); },
@@ -83,13 +83,17 @@ TEST(GridMapConversion, RejectsInvalidGrids) {
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.name = "a b"; })); },
                             "grid_map_t: map name may only hold letters, digits"));
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.name.clear(); })); },
-                            "map name must have 1 to 128 characters, got 0"));
+                            "map name must have 1 to 256 characters, got 0"));
+  EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.name = "../x"; })); },
+                            "must not start with '/' or contain '..'"));
+  EXPECT_EQ(GridMapFromLcm(with([](M& m) { m.name = "floor1/wing_a"; })).cells().size(),
+            GridMapFromLcm(good).cells().size());
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(good, /*max_cells=*/5); },
                             "3x2 cells exceed the limit of 5 (import.max_pixels)"));
   // A huge claimed size is refused before anything is allocated.
-  EXPECT_TRUE(ThrowsMessage(
-      [&] { GridMapFromLcm(with([](M& m) { m.width = m.height = 2000000000; })); },
-      "exceed the limit of 100000000"));
+  EXPECT_TRUE(
+      ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.width = m.height = 2000000000; })); },
+                    "exceed the limit of 100000000"));
 }
 
 TEST(AreaGraphConversion, CarriesAreasAndPassagesInMetres) {
@@ -153,9 +157,8 @@ TEST(AreaGraphConversion, RejectsInconsistentGraphs) {
                             "area_graph_t for map 'lab': two areas have id 0"));
   EXPECT_TRUE(ThrowsMessage([&] { AreaGraphFromLcm(with([](G& g) { g.areas[0].kind = 7; })); },
                             "area 0 has unknown kind 7"));
-  EXPECT_TRUE(ThrowsMessage(
-      [&] { AreaGraphFromLcm(with([](G& g) { g.passages[0].area_b = 9; })); },
-      "passage 7 joins an area that is not in the graph"));
+  EXPECT_TRUE(ThrowsMessage([&] { AreaGraphFromLcm(with([](G& g) { g.passages[0].area_b = 9; })); },
+                            "passage 7 joins an area that is not in the graph"));
   EXPECT_TRUE(ThrowsMessage(
       [&] { AreaGraphFromLcm(with([](G& g) { g.areas[0].outer.x[0] = std::nan(""); })); },
       "area 0 outline x is not finite"));
@@ -170,9 +173,9 @@ TEST(AreaGraphConversion, RejectsInconsistentGraphs) {
       "area 1 outline has fewer than 3 points"));
   EXPECT_TRUE(ThrowsMessage([&] { AreaGraphFromLcm(with([](G& g) { g.resolution_m = -1; })); },
                             "resolution_m must be positive and finite"));
-  EXPECT_TRUE(ThrowsMessage(
-      [&] { AreaGraphFromLcm(with([](G& g) { g.areas[1].passage_ids = {8}; })); },
-      "area 1 lists passage 8, which is not in the graph"));
+  EXPECT_TRUE(
+      ThrowsMessage([&] { AreaGraphFromLcm(with([](G& g) { g.areas[1].passage_ids = {8}; })); },
+                    "area 1 lists passage 8, which is not in the graph"));
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // ag-live's server in process over memq://: the real pipeline on a small
 // example map, the cache, and bad input.
+#include "runner/live/live_map_server.h"
+
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -7,7 +9,6 @@
 
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_conversion.h"
-#include "runner/live/live_map_server.h"
 #include "stages/common/stage.h"
 #include "stages/import/import_stage.h"
 #include "tests/support/test_support.h"
@@ -59,8 +60,8 @@ TEST_F(LiveMapServerTest, PublishesTheGraphAndASecondIdenticalMapIsCached) {
                  "6 stages in \\d+ ms\n")))
       << first << log_.str();
   std::string merge_key;
-  const auto graph = ReadHeadArtifact<proto::AreaGraph>(*store_, "two_rooms", kMergeStage,
-                                                        &merge_key);
+  const auto graph =
+      ReadHeadArtifact<proto::AreaGraph>(*store_, "two_rooms", kMergeStage, &merge_key);
   EXPECT_GE(graph.areas_size(), 2);
   EXPECT_EQ(match[1].str(), std::to_string(graph.areas_size()));
   EXPECT_EQ(match[3].str(), merge_key.substr(0, 12));

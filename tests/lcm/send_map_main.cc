@@ -15,8 +15,7 @@
 namespace areagraph {
 namespace {
 
-int SendMap(const std::string& url, const std::string& image, std::string name,
-            int garbage_bytes) {
+int SendMap(const std::string& url, const std::string& image, std::string name, int garbage_bytes) {
   const std::unique_ptr<lcm::LCM> lcm = OpenLcm(url);
   if (garbage_bytes > 0) {
     std::string garbage(static_cast<size_t>(garbage_bytes), '\0');
@@ -46,8 +45,9 @@ int SendMap(const std::string& url, const std::string& image, std::string name,
 
 int main(int argc, char** argv) {
   using namespace areagraph;
-  CLI::App app{"Test helper: publishes IMAGE (imported with default options) as a grid_map_t on "
-               "LCM channel MAP; --garbage sends that many junk bytes there first."};
+  CLI::App app{
+      "Test helper: publishes IMAGE (imported with default options) as a grid_map_t on "
+      "LCM channel MAP; --garbage sends that many junk bytes there first."};
   std::string url = kDefaultLcmUrl, image, name;
   int garbage_bytes = 0;
   app.add_option("--url", url, "LCM URL")->capture_default_str();

@@ -50,6 +50,25 @@ TEST_F(AgRunTest, SecondRunIsAllCacheHits) {
   EXPECT_NE(text.out.find("every stage was a hit"), std::string::npos) << text.out;
 }
 
+TEST_F(AgRunTest, StageExecutablesAgreeWithItsKeys) {
+  ASSERT_EQ(RunTool("ag-run", Args({})).exit_code, 0);
+  const CommandResult pipeline = RunTool("ag-pipeline", {"--store", store_, "--map", "map_11"});
+  ASSERT_EQ(pipeline.exit_code, 0) << pipeline.err;
+  EXPECT_EQ(pipeline.out.find("computed"), std::string::npos) << pipeline.out;
+  for (const char* stage : {"ag-clean", "ag-voronoi", "ag-prune", "ag-cut", "ag-merge"}) {
+    const CommandResult run = RunTool(stage, {"--store", store_, "--map", "map_12"});
+    ASSERT_EQ(run.exit_code, 0) << stage << run.err;
+    EXPECT_NE(run.out.find("cached"), std::string::npos) << stage << ": " << run.out;
+  }
+  // And the other way round: what a stage executable computed, ag-run finds.
+  ASSERT_EQ(RunTool("ag-cut", {"--store", store_, "--map", "map_13", "--set",
+                               "cut.room_width_m=1.4"}).exit_code, 0);
+  ASSERT_EQ(RunTool("ag-merge", {"--store", store_, "--map", "map_13"}).exit_code, 0);
+  const proto::RunSummary summary = RunJson(Args({"--set", "cut.room_width_m=1.4"}));
+  EXPECT_EQ(CountOf(summary, "cut").hits, 1);
+  EXPECT_EQ(CountOf(summary, "merge").hits, 1);
+}
+
 TEST_F(AgRunTest, ChangedStageOptionRerunsThatStageOnward) {
   ASSERT_EQ(RunTool("ag-run", Args({})).exit_code, 0);
   const proto::RunSummary summary = RunJson(Args({"--set", "cut.room_width_m=1.6"}));
@@ -123,6 +142,22 @@ TEST_F(AgRunTest, ShardsMergedHoldTheSameGraphsAsOneRun) {
   ASSERT_EQ(expected.size(), 6u);
   for (const auto& [name, digest] : expected) EXPECT_FALSE(digest.empty()) << name;
   EXPECT_EQ(GraphDigests(merged), expected);
+}
+
+TEST_F(AgRunTest, SlurmExampleScriptsShardAndMerge) {
+  const std::string path = "PATH=" + std::string(AG_BIN_DIR) + ":/usr/bin:/bin";
+  const std::string stores = dir_.File("stores");
+  for (const char* index : {"0", "1"}) {
+    const CommandResult task = RunProgram(
+        {"env", path, std::string("SLURM_ARRAY_TASK_ID=") + index, "SLURM_ARRAY_TASK_COUNT=2",
+         "bash", SourcePath("examples/cluster/slurm-shard.sbatch"), maps_, stores});
+    ASSERT_EQ(task.exit_code, 0) << task.err;
+  }
+  const CommandResult merge = RunProgram(
+      {"env", path, "bash", SourcePath("examples/cluster/slurm-merge.sbatch"), stores});
+  ASSERT_EQ(merge.exit_code, 0) << merge.err;
+  ASSERT_EQ(RunTool("ag-run", {"--store", store_, maps_}).exit_code, 0);
+  EXPECT_EQ(GraphDigests(stores + "/collection.db"), GraphDigests(store_));
 }
 
 TEST_F(AgRunTest, ShardOutOfRangeIsOneLineError) {

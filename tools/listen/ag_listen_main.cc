@@ -31,7 +31,7 @@ struct ListenFlags {
 int Listen(const ListenFlags& flags) {
   if (flags.count < 0) throw OptionsError("--count must be 0 (no limit) or positive");
   if (!(flags.timeout_s >= 0)) throw OptionsError("--timeout must be 0 (none) or positive");
-  const std::string url = HostLocalLcmUrl(flags.url);
+  const std::string url = ReceivingLcmUrl(flags.url);
   std::unique_ptr<ArtifactStore> store;
   if (!flags.store_path.empty()) store = OpenArtifactStore(flags.store_path);
   const std::unique_ptr<lcm::LCM> lcm = OpenLcm(url);
@@ -42,13 +42,12 @@ int Listen(const ListenFlags& flags) {
   sigemptyset(&action.sa_mask);
   sigaction(SIGINT, &action, nullptr);
   sigaction(SIGTERM, &action, nullptr);
-  std::cerr << "ag-listen: listening on " << url << ", channel " << kAreaGraphChannel
-            << std::endl;
+  std::cerr << "ag-listen: listening on " << url << ", channel " << kAreaGraphChannel << std::endl;
 
   using Clock = std::chrono::steady_clock;
   const Clock::time_point deadline =
-      Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                         std::chrono::duration<double>(flags.timeout_s));
+      Clock::now() +
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(flags.timeout_s));
   while (!stop_requested && (flags.count == 0 || listener.graphs_received() < flags.count)) {
     int wait_ms = 200;
     if (flags.timeout_s > 0) {
@@ -60,8 +59,8 @@ int Listen(const ListenFlags& flags) {
     listener.Listen(wait_ms);
   }
   if (flags.count > 0 && listener.graphs_received() < flags.count && !stop_requested) {
-    throw Error("--timeout reached after " + std::to_string(listener.graphs_received()) +
-                " of " + std::to_string(flags.count) + " graphs");
+    throw Error("--timeout reached after " + std::to_string(listener.graphs_received()) + " of " +
+                std::to_string(flags.count) + " graphs");
   }
   return 0;
 }

@@ -37,7 +37,9 @@ bool StoreReceivedAreaGraph(ArtifactStore& store, const areagraph_lcm::area_grap
   artifact.map_name = message.map_name;
   artifact.stage = kMergeStage.name;
   artifact.cache_key = key;
-  artifact.input_keys = {message.artifact_key};
+  // The publisher's key is not an artifact of this store, so it is kept in
+  // the options text rather than as an input key (which ag-store verify checks).
+  artifact.options_text = "received_over_lcm { published_key: \"" + message.artifact_key + "\" }";
   artifact.stage_version = 0;
   artifact.proto_type = graph.GetTypeName();
   artifact.payload = graph.SerializeAsString();

@@ -1,9 +1,8 @@
 #pragma once
 
+#include <lcm/lcm-cpp.hpp>
 #include <ostream>
 #include <string>
-
-#include <lcm/lcm-cpp.hpp>
 
 #include "areagraph_lcm/area_graph_t.hpp"
 #include "store/artifact_store.h"

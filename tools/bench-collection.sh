@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# Throughput of ag-run on a synthetic collection (ag-make-collection: random
+# office floors, 0.05 m/px), printed as Markdown tables on stdout; progress on
+# stderr. A benchmark: it checks nothing, but prints the ratios that
+# docs/performance.md sets targets for (warm <= 1/20 cold, jobs 2 >= 1.7x jobs 1).
+#
+# 1. Cold and warm runs of the whole collection with --jobs 1 and --jobs 2,
+#    each cold run into a new store; warm runs repeat --warm-runs times and
+#    the median is shown. Store size after the cold run.
+# 2. Store growth: one store filled in batches of 100 maps (--jobs 2); the
+#    time per map of each batch, and of a warm re-run of the first batch, as
+#    the store grows. Flat means that no step scans the whole store.
+#
+# Usage: tools/bench-collection.sh [--maps N] [--warm-runs R] [--build-dir DIR]
+#                                  [--work DIR] [--no-build]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+maps=1000
+warm_runs=3
+build_dir=build
+build=1
+work=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --maps) maps="$2"; shift 2 ;;
+    --warm-runs) warm_runs="$2"; shift 2 ;;
+    --build-dir) build_dir="$2"; shift 2 ;;
+    --work) work="$2"; shift 2 ;;
+    --no-build) build=0; shift ;;
+    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    *) echo "bench-collection: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+  esac
+done
+if [ "$build" = 1 ]; then
+  tools/install-deps.sh >&2
+  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$build_dir" -j "$(nproc)" --target ag-run ag-make-collection >&2
+fi
+bin="$build_dir/bin"
+if [ -z "$work" ]; then
+  work="$(mktemp -d)"
+  trap 'rm -rf "$work"' EXIT
+fi
+
+say() { echo "bench-collection: $*" >&2; }
+now() { date +%s.%N; }
+# Seconds taken by one ag-run (stdout and stderr dropped; a failure stops the bench).
+timed_run() {
+  local start end
+  start=$(now)
+  "$bin/ag-run" "$@" >/dev/null 2>"$work/last.err" || {
+    say "ag-run $* failed:"; cat "$work/last.err" >&2; exit 1; }
+  end=$(now)
+  awk -v a="$start" -v b="$end" 'BEGIN {printf "%.3f\n", b - a}'
+}
+median() { sort -g | awk '{v[NR]=$1} END {print (NR%2) ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2}'; }
+store_mb() { du -cm "$1" "$1"-wal 2>/dev/null | tail -1 | cut -f1; }
+
+say "writing $maps maps to $work/maps"
+"$bin/ag-make-collection" --count "$maps" "$work/maps" >&2
+collection_mb=$(du -sm "$work/maps" | cut -f1)
+
+declare -A cold warm size
+for jobs in 1 2; do
+  store="$work/jobs$jobs.db"
+  say "cold run, --jobs $jobs"
+  cold[$jobs]=$(timed_run --store "$store" --jobs "$jobs" "$work/maps")
+  size[$jobs]=$(store_mb "$store")
+  times=()
+  for _ in $(seq "$warm_runs"); do
+    times+=("$(timed_run --store "$store" --jobs "$jobs" "$work/maps")")
+  done
+  warm[$jobs]=$(printf '%s\n' "${times[@]}" | median)
+  say "  cold ${cold[$jobs]} s, warm ${warm[$jobs]} s, store ${size[$jobs]} MB"
+done
+
+echo "### ag-run on $maps synthetic maps ($collection_mb MB of PNG), $(date -u +%Y-%m-%d), $(nproc) cores"
+echo
+echo "| jobs | cold s | cold maps/s | warm s (median of $warm_runs) | warm maps/s | warm / cold | store MB |"
+echo "|---:|---:|---:|---:|---:|---:|---:|"
+for jobs in 1 2; do
+  awk -v j="$jobs" -v c="${cold[$jobs]}" -v w="${warm[$jobs]}" -v n="$maps" -v s="${size[$jobs]}" \
+    'BEGIN {printf "| %d | %.1f | %.1f | %.2f | %.0f | 1/%.0f | %d |\n", j, c, n/c, w, n/w, c/w, s}'
+done
+echo
+awk -v c1="${cold[1]}" -v c2="${cold[2]}" \
+  'BEGIN {printf "Cold speed-up of --jobs 2 over --jobs 1: %.2fx.\n", c1/c2}'
+echo
+
+# Store growth: batches of 100 maps, one subfolder each.
+growth="$work/growth.db"
+echo "### Time per map as the store grows (--jobs 2, batches of 100 maps)"
+echo
+echo "| batch | maps in store before | store MB before | cold ms/map | warm ms/map (batch 000) |"
+echo "|---:|---:|---:|---:|---:|"
+done_maps=0
+for folder in "$work"/maps/*/; do
+  name=$(basename "$folder")
+  count=$(find "$folder" -name '*.png' | wc -l)
+  before_mb=0
+  [ -f "$growth" ] && before_mb=$(store_mb "$growth")
+  seconds=$(timed_run --store "$growth" --jobs 2 "$folder")
+  warm_seconds=$(timed_run --store "$growth" --jobs 2 "$work/maps/000")
+  first_count=$(find "$work/maps/000" -name '*.png' | wc -l)
+  awk -v b="$name" -v d="$done_maps" -v m="$before_mb" -v s="$seconds" -v n="$count" \
+    -v w="$warm_seconds" -v f="$first_count" \
+    'BEGIN {printf "| %s | %d | %d | %.1f | %.2f |\n", b, d, m, 1000*s/n, 1000*w/f}'
+  done_maps=$((done_maps + count))
+  say "  batch $name done"
+done
