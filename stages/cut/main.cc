@@ -13,9 +13,11 @@ using namespace areagraph;
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "Detects rooms (alpha shapes with alpha = (W/2)^2, W from cut.room_width_m, the "
-      "door/corridor strategy or, with cut.room_width_m=auto, estimated from the map) and cuts the edges of a map's head TopologyGraph (run ag-prune "
-      "first) where they leave a room (the paper's Alg. 3). Stores a CutGraph."};
+      "Detects rooms (alpha shapes with alpha = (W/2)^2; W estimated from the map's doors and "
+      "corridors with cut.room_width_m=auto, the default, else cut.room_width_m or the "
+      "door/corridor strategy) and cuts the edges of a map's head TopologyGraph (run ag-prune "
+      "first) where they leave a room (the paper's Alg. 3). Stores a CutGraph with W and the "
+      "doors and corridors found (ag-inspect --stage cut)."};
   StageCommandLine flags;
   AddStageFlags(app, flags);
   return RunCommand("ag-cut", app, argc, argv, [&] {
@@ -41,8 +43,8 @@ int main(int argc, char** argv) {
         "ag-cut: map '%s': W = %.2f m%s, %d rooms, %d passage points, %d edges, %.0f ms, key %.12s "
         "(%s)\n",
         flags.map_name.c_str(), graph.room_width().room_width_m(),
-        graph.room_width().automatic() ? " (auto)" : "", graph.room_shapes_size(), graph.passage_points_size(),
-        graph.edges_size(), run.elapsed_ms, run.cache_key.c_str(),
+        graph.room_width().automatic() ? " (auto)" : "", graph.room_shapes_size(),
+        graph.passage_points_size(), graph.edges_size(), run.elapsed_ms, run.cache_key.c_str(),
         run.cache_hit ? "cached" : "computed");
     return 0;
   });

@@ -65,8 +65,8 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
   proto::RoomWidthEstimate estimate;
   if (options.room_width_auto() && !strategy) {
-    estimate = EstimateRoomWidth(topology, frame.resolution_m(), fixed,
-                                 options.room_width_above_doors());
+    estimate =
+        EstimateRoomWidth(topology, frame.resolution_m(), fixed, options.room_width_above_doors());
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);

@@ -14,7 +14,8 @@ namespace areagraph {
 // - a corridor is a stretch of at least kCorridorMinLengthM along one edge
 //   whose width stays within kCorridorTolerance of its narrowest point.
 // Returns the doors (one per place, widest first) and corridors found, the
-// widest door (a high quantile, so that one stray wide gap does not decide)
+// widest door (the 90th percentile, so that one stray wide gap between
+// furniture does not decide)
 // and the narrowest corridor (the narrowest width that corridors keep for
 // kCorridorMinTotalM in all), and W by the paper's rule: door + 0.1 m when
 // the door is narrower than the corridor (or within kSameWidthM), else

@@ -12,7 +12,6 @@
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/region_outline.h"
-#include "stages/merge/unreached_regions.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -183,11 +182,6 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);
-  if (options.unreached_regions_as_areas()) {
-    AddUnreachedRegions(grid, graph.boundary(), removed,
-                        options.grow_min_gap_m() / grid.resolution_m() / 2, min_cells, &plan,
-                        &raster);
-  }
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
     throw InputError(what + ": no Area Graph: no free cell lies inside the map's boundary");

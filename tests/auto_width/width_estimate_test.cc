@@ -1,8 +1,9 @@
 // EstimateRoomWidth on drawn floor plans whose door and corridor widths are
 // known: the estimates, and the W that the paper's rule gives from them.
+#include "stages/cut/width_estimate.h"
+
 #include <gtest/gtest.h>
 
-#include "stages/cut/width_estimate.h"
 #include "tests/geometry_areas/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
@@ -20,7 +21,8 @@ FloorPlan RoomsAlongACorridor(double door_m, double corridor_m) {
   FloorPlan plan(12, 5.5 + corridor_m);
   for (int i = 0; i < 3; ++i) DrawRoom(plan, {0.5 + i * 3.5, 0.5, 3.5, 4.5});
   DrawRoom(plan, {0.5, 5.0, 11, corridor_m});
-  for (int i = 0; i < 3; ++i) DrawDoor(plan, 0.5 + (i + 0.5) * 3.5, 5.0, door_m, WallDirection::kHorizontal);
+  for (int i = 0; i < 3; ++i)
+    DrawDoor(plan, 0.5 + (i + 0.5) * 3.5, 5.0, door_m, WallDirection::kHorizontal);
   return plan;
 }
 

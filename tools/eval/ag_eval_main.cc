@@ -9,6 +9,7 @@
 #include "store/error.h"
 #include "tools/eval/dataset_evaluation.h"
 #include "tools/eval/evaluation_report.h"
+#include "tools/eval/gt_picture.h"
 #include "tools/eval/map_evaluation.h"
 
 namespace {
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
   std::string variant_name = "standard", offset_text;
   bool dataset = false, json = false, maoris_grey = false;
   int drop_result_px = 0;
+  std::string gt_picture;
+  int picture_width = 0;
   app.add_option("--result", result_path, "segmentation image to score");
   app.add_flag("--dataset", dataset, "score every file in --results that has a GT in --gt");
   app.add_option("--results", results_dir, "folder of segmentations (with --dataset)");
@@ -65,6 +68,11 @@ int main(int argc, char** argv) {
                  "drop result segments of at most this many pixels before scoring")
       ->capture_default_str();
   app.add_flag("--json", json, "print JSON instead of text or Markdown");
+  app.add_option("--gt-picture", gt_picture,
+                 "instead of scoring: draw the --gt file's segments as ag-eval reads them into "
+                 "this PNG");
+  app.add_option("--picture-width", picture_width,
+                 "with --gt-picture: at most this many pixels wide");
 
   return areagraph::RunCommand("ag-eval", app, argc, argv, [&] {
     areagraph::EvaluationOptions options;
@@ -75,6 +83,12 @@ int main(int argc, char** argv) {
     if (drop_result_px < 0) throw areagraph::OptionsError("--drop-result-px must be >= 0");
     options.drop_result_segments_px = drop_result_px;
 
+    if (!gt_picture.empty()) {
+      if (picture_width < 0) throw areagraph::OptionsError("--picture-width must be positive");
+      areagraph::WriteGroundTruthPicture(gt_path, options.gt_style, gt_picture, picture_width);
+      std::cout << "wrote " << gt_picture << "\n";
+      return 0;
+    }
     if (!dataset) {
       if (result_path.empty()) throw areagraph::OptionsError("--result is required");
       if (!results_dir.empty()) throw areagraph::OptionsError("--results needs --dataset");

@@ -25,8 +25,6 @@ MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_l
   return evaluation;
 }
 
-namespace {
-
 cv::Mat ReadGroundTruthLabels(const std::string& path, GroundTruthStyle* style) {
   const cv::Mat raw = ReadImageFile(path);
   if (*style == GroundTruthStyle::kAuto) *style = DetectGroundTruthStyle(raw);
@@ -37,8 +35,6 @@ cv::Mat ReadGroundTruthLabels(const std::string& path, GroundTruthStyle* style) 
   }
   return GroundTruthLabels(raw, grey, *style);
 }
-
-}  // namespace
 
 MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_path,
                           const EvaluationOptions& options) {

@@ -49,6 +49,10 @@ struct MapEvaluation {
 MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_labels,
                                MccVariant variant);
 
+// The segments of a ground-truth file (CV_32S labels, 0 = none), read the way
+// the scoring reads them; `style` kAuto is replaced by the detected style.
+cv::Mat ReadGroundTruthLabels(const std::string& path, GroundTruthStyle* style);
+
 // Reads, labels, aligns and scores one segmentation file against one GT file.
 // Throws InputError for unreadable files and sizes that cannot be aligned.
 MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_path,

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
@@ -32,7 +33,7 @@ Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const std::strin
 }
 
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
-            bool doors, const std::string& out) {
+            bool doors, int width, const std::string& out) {
   Canvas canvas = BaseCanvas(store, map, stage, scale);
   if (stage == kCleanStage.name) {
     DrawCleanedMap(ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage), canvas);
@@ -51,9 +52,14 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
   }
+  cv::Mat picture = canvas.image();
+  if (width > 0 && picture.cols > width) {
+    const double factor = static_cast<double>(width) / picture.cols;
+    cv::resize(canvas.image(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
+  }
   bool written = false;
   try {
-    written = cv::imwrite(out, canvas.image());
+    written = cv::imwrite(out, picture, {cv::IMWRITE_PNG_COMPRESSION, 9});
   } catch (const cv::Exception&) {
   }
   if (!written) throw InputError("cannot write PNG '" + out + "'");
@@ -67,6 +73,7 @@ int main(int argc, char** argv) {
   std::string store_path = "areagraph.db", map, stage = "merge", out;
   int scale = 0;
   bool doors = false;
+  int width = 0;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map, "map name")->required();
   app.add_option("--stage", stage, "import, clean, voronoi, prune, cut or merge")
@@ -75,11 +82,13 @@ int main(int argc, char** argv) {
   app.add_flag("--doors", doors,
                "also draw the doors (rings) and corridors (dots) that ag-cut found for "
                "cut.room_width_m=auto");
+  app.add_option("--width", width, "shrink the picture to at most this many pixels wide");
   app.add_option("--scale", scale, "output pixels per map cell (default: about 1600 px wide)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
     if (scale < 0 || scale > 16) throw areagraph::InputError("--scale must be between 1 and 16");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
-    areagraph::Render(*store, map, stage, scale, doors, out);
+    if (width < 0) throw areagraph::InputError("--width must be positive");
+    areagraph::Render(*store, map, stage, scale, doors, width, out);
     std::cout << "wrote " << out << "\n";
     return 0;
   });
