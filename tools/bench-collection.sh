@@ -4,19 +4,22 @@
 # stderr. A benchmark: it checks nothing, but prints the ratios that
 # docs/performance.md sets targets for (warm <= 1/20 cold, jobs 2 >= 1.7x jobs 1).
 #
-# 1. Cold and warm runs of the whole collection with --jobs 1 and --jobs 2,
-#    each cold run into a new store; warm runs repeat --warm-runs times and
-#    the median is shown. Store size after the cold run.
+# 1. Cold and warm runs of the whole collection with --jobs 1 and --jobs 2.
+#    Cold runs go into a new store each, --cold-runs times per setting with
+#    the settings alternating (so that drift hits both alike); warm runs
+#    repeat --warm-runs times on the last cold store. Medians are shown, and
+#    the store size after a cold run.
 # 2. Store growth: one store filled in batches of 100 maps (--jobs 2); the
 #    time per map of each batch, and of a warm re-run of the first batch, as
 #    the store grows. Flat means that no step scans the whole store.
 #
-# Usage: tools/bench-collection.sh [--maps N] [--warm-runs R] [--build-dir DIR]
+# Usage: tools/bench-collection.sh [--maps N] [--cold-runs C] [--warm-runs R] [--build-dir DIR]
 #                                  [--work DIR] [--no-build]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 maps=1000
+cold_runs=2
 warm_runs=3
 build_dir=build
 build=1
@@ -24,11 +27,12 @@ work=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --maps) maps="$2"; shift 2 ;;
+    --cold-runs) cold_runs="$2"; shift 2 ;;
     --warm-runs) warm_runs="$2"; shift 2 ;;
     --build-dir) build_dir="$2"; shift 2 ;;
     --work) work="$2"; shift 2 ;;
     --no-build) build=0; shift ;;
-    -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-collection: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -61,31 +65,39 @@ say "writing $maps maps to $work/maps"
 "$bin/ag-make-collection" --count "$maps" "$work/maps" >&2
 collection_mb=$(du -sm "$work/maps" | cut -f1)
 
-declare -A cold warm size
+declare -A cold_times warm size
+for round in $(seq "$cold_runs"); do
+  for jobs in 1 2; do
+    store="$work/jobs$jobs.db"
+    rm -f "$store" "$store"-wal "$store"-shm
+    say "cold run $round of $cold_runs, --jobs $jobs"
+    cold_times[$jobs]+="$(timed_run --store "$store" --jobs "$jobs" "$work/maps") "
+    size[$jobs]=$(store_mb "$store")
+  done
+done
+declare -A cold
 for jobs in 1 2; do
+  cold[$jobs]=$(printf '%s\n' ${cold_times[$jobs]} | median)
   store="$work/jobs$jobs.db"
-  say "cold run, --jobs $jobs"
-  cold[$jobs]=$(timed_run --store "$store" --jobs "$jobs" "$work/maps")
-  size[$jobs]=$(store_mb "$store")
   times=()
   for _ in $(seq "$warm_runs"); do
     times+=("$(timed_run --store "$store" --jobs "$jobs" "$work/maps")")
   done
   warm[$jobs]=$(printf '%s\n' "${times[@]}" | median)
-  say "  cold ${cold[$jobs]} s, warm ${warm[$jobs]} s, store ${size[$jobs]} MB"
+  say "  --jobs $jobs: cold ${cold_times[$jobs]}s, warm ${warm[$jobs]} s, store ${size[$jobs]} MB"
 done
 
 echo "### ag-run on $maps synthetic maps ($collection_mb MB of PNG), $(date -u +%Y-%m-%d), $(nproc) cores"
 echo
-echo "| jobs | cold s | cold maps/s | warm s (median of $warm_runs) | warm maps/s | warm / cold | store MB |"
+echo "| jobs | cold s (median of $cold_runs) | cold maps/s | warm s (median of $warm_runs) | warm maps/s | warm / cold | store MB |"
 echo "|---:|---:|---:|---:|---:|---:|---:|"
 for jobs in 1 2; do
   awk -v j="$jobs" -v c="${cold[$jobs]}" -v w="${warm[$jobs]}" -v n="$maps" -v s="${size[$jobs]}" \
     'BEGIN {printf "| %d | %.1f | %.1f | %.2f | %.0f | 1/%.0f | %d |\n", j, c, n/c, w, n/w, c/w, s}'
 done
 echo
-awk -v c1="${cold[1]}" -v c2="${cold[2]}" \
-  'BEGIN {printf "Cold speed-up of --jobs 2 over --jobs 1: %.2fx.\n", c1/c2}'
+awk -v c1="${cold[1]}" -v c2="${cold[2]}" -v t1="${cold_times[1]}" -v t2="${cold_times[2]}" \
+  'BEGIN {printf "Cold speed-up of --jobs 2 over --jobs 1: %.2fx (cold runs, s: jobs 1: %s; jobs 2: %s).\n", c1/c2, t1, t2}'
 echo
 
 # Store growth: batches of 100 maps, one subfolder each.

@@ -13,6 +13,7 @@ PACKAGES=(
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
+  iproute2  # ip: multicast on loopback for the cross-process LCM tests
 )
 
 missing=()

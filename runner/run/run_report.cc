@@ -12,7 +12,8 @@ RunReport::RunReport(const std::vector<MapTask>& tasks, ProgressDisplay& progres
       progress_(progress),
       start_(std::chrono::steady_clock::now()),
       last_stage_(tasks.size(), "store"),
-      compute_ms_(tasks.size(), 0) {
+      compute_ms_(tasks.size(), 0),
+      ended_(tasks.size(), false) {
   summary_.set_maps(static_cast<int64_t>(tasks.size()));
 }
 
@@ -26,6 +27,8 @@ void RunReport::StageDone(int task, const std::string& stage, bool hit, double e
 }
 
 void RunReport::MapEnded(int task, const MapResult& result) {
+  if (ended_[task]) return;
+  ended_[task] = true;
   const std::string& name = tasks_[task].entry.name;
   if (!result.ok) {
     Fail(task, result.failed_stage, result.error, result.failure_recorded);
@@ -48,6 +51,8 @@ void RunReport::MapEnded(int task, const MapResult& result) {
 }
 
 void RunReport::MapCrashed(int task, const std::string& what) {
+  if (ended_[task]) return;  // the worker died after reporting the map
+  ended_[task] = true;
   Fail(task, last_stage_[task], what, /*recorded=*/false);
 }
 

@@ -43,6 +43,7 @@ class RunReport {
   std::chrono::steady_clock::time_point start_;
   std::vector<std::string> last_stage_;  // per task
   std::vector<double> compute_ms_;       // per task
+  std::vector<bool> ended_;              // per task: counted once only
   std::map<std::string, StageCounts> stages_;
   proto::RunSummary summary_;
   std::vector<int> unrecorded_;

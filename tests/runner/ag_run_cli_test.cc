@@ -202,6 +202,22 @@ TEST_F(AgRunTest, UnreadableManifestRowFailsBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(store_));
 }
 
+TEST_F(AgRunTest, TerminalGetsAProgressBarAndPipesGetLines) {
+  // script(1) gives ag-run a pseudo-terminal.
+  const std::string command = "'" + std::string(AG_BIN_DIR) + "/ag-run' --store '" + store_ +
+                              "' --jobs 2 '" + maps_ + "'";
+  const CommandResult tty = RunProgram({"script", "-qfec", command, "/dev/null"});
+  if (tty.exit_code != 0) GTEST_SKIP() << "no pseudo-terminal here: " << tty.err;
+  EXPECT_NE(tty.out.find("\r\033[K["), std::string::npos) << tty.out;
+  EXPECT_NE(tty.out.find("3/3 maps"), std::string::npos) << tty.out;
+  EXPECT_EQ(tty.out.find("ag-run: [1/3]"), std::string::npos) << tty.out;
+
+  const CommandResult piped = RunTool("ag-run", Args({}));
+  EXPECT_EQ(piped.err.find('\r'), std::string::npos) << piped.err;
+  EXPECT_EQ(CountLines(piped.err), 3) << piped.err;
+  EXPECT_NE(piped.err.find("ag-run: [3/3] "), std::string::npos) << piped.err;
+}
+
 TEST_F(AgRunTest, HelpDescribesMapKinds) {
   const CommandResult run = RunTool("ag-run", {"--help"});
   EXPECT_EQ(run.exit_code, 0);
