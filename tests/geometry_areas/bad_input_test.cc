@@ -8,6 +8,7 @@
 #include "stages/prune/topology_graph_builder.h"
 #include "store/error.h"
 #include "tests/geometry_areas/area_test_support.h"
+#include "tests/support/test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
@@ -15,19 +16,6 @@ namespace {
 
 using floorplan::DrawRoom;
 using floorplan::FloorPlan;
-
-// The message of the error that `run` throws as E, or "" when it throws none.
-template <typename E, typename F>
-std::string ErrorOf(F run) {
-  try {
-    run();
-  } catch (const E& error) {
-    return error.what();
-  } catch (const std::exception& other) {
-    return std::string("unexpected error: ") + other.what();
-  }
-  return "";
-}
 
 proto::CleanedMap OneRoomMap() {
   FloorPlan plan(6, 5);

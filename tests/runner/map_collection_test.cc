@@ -11,19 +11,9 @@
 namespace areagraph {
 namespace {
 
+using testing::ErrorOf;
 using testing::TempDir;
 using testing::WriteFile;
-
-// The message of what `body` throws as E, or "" when it does not throw.
-template <typename E, typename F>
-std::string ErrorOf(F body) {
-  try {
-    body();
-  } catch (const E& error) {
-    return error.what();
-  }
-  return "";
-}
 
 TEST(MapCollectionTest, DirectoryIsSearchedRecursivelyAndNamedByRelativePath) {
   TempDir dir;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,20 @@ std::string SourcePath(const std::string& relative);
 std::string SharedDataPath(const std::string& relative);
 // True when ../shared/data is present (tests that need it skip otherwise).
 bool HaveSharedData();
+
+// The message of the error that `run` throws as E, "" when it throws none,
+// and "unexpected error: ..." for any other exception.
+template <typename E, typename F>
+std::string ErrorOf(F run) {
+  try {
+    run();
+  } catch (const E& error) {
+    return error.what();
+  } catch (const std::exception& other) {
+    return std::string("unexpected error: ") + other.what();
+  }
+  return "";
+}
 
 // Number of lines in `text` that are not empty.
 int CountLines(const std::string& text);
