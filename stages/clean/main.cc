@@ -19,16 +19,13 @@ int main(int argc, char** argv) {
   return RunCommand("ag-clean", app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
-    std::string input_key;
-    const auto map =
-        ReadHeadArtifact<proto::GridMap>(*store, flags.map_name, kImportStage, &input_key);
-    StageInputs inputs;
-    inputs.digests = {input_key};
+    const StageInputs inputs = HeadInputs(*store, flags.map_name, kCleanStage);
     const StageRun run = RunCachedStage(
         *store, flags.map_name, kCleanStage, options.clean(), inputs,
         [&] {
-          return std::make_unique<proto::CleanedMap>(
-              CleanGridMap(map, options.clean(), flags.map_name));
+          return std::make_unique<proto::CleanedMap>(CleanGridMap(
+              ReadArtifactAs<proto::GridMap>(*store, flags.map_name, inputs.digests[0]),
+              options.clean(), flags.map_name));
         },
         flags.force);
     const auto cleaned = ReadHeadArtifact<proto::CleanedMap>(*store, flags.map_name, kCleanStage);

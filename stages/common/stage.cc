@@ -56,16 +56,62 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const
   return run;
 }
 
+namespace {
+
+bool IsStage(const StageInfo& stage, const StageInfo& other) {
+  return std::string(stage.name) == other.name;
+}
+
+InputError MissingInput(ArtifactStore& store, const std::string& map_name,
+                        const StageInfo& stage) {
+  if (!store.ReadMap(map_name)) {
+    return InputError("map '" + map_name + "' is not in the store; run ag-import first");
+  }
+  return InputError("map '" + map_name + "' has no " + stage.name + " artifact; run ag-" +
+                    stage.name + " first");
+}
+
+}  // namespace
+
+const std::vector<StageInfo>& InputStagesOf(const StageInfo& stage) {
+  static const std::vector<StageInfo> kNone;
+  static const std::vector<StageInfo> kClean = {kImportStage};
+  static const std::vector<StageInfo> kVoronoi = {kCleanStage};
+  static const std::vector<StageInfo> kPrune = {kVoronoiStage, kCleanStage};
+  static const std::vector<StageInfo> kCut = {kPruneStage, kCleanStage};
+  static const std::vector<StageInfo> kMerge = {kCutStage, kCleanStage};
+  if (IsStage(stage, kCleanStage)) return kClean;
+  if (IsStage(stage, kVoronoiStage)) return kVoronoi;
+  if (IsStage(stage, kPruneStage)) return kPrune;
+  if (IsStage(stage, kCutStage)) return kCut;
+  if (IsStage(stage, kMergeStage)) return kMerge;
+  return kNone;
+}
+
+StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name, const StageInfo& stage) {
+  StageInputs inputs;
+  for (const StageInfo& input : InputStagesOf(stage)) {
+    std::optional<std::string> key = store.ReadHeadKey(map_name, input.name);
+    if (!key) throw MissingInput(store, map_name, input);
+    inputs.digests.push_back(*key);
+  }
+  return inputs;
+}
+
+void ParseArtifact(ArtifactStore& store, const std::string& map_name, const std::string& cache_key,
+                   google::protobuf::Message* message) {
+  const std::optional<ArtifactRecord> record = store.ReadArtifact(map_name, cache_key);
+  if (!record || record->proto_type != message->GetTypeName() ||
+      !message->ParseFromString(record->payload)) {
+    throw StoreError("artifact " + cache_key.substr(0, 12) + " of map '" + map_name +
+                     "' is missing or not a valid " + message->GetTypeName());
+  }
+}
+
 void ParseHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
                        google::protobuf::Message* message, std::string* cache_key) {
   const std::optional<ArtifactRecord> head = store.ReadHead(map_name, stage.name);
-  if (!head) {
-    if (!store.ReadMap(map_name)) {
-      throw InputError("map '" + map_name + "' is not in the store; run ag-import first");
-    }
-    throw InputError("map '" + map_name + "' has no " + stage.name + " artifact; run ag-" +
-                     stage.name + " first");
-  }
+  if (!head) throw MissingInput(store, map_name, stage);
   if (head->proto_type != message->GetTypeName() || !message->ParseFromString(head->payload)) {
     throw StoreError("the " + std::string(stage.name) + " artifact of map '" + map_name +
                      "' is not a valid " + message->GetTypeName());

@@ -34,6 +34,11 @@ inline constexpr StageInfo kMergeStage{"merge", 3};
 inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,
                                            kPruneStage,  kCutStage,   kMergeStage};
 
+// The stages whose artifacts `stage` reads, in the order their keys enter
+// its cache key (import reads a file, so none). The one table that the stage
+// executables, ag-pipeline, ag-run and ag-live share.
+const std::vector<StageInfo>& InputStagesOf(const StageInfo& stage);
+
 // What one stage run did.
 struct StageRun {
   std::string cache_key;
@@ -63,6 +68,20 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const
                         const std::function<std::unique_ptr<google::protobuf::Message>()>& compute,
                         bool force = false);
 
+// For the stage executables: the head keys of `stage`'s inputs. Throws
+// InputError naming the executable to run first when one is missing.
+StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name, const StageInfo& stage);
+
+// The artifact of `map_name` with `cache_key` parsed as T. Inputs are read by
+// key, not as heads, so that the payload is the one whose key entered the
+// cache key even when another process moves a head meanwhile.
+template <typename T>
+T ReadArtifactAs(ArtifactStore& store, const std::string& map_name, const std::string& cache_key);
+
+// Non-template core of ReadArtifactAs.
+void ParseArtifact(ArtifactStore& store, const std::string& map_name, const std::string& cache_key,
+                   google::protobuf::Message* message);
+
 // The head artifact of (map, stage) parsed as T, with its cache key. Throws
 // InputError naming the executable to run first when it is missing.
 template <typename T>
@@ -72,6 +91,13 @@ T ReadHeadArtifact(ArtifactStore& store, const std::string& map_name, const Stag
 // Non-template core of ReadHeadArtifact.
 void ParseHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
                        google::protobuf::Message* message, std::string* cache_key);
+
+template <typename T>
+T ReadArtifactAs(ArtifactStore& store, const std::string& map_name, const std::string& cache_key) {
+  T message;
+  ParseArtifact(store, map_name, cache_key, &message);
+  return message;
+}
 
 template <typename T>
 T ReadHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,

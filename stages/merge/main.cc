@@ -21,18 +21,14 @@ int main(int argc, char** argv) {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
     CheckMergeOptions(options.merge());
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
-    std::string graph_key, map_key;
-    const auto graph =
-        ReadHeadArtifact<proto::CutGraph>(*store, flags.map_name, kCutStage, &graph_key);
-    const auto map =
-        ReadHeadArtifact<proto::CleanedMap>(*store, flags.map_name, kCleanStage, &map_key);
-    StageInputs inputs;
-    inputs.digests = {graph_key, map_key};
+    const StageInputs inputs = HeadInputs(*store, flags.map_name, kMergeStage);
     const StageRun run = RunCachedStage(
         *store, flags.map_name, kMergeStage, options.merge(), inputs,
         [&] {
-          return std::make_unique<proto::AreaGraph>(
-              BuildAreaGraph(graph, map, options.merge(), flags.map_name));
+          return std::make_unique<proto::AreaGraph>(BuildAreaGraph(
+              ReadArtifactAs<proto::CutGraph>(*store, flags.map_name, inputs.digests[0]),
+              ReadArtifactAs<proto::CleanedMap>(*store, flags.map_name, inputs.digests[1]),
+              options.merge(), flags.map_name));
         },
         flags.force);
     const auto area_graph = ReadHeadArtifact<proto::AreaGraph>(*store, flags.map_name, kMergeStage);

@@ -19,57 +19,32 @@ bool IsStage(const StageInfo& stage, const StageInfo& other) {
   return std::string(stage.name) == other.name;
 }
 
-// The artifact with `cache_key`, parsed as T. Inputs are read by key, not as
-// heads, so that the payload is the one whose key entered the cache key even
-// when another process moves a head meanwhile.
-template <typename T>
-T ReadInput(ArtifactStore& store, const std::string& map_name, const std::string& cache_key) {
-  const std::optional<ArtifactRecord> record = store.ReadArtifact(map_name, cache_key);
-  T message;
-  if (!record || record->proto_type != message.GetTypeName() ||
-      !message.ParseFromString(record->payload)) {
-    throw StoreError("artifact " + cache_key.substr(0, 12) + " of map '" + map_name +
-                     "' is missing or not a valid " + message.GetTypeName());
-  }
-  return message;
-}
-
-// The head key of (map, stage), or the error that names the stage to run first.
-std::string InputKey(ArtifactStore& store, const std::string& map_name, const StageInfo& stage) {
-  if (std::optional<std::string> key = store.ReadHeadKey(map_name, stage.name)) return *key;
-  if (!store.ReadMap(map_name)) {
-    throw InputError("map '" + map_name + "' is not in the store; run ag-import first");
-  }
-  throw InputError("map '" + map_name + "' has no " + stage.name + " artifact; run ag-" +
-                   stage.name + " first");
-}
-
 // Computes one step from the input artifacts named by `keys` (PipelineSteps order).
 MessagePtr ComputeStep(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
                        const std::vector<std::string>& keys,
                        const proto::PipelineOptions& options) {
   if (IsStage(stage, kCleanStage)) {
     return std::make_unique<proto::CleanedMap>(CleanGridMap(
-        ReadInput<proto::GridMap>(store, map_name, keys[0]), options.clean(), map_name));
+        ReadArtifactAs<proto::GridMap>(store, map_name, keys[0]), options.clean(), map_name));
   }
   // Every later step reads the cleaned map, last among its inputs.
-  const auto cleaned = ReadInput<proto::CleanedMap>(store, map_name, keys.back());
+  const auto cleaned = ReadArtifactAs<proto::CleanedMap>(store, map_name, keys.back());
   if (IsStage(stage, kVoronoiStage)) {
     return std::make_unique<proto::VoronoiDiagram>(
         ComputeVoronoiStage(cleaned, options.voronoi(), map_name));
   }
   if (IsStage(stage, kPruneStage)) {
     return std::make_unique<proto::TopologyGraph>(BuildTopologyGraph(
-        ReadInput<proto::VoronoiDiagram>(store, map_name, keys[0]), cleaned, options.prune(),
+        ReadArtifactAs<proto::VoronoiDiagram>(store, map_name, keys[0]), cleaned, options.prune(),
         map_name));
   }
   if (IsStage(stage, kCutStage)) {
     return std::make_unique<proto::CutGraph>(BuildCutGraph(
-        ReadInput<proto::TopologyGraph>(store, map_name, keys[0]), cleaned, options.cut(),
+        ReadArtifactAs<proto::TopologyGraph>(store, map_name, keys[0]), cleaned, options.cut(),
         map_name));
   }
   return std::make_unique<proto::AreaGraph>(BuildAreaGraph(
-      ReadInput<proto::CutGraph>(store, map_name, keys[0]), cleaned, options.merge(), map_name));
+      ReadArtifactAs<proto::CutGraph>(store, map_name, keys[0]), cleaned, options.merge(), map_name));
 }
 
 size_t StepIndex(const std::string& stage_name) {
@@ -83,13 +58,13 @@ size_t StepIndex(const std::string& stage_name) {
 }  // namespace
 
 const std::vector<PipelineStep>& PipelineSteps() {
-  static const std::vector<PipelineStep> steps = {
-      {kCleanStage, {kImportStage}},
-      {kVoronoiStage, {kCleanStage}},
-      {kPruneStage, {kVoronoiStage, kCleanStage}},
-      {kCutStage, {kPruneStage, kCleanStage}},
-      {kMergeStage, {kCutStage, kCleanStage}},
-  };
+  static const std::vector<PipelineStep> steps = [] {
+    std::vector<PipelineStep> list;
+    for (const StageInfo& stage : kAllStages) {
+      if (!InputStagesOf(stage).empty()) list.push_back({stage, InputStagesOf(stage)});
+    }
+    return list;
+  }();
   return steps;
 }
 
@@ -127,10 +102,7 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
   for (size_t i = first; i <= last; ++i) {
     const PipelineStep& step = steps[i];
     if (observer.on_start) observer.on_start(step.stage);
-    StageInputs inputs;
-    for (const StageInfo& input : step.inputs) {
-      inputs.digests.push_back(InputKey(store, map_name, input));
-    }
+    const StageInputs inputs = HeadInputs(store, map_name, step.stage);
     const StageRun run = RunCachedStage(
         store, map_name, step.stage, StageOptionsOf(options, step.stage), inputs,
         [&] { return ComputeStep(store, map_name, step.stage, inputs.digests, options); }, force);

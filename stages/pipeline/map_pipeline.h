@@ -13,8 +13,7 @@
 namespace areagraph {
 
 // A stage after import and the stages whose artifacts it reads, in the order
-// their keys enter its cache key. The one table that ag-pipeline, ag-run and
-// ag-live share, so they never disagree about a key.
+// their keys enter its cache key (InputStagesOf).
 struct PipelineStep {
   StageInfo stage;
   std::vector<StageInfo> inputs;

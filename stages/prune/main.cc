@@ -21,18 +21,14 @@ int main(int argc, char** argv) {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
     CheckPruneOptions(options.prune());
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
-    std::string diagram_key, map_key;
-    const auto diagram = ReadHeadArtifact<proto::VoronoiDiagram>(*store, flags.map_name,
-                                                                 kVoronoiStage, &diagram_key);
-    const auto map =
-        ReadHeadArtifact<proto::CleanedMap>(*store, flags.map_name, kCleanStage, &map_key);
-    StageInputs inputs;
-    inputs.digests = {diagram_key, map_key};
+    const StageInputs inputs = HeadInputs(*store, flags.map_name, kPruneStage);
     const StageRun run = RunCachedStage(
         *store, flags.map_name, kPruneStage, options.prune(), inputs,
         [&] {
-          return std::make_unique<proto::TopologyGraph>(
-              BuildTopologyGraph(diagram, map, options.prune(), flags.map_name));
+          return std::make_unique<proto::TopologyGraph>(BuildTopologyGraph(
+              ReadArtifactAs<proto::VoronoiDiagram>(*store, flags.map_name, inputs.digests[0]),
+              ReadArtifactAs<proto::CleanedMap>(*store, flags.map_name, inputs.digests[1]),
+              options.prune(), flags.map_name));
         },
         flags.force);
     const auto graph = ReadHeadArtifact<proto::TopologyGraph>(*store, flags.map_name, kPruneStage);

@@ -19,16 +19,13 @@ int main(int argc, char** argv) {
   return RunCommand("ag-voronoi", app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
-    std::string input_key;
-    const auto map =
-        ReadHeadArtifact<proto::CleanedMap>(*store, flags.map_name, kCleanStage, &input_key);
-    StageInputs inputs;
-    inputs.digests = {input_key};
+    const StageInputs inputs = HeadInputs(*store, flags.map_name, kVoronoiStage);
     const StageRun run = RunCachedStage(
         *store, flags.map_name, kVoronoiStage, options.voronoi(), inputs,
         [&] {
-          return std::make_unique<proto::VoronoiDiagram>(
-              ComputeVoronoiStage(map, options.voronoi(), flags.map_name));
+          return std::make_unique<proto::VoronoiDiagram>(ComputeVoronoiStage(
+              ReadArtifactAs<proto::CleanedMap>(*store, flags.map_name, inputs.digests[0]),
+              options.voronoi(), flags.map_name));
         },
         flags.force);
     const auto diagram =
