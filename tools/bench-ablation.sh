@@ -34,7 +34,8 @@ STEPS=(
   "+ cut.room_width_m=auto (paper's rule)|cut.room_width_m=auto"
   "+ cut.room_width_above_doors|cut.room_width_above_doors=true"
   "+ prune.min_clearance_m=0.15|prune.min_clearance_m=0.15"
-  "+ merge.join_corridor_pieces (= defaults)|merge.join_corridor_pieces=true"
+  "+ merge.join_corridor_pieces|merge.join_corridor_pieces=true"
+  "+ merge.fold_open_bays (= defaults)|merge.fold_open_bays=true"
 )
 
 mean_mcc() {  # mean_mcc DIR GT [ag-eval flags] -> mean MCC

@@ -9,6 +9,7 @@
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/region_outline.h"
@@ -156,6 +157,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
 
   AreaPlan plan = AssignAreas(graph);
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
+  if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
   std::vector<std::vector<PointList>> paths(plan.areas.size());
   for (size_t k = 0; k < plan.areas.size(); ++k) {

@@ -1,0 +1,91 @@
+#include "stages/merge/bay_folding.h"
+
+#include <algorithm>
+#include <map>
+#include <vector>
+
+#include "stages/geometry/edge_polygon.h"
+
+namespace areagraph {
+namespace {
+
+// Median free width (px) of an area: twice the median clearance along its edges.
+double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area) {
+  std::vector<double> clearance;
+  for (int e : area.edges) {
+    const auto& samples = graph.edges(e).clearance_px();
+    clearance.insert(clearance.end(), samples.begin(), samples.end());
+  }
+  if (clearance.empty()) return 0;
+  std::nth_element(clearance.begin(), clearance.begin() + clearance.size() / 2, clearance.end());
+  return 2 * clearance[clearance.size() / 2];
+}
+
+// The narrowest free width (px) along `edge` within `reach_px` of one end.
+double NarrowestNearEnd(const proto::GraphEdge& edge, bool at_target, double reach_px) {
+  const int n = edge.clearance_px_size();
+  if (n == 0 || edge.path_size() != n) return 0;
+  double narrowest = edge.clearance_px(at_target ? n - 1 : 0);
+  double walked = 0;
+  for (int step = 1; step < n && walked <= reach_px; ++step) {
+    const int i = at_target ? n - 1 - step : step;
+    const int previous = at_target ? i + 1 : i - 1;
+    walked += (FromProtoPoint(edge.path(i)) - FromProtoPoint(edge.path(previous))).norm();
+    narrowest = std::min(narrowest, edge.clearance_px(i));
+  }
+  return 2 * narrowest;
+}
+
+}  // namespace
+
+void FoldOpenBays(const proto::CutGraph& graph, AreaPlan* plan) {
+  const int area_count = static_cast<int>(plan->areas.size());
+  std::vector<double> typical(area_count);
+  std::vector<double> length(area_count, 0);
+  for (int k = 0; k < area_count; ++k) {
+    typical[k] = MedianWidthPx(graph, plan->areas[k]);
+    for (int e : plan->areas[k].edges) length[k] += graph.edges(e).length_px();
+  }
+  // Per vertex: area -> the narrowest width near the vertex along its edges.
+  std::vector<std::map<int, double>> mouth_at(graph.vertices_size());
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    const proto::GraphEdge& edge = graph.edges(e);
+    const int area = plan->area_of_edge[e];
+    for (const bool at_target : {false, true}) {
+      const double width = NarrowestNearEnd(edge, at_target, kMouthReachWidths * typical[area]);
+      auto [it, added] = mouth_at[at_target ? edge.target() : edge.source()].emplace(area, width);
+      if (!added) it->second = std::min(it->second, width);
+    }
+  }
+  std::vector<int> into(area_count, -1);
+  for (int k = 0; k < area_count; ++k) {
+    if (plan->areas[k].kind == proto::AREA_ROOM || length[k] > kMaxBayLengthWidths * typical[k]) {
+      continue;
+    }
+    double widest = 0;
+    for (const std::map<int, double>& at : mouth_at) {
+      const auto own = at.find(k);
+      if (own == at.end()) continue;
+      for (const auto& [other, width] : at) {
+        const double mouth = std::min(own->second, width);
+        if (plan->areas[other].kind != proto::AREA_ROOM || mouth < kOpenMouthShare * typical[k] ||
+            mouth <= widest) {
+          continue;
+        }
+        widest = mouth;
+        into[k] = other;
+      }
+    }
+  }
+  // Rooms are never folded, so a target is never removed; indices above a
+  // removed area shift down.
+  for (int k = area_count - 1; k >= 0; --k) {
+    if (into[k] < 0) continue;
+    plan->MergeInto(k, into[k]);
+    for (int j = 0; j < k; ++j) {
+      if (into[j] > k) --into[j];
+    }
+  }
+}
+
+}  // namespace areagraph

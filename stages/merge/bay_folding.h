@@ -1,0 +1,27 @@
+#pragma once
+
+#include "proto/artifacts.pb.h"
+#include "stages/merge/area_assignment.h"
+
+namespace areagraph {
+
+// A room-less area opens into a room without a constriction when the
+// narrowest free width near the vertex where they meet, on both sides, is at
+// least this share of the area's median free width.
+inline constexpr double kOpenMouthShare = 0.9;
+// How far from that vertex the narrowest width is looked for, in multiples of
+// the area's median free width.
+inline constexpr double kMouthReachWidths = 2.0;
+// A bay is at most this many times as long (its graph edges) as it is wide;
+// longer room-less areas are corridors, which stay apart even where they
+// open into a room through a wide opening.
+inline constexpr double kMaxBayLengthWidths = 3.0;
+
+// Folds short room-less areas into a room they open into without narrowing:
+// a bay of a room that the room disk (W) could not reach, e.g. the strip
+// between a row of tables and the wall, is part of the room, while a
+// corridor meets a room through a door narrower than itself or is long.
+// Of several such rooms the one with the widest opening wins.
+void FoldOpenBays(const proto::CutGraph& graph, AreaPlan* plan);
+
+}  // namespace areagraph
