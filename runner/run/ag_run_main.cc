@@ -119,16 +119,10 @@ MapResult ReadResult(const std::vector<std::string>& fields) {
   return result;
 }
 
-void RecordLeftoverFailures(const std::string& store_path, const std::vector<MapTask>& tasks,
-                            const proto::RunSummary& summary, const RunReport& report) {
+void RecordLeftoverFailures(const std::string& store_path, const RunReport& report) {
   if (report.UnrecordedFailures().empty()) return;
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path);
-  for (const auto& failure : summary.failures()) {
-    for (int task : report.UnrecordedFailures()) {
-      if (tasks[task].entry.name != failure.map()) continue;
-      store->RecordFailure({failure.map(), failure.stage(), failure.message(), failure.path(), ""});
-    }
-  }
+  for (const FailureRecord& failure : report.UnrecordedFailures()) store->RecordFailure(failure);
 }
 
 int Run(const RunFlags& flags) {
@@ -150,7 +144,7 @@ int Run(const RunFlags& flags) {
       flags.jobs,
       [&](int task, EventWriter& events) {
         if (!worker) worker = std::make_unique<MapWorker>(settings, publish);
-        MapObserver observer;
+        PipelineObserver observer;
         observer.on_start = [&](const StageInfo& stage) {
           events.Write({"S", stage.name});
           MaybeInjectCrash(tasks[task].entry.name, stage);
@@ -177,7 +171,7 @@ int Run(const RunFlags& flags) {
   progress.Finish();
 
   const proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
-  RecordLeftoverFailures(settings.store_path, tasks, summary, report);
+  RecordLeftoverFailures(settings.store_path, report);
   if (flags.json) {
     std::string json;
     google::protobuf::util::JsonPrintOptions print;

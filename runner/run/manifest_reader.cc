@@ -1,6 +1,7 @@
 #include "runner/run/manifest_reader.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -60,11 +61,22 @@ std::vector<std::string> SplitCsv(const std::string& line, const std::string& wh
 
 }  // namespace
 
+std::string LowerCaseExtension(const std::string& path) {
+  std::string extension = std::filesystem::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension;
+}
+
+bool IsManifestPath(const std::string& path) {
+  const std::string extension = LowerCaseExtension(path);
+  return extension == ".tsv" || extension == ".csv";
+}
+
 ManifestTable ReadManifest(const std::string& path) {
   std::ifstream file(path);
   if (!file) throw InputError("cannot read manifest '" + path + "'");
-  const bool csv = path.size() >= 4 && (path.substr(path.size() - 4) == ".csv" ||
-                                        path.substr(path.size() - 4) == ".CSV");
+  const bool csv = LowerCaseExtension(path) == ".csv";
   ManifestTable table;
   std::string line;
   for (int number = 1; std::getline(file, line); ++number) {

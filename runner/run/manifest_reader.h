@@ -16,6 +16,12 @@ struct ManifestTable {
   std::vector<ManifestRow> rows;
 };
 
+// The file extension of `path` in lower case, with its dot (".csv").
+std::string LowerCaseExtension(const std::string& path);
+
+// Whether `path` names a manifest: a .tsv or .csv file, in any case.
+bool IsManifestPath(const std::string& path);
+
 // Reads a TSV (.tsv: tab-separated, no quoting) or CSV (.csv: comma-separated,
 // RFC 4180 double quotes within one line) manifest. Blank lines and lines
 // starting with '#' are skipped. Throws InputError with file and line for an

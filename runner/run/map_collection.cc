@@ -14,17 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string Lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
-
-bool IsManifestPath(const std::string& path) {
-  const std::string extension = Lower(fs::path(path).extension().string());
-  return extension == ".tsv" || extension == ".csv";
-}
-
 void AddDirectory(const std::string& directory, std::vector<MapEntry>* entries) {
   std::vector<fs::path> images;
   std::error_code error;
@@ -88,7 +77,7 @@ void AddManifest(const std::string& manifest, std::vector<MapEntry>* entries) {
 bool IsMapImagePath(const std::string& path) {
   static const std::set<std::string> kExtensions = {".png", ".pgm", ".ppm", ".pbm", ".jpg",
                                                     ".jpeg", ".bmp", ".tif", ".tiff"};
-  return kExtensions.count(Lower(fs::path(path).extension().string())) > 0;
+  return kExtensions.count(LowerCaseExtension(path)) > 0;
 }
 
 std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments) {

@@ -22,13 +22,13 @@ ArtifactStore& MapWorker::Store() {
 }
 
 bool MapWorker::TryFullyCached(const MapTask& task, const std::string& import_key,
-                               const MapObserver& observer) {
+                               const PipelineObserver& observer) {
   ArtifactStore& store = Store();
   const std::string& name = task.entry.name;
   std::vector<std::pair<StageInfo, std::string>> keys = {{kImportStage, import_key}};
   const std::vector<std::string> planned = PlanPipelineKeys(import_key, task.options);
   for (size_t i = 0; i < planned.size(); ++i) {
-    keys.emplace_back(PipelineSteps()[i].stage, planned[i]);
+    keys.emplace_back(PipelineStages()[i], planned[i]);
   }
   for (const auto& [stage, key] : keys) {
     if (!store.HasArtifact(name, key)) return false;
@@ -43,7 +43,7 @@ bool MapWorker::TryFullyCached(const MapTask& task, const std::string& import_ke
   return true;
 }
 
-void MapWorker::RunStages(const MapTask& task, const MapObserver& observer, std::string* stage) {
+void MapWorker::RunStages(const MapTask& task, const PipelineObserver& observer, std::string* stage) {
   ArtifactStore& store = Store();
   const std::string& name = task.entry.name;
   const bool with_import = settings_.first_stage == kImportStage.name;
@@ -60,17 +60,16 @@ void MapWorker::RunStages(const MapTask& task, const MapObserver& observer, std:
     if (observer.on_done) observer.on_done(kImportStage, run);
     if (settings_.last_stage == kImportStage.name) return;
   }
-  PipelineObserver pipeline_observer;
-  pipeline_observer.on_start = [&](const StageInfo& info) {
+  PipelineObserver tracking = observer;
+  tracking.on_start = [&](const StageInfo& info) {
     *stage = info.name;
     if (observer.on_start) observer.on_start(info);
   };
-  pipeline_observer.on_done = observer.on_done;
-  RunMapPipeline(store, name, task.options, settings_.force, pipeline_observer,
+  RunMapPipeline(store, name, task.options, settings_.force, tracking,
                  with_import ? kCleanStage.name : settings_.first_stage, settings_.last_stage);
 }
 
-MapResult MapWorker::Run(const MapTask& task, const MapObserver& observer) {
+MapResult MapWorker::Run(const MapTask& task, const PipelineObserver& observer) {
   MapResult result;
   const std::string& name = task.entry.name;
   std::string stage = "store";
@@ -78,7 +77,7 @@ MapResult MapWorker::Run(const MapTask& task, const MapObserver& observer) {
     ArtifactStore& store = Store();
     const std::optional<std::string> old_graph = store.ReadHeadKey(name, kMergeStage.name);
     int hits = 0, runs = 0;
-    MapObserver counting = observer;
+    PipelineObserver counting = observer;
     counting.on_done = [&](const StageInfo& info, const StageRun& run) {
       ++runs;
       hits += run.cache_hit ? 1 : 0;

@@ -10,6 +10,7 @@
 #include "proto/pipeline_options.pb.h"
 #include "runner/run/map_collection.h"
 #include "stages/common/stage.h"
+#include "stages/pipeline/map_pipeline.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {
@@ -26,12 +27,6 @@ struct RunSettings {
   std::string first_stage = "import";  // --from / --only
   std::string last_stage = "merge";    // --only
   bool force = false;
-};
-
-// Hears about each stage and about the map's end.
-struct MapObserver {
-  std::function<void(const StageInfo&)> on_start;
-  std::function<void(const StageInfo&, const StageRun&)> on_done;
 };
 
 struct MapResult {
@@ -56,7 +51,7 @@ using GraphPublisher = std::function<void(const std::string& map_name,
 class MapWorker {
  public:
   MapWorker(RunSettings settings, GraphPublisher publish);
-  MapResult Run(const MapTask& task, const MapObserver& observer);
+  MapResult Run(const MapTask& task, const PipelineObserver& observer);
 
  private:
   ArtifactStore& Store();
@@ -64,8 +59,8 @@ class MapWorker {
   // the options, and when all are stored the heads are set without any
   // artifact being read. Returns false when something must run.
   bool TryFullyCached(const MapTask& task, const std::string& import_key,
-                      const MapObserver& observer);
-  void RunStages(const MapTask& task, const MapObserver& observer, std::string* stage);
+                      const PipelineObserver& observer);
+  void RunStages(const MapTask& task, const PipelineObserver& observer, std::string* stage);
   void RecordFailure(const MapTask& task, MapResult& result);
 
   RunSettings settings_;

@@ -65,7 +65,7 @@ void RunReport::Fail(int task, const std::string& stage, const std::string& mess
   failure->set_stage(stage);
   failure->set_message(message);
   failure->set_path(map.entry.path);
-  if (!recorded) unrecorded_.push_back(task);
+  if (!recorded) unrecorded_.push_back({map.entry.name, stage, message, map.entry.path, ""});
   progress_.MapDone(true, map.entry.name + ": FAILED in " + stage + ": " + message);
 }
 

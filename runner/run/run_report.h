@@ -26,7 +26,7 @@ class RunReport {
 
   // Failures that no worker could write into the store (crashes, an
   // unopenable store), for the runner to record after the workers are gone.
-  const std::vector<int>& UnrecordedFailures() const { return unrecorded_; }
+  const std::vector<FailureRecord>& UnrecordedFailures() const { return unrecorded_; }
 
   proto::RunSummary Summary(int jobs, const std::string& shard) const;
 
@@ -46,7 +46,7 @@ class RunReport {
   std::vector<bool> ended_;              // per task: counted once only
   std::map<std::string, StageCounts> stages_;
   proto::RunSummary summary_;
-  std::vector<int> unrecorded_;
+  std::vector<FailureRecord> unrecorded_;
 };
 
 // The summary as the few lines ag-run prints at the end.

@@ -58,10 +58,6 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const
 
 namespace {
 
-bool IsStage(const StageInfo& stage, const StageInfo& other) {
-  return std::string(stage.name) == other.name;
-}
-
 InputError MissingInput(ArtifactStore& store, const std::string& map_name,
                         const StageInfo& stage) {
   if (!store.ReadMap(map_name)) {
@@ -80,11 +76,11 @@ const std::vector<StageInfo>& InputStagesOf(const StageInfo& stage) {
   static const std::vector<StageInfo> kPrune = {kVoronoiStage, kCleanStage};
   static const std::vector<StageInfo> kCut = {kPruneStage, kCleanStage};
   static const std::vector<StageInfo> kMerge = {kCutStage, kCleanStage};
-  if (IsStage(stage, kCleanStage)) return kClean;
-  if (IsStage(stage, kVoronoiStage)) return kVoronoi;
-  if (IsStage(stage, kPruneStage)) return kPrune;
-  if (IsStage(stage, kCutStage)) return kCut;
-  if (IsStage(stage, kMergeStage)) return kMerge;
+  if (SameStage(stage, kCleanStage)) return kClean;
+  if (SameStage(stage, kVoronoiStage)) return kVoronoi;
+  if (SameStage(stage, kPruneStage)) return kPrune;
+  if (SameStage(stage, kCutStage)) return kCut;
+  if (SameStage(stage, kMergeStage)) return kMerge;
   return kNone;
 }
 

@@ -35,6 +35,11 @@ inline constexpr StageInfo kMergeStage{"merge", 4};
 inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,
                                            kPruneStage,  kCutStage,   kMergeStage};
 
+// Whether two StageInfos name the same stage.
+inline bool SameStage(const StageInfo& a, const StageInfo& b) {
+  return std::string(a.name) == b.name;
+}
+
 // The stages whose artifacts `stage` reads, in the order their keys enter
 // its cache key (import reads a file, so none). The one table that the stage
 // executables, ag-pipeline, ag-run and ag-live share.

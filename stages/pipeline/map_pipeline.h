@@ -12,27 +12,21 @@
 
 namespace areagraph {
 
-// A stage after import and the stages whose artifacts it reads, in the order
-// their keys enter its cache key (InputStagesOf).
-struct PipelineStep {
-  StageInfo stage;
-  std::vector<StageInfo> inputs;
-};
-
-// clean, voronoi, prune, cut and merge, in pipeline order.
-const std::vector<PipelineStep>& PipelineSteps();
+// clean, voronoi, prune, cut and merge, in pipeline order: the stages that
+// read artifacts (InputStagesOf says which).
+const std::vector<StageInfo>& PipelineStages();
 
 // The options message of `stage` (any stage, import included) in `options`.
 const google::protobuf::Message& StageOptionsOf(const proto::PipelineOptions& options,
                                                 const StageInfo& stage);
 
 // The cache keys that clean..merge get when every stage runs on the import
-// artifact `import_key` with `options`, in PipelineSteps() order. Lets a
+// artifact `import_key` with `options`, in PipelineStages() order. Lets a
 // runner see that a map is fully cached without reading any artifact.
 std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
                                           const proto::PipelineOptions& options);
 
-// Hears about each stage as it starts and as it ends.
+// Hears about each stage as it starts and as it ends (either may be empty).
 struct PipelineObserver {
   std::function<void(const StageInfo&)> on_start;
   std::function<void(const StageInfo&, const StageRun&)> on_done;

@@ -69,6 +69,15 @@ TEST(MapCollectionTest, CsvManifestHonoursQuotes) {
   EXPECT_EQ(table.rows[0].cells, (std::vector<std::string>{"north, wing", "/maps/a b.png"}));
 }
 
+TEST(MapCollectionTest, ManifestExtensionInAnyCaseSelectsTheFormat) {
+  TempDir dir;
+  WriteFile(dir.File("list.Csv"), "path,name\na.png,first\n");
+  const std::vector<MapEntry> maps = CollectMaps({dir.File("list.Csv")});
+  ASSERT_EQ(maps.size(), 1u);
+  EXPECT_EQ(maps[0].name, "first");
+  EXPECT_EQ(maps[0].path, dir.File("a.png"));
+}
+
 TEST(MapCollectionTest, ManifestRowOfWrongWidthNamesItsLine) {
   TempDir dir;
   WriteFile(dir.File("list.csv"), "path,name\na.png,a\nb.png\n");

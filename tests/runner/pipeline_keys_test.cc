@@ -20,7 +20,7 @@ TEST(PipelineKeysTest, PlannedKeysAreTheStoredKeys) {
                  [&](const StageInfo&, const StageRun& run) { stored.push_back(run.cache_key); });
   EXPECT_EQ(stored, PlanPipelineKeys(import.cache_key, options));
   for (size_t i = 0; i < stored.size(); ++i) {
-    EXPECT_EQ(store->ReadHeadKey("m", PipelineSteps()[i].stage.name), stored[i]);
+    EXPECT_EQ(store->ReadHeadKey("m", PipelineStages()[i].name), stored[i]);
   }
 }
 
