@@ -394,8 +394,7 @@ std::optional<std::string> SqliteArtifactStore::ReadHeadKey(const std::string& m
 
 void SqliteArtifactStore::RecordFailure(const FailureRecord& failure) {
   if (!HasFailuresTable()) {
-    throw StoreError("store '" + path_ + "' has schema version " +
-                     std::to_string(schema_version_) +
+    throw StoreError("store '" + path_ + "' has schema version " + std::to_string(schema_version_) +
                      " without failures; open it for writing to upgrade it");
   }
   // One statement: its own transaction, waiting on the busy timeout.

@@ -107,9 +107,9 @@ SELECT map_id, stage, artifact_id FROM temp.merge_winning_heads WHERE true
 ON CONFLICT (map_id, stage) DO UPDATE SET artifact_id = excluded.artifact_id)sql";
 
 // True when map `name` has a head artifact created after `time`.
-#define AG_HEAD_NEWER_THAN(name, time)                                             \
-  "EXISTS (SELECT 1 FROM main.maps m JOIN main.heads h ON h.map_id = m.id"         \
-  " JOIN main.artifacts a ON a.id = h.artifact_id WHERE m.name = " name            \
+#define AG_HEAD_NEWER_THAN(name, time)                                     \
+  "EXISTS (SELECT 1 FROM main.maps m JOIN main.heads h ON h.map_id = m.id" \
+  " JOIN main.artifacts a ON a.id = h.artifact_id WHERE m.name = " name    \
   " AND a.created_at > " time ")"
 
 // Run after the heads are merged: a failure older than a head is stale.

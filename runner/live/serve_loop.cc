@@ -21,8 +21,7 @@ void ServeLimits::Check() const {
   if (!(timeout_s >= 0)) throw OptionsError("--timeout must be 0 (none) or positive");
 }
 
-bool ServeUntilDone(const ServeLimits& limits, const char* what,
-                    const std::function<int()>& served,
+bool ServeUntilDone(const ServeLimits& limits, const char* what, const std::function<int()>& served,
                     const std::function<void(int wait_ms)>& serve) {
   struct sigaction action = {};
   action.sa_handler = RequestStop;

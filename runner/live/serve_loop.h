@@ -17,8 +17,7 @@ struct ServeLimits {
 // arrives (the handlers are installed here; the item in hand is finished).
 // Returns true when a signal stopped it. Throws Error naming `what` when
 // the timeout passed before the count was reached.
-bool ServeUntilDone(const ServeLimits& limits, const char* what,
-                    const std::function<int()>& served,
+bool ServeUntilDone(const ServeLimits& limits, const char* what, const std::function<int()>& served,
                     const std::function<void(int wait_ms)>& serve);
 
 }  // namespace areagraph

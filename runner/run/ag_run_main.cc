@@ -1,12 +1,12 @@
 // ag-run: the whole pipeline for one map or a collection, through the cache,
 // with parallel worker processes, failures recorded, and an optional LCM
 // publisher for live consumers.
+#include <google/protobuf/util/json_util.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdlib>
-#include <google/protobuf/util/json_util.h>
 #include <iostream>
 #include <memory>
 #include <thread>
@@ -150,8 +150,8 @@ int Run(const RunFlags& flags) {
           MaybeInjectCrash(tasks[task].entry.name, stage);
         };
         observer.on_done = [&](const StageInfo& stage, const StageRun& run) {
-          events.Write({"D", stage.name, run.cache_hit ? "1" : "0",
-                        std::to_string(run.elapsed_ms)});
+          events.Write(
+              {"D", stage.name, run.cache_hit ? "1" : "0", std::to_string(run.elapsed_ms)});
         };
         WriteResult(events, worker->Run(tasks[task], observer));
       },
@@ -214,7 +214,8 @@ int main(int argc, char** argv) {
                  "K/N: run only the maps whose name hashes to K modulo N (0 <= K < N)");
   app.add_option("--publish", flags.publish_url,
                  "publish each new or changed Area Graph on LCM channel AREA_GRAPH (URL "
-                 "optional; default " + std::string(kDefaultLcmUrl) + ")")
+                 "optional; default " +
+                     std::string(kDefaultLcmUrl) + ")")
       ->expected(0, 1)
       ->default_str(kDefaultLcmUrl);
   app.add_flag("--json", flags.json, "print the summary as JSON");

@@ -103,8 +103,8 @@ ManifestTable ReadManifest(const std::string& path) {
       continue;
     }
     if (cells.size() != table.header.size()) {
-      throw InputError(where + ": " + std::to_string(cells.size()) + " fields, but the header has " +
-                       std::to_string(table.header.size()));
+      throw InputError(where + ": " + std::to_string(cells.size()) +
+                       " fields, but the header has " + std::to_string(table.header.size()));
     }
     table.rows.push_back({number, std::move(cells)});
   }

@@ -75,7 +75,7 @@ void AddManifest(const std::string& manifest, std::vector<MapEntry>* entries) {
 }  // namespace
 
 bool IsMapImagePath(const std::string& path) {
-  static const std::set<std::string> kExtensions = {".png", ".pgm", ".ppm", ".pbm", ".jpg",
+  static const std::set<std::string> kExtensions = {".png",  ".pgm", ".ppm", ".pbm", ".jpg",
                                                     ".jpeg", ".bmp", ".tif", ".tiff"};
   return kExtensions.count(LowerCaseExtension(path)) > 0;
 }

@@ -43,7 +43,8 @@ bool MapWorker::TryFullyCached(const MapTask& task, const std::string& import_ke
   return true;
 }
 
-void MapWorker::RunStages(const MapTask& task, const PipelineObserver& observer, std::string* stage) {
+void MapWorker::RunStages(const MapTask& task, const PipelineObserver& observer,
+                          std::string* stage) {
   ArtifactStore& store = Store();
   const std::string& name = task.entry.name;
   const bool with_import = settings_.first_stage == kImportStage.name;

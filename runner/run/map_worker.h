@@ -35,15 +35,14 @@ struct MapResult {
   std::string error;         // when !ok
   int areas = 0;             // of the merge head, when merge ran
   int passages = 0;
-  bool fully_cached = false;    // every stage was a hit
-  bool graph_changed = false;   // the merge head is new or different
+  bool fully_cached = false;   // every stage was a hit
+  bool graph_changed = false;  // the merge head is new or different
   bool published = false;
   bool failure_recorded = false;  // the store holds the failure already
 };
 
 // Called with each new or changed Area Graph (for --publish).
-using GraphPublisher = std::function<void(const std::string& map_name,
-                                          const std::string& cache_key,
+using GraphPublisher = std::function<void(const std::string& map_name, const std::string& cache_key,
                                           const proto::AreaGraph& graph)>;
 
 // Runs maps one after another on one store connection. A worker process owns

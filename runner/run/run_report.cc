@@ -98,14 +98,13 @@ proto::RunSummary RunReport::Summary(int jobs, const std::string& shard) const {
 void PrintSummary(const proto::RunSummary& summary, std::ostream& out) {
   out << "ag-run: " << summary.maps() << " maps: " << summary.succeeded() << " done ("
       << summary.fully_cached() << " fully cached), " << summary.failed() << " failed, in "
-      << std::fixed << std::setprecision(1) << summary.wall_s() << " s ("
-      << std::setprecision(2) << summary.maps_per_s() << " maps/s, " << summary.jobs()
+      << std::fixed << std::setprecision(1) << summary.wall_s() << " s (" << std::setprecision(2)
+      << summary.maps_per_s() << " maps/s, " << summary.jobs()
       << (summary.jobs() == 1 ? " job" : " jobs")
       << (summary.shard().empty() ? "" : ", shard " + summary.shard()) << ")\n";
   out << "  " << summary.areas() << " areas, " << summary.passages() << " passages";
   if (summary.published() > 0) out << ", " << summary.published() << " graphs published";
-  out << "\n  cache: " << summary.cache_hits() << " hits, " << summary.cache_misses()
-      << " misses";
+  out << "\n  cache: " << summary.cache_hits() << " hits, " << summary.cache_misses() << " misses";
   if (summary.cache_misses() == 0 && summary.cache_hits() > 0) out << " (every stage was a hit)";
   out << "\n  stage      hits  misses  compute s\n";
   for (const auto& stage : summary.stages()) {

@@ -104,10 +104,9 @@ std::vector<OutlierCandidate> FindOutlierCandidates(const OccupiedRows& occupied
         double(sum) / points < threshold_score) {
       continue;
     }
-    const OutlierCandidate candidate =
-        NearestSum(here, near, points, &sum, &reach2) == points
-            ? OutlierCandidate{cell, double(sum) / points, reach2}
-            : ScoreFarCell(occupied, cell, points);
+    const OutlierCandidate candidate = NearestSum(here, near, points, &sum, &reach2) == points
+                                           ? OutlierCandidate{cell, double(sum) / points, reach2}
+                                           : ScoreFarCell(occupied, cell, points);
     if (candidate.score >= threshold_score) candidates.push_back(candidate);
   }
   return candidates;

@@ -89,10 +89,9 @@ std::vector<int> RemoveOutlierCells(std::string& cells, int width, int height, i
   const size_t keep = size_t(double(occupied.count()) * ((100.0 - percent) / 100.0));
   const size_t most = size_t(occupied.count()) - keep;
   if (outliers.size() > most) {
-    std::stable_sort(outliers.begin(), outliers.end(),
-                     [](const OutlierCandidate& a, const OutlierCandidate& b) {
-                       return a.score > b.score;
-                     });
+    std::stable_sort(
+        outliers.begin(), outliers.end(),
+        [](const OutlierCandidate& a, const OutlierCandidate& b) { return a.score > b.score; });
     outliers.resize(most);
     std::sort(outliers.begin(), outliers.end(),
               [](const OutlierCandidate& a, const OutlierCandidate& b) { return a.cell < b.cell; });

@@ -15,7 +15,8 @@ std::vector<int> FreeUnknownIslands(std::string& cells, int width, int height, d
     unknown.data[index] = cells[index] == proto::CELL_UNKNOWN ? 255 : 0;
   }
   cv::Mat labels, stats, centroids;
-  const int regions = cv::connectedComponentsWithStats(unknown, labels, stats, centroids, 8, CV_32S);
+  const int regions =
+      cv::connectedComponentsWithStats(unknown, labels, stats, centroids, 8, CV_32S);
   std::vector<uint8_t> island(regions, 0);
   for (int region = 1; region < regions; ++region) {
     const int x = stats.at<int>(region, cv::CC_STAT_LEFT);

@@ -9,8 +9,7 @@
 namespace areagraph {
 
 void AddStageFlags(CLI::App& app, StageCommandLine& flags, bool map_required) {
-  app.add_option("--store", flags.store_path, "SQLite artifact store")
-      ->capture_default_str();
+  app.add_option("--store", flags.store_path, "SQLite artifact store")->capture_default_str();
   CLI::Option* map = app.add_option("--map", flags.map_name, "name of the map in the store");
   if (map_required) map->required();
   app.add_option("--options", flags.options_file,

@@ -1,13 +1,13 @@
 #include "stages/common/pipeline_options.h"
 
-#include <fstream>
-#include <regex>
-#include <sstream>
-
 #include <google/protobuf/io/coded_stream.h>
 #include <google/protobuf/io/tokenizer.h>
 #include <google/protobuf/io/zero_copy_stream_impl_lite.h>
 #include <google/protobuf/text_format.h>
+
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 #include "store/error.h"
 
@@ -24,8 +24,8 @@ class ErrorCollector : public google::protobuf::io::ErrorCollector {
  public:
   void AddError(int line, int column, const std::string& message) override {
     if (first_error.empty()) {
-      first_error = "line " + std::to_string(line + 1) + ", column " +
-                    std::to_string(column + 1) + ": " + message;
+      first_error = "line " + std::to_string(line + 1) + ", column " + std::to_string(column + 1) +
+                    ": " + message;
     }
   }
   std::string first_error;
@@ -143,8 +143,8 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
   parser.RecordErrorsTo(&errors);
   if (!parser.ParseFieldValueFromString(value, field, stage_options)) {
     throw OptionsError("option '" + stage_name + "." + field_name + "' expects a " +
-                       field->type_name() + (auto_option != nullptr ? " or auto" : "") +
-                       ", got '" + value + "'");
+                       field->type_name() + (auto_option != nullptr ? " or auto" : "") + ", got '" +
+                       value + "'");
   }
   if (auto_option != nullptr) SetAuto(stage_options, *auto_option, false);
 }

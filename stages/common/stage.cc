@@ -58,8 +58,7 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const
 
 namespace {
 
-InputError MissingInput(ArtifactStore& store, const std::string& map_name,
-                        const StageInfo& stage) {
+InputError MissingInput(ArtifactStore& store, const std::string& map_name, const StageInfo& stage) {
   if (!store.ReadMap(map_name)) {
     return InputError("map '" + map_name + "' is not in the store; run ag-import first");
   }

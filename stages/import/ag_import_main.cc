@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "stages/common/command_line.h"
-#include "stages/common/stage.h"
 #include "stages/common/grid_cells.h"
+#include "stages/common/stage.h"
 #include "stages/import/grid_map_decoder.h"
 #include "stages/import/import_stage.h"
 #include "store/artifact_store.h"

@@ -49,5 +49,4 @@ std::string ClassifyCells(const cv::Mat& grey, const GreyToCell& rule) {
   return cells;
 }
 
-
 }  // namespace areagraph

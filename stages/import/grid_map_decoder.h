@@ -37,5 +37,4 @@ GreyToCell MapServerRule(const MapYaml& yaml);
 // One CellState byte per pixel, row-major from the top row of `grey` (CV_8UC1).
 std::string ClassifyCells(const cv::Mat& grey, const GreyToCell& rule);
 
-
 }  // namespace areagraph

@@ -30,17 +30,18 @@ MessagePtr ComputeStep(ArtifactStore& store, const std::string& map_name, const 
         ComputeVoronoiStage(cleaned, options.voronoi(), map_name));
   }
   if (SameStage(stage, kPruneStage)) {
-    return std::make_unique<proto::TopologyGraph>(BuildTopologyGraph(
-        ReadArtifactAs<proto::VoronoiDiagram>(store, map_name, keys[0]), cleaned, options.prune(),
-        map_name));
+    return std::make_unique<proto::TopologyGraph>(
+        BuildTopologyGraph(ReadArtifactAs<proto::VoronoiDiagram>(store, map_name, keys[0]), cleaned,
+                           options.prune(), map_name));
   }
   if (SameStage(stage, kCutStage)) {
-    return std::make_unique<proto::CutGraph>(BuildCutGraph(
-        ReadArtifactAs<proto::TopologyGraph>(store, map_name, keys[0]), cleaned, options.cut(),
-        map_name));
+    return std::make_unique<proto::CutGraph>(
+        BuildCutGraph(ReadArtifactAs<proto::TopologyGraph>(store, map_name, keys[0]), cleaned,
+                      options.cut(), map_name));
   }
-  return std::make_unique<proto::AreaGraph>(BuildAreaGraph(
-      ReadArtifactAs<proto::CutGraph>(store, map_name, keys[0]), cleaned, options.merge(), map_name));
+  return std::make_unique<proto::AreaGraph>(
+      BuildAreaGraph(ReadArtifactAs<proto::CutGraph>(store, map_name, keys[0]), cleaned,
+                     options.merge(), map_name));
 }
 
 size_t StepIndex(const std::string& stage_name) {

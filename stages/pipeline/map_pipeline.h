@@ -1,10 +1,10 @@
 #pragma once
 
+#include <google/protobuf/message.h>
+
 #include <functional>
 #include <string>
 #include <vector>
-
-#include <google/protobuf/message.h>
 
 #include "proto/pipeline_options.pb.h"
 #include "stages/common/stage.h"

@@ -131,10 +131,9 @@ proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& si
                                              clearances[source], clearances[source], left_site,
                                              right_site));
       } else {
-        edge->set_clearance_px(EdgeClearance(positions[source],
-                                             positions[target] - positions[source], 1.0,
-                                             clearances[source], clearances[target], left_site,
-                                             right_site));
+        edge->set_clearance_px(
+            EdgeClearance(positions[source], positions[target] - positions[source], 1.0,
+                          clearances[source], clearances[target], left_site, right_site));
       }
     }
   }

@@ -1,15 +1,14 @@
 // Runs the executables as a user would: --help, and the store-related bad
 // input that every tool shares. Each bad case must give one line on stderr,
 // a non-zero exit, and leave the store exactly as it was.
+#include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <gtest/gtest.h>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
-
 #include <algorithm>
 #include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "tests/support/test_support.h"
 

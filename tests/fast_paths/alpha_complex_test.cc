@@ -1,18 +1,16 @@
 // ComputeAlphaComplex (one alpha, straight from the Delaunay triangulation)
 // against CGAL's Alpha_shape_2, and the property furniture removal relies on.
-#include "stages/geometry/alpha_shape.h"
-
-#include <gtest/gtest.h>
-
 #include <CGAL/Alpha_shape_2.h>
 #include <CGAL/Alpha_shape_face_base_2.h>
 #include <CGAL/Alpha_shape_vertex_base_2.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 #include <set>
 #include <tuple>
 
+#include "stages/geometry/alpha_shape.h"
 #include "stages/geometry/cgal_types.h"
 #include "stages/geometry/disjoint_sets.h"
 
@@ -20,8 +18,9 @@ namespace areagraph {
 namespace {
 
 using Kernel = cgal::Kernel;
-using VertexBase = CGAL::Alpha_shape_vertex_base_2<
-    Kernel, CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>>;
+using VertexBase =
+    CGAL::Alpha_shape_vertex_base_2<Kernel,
+                                    CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>>;
 using FaceBase = CGAL::Alpha_shape_face_base_2<Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;

@@ -63,8 +63,7 @@ cv::Rect Bounds(const proto::Ring& ring, cv::Size size) {
 // non-free cell, in 4-connected pieces of at least (2 min_gap_px)^2 cells)
 // that hold no labelled cell, widened by min_gap_px / 2: free space behind a
 // gap narrower than min_gap_px that no area reached. Empty for min_gap_px 0.
-cv::Mat UnreachedRooms(const AreaRaster& raster, const proto::CleanedMap& map,
-                       double min_gap_px) {
+cv::Mat UnreachedRooms(const AreaRaster& raster, const proto::CleanedMap& map, double min_gap_px) {
   const cv::Size size = raster.labels.size();
   cv::Mat unreached = cv::Mat::zeros(size, CV_8U);
   if (min_gap_px <= 0) return unreached;
@@ -225,11 +224,10 @@ void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap
   ASSERT_GT(raster.domain_cells, 0);
   EXPECT_GE(static_cast<double>(covered) / raster.domain_cells, min_coverage);
   EXPECT_GE(static_cast<double>(polygon_cells) / raster.domain_cells, min_coverage);
-  const double min_gap_px =
-      stages.options.merge().grow_min_gap_m() / map.frame().resolution_m();
-  EXPECT_GE(static_cast<double>(covered) /
-                ReachableCells(raster, map, stages.cut.boundary(), min_gap_px),
-            0.99);
+  const double min_gap_px = stages.options.merge().grow_min_gap_m() / map.frame().resolution_m();
+  EXPECT_GE(
+      static_cast<double>(covered) / ReachableCells(raster, map, stages.cut.boundary(), min_gap_px),
+      0.99);
 
   // Passages join two areas that meet there.
   const MapTransform transform(map.frame());

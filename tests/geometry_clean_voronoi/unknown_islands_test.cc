@@ -1,9 +1,10 @@
 // clean.unknown_island_max_m2: small unknown islands in mapped space become
 // free before outlier and furniture removal.
+#include "stages/clean/unknown_islands.h"
+
 #include <gtest/gtest.h>
 
 #include "stages/clean/clean_stage.h"
-#include "stages/clean/unknown_islands.h"
 #include "test_grids.h"
 
 namespace areagraph {

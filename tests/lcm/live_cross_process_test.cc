@@ -133,8 +133,7 @@ TEST(LiveAcrossProcesses, ServesMapsSkipsGarbageAndCachesRepeats) {
     std::string live_key;
     const auto made = ReadHeadArtifact<proto::AreaGraph>(*live_store, map, kMergeStage, &live_key);
     const auto received = ReadHeadArtifact<proto::AreaGraph>(*listen_store, map, kMergeStage);
-    EXPECT_NE(listen_store->ReadHead(map, "merge")->options_text.find(live_key),
-              std::string::npos);
+    EXPECT_NE(listen_store->ReadHead(map, "merge")->options_text.find(live_key), std::string::npos);
     EXPECT_EQ(received.areas_size(), made.areas_size());
     EXPECT_EQ(received.passages_size(), made.passages_size());
   }

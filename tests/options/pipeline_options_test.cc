@@ -60,9 +60,9 @@ TEST(PipelineOptionsTest, WrongTypeIsAnError) {
 
 TEST(PipelineOptionsTest, ValidKeysCoverEveryStageField) {
   const std::vector<std::string> keys = ValidOptionKeys();
-  for (const char* key : {"import.resolution_m", "clean.robot_width_m",
-                          "prune.boundary_alpha_radius_m", "prune.min_clearance_m",
-                          "cut.room_width_m", "cut.door_width_m", "cut.corridor_width_m"}) {
+  for (const char* key :
+       {"import.resolution_m", "clean.robot_width_m", "prune.boundary_alpha_radius_m",
+        "prune.min_clearance_m", "cut.room_width_m", "cut.door_width_m", "cut.corridor_width_m"}) {
     EXPECT_NE(std::find(keys.begin(), keys.end(), key), keys.end()) << key;
   }
 }
@@ -109,7 +109,8 @@ TEST(PipelineOptionsTest, BadFileNamesLine) {
 }
 
 TEST(PipelineOptionsTest, ShippedOptionFilesParse) {
-  const proto::PipelineOptions options = ReadOptionsFile(testing::SourcePath("examples/options/default.pbtxt"));
+  const proto::PipelineOptions options =
+      ReadOptionsFile(testing::SourcePath("examples/options/default.pbtxt"));
   EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.25);
   // default.pbtxt spells out the built-in defaults.
   EXPECT_EQ(CanonicalText(options), CanonicalText(proto::PipelineOptions()));

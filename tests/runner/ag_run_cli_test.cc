@@ -61,8 +61,10 @@ TEST_F(AgRunTest, StageExecutablesAgreeWithItsKeys) {
     EXPECT_NE(run.out.find("cached"), std::string::npos) << stage << ": " << run.out;
   }
   // And the other way round: what a stage executable computed, ag-run finds.
-  ASSERT_EQ(RunTool("ag-cut", {"--store", store_, "--map", "map_13", "--set",
-                               "cut.room_width_m=1.4"}).exit_code, 0);
+  ASSERT_EQ(
+      RunTool("ag-cut", {"--store", store_, "--map", "map_13", "--set", "cut.room_width_m=1.4"})
+          .exit_code,
+      0);
   ASSERT_EQ(RunTool("ag-merge", {"--store", store_, "--map", "map_13"}).exit_code, 0);
   const proto::RunSummary summary = RunJson(Args({"--set", "cut.room_width_m=1.4"}));
   EXPECT_EQ(CountOf(summary, "cut").hits, 1);
@@ -153,8 +155,8 @@ TEST_F(AgRunTest, SlurmExampleScriptsShardAndMerge) {
          "bash", SourcePath("examples/cluster/slurm-shard.sbatch"), maps_, stores});
     ASSERT_EQ(task.exit_code, 0) << task.err;
   }
-  const CommandResult merge = RunProgram(
-      {"env", path, "bash", SourcePath("examples/cluster/slurm-merge.sbatch"), stores});
+  const CommandResult merge =
+      RunProgram({"env", path, "bash", SourcePath("examples/cluster/slurm-merge.sbatch"), stores});
   ASSERT_EQ(merge.exit_code, 0) << merge.err;
   ASSERT_EQ(RunTool("ag-run", {"--store", store_, maps_}).exit_code, 0);
   EXPECT_EQ(GraphDigests(stores + "/collection.db"), GraphDigests(store_));
@@ -204,8 +206,8 @@ TEST_F(AgRunTest, UnreadableManifestRowFailsBeforeAnyWork) {
 
 TEST_F(AgRunTest, TerminalGetsAProgressBarAndPipesGetLines) {
   // script(1) gives ag-run a pseudo-terminal.
-  const std::string command = "'" + std::string(AG_BIN_DIR) + "/ag-run' --store '" + store_ +
-                              "' --jobs 2 '" + maps_ + "'";
+  const std::string command =
+      "'" + std::string(AG_BIN_DIR) + "/ag-run' --store '" + store_ + "' --jobs 2 '" + maps_ + "'";
   const CommandResult tty = RunProgram({"script", "-qfec", command, "/dev/null"});
   if (tty.exit_code != 0) GTEST_SKIP() << "no pseudo-terminal here: " << tty.err;
   EXPECT_NE(tty.out.find("\r\033[K["), std::string::npos) << tty.out;

@@ -52,9 +52,8 @@ TEST_F(AgRunFaultTest, BadFileFailsAloneAndIsRecorded) {
 
 TEST_F(AgRunFaultTest, CrashingWorkerFailsItsMapOnly) {
   WriteRandomMaps(maps_, 3, /*first_seed=*/1);
-  const std::string command = "AG_RUN_FAULT=crash:map_2:prune exec '" +
-                              std::string(AG_BIN_DIR) + "/ag-run' --json --jobs 2 --store '" +
-                              store_ + "' '" + maps_ + "'";
+  const std::string command = "AG_RUN_FAULT=crash:map_2:prune exec '" + std::string(AG_BIN_DIR) +
+                              "/ag-run' --json --jobs 2 --store '" + store_ + "' '" + maps_ + "'";
   const CommandResult run = RunProgram({"sh", "-c", command});
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_NE(run.out.find("\"succeeded\": 2"), std::string::npos) << run.out;
@@ -87,15 +86,18 @@ TEST_F(AgRunFaultTest, KilledRunnerLosesNothingAndTheNextRunFinishes) {
   constexpr int kMaps = 16;
   WriteRandomMaps(maps_, kMaps, /*first_seed=*/100);
   // Start ag-run, wait until a few maps are done, then SIGKILL it mid-collection.
-  const std::string script =
-      "'" + std::string(AG_BIN_DIR) + "/ag-run' --jobs 2 --store '" + store_ + "' '" + maps_ +
-      "' >/dev/null 2>&1 & pid=$!; "
-      "for i in $(seq 600); do "
-      "  n=$(sqlite3 '" + store_ + "' \"SELECT count(*) FROM heads WHERE stage='merge'\" "
-      "2>/dev/null || echo 0); "
-      "  [ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; "
-      "kill -9 $pid; wait $pid; "
-      "sleep 0.5; sqlite3 '" + store_ + "' \"SELECT count(*) FROM heads WHERE stage='merge'\"";
+  const std::string script = "'" + std::string(AG_BIN_DIR) + "/ag-run' --jobs 2 --store '" +
+                             store_ + "' '" + maps_ +
+                             "' >/dev/null 2>&1 & pid=$!; "
+                             "for i in $(seq 600); do "
+                             "  n=$(sqlite3 '" +
+                             store_ +
+                             "' \"SELECT count(*) FROM heads WHERE stage='merge'\" "
+                             "2>/dev/null || echo 0); "
+                             "  [ \"${n:-0}\" -ge 3 ] && break; sleep 0.02; done; "
+                             "kill -9 $pid; wait $pid; "
+                             "sleep 0.5; sqlite3 '" +
+                             store_ + "' \"SELECT count(*) FROM heads WHERE stage='merge'\"";
   const CommandResult killed = RunProgram({"sh", "-c", script});
   const int done_before = std::atoi(killed.out.c_str());
   ASSERT_GE(done_before, 3) << killed.out << killed.err;
@@ -120,9 +122,10 @@ TEST_F(AgRunFaultTest, TwoRunnersShareOneStore) {
   WriteRandomMaps(maps_, 6, /*first_seed=*/200);
   const std::string run = "'" + std::string(AG_BIN_DIR) + "/ag-run' --jobs 2 --store '" + store_ +
                           "' '" + maps_ + "' >/dev/null 2>&1";
-  const CommandResult both = RunProgram(
-      {"sh", "-c", run + " & a=$!; " + run + " & b=$!; wait $a; ra=$?; wait $b; rb=$?; "
-                   "echo $ra $rb"});
+  const CommandResult both = RunProgram({"sh", "-c",
+                                         run + " & a=$!; " + run +
+                                             " & b=$!; wait $a; ra=$?; wait $b; rb=$?; "
+                                             "echo $ra $rb"});
   EXPECT_EQ(both.out, "0 0\n") << both.err;
   EXPECT_EQ(StoreProblems(store_), 0u);
   const auto digests = GraphDigests(store_);

@@ -34,8 +34,9 @@ TEST(MapCollectionTest, SameNameTwiceIsRefused) {
   std::filesystem::create_directories(dir.File("x"));
   WriteFile(dir.File("a.png"), "x");
   WriteFile(dir.File("x/a.png"), "x");
-  const std::string error =
-      ErrorOf<InputError>([&] { CollectMaps({dir.File("a.png"), dir.File("x/a.png")}); });
+  const std::string error = ErrorOf<InputError>([&] {
+    CollectMaps({dir.File("a.png"), dir.File("x/a.png")});
+  });
   EXPECT_NE(error.find("second map named 'a'"), std::string::npos) << error;
 }
 

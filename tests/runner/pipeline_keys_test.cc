@@ -47,7 +47,8 @@ TEST(PipelineKeysTest, BumpedStageVersionChangesItsKey) {
 
 TEST(PipelineKeysTest, ExplicitDefaultsGiveTheSameKeys) {
   proto::PipelineOptions explicit_defaults;
-  explicit_defaults.mutable_prune()->set_min_clearance_m(explicit_defaults.prune().min_clearance_m());
+  explicit_defaults.mutable_prune()->set_min_clearance_m(
+      explicit_defaults.prune().min_clearance_m());
   EXPECT_EQ(PlanPipelineKeys("k", proto::PipelineOptions()),
             PlanPipelineKeys("k", explicit_defaults));
 }

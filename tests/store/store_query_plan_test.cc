@@ -18,11 +18,11 @@ TEST(StoreQueryPlanTest, LookupsUseIndexesWithoutScansOrSorts) {
   const std::string path = dir.File("store.db");
   OpenArtifactStore(path)->WriteArtifact(testing::MakeArtifact("m", "clean", "k", "x"));
   // Cache checks, failures by map, and the per-artifact steps of gc.
-  for (const char* sql : {store_sql::kReadMap, store_sql::kReadArtifact, store_sql::kReadHead,
-                          store_sql::kReadArtifactSummaries, store_sql::kReadArtifactRef,
-                          store_sql::kReadArtifactId, store_sql::kHasArtifact,
-                          store_sql::kReadHeadKey, store_sql::kClearFailure,
-                          store_sql::kReadArtifactInputs, store_sql::kDeleteArtifact}) {
+  for (const char* sql :
+       {store_sql::kReadMap, store_sql::kReadArtifact, store_sql::kReadHead,
+        store_sql::kReadArtifactSummaries, store_sql::kReadArtifactRef, store_sql::kReadArtifactId,
+        store_sql::kHasArtifact, store_sql::kReadHeadKey, store_sql::kClearFailure,
+        store_sql::kReadArtifactInputs, store_sql::kDeleteArtifact}) {
     const std::vector<std::string> plan =
         testing::QueryColumn(path, std::string("EXPLAIN QUERY PLAN ") + sql, 3);
     ASSERT_FALSE(plan.empty()) << sql;

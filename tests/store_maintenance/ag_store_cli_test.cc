@@ -1,9 +1,9 @@
 // ag-store (and the failure listings of ag-inspect) run as a user would.
 #include <gtest/gtest.h>
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <string>
 
 #include "store/artifact_store.h"
@@ -161,8 +161,7 @@ TEST(AgStoreCliTest, FailuresAreListedByAgStoreAndAgInspect) {
 
   const CommandResult json = RunTool("ag-store", {"failures", "--store", store, "--json"});
   ASSERT_EQ(json.exit_code, 0) << json.err;
-  EXPECT_NE(json.out.find("\"message\": \"no room \\\"found\\\"\""), std::string::npos)
-      << json.out;
+  EXPECT_NE(json.out.find("\"message\": \"no room \\\"found\\\"\""), std::string::npos) << json.out;
   EXPECT_NE(json.out.find("\"map\": \"broken\""), std::string::npos) << json.out;
 
   const CommandResult maps = RunTool("ag-inspect", {"--store", store});
@@ -180,7 +179,8 @@ TEST(AgStoreCliTest, FailuresAreListedByAgStoreAndAgInspect) {
   EXPECT_NE(broken.out.find("has no artifacts; it failed in import"), std::string::npos)
       << broken.out;
 
-  const CommandResult misuse = RunTool("ag-inspect", {"--store", store, "--failures", "--map", "x"});
+  const CommandResult misuse =
+      RunTool("ag-inspect", {"--store", store, "--failures", "--map", "x"});
   EXPECT_EQ(misuse.exit_code, 1);
   EXPECT_EQ(CountLines(misuse.err), 1) << misuse.err;
 

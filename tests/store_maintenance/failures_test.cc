@@ -91,7 +91,7 @@ TEST(CacheLookupTest, LookupsDoNotReadThePayload) {
   testing::FlipPayloadByte(path, "key", 3);
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
   EXPECT_THROW(store->ReadHead("m", "clean"), StoreError);  // the payload is damaged...
-  EXPECT_EQ(store->ReadHeadKey("m", "clean"), "key");        // ...but keys are readable
+  EXPECT_EQ(store->ReadHeadKey("m", "clean"), "key");       // ...but keys are readable
   EXPECT_TRUE(store->HasArtifact("m", "key"));
 }
 

@@ -75,8 +75,8 @@ TEST(GarbageCollectionTest, MapsLeftWithoutArtifactsAreDropped) {
     store->WriteArtifact(Artifact("headless", "import", "h1", {"file"}, "twelve bytes"));
     store->WriteArtifact(Artifact("headless", "clean", "h2", {"h1"}));
   }
-  testing::ExecSql(path,
-                   "DELETE FROM heads WHERE map_id = (SELECT id FROM maps WHERE name = 'headless')");
+  testing::ExecSql(
+      path, "DELETE FROM heads WHERE map_id = (SELECT id FROM maps WHERE name = 'headless')");
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
   const MaintenanceCounts removed = store->CollectGarbage();
   EXPECT_EQ(removed.artifacts, 2);

@@ -13,9 +13,8 @@ std::string ProtoBytes(const std::string& text) {
   return std::string("\x0a", 1) + static_cast<char>(text.size()) + text;
 }
 
-NewArtifact Artifact(const std::string& map_name, const std::string& stage,
-                     const std::string& key, const std::vector<std::string>& input_keys,
-                     const std::string& text) {
+NewArtifact Artifact(const std::string& map_name, const std::string& stage, const std::string& key,
+                     const std::vector<std::string>& input_keys, const std::string& text) {
   NewArtifact artifact;
   artifact.map_name = map_name;
   artifact.stage = stage;
@@ -49,7 +48,8 @@ void CreateVersion1Store(const std::string& path) {
     }
     return hex + "'";
   };
-  ExecSql(path, R"sql(
+  ExecSql(path,
+          R"sql(
 CREATE TABLE maps (
   id INTEGER PRIMARY KEY,
   name TEXT NOT NULL UNIQUE,
@@ -78,16 +78,18 @@ CREATE TABLE heads (
 CREATE INDEX heads_by_artifact ON heads (artifact_id);
 PRAGMA journal_mode = WAL;
 INSERT INTO maps VALUES (1, 'old_map', 'old.png', 'file-digest');
-)sql" + std::string("INSERT INTO artifacts VALUES (1, 1, 'import', 'v1-import', 'file-digest', '', "
-                    "1, 'areagraph.proto.GridMap', ") +
-                    blob(import_payload) + ", '" + Sha256Hex(import_payload) +
-                    "', '2025-01-01T00:00:00.000Z', 5);"
-                    "INSERT INTO artifacts VALUES (2, 1, 'clean', 'v1-clean', 'v1-import', '', 3, "
-                    "'areagraph.proto.CleanedMap', " +
-                    blob(clean_payload) + ", '" + Sha256Hex(clean_payload) +
-                    "', '2025-01-01T00:00:01.000Z', 7);"
-                    "INSERT INTO heads VALUES (1, 'import', 1), (1, 'clean', 2);"
-                    "PRAGMA user_version = 1;");
+)sql" +
+              std::string(
+                  "INSERT INTO artifacts VALUES (1, 1, 'import', 'v1-import', 'file-digest', '', "
+                  "1, 'areagraph.proto.GridMap', ") +
+              blob(import_payload) + ", '" + Sha256Hex(import_payload) +
+              "', '2025-01-01T00:00:00.000Z', 5);"
+              "INSERT INTO artifacts VALUES (2, 1, 'clean', 'v1-clean', 'v1-import', '', 3, "
+              "'areagraph.proto.CleanedMap', " +
+              blob(clean_payload) + ", '" + Sha256Hex(clean_payload) +
+              "', '2025-01-01T00:00:01.000Z', 7);"
+              "INSERT INTO heads VALUES (1, 'import', 1), (1, 'clean', 2);"
+              "PRAGMA user_version = 1;");
 }
 
 std::vector<std::string> KeysOf(ArtifactStore& store, const std::string& map_name) {

@@ -13,8 +13,8 @@ namespace areagraph::testing {
 std::string ProtoBytes(const std::string& text);
 
 // An artifact of (map, stage) with key `key` and the given input keys.
-NewArtifact Artifact(const std::string& map_name, const std::string& stage,
-                     const std::string& key, const std::vector<std::string>& input_keys,
+NewArtifact Artifact(const std::string& map_name, const std::string& stage, const std::string& key,
+                     const std::vector<std::string>& input_keys,
                      const std::string& text = "payload");
 
 // Timestamps set by hand, to order artifacts and failures in tests.

@@ -29,8 +29,7 @@ std::string MergeError(ArtifactStore& store, const std::string& path) {
   return "";
 }
 
-NewArtifact Import(const std::string& map_name, const std::string& key,
-                   const std::string& source) {
+NewArtifact Import(const std::string& map_name, const std::string& key, const std::string& source) {
   NewArtifact artifact = Artifact(map_name, "import", key, {"digest-" + source}, key);
   artifact.source_path = source;
   artifact.source_digest = "digest-" + source;
@@ -71,9 +70,8 @@ TEST_F(MergeTest, DisjointStoresAreCopiedWithEverything) {
   const MaintenanceCounts from_a = out->MergeFrom(Path("a.db"));
   EXPECT_EQ(from_a.maps, 1);
   EXPECT_EQ(from_a.artifacts, 2);
-  EXPECT_EQ(from_a.payload_bytes,
-            static_cast<int64_t>(testing::ProtoBytes("ia").size() +
-                                 testing::ProtoBytes("clean a").size()));
+  EXPECT_EQ(from_a.payload_bytes, static_cast<int64_t>(testing::ProtoBytes("ia").size() +
+                                                       testing::ProtoBytes("clean a").size()));
   EXPECT_EQ(from_a.failures, 1);
   const MaintenanceCounts from_b = out->MergeFrom(Path("b.db"));
   EXPECT_EQ(from_b.maps, 1);
@@ -217,8 +215,7 @@ TEST_F(MergeTest, WhatIsNoStoreIsRefused) {
   EXPECT_EQ(MergeError(*store, Path("missing.db")),
             "store '" + Path("missing.db") + "' does not exist");
   EXPECT_FALSE(std::filesystem::exists(Path("missing.db")));
-  EXPECT_NE(MergeError(*store, ":memory:").find("cannot merge from ':memory:'"),
-            std::string::npos);
+  EXPECT_NE(MergeError(*store, ":memory:").find("cannot merge from ':memory:'"), std::string::npos);
   EXPECT_EQ(ReadFile(Path("notes.db")), "my notes\n");
 }
 

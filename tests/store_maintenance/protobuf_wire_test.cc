@@ -1,10 +1,11 @@
 // IsWellFormedProtobuf, the schema-free payload check of Verify.
+#include "store/protobuf_wire.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "proto/artifacts.pb.h"
-#include "store/protobuf_wire.h"
 
 namespace areagraph {
 namespace {
@@ -35,12 +36,14 @@ TEST(ProtobufWireTest, DamagedBytesAreNot) {
   EXPECT_FALSE(IsWellFormedProtobuf(payload.substr(0, payload.size() - 1)));  // cut short
   EXPECT_FALSE(IsWellFormedProtobuf(std::string("\x00\x01", 2)));             // field 0
   EXPECT_FALSE(IsWellFormedProtobuf("\x0f"));                                 // wire type 7
-  EXPECT_FALSE(IsWellFormedProtobuf("\x0a\x05" "abc"));                      // length too long
-  EXPECT_FALSE(IsWellFormedProtobuf("\x08\xff\xff"));                         // varint unfinished
-  EXPECT_FALSE(IsWellFormedProtobuf(std::string(11, '\xff')));                // varint too long
-  EXPECT_FALSE(IsWellFormedProtobuf("\x0b"));                                 // open group
-  EXPECT_FALSE(IsWellFormedProtobuf("\x0b\x14"));                             // wrong group end
-  EXPECT_TRUE(IsWellFormedProtobuf("\x0b\x08\x01\x0c"));                      // a group
+  EXPECT_FALSE(
+      IsWellFormedProtobuf("\x0a\x05"
+                           "abc"));                             // length too long
+  EXPECT_FALSE(IsWellFormedProtobuf("\x08\xff\xff"));           // varint unfinished
+  EXPECT_FALSE(IsWellFormedProtobuf(std::string(11, '\xff')));  // varint too long
+  EXPECT_FALSE(IsWellFormedProtobuf("\x0b"));                   // open group
+  EXPECT_FALSE(IsWellFormedProtobuf("\x0b\x14"));               // wrong group end
+  EXPECT_TRUE(IsWellFormedProtobuf("\x0b\x08\x01\x0c"));        // a group
   EXPECT_FALSE(IsWellFormedProtobuf("<html>not a payload</html>"));
 }
 

@@ -30,8 +30,8 @@ TEST(VerifyTest, CleanStoreHasNoProblemsAndReportsProgress) {
   WriteChain(*store, "a", "a");
   WriteChain(*store, "b", "b");
   std::vector<std::pair<int64_t, int64_t>> calls;
-  EXPECT_TRUE(store->Verify([&](int64_t done, int64_t total) { calls.emplace_back(done, total); })
-                  .empty());
+  EXPECT_TRUE(
+      store->Verify([&](int64_t done, int64_t total) { calls.emplace_back(done, total); }).empty());
   ASSERT_EQ(calls.size(), 6u);
   for (size_t i = 0; i < calls.size(); ++i) {
     EXPECT_EQ(calls[i], std::make_pair(static_cast<int64_t>(i + 1), int64_t{6}));

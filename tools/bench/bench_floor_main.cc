@@ -33,9 +33,8 @@ FloorTimes TimeFloor(const std::string& path, int repeat) {
     proto::GridMap grid;
     std::vector<Eigen::Vector2d> centres;
     size_t faces = 0;
-    decode.push_back(ElapsedMs([&] {
-      grid = ImportGridMap(ReadImportSource(path), proto::ImportOptions());
-    }));
+    decode.push_back(
+        ElapsedMs([&] { grid = ImportGridMap(ReadImportSource(path), proto::ImportOptions()); }));
     const int width = grid.frame().width_px();
     const int height = grid.frame().height_px();
     sites.push_back(ElapsedMs([&] { centres = ObstacleSites(grid.cells(), width, height); }));

@@ -16,8 +16,9 @@ int main(int argc, char** argv) {
   int count = 100;
   unsigned seed = 1;
   std::string out_dir;
-  app.add_option("--count", count, "number of maps")->capture_default_str()->check(
-      CLI::Range(1, 1000000));
+  app.add_option("--count", count, "number of maps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000000));
   app.add_option("--seed", seed, "seed of the first map; map i uses seed + i")
       ->capture_default_str();
   app.add_option("OUT", out_dir, "folder to write to")->required();

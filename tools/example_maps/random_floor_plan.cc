@@ -10,7 +10,9 @@ FloorPlan RandomOfficePlan(uint32_t seed) {
   auto uniform = [&](double low, double high) {
     return std::uniform_real_distribution<double>(low, high)(random);
   };
-  auto count = [&](int low, int high) { return std::uniform_int_distribution<int>(low, high)(random); };
+  auto count = [&](int low, int high) {
+    return std::uniform_int_distribution<int>(low, high)(random);
+  };
 
   // Room widths along the corridor, the same split on both sides.
   std::vector<double> widths;
@@ -38,8 +40,8 @@ FloorPlan RandomOfficePlan(uint32_t seed) {
              WallDirection::kHorizontal);
     // A desk against each room's outer wall keeps the doorway clear.
     DrawFurniture(plan, {x + uniform(0.4, width - 2.0), margin + 0.3, 1.4, 0.6});
-    DrawFurniture(plan, {x + uniform(0.4, width - 2.0),
-                         corridor_y + corridor + depth_bottom - 0.9, 1.4, 0.6});
+    DrawFurniture(plan, {x + uniform(0.4, width - 2.0), corridor_y + corridor + depth_bottom - 0.9,
+                         1.4, 0.6});
     x += width;
   }
   DrawNoiseDots(plan, count(5, 30), seed);

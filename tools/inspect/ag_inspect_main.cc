@@ -1,7 +1,6 @@
 // ag-inspect: lists the maps and artifacts of a store and dumps artifacts.
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "stages/common/command_line.h"
 #include "store/artifact_store.h"

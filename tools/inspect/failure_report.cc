@@ -1,11 +1,11 @@
 #include "tools/inspect/failure_report.h"
 
+#include <google/protobuf/struct.pb.h>
+#include <google/protobuf/util/json_util.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
-
-#include <google/protobuf/struct.pb.h>
-#include <google/protobuf/util/json_util.h>
 
 #include "store/error.h"
 
@@ -57,7 +57,8 @@ void PrintFailuresJson(const std::vector<FailureRecord>& failures, std::ostream&
 
 void PrintFailedMapsNote(const std::vector<FailureRecord>& failures, std::ostream& out) {
   if (failures.empty()) return;
-  out << "\n" << failures.size() << (failures.size() == 1 ? " map" : " maps")
+  out << "\n"
+      << failures.size() << (failures.size() == 1 ? " map" : " maps")
       << " failed (ag-inspect --failures shows why):\n";
   char line[256];
   for (const FailureRecord& failure : failures) {

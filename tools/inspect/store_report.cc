@@ -1,11 +1,11 @@
 #include "tools/inspect/store_report.h"
 
+#include <google/protobuf/util/json_util.h>
+
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <utility>
-
-#include <google/protobuf/util/json_util.h>
 
 #include "proto/artifacts.pb.h"
 #include "stages/common/artifact_types.h"
@@ -41,8 +41,8 @@ void PrintFrame(const proto::MapFrame& frame, std::ostream& out) {
 
 void PrintCells(const std::string& cells, std::ostream& out) {
   const CellCounts counts = CountCells(cells);
-  out << "cells: " << counts.occupied << " occupied, " << counts.free << " free, "
-      << counts.unknown << " unknown\n";
+  out << "cells: " << counts.occupied << " occupied, " << counts.free << " free, " << counts.unknown
+      << " unknown\n";
 }
 
 }  // namespace
@@ -158,8 +158,8 @@ void PrintArtifactSummary(const ArtifactRecord& artifact, std::ostream& out) {
     out << "topology graph: " << topology->vertices_size() << " vertices, "
         << topology->edges_size() << " edges\n";
   } else if (const auto* cut = dynamic_cast<const proto::CutGraph*>(message.get())) {
-    out << "cut graph: " << cut->room_shapes_size() << " rooms, " << cut->edges_size()
-        << " edges, " << cut->passage_points_size() << " passage points\n";
+    out << "cut graph: " << cut->room_shapes_size() << " rooms, " << cut->edges_size() << " edges, "
+        << cut->passage_points_size() << " passage points\n";
     PrintRoomWidth(cut->room_width(), out);
   } else if (const auto* areas = dynamic_cast<const proto::AreaGraph*>(message.get())) {
     out << "area graph: " << areas->areas_size() << " areas, " << areas->passages_size()

@@ -1,7 +1,6 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -46,7 +45,8 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
   } else if (stage == kMergeStage.name) {
     DrawAreaGraph(ReadHeadArtifact<proto::AreaGraph>(store, map, kMergeStage), canvas);
   } else if (stage != kImportStage.name) {
-    throw InputError("unknown stage '" + stage + "'; use import, clean, voronoi, prune, cut or merge");
+    throw InputError("unknown stage '" + stage +
+                     "'; use import, clean, voronoi, prune, cut or merge");
   }
   if (doors) {
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);

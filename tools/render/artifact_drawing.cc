@@ -1,10 +1,9 @@
 #include "tools/render/artifact_drawing.h"
 
-#include <algorithm>
-#include <string>
-
 #include <Eigen/Core>
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
+#include <string>
 
 #include "stages/common/map_frame.h"
 

@@ -17,7 +17,8 @@ class Canvas {
   cv::Mat& image() { return image_; }
 
   cv::Point ToCanvas(const proto::Point2& point) const;
-  void Line(const proto::Point2& a, const proto::Point2& b, const cv::Scalar& colour, int thickness);
+  void Line(const proto::Point2& a, const proto::Point2& b, const cv::Scalar& colour,
+            int thickness);
   void Dot(const proto::Point2& at, const cv::Scalar& colour, int radius);
   void Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness);
   // Fills a polygon (outer minus holes) blending `colour` with weight `alpha`.

@@ -1,9 +1,8 @@
 // ag-store: maintenance of areagraph stores (merge, gc, verify, failures).
 #include <unistd.h>
 
-#include <iostream>
-
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "stages/common/command_line.h"
 #include "tools/store/store_commands.h"

@@ -109,8 +109,7 @@ int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream
 }
 
 int VerifyStore(const std::string& store_path, bool progress, std::ostream& out) {
-  const std::unique_ptr<ArtifactStore> store =
-      OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
   int64_t checked = 0;
   std::vector<VerifyProblem> problems;
   {
@@ -125,15 +124,14 @@ int VerifyStore(const std::string& store_path, bool progress, std::ostream& out)
         << OrDash(problem.cache_key.substr(0, 12)) << ": " << problem.problem << "\n";
   }
   out << "checked " << Plural(checked, "artifact") << ": "
-      << (problems.empty() ? "no problems" : Plural(static_cast<int64_t>(problems.size()),
-                                                     "problem"))
+      << (problems.empty() ? "no problems"
+                           : Plural(static_cast<int64_t>(problems.size()), "problem"))
       << "\n";
   return problems.empty() ? 0 : 1;
 }
 
 int ListStoreFailures(const std::string& store_path, bool json, std::ostream& out) {
-  const std::unique_ptr<ArtifactStore> store =
-      OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
   if (json) {
     PrintFailuresJson(store->ReadFailures(), out);
   } else {
