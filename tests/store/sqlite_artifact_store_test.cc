@@ -6,7 +6,7 @@
 #include "store/artifact_store.h"
 #include "store/digest.h"
 #include "store/error.h"
-#include "tests/store/raw_sqlite.h"
+#include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {

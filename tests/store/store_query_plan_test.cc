@@ -5,7 +5,7 @@
 #include "store/artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
 #include "store/sqlite_store_sql.h"
-#include "tests/store/raw_sqlite.h"
+#include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {

@@ -1,0 +1,231 @@
+// ag-run end to end: caching across a collection, option and input changes,
+// stage ranges, sharding, and the summary.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "tests/runner/run/runner_test_support.h"
+
+namespace areagraph::testing {
+namespace {
+
+class AgRunTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::filesystem::create_directory(maps_);
+    WriteRandomMaps(maps_, 3, /*first_seed=*/11);
+  }
+  std::vector<std::string> Args(std::vector<std::string> extra) const {
+    extra.insert(extra.begin(), {"--store", store_, "--jobs", "2"});
+    extra.push_back(maps_);
+    return extra;
+  }
+
+  TempDir dir_;
+  const std::string maps_ = dir_.File("maps");
+  const std::string store_ = dir_.File("s.db");
+};
+
+TEST_F(AgRunTest, SecondRunIsAllCacheHits) {
+  CommandResult run;
+  const proto::RunSummary cold = RunJson(Args({}), &run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(cold.maps(), 3);
+  EXPECT_EQ(cold.succeeded(), 3);
+  EXPECT_EQ(cold.cache_hits(), 0);
+  EXPECT_EQ(cold.cache_misses(), 18);
+  EXPECT_GT(cold.areas(), 3 * 4);  // every floor has at least 2 rooms a side and a corridor
+  EXPECT_EQ(cold.passages() > 0, true);
+
+  const proto::RunSummary warm = RunJson(Args({}), &run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(warm.cache_misses(), 0);
+  EXPECT_EQ(warm.cache_hits(), 18);
+  EXPECT_EQ(warm.fully_cached(), 3);
+  EXPECT_EQ(warm.areas(), cold.areas());
+  EXPECT_EQ(warm.passages(), cold.passages());
+
+  const CommandResult text = RunTool("ag-run", Args({}));
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("every stage was a hit"), std::string::npos) << text.out;
+}
+
+TEST_F(AgRunTest, StageExecutablesAgreeWithItsKeys) {
+  ASSERT_EQ(RunTool("ag-run", Args({})).exit_code, 0);
+  const CommandResult pipeline = RunTool("ag-pipeline", {"--store", store_, "--map", "map_11"});
+  ASSERT_EQ(pipeline.exit_code, 0) << pipeline.err;
+  EXPECT_EQ(pipeline.out.find("computed"), std::string::npos) << pipeline.out;
+  for (const char* stage : {"ag-clean", "ag-voronoi", "ag-prune", "ag-cut", "ag-merge"}) {
+    const CommandResult run = RunTool(stage, {"--store", store_, "--map", "map_12"});
+    ASSERT_EQ(run.exit_code, 0) << stage << run.err;
+    EXPECT_NE(run.out.find("cached"), std::string::npos) << stage << ": " << run.out;
+  }
+  // And the other way round: what a stage executable computed, ag-run finds.
+  ASSERT_EQ(
+      RunTool("ag-cut", {"--store", store_, "--map", "map_13", "--set", "cut.room_width_m=1.4"})
+          .exit_code,
+      0);
+  ASSERT_EQ(RunTool("ag-merge", {"--store", store_, "--map", "map_13"}).exit_code, 0);
+  const proto::RunSummary summary = RunJson(Args({"--set", "cut.room_width_m=1.4"}));
+  EXPECT_EQ(CountOf(summary, "cut").hits, 1);
+  EXPECT_EQ(CountOf(summary, "merge").hits, 1);
+}
+
+TEST_F(AgRunTest, ChangedStageOptionRerunsThatStageOnward) {
+  ASSERT_EQ(RunTool("ag-run", Args({})).exit_code, 0);
+  const proto::RunSummary summary = RunJson(Args({"--set", "cut.room_width_m=1.6"}));
+  for (const char* stage : {"import", "clean", "voronoi", "prune"}) {
+    EXPECT_EQ(CountOf(summary, stage).hits, 3) << stage;
+    EXPECT_EQ(CountOf(summary, stage).misses, 0) << stage;
+  }
+  for (const char* stage : {"cut", "merge"}) {
+    EXPECT_EQ(CountOf(summary, stage).hits, 0) << stage;
+    EXPECT_EQ(CountOf(summary, stage).misses, 3) << stage;
+  }
+  // Going back to the defaults finds the first results again.
+  EXPECT_EQ(RunJson(Args({})).cache_misses(), 0);
+}
+
+TEST_F(AgRunTest, ChangedInputFileRerunsThatMapOnly) {
+  ASSERT_EQ(RunTool("ag-run", Args({})).exit_code, 0);
+  std::filesystem::remove(maps_ + "/map_12.png");
+  WriteRandomMaps(dir_.path(), 1, /*first_seed=*/40);
+  std::filesystem::rename(dir_.File("map_40.png"), maps_ + "/map_12.png");
+  const proto::RunSummary summary = RunJson(Args({}));
+  EXPECT_EQ(summary.fully_cached(), 2);
+  for (const char* stage : {"import", "clean", "voronoi", "prune", "cut", "merge"}) {
+    EXPECT_EQ(CountOf(summary, stage).misses, 1) << stage;
+    EXPECT_EQ(CountOf(summary, stage).hits, 2) << stage;
+  }
+}
+
+TEST_F(AgRunTest, OnlyFromAndForceRestrictTheStages) {
+  ASSERT_EQ(RunTool("ag-run", Args({})).exit_code, 0);
+  const proto::RunSummary only = RunJson(Args({"--only", "voronoi", "--force"}));
+  ASSERT_EQ(only.stages_size(), 1);
+  EXPECT_EQ(CountOf(only, "voronoi").misses, 3);
+
+  const proto::RunSummary from = RunJson(Args({"--from", "cut"}));
+  ASSERT_EQ(from.stages_size(), 2);
+  EXPECT_EQ(CountOf(from, "cut").hits, 3);
+  EXPECT_EQ(CountOf(from, "merge").hits, 3);
+  EXPECT_EQ(from.succeeded(), 3);
+}
+
+TEST_F(AgRunTest, FromALaterStageOnAnEmptyStoreSaysWhatToRunFirst) {
+  CommandResult run;
+  const proto::RunSummary summary = RunJson(Args({"--from", "prune"}), &run);
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(summary.failed(), 3);
+  ASSERT_GT(summary.failures_size(), 0);
+  EXPECT_NE(summary.failures(0).message().find("run ag-import first"), std::string::npos)
+      << summary.failures(0).message();
+}
+
+TEST_F(AgRunTest, ShardsMergedHoldTheSameGraphsAsOneRun) {
+  WriteRandomMaps(maps_, 3, /*first_seed=*/30);
+  const std::string whole = dir_.File("whole.db"), merged = dir_.File("merged.db");
+  ASSERT_EQ(RunTool("ag-run", {"--store", whole, maps_}).exit_code, 0);
+  std::vector<std::string> shard_stores;
+  int maps_in_shards = 0;
+  for (const char* shard : {"0/2", "1/2"}) {
+    shard_stores.push_back(dir_.File(std::string("shard") + shard[0] + ".db"));
+    const proto::RunSummary summary =
+        RunJson({"--store", shard_stores.back(), "--shard", shard, maps_});
+    EXPECT_EQ(summary.shard(), shard);
+    EXPECT_GT(summary.maps(), 0) << "6 names should not all hash into one shard";
+    maps_in_shards += summary.maps();
+  }
+  EXPECT_EQ(maps_in_shards, 6);
+  const CommandResult merge =
+      RunTool("ag-store", {"merge", merged, shard_stores[0], shard_stores[1]});
+  ASSERT_EQ(merge.exit_code, 0) << merge.err;
+  const auto expected = GraphDigests(whole);
+  ASSERT_EQ(expected.size(), 6u);
+  for (const auto& [name, digest] : expected) EXPECT_FALSE(digest.empty()) << name;
+  EXPECT_EQ(GraphDigests(merged), expected);
+}
+
+TEST_F(AgRunTest, SlurmExampleScriptsShardAndMerge) {
+  const std::string path = "PATH=" + std::string(AG_BIN_DIR) + ":/usr/bin:/bin";
+  const std::string stores = dir_.File("stores");
+  for (const char* index : {"0", "1"}) {
+    const CommandResult task = RunProgram(
+        {"env", path, std::string("SLURM_ARRAY_TASK_ID=") + index, "SLURM_ARRAY_TASK_COUNT=2",
+         "bash", SourcePath("examples/cluster/slurm-shard.sbatch"), maps_, stores});
+    ASSERT_EQ(task.exit_code, 0) << task.err;
+  }
+  const CommandResult merge =
+      RunProgram({"env", path, "bash", SourcePath("examples/cluster/slurm-merge.sbatch"), stores});
+  ASSERT_EQ(merge.exit_code, 0) << merge.err;
+  ASSERT_EQ(RunTool("ag-run", {"--store", store_, maps_}).exit_code, 0);
+  EXPECT_EQ(GraphDigests(stores + "/collection.db"), GraphDigests(store_));
+}
+
+TEST_F(AgRunTest, ShardOutOfRangeIsOneLineError) {
+  const CommandResult run = RunTool("ag-run", Args({"--shard", "3/2"}));
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("--shard 3/2"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(store_));
+}
+
+TEST_F(AgRunTest, ManifestGivesEachMapItsOptions) {
+  WriteFile(dir_.File("list.tsv"),
+            "path\tname\tcut.room_width_m\nmaps/map_11.png\tnarrow\t1.0\n"
+            "maps/map_11.png\twide\t2.5\n");
+  CommandResult run;
+  const proto::RunSummary summary = RunJson({"--store", store_, dir_.File("list.tsv")}, &run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(summary.maps(), 2);
+  // Same image: import..prune are computed once per map name, but cut differs.
+  const auto inspect = RunTool("ag-inspect", {"--store", store_, "--map", "narrow"});
+  EXPECT_EQ(inspect.exit_code, 0);
+  const auto a = RunTool("ag-inspect", {"--store", store_, "--map", "narrow", "--stage", "cut"});
+  const auto b = RunTool("ag-inspect", {"--store", store_, "--map", "wide", "--stage", "cut"});
+  EXPECT_NE(a.out, b.out);
+}
+
+TEST_F(AgRunTest, ManifestColumnThatIsNoOptionFailsBeforeAnyWork) {
+  WriteFile(dir_.File("list.csv"), "path,cut.room_widht_m\nmaps/map_11.png,1.0\n");
+  const CommandResult run = RunTool("ag-run", {"--store", store_, dir_.File("list.csv")});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("room_widht_m"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(store_));
+}
+
+TEST_F(AgRunTest, UnreadableManifestRowFailsBeforeAnyWork) {
+  WriteFile(dir_.File("list.csv"), "path,name\nmaps/map_11.png,a\n\"maps/map_12.png,b\n");
+  const CommandResult run = RunTool("ag-run", {"--store", store_, dir_.File("list.csv")});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("list.csv:3"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(store_));
+}
+
+TEST_F(AgRunTest, TerminalGetsAProgressBarAndPipesGetLines) {
+  // script(1) gives ag-run a pseudo-terminal.
+  const std::string command =
+      "'" + std::string(AG_BIN_DIR) + "/ag-run' --store '" + store_ + "' --jobs 2 '" + maps_ + "'";
+  const CommandResult tty = RunProgram({"script", "-qfec", command, "/dev/null"});
+  if (tty.exit_code != 0) GTEST_SKIP() << "no pseudo-terminal here: " << tty.err;
+  EXPECT_NE(tty.out.find("\r\033[K["), std::string::npos) << tty.out;
+  EXPECT_NE(tty.out.find("3/3 maps"), std::string::npos) << tty.out;
+  EXPECT_EQ(tty.out.find("ag-run: [1/3]"), std::string::npos) << tty.out;
+
+  const CommandResult piped = RunTool("ag-run", Args({}));
+  EXPECT_EQ(piped.err.find('\r'), std::string::npos) << piped.err;
+  EXPECT_EQ(CountLines(piped.err), 3) << piped.err;
+  EXPECT_NE(piped.err.find("ag-run: [3/3] "), std::string::npos) << piped.err;
+}
+
+TEST_F(AgRunTest, HelpDescribesMapKinds) {
+  const CommandResult run = RunTool("ag-run", {"--help"});
+  EXPECT_EQ(run.exit_code, 0);
+  EXPECT_NE(run.out.find("manifest"), std::string::npos);
+  EXPECT_NE(run.out.find("--shard"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace areagraph::testing

@@ -1,0 +1,160 @@
+// Maps and options the area stages must refuse with one clear error.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stages/cut/cut_graph_builder.h"
+#include "stages/merge/area_graph_builder.h"
+#include "stages/prune/topology_graph_builder.h"
+#include "store/error.h"
+#include "tests/support/area_test_support.h"
+#include "tests/support/test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::DrawRoom;
+using floorplan::FloorPlan;
+
+proto::CleanedMap OneRoomMap() {
+  FloorPlan plan(6, 5);
+  DrawRoom(plan, {0.5, 0.5, 5, 4});
+  return CleanedMapFromImage(plan.image());
+}
+
+// The prune stage alone, on an empty or hand-made diagram.
+std::string PruneError(const proto::VoronoiDiagram& diagram, const proto::CleanedMap& map,
+                       const proto::PruneOptions& options = {}) {
+  return ErrorOf<InputError>([&] { BuildTopologyGraph(diagram, map, options, "bad"); });
+}
+
+TEST(AreaStagesBadInputTest, MapWithoutObstacleSitesHasNoTopologyGraph) {
+  const std::string error = PruneError(proto::VoronoiDiagram(), OneRoomMap());
+  EXPECT_NE(error.find("map 'bad': no Topology Graph: the map has 0 obstacle cells"),
+            std::string::npos)
+      << error;
+}
+
+TEST(AreaStagesBadInputTest, FreeSpaceThatNoObstacleEnclosesHasNoTopologyGraph) {
+  // Free everywhere but one straight wall: nothing is closed off. (Even an
+  // L-shaped wall would enclose its corner up to the 3 m alpha radius.)
+  cv::Mat image(300, 300, CV_8U, cv::Scalar(254));
+  image(cv::Rect(20, 150, 250, 3)).setTo(0);
+  const std::string error =
+      ErrorOf<InputError>([&] { RunAreaStages(CleanedMapFromImage(image), {}, "open"); });
+  EXPECT_NE(error.find("map 'open': no Topology Graph"), std::string::npos) << error;
+}
+
+TEST(AreaStagesBadInputTest, SingleFreeCellHasNoTopologyGraph) {
+  cv::Mat image(20, 20, CV_8U, cv::Scalar(0));
+  image.at<uint8_t>(10, 10) = 254;
+  const std::string error =
+      ErrorOf<InputError>([&] { RunAreaStages(CleanedMapFromImage(image), {}, "cell"); });
+  EXPECT_NE(error.find("map 'cell': no Topology Graph: no Voronoi edge"), std::string::npos)
+      << error;
+}
+
+TEST(AreaStagesBadInputTest, AllUnknownOrAllWallMapsAreRefused) {
+  for (const int grey : {205, 0}) {
+    const cv::Mat image(30, 30, CV_8U, cv::Scalar(grey));
+    const std::string error =
+        ErrorOf<InputError>([&] { RunAreaStages(CleanedMapFromImage(image), {}, "void"); });
+    EXPECT_NE(error.find("map 'void'"), std::string::npos) << error;
+  }
+}
+
+TEST(AreaStagesBadInputTest, CorruptArtifactsAreInputErrors) {
+  const proto::CleanedMap map = OneRoomMap();
+  proto::CleanedMap short_map = map;
+  short_map.mutable_cells()->resize(10);
+  EXPECT_NE(PruneError(proto::VoronoiDiagram(), short_map).find("map 'bad'"), std::string::npos);
+
+  const AreaStages stages = RunAreaStages(map);
+  proto::VoronoiDiagram diagram = stages.diagram;
+  diagram.mutable_edges(0)->set_source(diagram.vertices_size() + 5);
+  EXPECT_NE(PruneError(diagram, map).find("corrupt"), std::string::npos);
+
+  proto::TopologyGraph topology = stages.topology;
+  topology.mutable_edges(0)->mutable_left_sites()->RemoveLast();
+  EXPECT_NE(ErrorOf<InputError>([&] { BuildCutGraph(topology, map, {}, "bad"); }).find("corrupt"),
+            std::string::npos);
+
+  proto::CutGraph cut = stages.cut;
+  cut.clear_edges();
+  EXPECT_NE(ErrorOf<InputError>([&] {
+              BuildAreaGraph(cut, map, {}, "bad");
+            }).find("map 'bad': no Area Graph"),
+            std::string::npos);
+}
+
+TEST(AreaStagesBadInputTest, AbsurdPruneOptionsAreOptionsErrors) {
+  const proto::CleanedMap map = OneRoomMap();
+  const proto::VoronoiDiagram diagram = RunAreaStages(map).diagram;
+  auto error = [&](auto set) {
+    proto::PruneOptions options;
+    set(&options);
+    return ErrorOf<OptionsError>([&] { BuildTopologyGraph(diagram, map, options, "m"); });
+  };
+  EXPECT_NE(error([](auto* o) { o->set_min_clearance_m(-1); }).find("prune.min_clearance_m"),
+            std::string::npos);
+  EXPECT_NE(error([](auto* o) { o->set_min_clearance_m(1e9); }).find("larger than the whole map"),
+            std::string::npos);
+  EXPECT_NE(error([](auto* o) {
+              o->set_boundary_alpha_radius_m(0);
+            }).find("prune.boundary_alpha_radius_m"),
+            std::string::npos);
+  EXPECT_NE(error([](auto* o) {
+              o->set_boundary_alpha_radius_m(NAN);
+            }).find("prune.boundary_alpha_radius_m"),
+            std::string::npos);
+  EXPECT_NE(error([](auto* o) { o->set_dead_end_passes(-2); }).find("prune.dead_end_passes"),
+            std::string::npos);
+}
+
+TEST(AreaStagesBadInputTest, AbsurdCutAndMergeOptionsAreOptionsErrors) {
+  const proto::CleanedMap map = OneRoomMap();
+  const AreaStages stages = RunAreaStages(map);
+  auto cut_error = [&](auto set) {
+    proto::CutOptions options;
+    set(&options);
+    return ErrorOf<OptionsError>([&] { BuildCutGraph(stages.topology, map, options, "m"); });
+  };
+  EXPECT_NE(cut_error([](auto* o) { o->set_room_width_m(0); }).find("cut.room_width_m"),
+            std::string::npos);
+  EXPECT_NE(cut_error([](auto* o) { o->set_room_width_m(NAN); }).find("cut.room_width_m"),
+            std::string::npos);
+  EXPECT_NE(cut_error([](auto* o) { o->set_room_width_m(1e6); }).find("wider than the map"),
+            std::string::npos);
+  EXPECT_NE(cut_error([](auto* o) { o->set_door_width_m(0.9); }).find("set both or neither"),
+            std::string::npos);
+  EXPECT_NE(cut_error([](auto* o) {
+              o->set_door_width_m(0.9);
+              o->set_corridor_width_m(-1);
+            }).find("cut.corridor_width_m"),
+            std::string::npos);
+  EXPECT_NE(cut_error([](auto* o) {
+              o->set_door_width_m(3);
+              o->set_corridor_width_m(0.05);
+            }).find("gives no room width"),
+            std::string::npos);
+
+  proto::MergeOptions merge;
+  merge.set_min_area_m2(-1);
+  EXPECT_NE(ErrorOf<OptionsError>([&] {
+              BuildAreaGraph(stages.cut, map, merge, "m");
+            }).find("merge.min_area_m2"),
+            std::string::npos);
+}
+
+TEST(AreaStagesBadInputTest, ZeroWidthsFromStoredCanonicalOptionsMeanUnset) {
+  // Canonical option text fills door_width_m and corridor_width_m with 0.
+  const proto::CleanedMap map = OneRoomMap();
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_door_width_m(0);
+  options.mutable_cut()->set_corridor_width_m(0);
+  EXPECT_EQ(RunAreaStages(map, options).areas.areas_size(), 1);
+}
+
+}  // namespace
+}  // namespace areagraph::testing

@@ -1,0 +1,67 @@
+#include "stages/voronoi/voronoi_stage.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "stages/geometry/obstacle_sites.h"
+#include "store/error.h"
+#include "tests/support/test_grids.h"
+
+namespace areagraph {
+namespace {
+
+using testing::TestGrid;
+
+TEST(VoronoiStage, DiagramOfARoomUsesTheObstacleSites) {
+  TestGrid grid(60, 40, proto::CELL_UNKNOWN);
+  grid.Fill(5, 5, 54, 34, proto::CELL_FREE).Walls(5, 5, 54, 34, 2);
+  const proto::CleanedMap map = grid.ToCleanedMap(0.1);
+  const proto::VoronoiDiagram d = ComputeVoronoiStage(map, proto::VoronoiOptions(), "room");
+  EXPECT_EQ(d.format_version(), 1u);
+  EXPECT_EQ(d.frame().SerializeAsString(), map.frame().SerializeAsString());
+  const std::vector<Eigen::Vector2d> sites = ObstacleSites(grid.cells(), 60, 40);
+  ASSERT_EQ(d.sites_size(), int(sites.size()));
+  for (int i = 0; i < d.sites_size(); ++i) {
+    EXPECT_EQ(d.sites(i).x(), sites[i].x());
+    EXPECT_EQ(d.sites(i).y(), sites[i].y());
+  }
+  // The room's medial axis runs along y = 20, midway between the inner wall
+  // rows (site centres y = 6.5 and 33.5), with vertices between site columns.
+  double deepest = 0;
+  double deepest_y = 0;
+  for (const proto::VoronoiVertex& v : d.vertices()) {
+    const double x = v.position().x(), y = v.position().y();
+    if (x < 7 || x > 53 || y < 7 || y > 33) continue;  // inside the room only
+    if (v.clearance_px() > deepest) {
+      deepest = v.clearance_px();
+      deepest_y = y;
+    }
+  }
+  EXPECT_NEAR(deepest, std::hypot(0.5, 13.5), 1e-9);
+  EXPECT_NEAR(deepest_y, 20, 1e-9);
+}
+
+TEST(VoronoiStage, RejectsMapsWithoutFreeSpaceOrSites) {
+  EXPECT_THROW(ComputeVoronoiStage(TestGrid(10, 10, proto::CELL_OCCUPIED).ToCleanedMap(),
+                                   proto::VoronoiOptions(), "x"),
+               InputError);
+  try {
+    ComputeVoronoiStage(TestGrid(10, 10).ToCleanedMap(), proto::VoronoiOptions(), "x");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "map 'x' has no obstacle cells next to free space");
+  }
+  TestGrid line(10, 10);
+  line.Fill(2, 5, 8, 5, proto::CELL_OCCUPIED);  // sites all on one line
+  EXPECT_THROW(ComputeVoronoiStage(line.ToCleanedMap(), proto::VoronoiOptions(), "x"), InputError);
+  line.Fill(2, 6, 8, 6, proto::CELL_OCCUPIED);  // two rows: a proper diagram
+  EXPECT_GT(ComputeVoronoiStage(line.ToCleanedMap(), proto::VoronoiOptions(), "x").vertices_size(),
+            0);
+  TestGrid dot(10, 10);
+  dot.Fill(4, 4, 4, 4, proto::CELL_OCCUPIED);
+  EXPECT_THROW(ComputeVoronoiStage(dot.ToCleanedMap(), proto::VoronoiOptions(), "x"), InputError);
+}
+
+}  // namespace
+}  // namespace areagraph

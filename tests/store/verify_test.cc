@@ -1,0 +1,114 @@
+// ArtifactStore::Verify: digests, encodings, heads and input keys.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+
+#include "store/artifact_store.h"
+#include "tests/store/maintenance_helpers.h"
+#include "tests/support/raw_sqlite.h"
+#include "tests/support/test_support.h"
+
+namespace areagraph {
+namespace {
+
+using testing::Artifact;
+
+// A map through three stages; import's input is a file digest.
+void WriteChain(ArtifactStore& store, const std::string& map_name, const std::string& prefix) {
+  store.WriteArtifact(Artifact(map_name, "import", prefix + "-i", {"file-digest"}));
+  store.WriteArtifact(Artifact(map_name, "clean", prefix + "-c", {prefix + "-i"}));
+  store.WriteArtifact(Artifact(map_name, "voronoi", prefix + "-v", {prefix + "-c"}));
+}
+
+std::vector<VerifyProblem> VerifyFile(const std::string& path) {
+  return OpenArtifactStore(path, StoreMode::kReadOnly)->Verify();
+}
+
+TEST(VerifyTest, CleanStoreHasNoProblemsAndReportsProgress) {
+  std::unique_ptr<ArtifactStore> store = OpenArtifactStore(":memory:");
+  WriteChain(*store, "a", "a");
+  WriteChain(*store, "b", "b");
+  std::vector<std::pair<int64_t, int64_t>> calls;
+  EXPECT_TRUE(
+      store->Verify([&](int64_t done, int64_t total) { calls.emplace_back(done, total); }).empty());
+  ASSERT_EQ(calls.size(), 6u);
+  for (size_t i = 0; i < calls.size(); ++i) {
+    EXPECT_EQ(calls[i], std::make_pair(static_cast<int64_t>(i + 1), int64_t{6}));
+  }
+  EXPECT_TRUE(OpenArtifactStore(":memory:")->Verify().empty());  // empty store
+}
+
+TEST(VerifyTest, CorruptedPayloadIsReported) {
+  testing::TempDir dir;
+  const std::string path = dir.File("store.db");
+  WriteChain(*OpenArtifactStore(path), "lab", "k");
+  testing::FlipPayloadByte(path, "k-c", 2);
+  const std::vector<VerifyProblem> problems = VerifyFile(path);
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].map_name, "lab");
+  EXPECT_EQ(problems[0].stage, "clean");
+  EXPECT_EQ(problems[0].cache_key, "k-c");
+  EXPECT_NE(problems[0].problem.find("digest mismatch"), std::string::npos) << problems[0].problem;
+}
+
+TEST(VerifyTest, PayloadThatIsNotProtobufIsReported) {
+  std::unique_ptr<ArtifactStore> store = OpenArtifactStore(":memory:");
+  NewArtifact artifact = Artifact("m", "import", "k", {"file"});
+  artifact.payload = "\x0a\x7f short";  // a length beyond the end
+  store->WriteArtifact(artifact);
+  const std::vector<VerifyProblem> problems = store->Verify();
+  ASSERT_EQ(problems.size(), 1u);
+  EXPECT_EQ(problems[0].cache_key, "k");
+  EXPECT_EQ(problems[0].problem, "payload is not protobuf wire format");
+}
+
+TEST(VerifyTest, MissingInputIsReportedExceptForImport) {
+  std::unique_ptr<ArtifactStore> store = OpenArtifactStore(":memory:");
+  store->WriteArtifact(Artifact("m", "import", "k-i", {"digest-of-a-file"}));
+  store->WriteArtifact(Artifact("m", "clean", "k-c", {"k-i"}));
+  store->WriteArtifact(Artifact("m", "prune", "k-p", {"k-c", "gone-key-12345"}));
+  // An artifact of another map does not count as this map's input.
+  store->WriteArtifact(Artifact("other", "clean", "k-o", {"k-i"}));
+  const std::vector<VerifyProblem> problems = store->Verify();
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[0].cache_key, "k-p");
+  EXPECT_EQ(problems[0].problem, "input gone-key-123 is not an artifact of the map");
+  EXPECT_EQ(problems[1].map_name, "other");
+  EXPECT_EQ(problems[1].problem, "input k-i is not an artifact of the map");
+}
+
+TEST(VerifyTest, BrokenHeadsAreReported) {
+  testing::TempDir dir;
+  const std::string path = dir.File("store.db");
+  WriteChain(*OpenArtifactStore(path), "lab", "k");
+  // By hand, with foreign keys off (the raw connection's default).
+  testing::ExecSql(path,
+                   "UPDATE heads SET artifact_id = 999 WHERE stage = 'voronoi';"
+                   "UPDATE heads SET artifact_id = (SELECT id FROM artifacts WHERE cache_key = "
+                   "'k-i') WHERE stage = 'clean';");
+  const std::vector<VerifyProblem> problems = VerifyFile(path);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[0].stage, "clean");
+  EXPECT_EQ(problems[0].cache_key, "k-i");
+  EXPECT_EQ(problems[0].problem, "head points at an artifact of stage import");
+  EXPECT_EQ(problems[1].stage, "voronoi");
+  EXPECT_EQ(problems[1].problem, "head points at no artifact");
+}
+
+TEST(VerifyTest, HandEditedRowIsReportedAndTheCheckGoesOn) {
+  testing::TempDir dir;
+  const std::string path = dir.File("store.db");
+  WriteChain(*OpenArtifactStore(path), "lab", "k");
+  testing::ExecSql(path, "UPDATE artifacts SET payload = 'text' WHERE cache_key = 'k-i'");
+  testing::FlipPayloadByte(path, "k-v", 0);
+  const std::vector<VerifyProblem> problems = VerifyFile(path);
+  ASSERT_EQ(problems.size(), 2u);
+  EXPECT_EQ(problems[0].cache_key, "k-i");
+  EXPECT_NE(problems[0].problem.find("payload holds TEXT where BLOB belongs"), std::string::npos)
+      << problems[0].problem;
+  EXPECT_EQ(problems[1].cache_key, "k-v");
+}
+
+}  // namespace
+}  // namespace areagraph

@@ -1,0 +1,229 @@
+// ag-export end to end: an Area Graph written to a store as the merge stage's
+// head artifact, exported in every format and read back.
+#include <google/protobuf/struct.pb.h>
+#include <google/protobuf/util/json_util.h>
+#include <google/protobuf/util/message_differencer.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "proto/pipeline_options.pb.h"
+#include "stages/common/stage.h"
+#include "store/artifact_store.h"
+#include "tests/support/test_support.h"
+#include "tests/tools/export/test_area_graph.h"
+
+namespace areagraph {
+namespace {
+
+using google::protobuf::Struct;
+using google::protobuf::Value;
+using testing::CountLines;
+using testing::ReadFile;
+using testing::RunTool;
+using testing::TempDir;
+
+class AgExportCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
+    StageInputs inputs;
+    inputs.digests = {"cut-artifact-digest"};
+    RunCachedStage(*store, "house", kMergeStage, proto::MergeOptions(), inputs,
+                   [] { return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph()); });
+  }
+
+  testing::CommandResult Export(const std::string& format, const std::string& out) {
+    return RunTool("ag-export",
+                   {"--store", store_path_, "--map", "house", "--format", format, "--out", out});
+  }
+
+  TempDir dir_;
+  const std::string store_path_ = dir_.File("areagraph.db");
+};
+
+TEST_F(AgExportCli, LabelImageHasTheMapSizeAndOneLabelPerArea) {
+  const auto run = Export("labels", dir_.File("labels.png"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const cv::Mat labels = cv::imread(dir_.File("labels.png"), cv::IMREAD_UNCHANGED);
+  ASSERT_EQ(labels.type(), CV_16U);
+  EXPECT_EQ(labels.size(), cv::Size(40, 20));
+  EXPECT_EQ(cv::countNonZero(labels == 1), 100);
+  EXPECT_EQ(cv::countNonZero(labels == 2), 96);
+  EXPECT_EQ(cv::countNonZero(labels == 0), 800 - 196);
+}
+
+double Number(const Value& value) { return value.number_value(); }
+
+// Twice the signed area of a closed GeoJSON ring.
+double TwiceSignedArea(const google::protobuf::ListValue& ring) {
+  double sum = 0;
+  for (int i = 0; i + 1 < ring.values_size(); ++i) {
+    const auto& a = ring.values(i).list_value();
+    const auto& b = ring.values(i + 1).list_value();
+    sum += Number(a.values(0)) * Number(b.values(1)) - Number(b.values(0)) * Number(a.values(1));
+  }
+  return sum;
+}
+
+TEST_F(AgExportCli, GeoJsonParsesWithClosedOrientedRings) {
+  const auto run = Export("geojson", dir_.File("map.geojson"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  Struct collection;
+  ASSERT_TRUE(
+      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.geojson")), &collection)
+          .ok());
+  EXPECT_EQ(collection.fields().at("type").string_value(), "FeatureCollection");
+  const auto& features = collection.fields().at("features").list_value();
+  ASSERT_EQ(features.values_size(), 3);
+
+  const Struct& corridor = features.values(1).struct_value();
+  const Struct& geometry = corridor.fields().at("geometry").struct_value();
+  EXPECT_EQ(geometry.fields().at("type").string_value(), "Polygon");
+  const auto& rings = geometry.fields().at("coordinates").list_value();
+  ASSERT_EQ(rings.values_size(), 2);  // outer ring and the hole
+  const auto& outer = rings.values(0).list_value();
+  ASSERT_EQ(outer.values_size(), 5);
+  EXPECT_EQ(outer.values(0).DebugString(), outer.values(4).DebugString());
+  // 10x10 px at 0.05 m = 0.25 m2, counter-clockwise; the 2x2 px hole clockwise.
+  EXPECT_NEAR(TwiceSignedArea(outer) / 2, 0.25, 1e-12);
+  EXPECT_NEAR(TwiceSignedArea(rings.values(1).list_value()) / 2, -0.01, 1e-12);
+  // Pixel (12, 2) is world (1 + 12 * 0.05, 2 + (20 - 2) * 0.05) = (1.6, 2.9).
+  bool found_corner = false;
+  for (const Value& position : outer.values()) {
+    const auto& xy = position.list_value();
+    found_corner |=
+        std::abs(Number(xy.values(0)) - 1.6) < 1e-9 && std::abs(Number(xy.values(1)) - 2.9) < 1e-9;
+  }
+  EXPECT_TRUE(found_corner);
+  const auto& area_properties = corridor.fields().at("properties").struct_value().fields();
+  EXPECT_EQ(Number(area_properties.at("id")), 1);
+  EXPECT_EQ(area_properties.at("kind").string_value(), "corridor");
+  EXPECT_DOUBLE_EQ(Number(area_properties.at("area_m2")), 0.24);
+
+  const Struct& passage = features.values(2).struct_value();
+  const Struct& line = passage.fields().at("geometry").struct_value();
+  EXPECT_EQ(line.fields().at("type").string_value(), "LineString");
+  EXPECT_EQ(line.fields().at("coordinates").list_value().values_size(), 2);
+  const auto& passage_properties = passage.fields().at("properties").struct_value().fields();
+  EXPECT_EQ(passage_properties.at("kind").string_value(), "passage");
+  EXPECT_DOUBLE_EQ(Number(passage_properties.at("width_m")), 0.3);
+  EXPECT_EQ(Number(passage_properties.at("from")), 0);
+  EXPECT_EQ(Number(passage_properties.at("to")), 1);
+}
+
+// The <way> blocks of an OSM file, in order.
+std::vector<std::string> WayBlocks(const std::string& xml) {
+  std::vector<std::string> ways;
+  const std::regex way("<way [^>]*>[\\s\\S]*?</way>");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), way); it != std::sregex_iterator();
+       ++it) {
+    ways.push_back(it->str());
+  }
+  return ways;
+}
+
+std::vector<std::string> NodeRefs(const std::string& way) {
+  std::vector<std::string> refs;
+  const std::regex nd("<nd ref=\"(-\\d+)\"/>");
+  for (auto it = std::sregex_iterator(way.begin(), way.end(), nd); it != std::sregex_iterator();
+       ++it) {
+    refs.push_back((*it)[1]);
+  }
+  return refs;
+}
+
+bool HasTag(const std::string& block, const std::string& key, const std::string& value) {
+  return block.find("<tag k=\"" + key + "\" v=\"" + value + "\"/>") != std::string::npos;
+}
+
+TEST_F(AgExportCli, OsmAgHasAreasThenPassagesWithTheirTags) {
+  const auto run =
+      RunTool("ag-export", {"--store", store_path_, "--map", "house", "--format", "osmag", "--out",
+                            dir_.File("map.osm"), "--anchor-lat", "48.1", "--anchor-lon", "11.5"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string xml = ReadFile(dir_.File("map.osm"));
+  EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\">"), std::string::npos);
+  EXPECT_NE(xml.find("lat=\"48.1000000000\" lon=\"11.5000000000\">"), std::string::npos);
+  EXPECT_NE(xml.find("<tag k=\"osmAG:map\" v=\"house\"/>"), std::string::npos);
+  EXPECT_LT(xml.rfind("<node "), xml.find("<way "));
+
+  const std::vector<std::string> ways = WayBlocks(xml);
+  ASSERT_EQ(ways.size(), 3u);
+  for (int i = 0; i < 2; ++i) {
+    const std::vector<std::string> refs = NodeRefs(ways[i]);
+    ASSERT_EQ(refs.size(), 5u);
+    EXPECT_EQ(refs.front(), refs.back());  // closed
+    EXPECT_TRUE(HasTag(ways[i], "osmAG:type", "area"));
+    EXPECT_TRUE(HasTag(ways[i], "name", "area_" + std::to_string(i)));
+  }
+  EXPECT_TRUE(HasTag(ways[0], "osmAG:areaType", "room"));
+  EXPECT_TRUE(HasTag(ways[1], "osmAG:areaType", "corridor"));
+  EXPECT_EQ(NodeRefs(ways[2]).size(), 2u);
+  EXPECT_TRUE(HasTag(ways[2], "osmAG:type", "passage"));
+  EXPECT_TRUE(HasTag(ways[2], "osmAG:from", "area_0"));
+  EXPECT_TRUE(HasTag(ways[2], "osmAG:to", "area_1"));
+  // The two squares share their common edge's two nodes.
+  std::vector<std::string> room = NodeRefs(ways[0]), corridor = NodeRefs(ways[1]);
+  room.pop_back();  // the closing repeat
+  corridor.pop_back();
+  int shared = 0;
+  for (const std::string& ref : room) {
+    shared += static_cast<int>(std::count(corridor.begin(), corridor.end(), ref));
+  }
+  EXPECT_EQ(shared, 2);
+}
+
+TEST_F(AgExportCli, JsonReadsBackAsTheSameAreaGraph) {
+  const auto run = Export("json", dir_.File("map.json"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  proto::AreaGraph parsed;
+  ASSERT_TRUE(
+      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.json")), &parsed).ok());
+  EXPECT_TRUE(
+      google::protobuf::util::MessageDifferencer::Equals(parsed, testing::TwoRoomAreaGraph()));
+}
+
+TEST_F(AgExportCli, UnknownFormatIsOneLineAndNonZero) {
+  const auto run = Export("pdf", dir_.File("map.pdf"));
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("pdf"), std::string::npos) << run.err;
+}
+
+TEST_F(AgExportCli, UnwritableOutputIsOneLineAndNonZero) {
+  const auto run = Export("geojson", dir_.File("no/such/folder/map.geojson"));
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(run.signal, 0);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("map.geojson"), std::string::npos) << run.err;
+}
+
+TEST_F(AgExportCli, MissingMergeArtifactNamesTheStageToRun) {
+  {
+    std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
+    StageInputs inputs;
+    inputs.digests = {"source"};
+    RunCachedStage(*store, "other", kImportStage, proto::ImportOptions(), inputs,
+                   [] { return std::make_unique<proto::GridMap>(); });
+  }
+  auto run = RunTool("ag-export", {"--store", store_path_, "--map", "other", "--format", "json",
+                                   "--out", dir_.File("other.json")});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("ag-merge"), std::string::npos) << run.err;
+  run = RunTool("ag-export", {"--store", store_path_, "--map", "nowhere", "--format", "json",
+                              "--out", dir_.File("nowhere.json")});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("nowhere"), std::string::npos) << run.err;
+}
+
+}  // namespace
+}  // namespace areagraph
