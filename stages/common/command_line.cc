@@ -3,6 +3,7 @@
 #include <iostream>
 #include <new>
 
+#include "stages/common/output_file.h"
 #include "stages/common/pipeline_options.h"
 #include "store/error.h"
 
@@ -34,13 +35,21 @@ int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
+    try {
+      FlushStandardOutput();
+    } catch (const std::exception& e) {
+      std::cerr << tool << ": " << e.what() << "\n";
+      return 1;
+    }
     return 0;
   } catch (const CLI::ParseError& e) {
     std::cerr << tool << ": " << e.what() << " (see --help)\n";
     return 2;
   }
   try {
-    return body();
+    const int exit_code = body();
+    FlushStandardOutput();  // a report lost on a full disk is a failure
+    return exit_code;
   } catch (const std::bad_alloc&) {
     std::cerr << tool << ": out of memory\n";
   } catch (const std::exception& e) {

@@ -46,8 +46,14 @@ void WriteFile(const std::string& path, const std::string& bytes) {
 }
 
 CommandResult RunProgram(const std::vector<std::string>& argv) {
+  return RunProgramWithStdout(argv, "");
+}
+
+CommandResult RunProgramWithStdout(const std::vector<std::string>& argv,
+                                   const std::string& stdout_path) {
   TempDir capture;
-  const std::string out_path = capture.File("out"), err_path = capture.File("err");
+  const std::string out_path = stdout_path.empty() ? capture.File("out") : stdout_path;
+  const std::string err_path = capture.File("err");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
@@ -70,13 +76,18 @@ CommandResult RunProgram(const std::vector<std::string>& argv) {
   waitpid(pid, &status, 0);
   if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
   if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
-  result.out = ReadFile(out_path);
+  if (stdout_path.empty()) result.out = ReadFile(out_path);
   result.err = ReadFile(err_path);
   return result;
 }
 
+std::string BinDir() {
+  const char* other = std::getenv("AG_TEST_BIN_DIR");
+  return other != nullptr && *other != '\0' ? other : AG_BIN_DIR;
+}
+
 CommandResult RunTool(const std::string& tool, const std::vector<std::string>& args) {
-  std::vector<std::string> argv = {std::string(AG_BIN_DIR) + "/" + tool};
+  std::vector<std::string> argv = {BinDir() + "/" + tool};
   argv.insert(argv.end(), args.begin(), args.end());
   return RunProgram(argv);
 }

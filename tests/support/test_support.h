@@ -29,11 +29,20 @@ struct CommandResult {
   std::string err;
 };
 
-// Runs build/bin/<tool> with `args` (no shell), capturing stdout and stderr.
+// The folder of the executables under test: build/bin, or $AG_TEST_BIN_DIR
+// (to run a test against another build, e.g. the code before a fix).
+std::string BinDir();
+
+// Runs <BinDir()>/<tool> with `args` (no shell), capturing stdout and stderr.
 CommandResult RunTool(const std::string& tool, const std::vector<std::string>& args);
 
 // Runs any program with `args` (argv[0] included), capturing output.
 CommandResult RunProgram(const std::vector<std::string>& argv);
+
+// The same with standard output sent to `stdout_path` (e.g. /dev/full, a
+// file the test reads itself); `out` stays empty.
+CommandResult RunProgramWithStdout(const std::vector<std::string>& argv,
+                                   const std::string& stdout_path);
 
 std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& bytes);

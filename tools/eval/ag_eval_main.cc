@@ -6,6 +6,7 @@
 #include <string>
 
 #include "stages/common/command_line.h"
+#include "stages/common/output_file.h"
 #include "store/error.h"
 #include "tools/eval/dataset_evaluation.h"
 #include "tools/eval/evaluation_report.h"
@@ -70,7 +71,7 @@ int main(int argc, char** argv) {
   app.add_flag("--json", json, "print JSON instead of text or Markdown");
   app.add_option("--gt-picture", gt_picture,
                  "instead of scoring: draw the --gt file's segments as ag-eval reads them into "
-                 "this PNG");
+                 "this PNG (- for standard output)");
   app.add_option("--picture-width", picture_width,
                  "with --gt-picture: at most this many pixels wide");
 
@@ -86,7 +87,7 @@ int main(int argc, char** argv) {
     if (!gt_picture.empty()) {
       if (picture_width < 0) throw areagraph::OptionsError("--picture-width must be positive");
       areagraph::WriteGroundTruthPicture(gt_path, options.gt_style, gt_picture, picture_width);
-      std::cout << "wrote " << gt_picture << "\n";
+      if (!areagraph::IsStandardOutput(gt_picture)) std::cout << "wrote " << gt_picture << "\n";
       return 0;
     }
     if (!dataset) {

@@ -4,6 +4,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/common/png_file.h"
 #include "store/error.h"
 #include "tools/eval/map_evaluation.h"
 
@@ -40,12 +41,7 @@ void WriteGroundTruthPicture(const std::string& gt_path, GroundTruthStyle style,
     const double factor = static_cast<double>(max_width) / picture.cols;
     cv::resize(picture, picture, cv::Size(), factor, factor, cv::INTER_AREA);
   }
-  bool written = false;
-  try {
-    written = cv::imwrite(out_path, picture, {cv::IMWRITE_PNG_COMPRESSION, 9});
-  } catch (const cv::Exception&) {
-  }
-  if (!written) throw InputError("cannot write PNG '" + out_path + "'");
+  WritePngFile(out_path, picture);
 }
 
 }  // namespace areagraph

@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <opencv2/imgcodecs.hpp>
 #include <random>
 #include <sstream>
 #include <stdexcept>
+
+#include "stages/common/png_file.h"
 
 namespace areagraph::floorplan {
 namespace {
@@ -139,9 +140,7 @@ void DrawMaze(FloorPlan& plan, const RectM& area, int cols, int rows, uint32_t s
 }
 
 void WritePlanPng(const FloorPlan& plan, const std::string& path) {
-  if (!cv::imwrite(path, plan.image(), {cv::IMWRITE_PNG_COMPRESSION, 9})) {
-    throw std::runtime_error("cannot write '" + path + "'");
-  }
+  WritePngFile(path, plan.image());
 }
 
 std::string MapServerYaml(const FloorPlan& plan, const std::string& image_file, double origin_x_m,

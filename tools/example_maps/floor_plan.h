@@ -75,7 +75,8 @@ void DrawNoiseDots(FloorPlan& plan, int count, uint32_t seed);
 // joined along their whole side, leaving short wall posts at the corners.
 void DrawMaze(FloorPlan& plan, const RectM& area, int cols, int rows, uint32_t seed);
 
-// Writes the plan as an 8-bit grey PNG. Throws std::runtime_error on failure.
+// Writes the plan as an 8-bit grey PNG through WritePngFile (so "-" is
+// standard output). Throws InputError on failure.
 void WritePlanPng(const FloorPlan& plan, const std::string& path);
 
 // ROS map_server YAML text for the image file `image_file` (relative to the

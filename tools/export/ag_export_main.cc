@@ -6,6 +6,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/common/command_line.h"
+#include "stages/common/output_file.h"
 #include "stages/common/stage.h"
 #include "store/artifact_store.h"
 #include "store/error.h"
@@ -23,7 +24,7 @@ int main(int argc, char** argv) {
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map_name, "name of the map in the store")->required();
   app.add_option("--format", format_name, "labels, geojson, osmag or json")->required();
-  app.add_option("--out", out_path, "file to write")->required();
+  app.add_option("--out", out_path, "file to write, or - for standard output")->required();
   app.add_option("--anchor-lat", anchor.lat_deg,
                  "osmag: latitude of the map's world origin in degrees (default 31.17947)");
   app.add_option("--anchor-lon", anchor.lon_deg,
@@ -42,7 +43,7 @@ int main(int argc, char** argv) {
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     const auto graph = areagraph::ReadHeadArtifact<areagraph::proto::AreaGraph>(
         *store, map_name, areagraph::kMergeStage);
-    areagraph::WriteExportFile(out_path, areagraph::ExportAreaGraph(graph, settings));
+    areagraph::WriteOutputFile(out_path, areagraph::ExportAreaGraph(graph, settings));
     return 0;
   });
 }

@@ -2,12 +2,10 @@
 
 #include <google/protobuf/util/json_util.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "stages/common/png_file.h"
 #include "store/error.h"
 #include "tools/export/area_label_image.h"
 #include "tools/export/geojson_export.h"
@@ -33,20 +31,10 @@ std::string AreaGraphToJson(const proto::AreaGraph& graph) {
   return json;
 }
 
-namespace {
-
-std::string EncodePng(const cv::Mat& image) {
-  std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode the label image as PNG");
-  return std::string(bytes.begin(), bytes.end());
-}
-
-}  // namespace
-
 std::string ExportAreaGraph(const proto::AreaGraph& graph, const ExportSettings& settings) {
   switch (settings.format) {
     case ExportFormat::kLabels:
-      return EncodePng(AreaLabelImage(graph));
+      return EncodePng(AreaLabelImage(graph), /*compression=*/1);
     case ExportFormat::kGeoJson:
       return AreaGraphToGeoJson(graph);
     case ExportFormat::kOsmAg:
@@ -55,28 +43,6 @@ std::string ExportAreaGraph(const proto::AreaGraph& graph, const ExportSettings&
       return AreaGraphToJson(graph);
   }
   throw OptionsError("unknown export format");
-}
-
-void WriteExportFile(const std::string& path, const std::string& bytes) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  if (fs::is_directory(path, error))
-    throw InputError("cannot write '" + path + "': it is a folder");
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      fs::remove(temporary, error);
-      throw InputError("cannot write '" + path + "' (missing folder or no permission?)");
-    }
-  }
-  fs::rename(temporary, path, error);
-  if (error) {
-    fs::remove(temporary, error);
-    throw InputError("cannot write '" + path + "': " + error.message());
-  }
 }
 
 }  // namespace areagraph

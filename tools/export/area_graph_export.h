@@ -34,9 +34,4 @@ std::string ExportAreaGraph(const proto::AreaGraph& graph, const ExportSettings&
 // protobuf's JSON printer (field names as in the .proto, indented).
 std::string AreaGraphToJson(const proto::AreaGraph& graph);
 
-// Writes `bytes` to `path` through a temporary file in the same folder that is
-// renamed into place, so a failed write leaves no half file. Throws
-// InputError naming the path when it cannot be written.
-void WriteExportFile(const std::string& path, const std::string& bytes);
-
 }  // namespace areagraph

@@ -1,8 +1,10 @@
 // ag-inspect: lists the maps and artifacts of a store and dumps artifacts.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <sstream>
 
 #include "stages/common/command_line.h"
+#include "stages/common/output_file.h"
 #include "store/artifact_store.h"
 #include "store/error.h"
 #include "tools/inspect/failure_report.h"
@@ -31,7 +33,9 @@ int main(int argc, char** argv) {
         throw areagraph::InputError("--failures lists every map; drop --map, --stage and --key");
       }
       if (json) {
-        areagraph::PrintFailuresJson(store->ReadFailures(), std::cout);
+        std::ostringstream text;
+        areagraph::PrintFailuresJson(store->ReadFailures(), text);
+        areagraph::WriteOutputFile(areagraph::kStandardOutputName, text.str());
       } else {
         areagraph::PrintFailureList(store->ReadFailures(), std::cout);
       }
@@ -46,8 +50,10 @@ int main(int argc, char** argv) {
     } else {
       const areagraph::ArtifactRecord artifact =
           areagraph::FindArtifact(*store, map_name, stage, key_prefix);
-      if (json) {
-        areagraph::PrintArtifactJson(artifact, std::cout);
+      if (json) {  // through the checked writer: a dump can be many megabytes
+        std::ostringstream text;
+        areagraph::PrintArtifactJson(artifact, text);
+        areagraph::WriteOutputFile(areagraph::kStandardOutputName, text.str());
       } else {
         areagraph::PrintArtifactSummary(artifact, std::cout);
       }

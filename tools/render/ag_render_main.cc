@@ -1,10 +1,11 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
 #include <CLI/CLI.hpp>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "stages/common/command_line.h"
+#include "stages/common/output_file.h"
+#include "stages/common/png_file.h"
 #include "stages/common/stage.h"
 #include "store/error.h"
 #include "tools/render/artifact_drawing.h"
@@ -57,12 +58,7 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     const double factor = static_cast<double>(width) / picture.cols;
     cv::resize(canvas.image(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
   }
-  bool written = false;
-  try {
-    written = cv::imwrite(out, picture, {cv::IMWRITE_PNG_COMPRESSION, 9});
-  } catch (const cv::Exception&) {
-  }
-  if (!written) throw InputError("cannot write PNG '" + out + "'");
+  WritePngFile(out, picture);
 }
 
 }  // namespace
@@ -78,7 +74,7 @@ int main(int argc, char** argv) {
   app.add_option("--map", map, "map name")->required();
   app.add_option("--stage", stage, "import, clean, voronoi, prune, cut or merge")
       ->capture_default_str();
-  app.add_option("--out", out, "PNG file to write")->required();
+  app.add_option("--out", out, "PNG file to write, or - for standard output")->required();
   app.add_flag("--doors", doors,
                "also draw the doors (rings) and corridors (dots) that ag-cut found for "
                "cut.room_width_m=auto");
@@ -89,7 +85,7 @@ int main(int argc, char** argv) {
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     if (width < 0) throw areagraph::InputError("--width must be positive");
     areagraph::Render(*store, map, stage, scale, doors, width, out);
-    std::cout << "wrote " << out << "\n";
+    if (!areagraph::IsStandardOutput(out)) std::cout << "wrote " << out << "\n";
     return 0;
   });
 }

@@ -1,0 +1,27 @@
+#include "stages/common/png_file.h"
+
+#include <opencv2/imgcodecs.hpp>
+#include <vector>
+
+#include "stages/common/output_file.h"
+#include "store/error.h"
+
+namespace areagraph {
+
+std::string EncodePng(const cv::Mat& image, int compression) {
+  std::vector<uchar> bytes;
+  bool encoded = false;
+  try {
+    encoded = cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, compression});
+  } catch (const cv::Exception& error) {
+    throw Error("cannot encode the picture as PNG: " + error.msg);
+  }
+  if (!encoded) throw Error("cannot encode the picture as PNG");
+  return std::string(bytes.begin(), bytes.end());
+}
+
+void WritePngFile(const std::string& target, const cv::Mat& image) {
+  WriteOutputFile(target, EncodePng(image, 9));
+}
+
+}  // namespace areagraph

@@ -1,0 +1,18 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace areagraph {
+
+// `image` (8- or 16-bit, 1, 3 or 4 channels) as PNG bytes; `compression` is
+// zlib's level, 0-9 (OpenCV's default is 1). Throws Error when OpenCV cannot
+// encode it.
+std::string EncodePng(const cv::Mat& image, int compression);
+
+// EncodePng with the strongest compression, written through WriteOutputFile,
+// so "-", links, devices and full disks are handled as for every other
+// output. Throws InputError naming `target` when it cannot be written.
+void WritePngFile(const std::string& target, const cv::Mat& image);
+
+}  // namespace areagraph
