@@ -78,6 +78,16 @@ struct MaintenanceCounts {
   int64_t failures = 0;
 };
 
+// How far Verify checks SQLite's own structures (pages, b-trees, indexes)
+// besides the payloads: damage there makes every tool fail with "database
+// disk image is malformed" while the payloads may still read fine.
+enum class StructureCheck {
+  // PRAGMA integrity_check: also that every index matches its table.
+  kFull,
+  // PRAGMA quick_check: the same without index contents; faster on big stores.
+  kQuick,
+};
+
 // The artifact store. One SQLite file (or ":memory:") holds maps, artifacts
 // and the head of each (map, stage). Every Write*/Update* is one transaction.
 // Errors are thrown as StoreError with a message fit for the user.
@@ -115,14 +125,18 @@ class ArtifactStore {
   virtual void ClearFailure(const std::string& map_name) = 0;
   virtual std::vector<FailureRecord> ReadFailures() = 0;
 
-  // Maintenance (ag-store). Verify reads every payload, one at a time, and
-  // checks its digest and that it is well-formed protobuf wire format (the
-  // store does not know the message types); it also checks that every head
-  // points at an artifact of its own map and stage, and that every input key
-  // of a non-import artifact names an artifact of the same map (an import's
-  // input is a file digest). `progress` hears (done, total) after each artifact.
+  // Maintenance (ag-store). Verify first runs SQLite's own check
+  // (`structure`; each finding is a problem without map or stage), then
+  // reads every payload, one at a time, and checks its digest and that it is
+  // well-formed protobuf wire format (the store does not know the message
+  // types); it also checks that every head points at an artifact of its own
+  // map and stage, and that every input key of a non-import artifact names an
+  // artifact of the same map (an import's input is a file digest). A store
+  // too damaged to be read to the end gives a problem saying so, not an
+  // exception. `progress` hears (done, total) after each artifact.
   virtual std::vector<VerifyProblem> Verify(
-      const std::function<void(int64_t, int64_t)>& progress = nullptr) = 0;
+      const std::function<void(int64_t, int64_t)>& progress = nullptr,
+      StructureCheck structure = StructureCheck::kFull) = 0;
   // Deletes artifacts that no head reaches, directly or through input keys
   // (followed within the map), and then maps left without any artifact, in
   // one transaction. Counts what was deleted; the file shrinks only after
@@ -134,9 +148,24 @@ class ArtifactStore {
   // kept as it is here. A (map, stage) head both hold goes to the artifact
   // created later (a tie keeps this store's), and the map's source follows
   // its import head. A failure goes to the later one, and is dropped when the
-  // merged map has a head created after it. Throws StoreError when `path` is
-  // this store, or not an areagraph store of this build's schema or older.
+  // merged map has a head created after it. The store at `path` must pass
+  // SQLite's quick_check, and every payload copied is checked (digest and
+  // wire format) before the transaction commits. Throws StoreError naming
+  // `path` when it is damaged (and nothing of it is merged), when it is this
+  // store, or when it is not an areagraph store of this build's schema or older.
   virtual MaintenanceCounts MergeFrom(const std::string& path) = 0;
+
+  // Writes everything in the write-ahead log back into the store file and
+  // empties the log (a TRUNCATE checkpoint), so that the file alone holds
+  // every artifact. Does not wait for others: returns false when another
+  // process is reading or writing (its own close folds the log then). Every
+  // read-write store does this when it closes.
+  virtual bool FoldWriteAheadLog() = 0;
+
+  // Copies the whole store, consistent at one moment even while others
+  // write, into a new SQLite file at `path` through SQLite's online backup,
+  // with the log folded in. Throws StoreError when `path` cannot be written.
+  virtual void BackupTo(const std::string& path) = 0;
 };
 
 enum class StoreMode { kReadWrite, kReadOnly };

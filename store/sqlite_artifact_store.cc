@@ -50,7 +50,7 @@ std::string JoinLines(const std::vector<std::string>& lines) {
 }  // namespace
 
 SqliteArtifactStore::SqliteArtifactStore(const std::string& path, StoreMode mode)
-    : path_(path), connection_(path, mode), db_(connection_.get()) {
+    : path_(path), mode_(mode), connection_(path, mode), db_(connection_.get()) {
   CheckSqlite(db_, path_, sqlite3_busy_timeout(db_, kStoreBusyTimeoutMs),
               "setting the busy timeout");
   const SchemaState state = ReadSchemaState();

@@ -7,7 +7,9 @@
 #include <sqlite3.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "store/artifact_store.h"
 #include "store/sqlite_connection.h"
@@ -19,6 +21,8 @@ namespace areagraph {
 class SqliteArtifactStore : public ArtifactStore {
  public:
   SqliteArtifactStore(const std::string& path, StoreMode mode);
+  // A read-write store folds its write-ahead log into the file on close.
+  ~SqliteArtifactStore() override;
 
   std::vector<MapRecord> ReadAllMaps() override;
   std::optional<MapRecord> ReadMap(const std::string& map_name) override;
@@ -38,9 +42,12 @@ class SqliteArtifactStore : public ArtifactStore {
   void ClearFailure(const std::string& map_name) override;
   std::vector<FailureRecord> ReadFailures() override;
 
-  std::vector<VerifyProblem> Verify(const std::function<void(int64_t, int64_t)>& progress) override;
+  std::vector<VerifyProblem> Verify(const std::function<void(int64_t, int64_t)>& progress,
+                                    StructureCheck structure) override;
   MaintenanceCounts CollectGarbage() override;
   MaintenanceCounts MergeFrom(const std::string& path) override;
+  bool FoldWriteAheadLog() override;
+  void BackupTo(const std::string& path) override;
 
  private:
   // Open-time steps, in the order that keeps a bad file untouched.
@@ -71,12 +78,22 @@ class SqliteArtifactStore : public ArtifactStore {
   void WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id);
 
   // Maintenance helpers (sqlite_store_maintenance.cc).
+  void CheckArtifacts(const std::function<void(int64_t, int64_t)>& progress,
+                      std::vector<VerifyProblem>& problems);
   void CheckArtifactRow(SqliteStatement& row, std::vector<VerifyProblem>& problems);
   void FindBrokenHeads(std::vector<VerifyProblem>& problems);
   void CheckCanMergeFrom(const std::string& path);
-  MaintenanceCounts CopyFromMergeSource(int source_version);
+  MaintenanceCounts CopyFromMergeSource(const std::string& path, int source_version);
+
+  // Integrity helpers (sqlite_store_integrity.cc).
+  // SQLite's findings on `schema` ("main" or "merge_source"); empty when sound.
+  std::vector<std::string> CheckStructure(const char* schema, StructureCheck structure);
+  // Throws StoreError naming `path` when an artifact that the merge would
+  // copy from it has a payload that fails its digest or is not protobuf.
+  void CheckMergeSourcePayloads(const std::string& path);
 
   const std::string path_;
+  const StoreMode mode_;
   const SqliteConnection connection_;  // closes after the statements below
   sqlite3* const db_;
   int schema_version_ = 0;  // of the open file, after any upgrade
@@ -109,6 +126,10 @@ inline std::string ShortKey(const std::string& cache_key) { return cache_key.sub
 
 // Input keys are stored newline-joined.
 std::vector<std::string> SplitLines(const std::string& joined);
+
+// What is wrong with a stored payload: "payload digest mismatch" or
+// "payload is not protobuf wire format"; nullopt when it is intact.
+std::optional<std::string> PayloadProblem(std::string_view payload, std::string_view digest);
 
 }  // namespace store_internal
 

@@ -9,9 +9,7 @@
 #include <filesystem>
 #include <unordered_set>
 
-#include "store/digest.h"
 #include "store/error.h"
-#include "store/protobuf_wire.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
 #include "store/store_maintenance.h"
@@ -82,9 +80,25 @@ int64_t Run(sqlite3* db, const std::string& store_path, const char* sql,
 }  // namespace
 
 std::vector<VerifyProblem> SqliteArtifactStore::Verify(
-    const std::function<void(int64_t, int64_t)>& progress) {
+    const std::function<void(int64_t, int64_t)>& progress, StructureCheck structure) {
   std::vector<VerifyProblem> problems;
-  ReadSnapshot snapshot(db_, path_);
+  try {
+    ReadSnapshot snapshot(db_, path_);
+    for (const std::string& finding : CheckStructure("main", structure)) {
+      problems.push_back({"", "", "", "SQLite: " + finding});
+    }
+    CheckArtifacts(progress, problems);
+    FindBrokenHeads(problems);
+  } catch (const StoreError& error) {
+    // Damage that stops the reading itself ("database disk image is malformed").
+    problems.push_back(
+        {"", "", "", std::string("cannot read the store to the end: ") + error.what()});
+  }
+  return problems;
+}
+
+void SqliteArtifactStore::CheckArtifacts(const std::function<void(int64_t, int64_t)>& progress,
+                                         std::vector<VerifyProblem>& problems) {
   int64_t total = 0;
   {
     SqliteStatement count(db_, path_, store_sql::kCountArtifacts, "counting the artifacts");
@@ -100,8 +114,6 @@ std::vector<VerifyProblem> SqliteArtifactStore::Verify(
     ++done;
     if (progress) progress(done, std::max(total, done));
   }
-  FindBrokenHeads(problems);
-  return problems;
 }
 
 void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
@@ -120,12 +132,12 @@ void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
     if (row.ColumnInt64(2, "maps.id") == 0) {
       return report("artifact row " + std::to_string(id) + " belongs to no map");
     }
-    const std::string_view payload = row.ColumnBlobView(8, "artifacts.payload");
-    if (Sha256Hex(payload) != row.ColumnText(7, "artifacts.payload_digest")) {
-      return report("payload digest mismatch (corrupt); recompute it with ag-" + found.stage +
-                    " --force");
+    const std::optional<std::string> damage = store_internal::PayloadProblem(
+        row.ColumnBlobView(8, "artifacts.payload"), row.ColumnText(7, "artifacts.payload_digest"));
+    if (damage && damage->rfind("payload digest", 0) == 0) {
+      return report(*damage + " (corrupt); recompute it with ag-" + found.stage + " --force");
     }
-    if (!IsWellFormedProtobuf(payload)) return report("payload is not protobuf wire format");
+    if (damage) return report(*damage);
     if (found.stage == "import") return;  // its input is the digest of a file, not an artifact
     for (const std::string& key : SplitLines(row.ColumnText(6, "artifacts.input_keys"))) {
       StatementUse use_lookup(*sql_stmt_read_artifact_id_);
@@ -245,10 +257,17 @@ MaintenanceCounts SqliteArtifactStore::MergeFrom(const std::string& path) {
   if (source_version < 1 || source_version > kStoreSchemaVersion) {  // changed since checked
     throw StoreError("store '" + path + "' changed while being merged; try again");
   }
-  return CopyFromMergeSource(static_cast<int>(source_version));
+  const std::vector<std::string> findings = CheckStructure("merge_source", StructureCheck::kQuick);
+  if (!findings.empty()) {
+    throw StoreError("store '" + path + "' is damaged (SQLite: " + findings.front() +
+                     "); nothing was merged from it (ag-store verify --store " + path +
+                     " lists the problems)");
+  }
+  return CopyFromMergeSource(path, static_cast<int>(source_version));
 }
 
-MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(int source_version) {
+MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(const std::string& path,
+                                                           int source_version) {
   MaintenanceCounts counts;
   SqliteTransaction transaction = BeginTransaction();
   const auto run = [this](const char* sql, const char* action) {
@@ -261,6 +280,7 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(int source_version) {
     count.Step();
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
+  CheckMergeSourcePayloads(path);  // under the write lock: exactly what is copied next
   counts.artifacts = run(store_sql::kMergeArtifacts, "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");

@@ -30,6 +30,11 @@ FROM heads h LEFT JOIN maps m ON m.id = h.map_id LEFT JOIN artifacts a ON a.id =
 WHERE m.id IS NULL OR a.id IS NULL OR a.map_id != h.map_id OR a.stage != h.stage
 ORDER BY m.name, h.stage)sql";
 
+// SQLite's own checks of one attached schema ("main" or "merge_source"): a
+// row "ok", or up to 100 rows that each describe one problem.
+inline constexpr char kIntegrityCheckOf[] = "PRAGMA %s.integrity_check";
+inline constexpr char kQuickCheckOf[] = "PRAGMA %s.quick_check";
+
 // --- Garbage collection ---------------------------------------------------
 
 inline constexpr char kReadHeadArtifactIds[] = "SELECT artifact_id FROM heads";
@@ -62,6 +67,19 @@ JOIN merge_source.maps sm ON sm.id = sa.map_id
 JOIN main.maps mm ON mm.name = sm.name
 WHERE NOT EXISTS (
   SELECT 1 FROM main.artifacts ma WHERE ma.map_id = mm.id AND ma.cache_key = sa.cache_key))sql";
+
+// The first artifact that kMergeArtifacts would copy whose payload fails
+// ag_payload_problem (a function the store registers: NULL when the payload
+// matches its digest and is protobuf wire format, else the problem).
+inline constexpr char kFindDamagedMergePayload[] = R"sql(
+SELECT sm.name, sa.stage, sa.cache_key, ag_payload_problem(sa.payload, sa.payload_digest)
+FROM merge_source.artifacts sa
+JOIN merge_source.maps sm ON sm.id = sa.map_id
+WHERE NOT EXISTS (
+  SELECT 1 FROM main.maps mm JOIN main.artifacts ma ON ma.map_id = mm.id
+  WHERE mm.name = sm.name AND ma.cache_key = sa.cache_key)
+AND ag_payload_problem(sa.payload, sa.payload_digest) IS NOT NULL
+ORDER BY sa.id LIMIT 1)sql";
 
 // Copies rows verbatim, creation time included; an existing key is kept.
 inline constexpr char kMergeArtifacts[] = R"sql(

@@ -172,6 +172,8 @@ int Run(const RunFlags& flags) {
 
   const proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
   RecordLeftoverFailures(settings.store_path, report);
+  // Workers end without closing their stores; fold their log into the file.
+  OpenArtifactStore(settings.store_path)->FoldWriteAheadLog();
   if (flags.json) {
     std::string json;
     google::protobuf::util::JsonPrintOptions print;

@@ -259,5 +259,54 @@ TEST_F(MergeTest, FailedMergeChangesNothingAndTheNextOneWorks) {
   EXPECT_EQ(MapNames(*store), (Names{"g", "m"}));
 }
 
+// A payload that fails its digest in the input is refused by the input's
+// name, and nothing of that input is merged (one transaction).
+TEST_F(MergeTest, CorruptPayloadInTheInputIsRefusedAndNothingIsCopied) {
+  {
+    std::unique_ptr<ArtifactStore> shard = OpenArtifactStore(Path("shard.db"));
+    shard->WriteArtifact(Import("lab_a", "ia", "a.png"));
+    shard->WriteArtifact(Artifact("lab_a", "clean", "ca", {"ia"}, "clean a payload"));
+    shard->WriteArtifact(Import("lab_b", "ib", "b.png"));
+  }
+  testing::FlipPayloadByte(Path("shard.db"), "ca", 3);
+  std::unique_ptr<ArtifactStore> out = OpenArtifactStore(Path("out.db"));
+  out->WriteArtifact(Import("kept", "ik", "k.png"));
+  EXPECT_EQ(MergeError(*out, Path("shard.db")),
+            "store '" + Path("shard.db") +
+                "' is damaged: artifact ca of map 'lab_a' (clean) has a corrupt payload (payload "
+                "digest mismatch); nothing was merged from it (ag-store verify --store " +
+                Path("shard.db") + " lists the problems)");
+  EXPECT_EQ(MapNames(*out), Names{"kept"});
+  EXPECT_TRUE(out->Verify().empty());
+}
+
+// Only what is copied is checked: a damaged artifact that the output already
+// holds (same key) is not copied, so it does not stop the merge.
+TEST_F(MergeTest, DamagedArtifactTheOutputAlreadyHoldsIsNotCopied) {
+  OpenArtifactStore(Path("shard.db"))->WriteArtifact(Import("lab_a", "ia", "a.png"));
+  OpenArtifactStore(Path("out.db"))->WriteArtifact(Import("lab_a", "ia", "a.png"));
+  testing::FlipPayloadByte(Path("shard.db"), "ia", 0);
+  std::unique_ptr<ArtifactStore> out = OpenArtifactStore(Path("out.db"));
+  EXPECT_EQ(MergeError(*out, Path("shard.db")), "");
+  EXPECT_TRUE(out->Verify().empty());
+}
+
+// SQLite-level damage in the input (an index page) is refused by name too.
+TEST_F(MergeTest, InputWithDamagedPagesIsRefusedByName) {
+  {
+    std::unique_ptr<ArtifactStore> shard = OpenArtifactStore(Path("shard.db"));
+    for (int map = 0; map < 40; ++map) {
+      const std::string name = "map_" + std::to_string(map);
+      shard->WriteArtifact(Import(name, "i" + name, name + ".png"));
+    }
+  }
+  testing::DamageRootPage(Path("shard.db"), "artifacts_by_map_and_time", 512);
+  std::unique_ptr<ArtifactStore> out = OpenArtifactStore(Path("out.db"));
+  const std::string error = MergeError(*out, Path("shard.db"));
+  EXPECT_EQ(error.rfind("store '" + Path("shard.db") + "' is damaged (SQLite: ", 0), 0u) << error;
+  EXPECT_NE(error.find("nothing was merged from it"), std::string::npos) << error;
+  EXPECT_TRUE(MapNames(*out).empty());
+}
+
 }  // namespace
 }  // namespace areagraph

@@ -110,5 +110,63 @@ TEST(VerifyTest, HandEditedRowIsReportedAndTheCheckGoesOn) {
   EXPECT_EQ(problems[1].cache_key, "k-v");
 }
 
+// Many maps, so that the tables and indexes span several pages.
+std::string StoreOfManyMaps(const testing::TempDir& dir) {
+  const std::string path = dir.File("store.db");
+  std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
+  for (int map = 0; map < 60; ++map) {
+    WriteChain(*store, "map_" + std::to_string(map), "k" + std::to_string(map));
+  }
+  return path;
+}
+
+bool HasSqliteFinding(const std::vector<VerifyProblem>& problems) {
+  for (const VerifyProblem& problem : problems) {
+    if (problem.problem.rfind("SQLite: ", 0) == 0 && problem.map_name.empty()) return true;
+  }
+  return false;
+}
+
+// The case: an index page damaged, every payload intact. Both checks
+// see it (quick_check reads the b-tree pages, only not the index contents).
+TEST(VerifyTest, DamagedIndexPageIsFoundThoughEveryPayloadIsIntact) {
+  testing::TempDir dir;
+  const std::string path = StoreOfManyMaps(dir);
+  testing::DamageRootPage(path, "artifacts_by_map_and_time", 512);
+  for (const StructureCheck check : {StructureCheck::kFull, StructureCheck::kQuick}) {
+    const std::vector<VerifyProblem> problems =
+        OpenArtifactStore(path, StoreMode::kReadOnly)->Verify(nullptr, check);
+    std::string all;
+    for (const VerifyProblem& problem : problems) all += problem.problem + "\n";
+    EXPECT_TRUE(HasSqliteFinding(problems))
+        << (check == StructureCheck::kFull ? "full" : "quick") << "\n"
+        << all;
+  }
+}
+
+// An index that disagrees with its table (an entry missing) is invisible to
+// quick_check and to the payloads; integrity_check finds it.
+TEST(VerifyTest, IndexOutOfStepWithItsTableIsFoundByTheFullCheck) {
+  testing::TempDir dir;
+  const std::string path = StoreOfManyMaps(dir);
+  testing::ExecSql(path,
+                   "PRAGMA writable_schema = ON;"
+                   "UPDATE sqlite_master SET sql = replace(sql, '(map_id, created_at)',"
+                   " '(map_id, created_at) WHERE 0') WHERE name = 'artifacts_by_map_and_time';");
+  EXPECT_TRUE(HasSqliteFinding(OpenArtifactStore(path, StoreMode::kReadOnly)->Verify()));
+  EXPECT_FALSE(HasSqliteFinding(
+      OpenArtifactStore(path, StoreMode::kReadOnly)->Verify(nullptr, StructureCheck::kQuick)));
+}
+
+// Damage in the artifacts table itself stops the reading: a problem, not a throw.
+TEST(VerifyTest, StoreTooDamagedToReadIsAProblemNotAnException) {
+  testing::TempDir dir;
+  const std::string path = StoreOfManyMaps(dir);
+  testing::DamageRootPage(path, "artifacts", 512);
+  std::vector<VerifyProblem> problems;
+  EXPECT_NO_THROW(problems = VerifyFile(path));
+  EXPECT_FALSE(problems.empty());
+}
+
 }  // namespace
 }  // namespace areagraph

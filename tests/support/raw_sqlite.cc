@@ -2,6 +2,7 @@
 
 #include <sqlite3.h>
 
+#include <fstream>
 #include <memory>
 #include <stdexcept>
 
@@ -61,6 +62,23 @@ void FlipPayloadByte(const std::string& path, const std::string& cache_key, int 
   byte = static_cast<char>(byte ^ 0x5a);
   Check(db.get(), sqlite3_blob_write(blob, &byte, 1, offset));
   Check(db.get(), sqlite3_blob_close(blob));
+}
+
+void DamageRootPage(const std::string& path, const std::string& object_name, int bytes) {
+  ExecSql(path, "PRAGMA wal_checkpoint(TRUNCATE)");
+  const std::vector<std::string> root =
+      QueryColumn(path, "SELECT rootpage FROM sqlite_master WHERE name = '" + object_name + "'");
+  const std::vector<std::string> page_size = QueryColumn(path, "PRAGMA page_size");
+  if (root.size() != 1 || page_size.size() != 1) throw std::runtime_error("no " + object_name);
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  const std::streamoff offset = (std::stoll(root[0]) - 1) * std::stoll(page_size[0]);
+  std::string page(static_cast<size_t>(bytes), '\0');
+  file.seekg(offset);
+  file.read(page.data(), bytes);
+  for (char& byte : page) byte = static_cast<char>(~byte);
+  file.seekp(offset);
+  file.write(page.data(), bytes);
+  if (!file.flush()) throw std::runtime_error("cannot damage " + path);
 }
 
 NewArtifact MakeArtifact(const std::string& map_name, const std::string& stage,

@@ -21,6 +21,12 @@ std::vector<std::string> QueryColumn(const std::string& path, const std::string&
 // rewrite), keeping the stored digest.
 void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset);
 
+// Flips (XOR 0xff) `bytes` bytes at the start of the root page of table or
+// index `object_name`, in the file itself (the write-ahead log is folded in
+// first), as a failing disk would; SQLite's own checks see it, payload
+// digests need not.
+void DamageRootPage(const std::string& path, const std::string& object_name, int bytes);
+
 // A small artifact with every field set.
 NewArtifact MakeArtifact(const std::string& map_name, const std::string& stage,
                          const std::string& cache_key, const std::string& payload);

@@ -1,4 +1,4 @@
-// ag-store: maintenance of areagraph stores (merge, gc, verify, failures).
+// ag-store: maintenance of areagraph stores (merge, gc, verify, backup, failures).
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -12,15 +12,20 @@ int main(int argc, char** argv) {
       "Maintains areagraph stores.\n"
       "  ag-store merge OUT IN...              copy stores (e.g. shards) into OUT\n"
       "  ag-store gc [--store S] [--vacuum]    drop artifacts that no head reaches\n"
-      "  ag-store verify [--store S]           check every payload digest (exit 1 on problems)\n"
+      "  ag-store verify [--store S] [--quick]   check SQLite's structure and every payload\n"
+      "                                        digest (exit 1 on problems)\n"
+      "  ag-store backup [--store S] OUT       copy the store, even while it is in use, into\n"
+      "                                        the new file OUT\n"
       "  ag-store failures [--store S] [--json]   maps that failed in a runner\n"
+      "A store is its file plus, while a tool writes, the -wal file beside it: copy stores\n"
+      "with ag-store backup (or after every writer has finished).\n"
       "Run ag-store COMMAND --help for details."};
   // At most one; none is reported below, so that an unknown word gets
   // CLI11's "not expected: WORD" rather than "a subcommand is required".
   app.require_subcommand(0, 1);
   std::string store_path = "areagraph.db", output;
   std::vector<std::string> inputs;
-  bool vacuum = false, json = false;
+  bool vacuum = false, json = false, quick = false;
 
   CLI::App* merge = app.add_subcommand(
       "merge",
@@ -40,10 +45,21 @@ int main(int argc, char** argv) {
 
   CLI::App* verify = app.add_subcommand(
       "verify",
-      "Reads every artifact and checks its payload digest and encoding, that heads point at\n"
-      "artifacts of their map and stage, and that input keys name artifacts of the map.\n"
-      "Prints one line per problem and exits 1 if there is any.");
+      "Runs SQLite's integrity_check (pages, b-trees, indexes), then reads every artifact and\n"
+      "checks its payload digest and encoding, that heads point at artifacts of their map and\n"
+      "stage, and that input keys name artifacts of the map. Prints one line per problem and\n"
+      "exits 1 if there is any.");
   verify->add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
+  verify->add_flag("--quick", quick,
+                   "SQLite's quick_check instead of integrity_check (skips the index contents)");
+
+  CLI::App* backup = app.add_subcommand(
+      "backup",
+      "Copies the store into the new file OUT with SQLite's online backup: one consistent\n"
+      "moment even while runners write, with the write-ahead log folded in. OUT must not\n"
+      "exist; it appears only when complete.");
+  backup->add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
+  backup->add_option("OUT", output, "new store file to write")->required();
 
   CLI::App* failures = app.add_subcommand(
       "failures", "Lists the maps that failed in a runner: map, stage, time, message.");
@@ -52,12 +68,15 @@ int main(int argc, char** argv) {
 
   return areagraph::RunCommand("ag-store", app, argc, argv, [&] {
     if (app.get_subcommands().empty()) {
-      std::cerr << "ag-store: name a command: merge, gc, verify or failures (see --help)\n";
+      std::cerr << "ag-store: name a command: merge, gc, verify, backup or failures (see --help)\n";
       return 2;
     }
     if (*merge) return areagraph::MergeStores(output, inputs, std::cout);
     if (*gc) return areagraph::CollectStoreGarbage(store_path, vacuum, std::cout);
-    if (*verify) return areagraph::VerifyStore(store_path, isatty(STDERR_FILENO) == 1, std::cout);
+    if (*verify) {
+      return areagraph::VerifyStore(store_path, isatty(STDERR_FILENO) == 1, quick, std::cout);
+    }
+    if (*backup) return areagraph::BackupStore(store_path, output, std::cout);
     return areagraph::ListStoreFailures(store_path, json, std::cout);
   });
 }

@@ -9,6 +9,7 @@
 #include "store/error.h"
 #include "store/store_maintenance.h"
 #include "tools/inspect/failure_report.h"
+#include "tools/store/new_store_file.h"
 
 namespace areagraph {
 namespace {
@@ -68,11 +69,8 @@ class ProgressLine {
 
 std::string OrDash(const std::string& text) { return text.empty() ? "-" : text; }
 
-}  // namespace
-
-int MergeStores(const std::string& output, const std::vector<std::string>& inputs,
-                std::ostream& out) {
-  for (const std::string& input : inputs) OpenArtifactStore(input, StoreMode::kReadOnly);
+void MergeInto(const std::string& output, const std::vector<std::string>& inputs,
+               std::ostream& out) {
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(output);
   for (const std::string& input : inputs) {
     const MaintenanceCounts added = store->MergeFrom(input);
@@ -80,8 +78,29 @@ int MergeStores(const std::string& output, const std::vector<std::string>& input
         << Plural(added.artifacts, "artifact") << " (" << FormatBytes(added.payload_bytes)
         << " of payload), " << Plural(added.failures, "failure") << "\n";
   }
+}
+
+}  // namespace
+
+int MergeStores(const std::string& output, const std::vector<std::string>& inputs,
+                std::ostream& out) {
+  for (const std::string& input : inputs) OpenArtifactStore(input, StoreMode::kReadOnly);
+  if (NothingAt(output)) {
+    CreateStoreFile(output,
+                    [&](const std::string& temporary) { MergeInto(temporary, inputs, out); });
+  } else {
+    MergeInto(output, inputs, out);
+  }
   out << "merged " << Plural(static_cast<int64_t>(inputs.size()), "store") << " into " << output
       << "\n";
+  return 0;
+}
+
+int BackupStore(const std::string& store_path, const std::string& output, std::ostream& out) {
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  CreateStoreFile(output, [&](const std::string& temporary) { store->BackupTo(temporary); });
+  out << "backed up " << store_path << " to " << output << " ("
+      << FormatBytes(StoreFileBytes(output)) << ")\n";
   return 0;
 }
 
@@ -108,16 +127,18 @@ int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream
   return 0;
 }
 
-int VerifyStore(const std::string& store_path, bool progress, std::ostream& out) {
+int VerifyStore(const std::string& store_path, bool progress, bool quick, std::ostream& out) {
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
   int64_t checked = 0;
   std::vector<VerifyProblem> problems;
   {
     ProgressLine line;
-    problems = store->Verify([&](int64_t done, int64_t total) {
-      checked = done;
-      if (progress) line.Update(done, total);
-    });
+    problems = store->Verify(
+        [&](int64_t done, int64_t total) {
+          checked = done;
+          if (progress) line.Update(done, total);
+        },
+        quick ? StructureCheck::kQuick : StructureCheck::kFull);
   }
   for (const VerifyProblem& problem : problems) {
     out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "

@@ -11,17 +11,27 @@ namespace areagraph {
 
 // Copies every store in `inputs` into `output` (created if needed), one
 // transaction per input, and prints per input what was new. All inputs are
-// checked before `output` is opened, so a typo creates nothing.
+// checked before `output` is opened, so a typo creates nothing. A damaged
+// input (SQLite's quick_check, or a payload that fails its digest) is
+// refused by name and adds nothing. A new `output` appears only when every
+// input merged; an existing one keeps the inputs merged before the failure.
 int MergeStores(const std::string& output, const std::vector<std::string>& inputs,
                 std::ostream& out);
+
+// Copies the store into the new file `output` through SQLite's online
+// backup: consistent even while runners write, log folded in, so the one
+// file is the whole store. Refuses an `output` that exists.
+int BackupStore(const std::string& store_path, const std::string& output, std::ostream& out);
 
 // Drops the artifacts no head reaches and prints what was freed; `vacuum`
 // then gives the space back to the file system and prints the file sizes.
 int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream& out);
 
-// Checks every artifact; prints one line per problem and a summary. Returns 1
-// when there are problems. `progress` shows a progress line on stderr.
-int VerifyStore(const std::string& store_path, bool progress, std::ostream& out);
+// Checks SQLite's structures (quick_check with `quick`, else
+// integrity_check) and every artifact; prints one line per problem and a
+// summary. Returns 1 when there are problems. `progress` shows a progress
+// line on stderr.
+int VerifyStore(const std::string& store_path, bool progress, bool quick, std::ostream& out);
 
 // The failures recorded by runners, as a table or JSON.
 int ListStoreFailures(const std::string& store_path, bool json, std::ostream& out);

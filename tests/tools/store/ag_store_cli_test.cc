@@ -43,6 +43,7 @@ TEST(AgStoreCliTest, HelpForEveryCommand) {
                                              {"merge", "--help"},
                                              {"gc", "--help"},
                                              {"verify", "--help"},
+                                             {"backup", "--help"},
                                              {"failures", "--help"}}) {
     const CommandResult help = RunTool("ag-store", args);
     EXPECT_EQ(help.exit_code, 0) << args[0] << ": " << help.err;
