@@ -6,6 +6,7 @@
 
 #include "runner/live/lcm_conversion.h"
 #include "stages/import/import_stage.h"
+#include "stages/import/map_yaml.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -68,15 +69,14 @@ proto::GridMap GridMapFromLcm(const areagraph_lcm::grid_map_t& message, int64_t 
     throw InputError(std::string("grid_map_t: ") + error.what());
   }
   const std::string& name = message.name;
-  if (!(message.resolution_m > 0) || !std::isfinite(message.resolution_m)) {
-    std::ostringstream what;
-    what << "resolution_m must be positive and finite, got " << message.resolution_m;
-    Reject(name, what.str());
+  try {
+    CheckResolution(message.resolution_m, "resolution_m", /*is_option=*/false);
+  } catch (const InputError& error) {
+    Reject(name, error.what());
   }
-  if (!std::isfinite(message.origin_x_m) || !std::isfinite(message.origin_y_m) ||
-      !std::isfinite(message.origin_yaw_rad)) {
-    Reject(name, "the origin is not finite");
-  }
+  const std::string origin =
+      OriginProblem(message.origin_x_m, message.origin_y_m, message.origin_yaw_rad);
+  if (!origin.empty()) Reject(name, origin);
   if (message.width <= 0 || message.height <= 0) {
     Reject(name, "size " + std::to_string(message.width) + "x" + std::to_string(message.height) +
                      " is not positive");

@@ -18,7 +18,10 @@ void RequestStop(int) { stop_requested = 1; }
 
 void ServeLimits::Check() const {
   if (count < 0) throw OptionsError("--count must be 0 (no limit) or positive");
-  if (!(timeout_s >= 0)) throw OptionsError("--timeout must be 0 (none) or positive");
+  if (!(timeout_s >= 0 && timeout_s <= kMaxTimeoutS)) {  // NaN fails
+    throw OptionsError("--timeout must be 0 (none) or a number of seconds up to " +
+                       std::to_string(static_cast<int64_t>(kMaxTimeoutS)));
+  }
 }
 
 bool ServeUntilDone(const ServeLimits& limits, const char* what, const std::function<int()>& served,

@@ -4,8 +4,12 @@
 
 namespace areagraph {
 
+// Longest accepted --timeout (about 115 days); longer ones overflow the clock.
+inline constexpr double kMaxTimeoutS = 1e7;
+
 // How long a live tool serves: up to `count` items (0: no limit) and up to
-// `timeout_s` seconds (0: no limit). Throws OptionsError for negative values.
+// `timeout_s` seconds (0: no limit). Check throws OptionsError for negative
+// values and a timeout that is not finite or beyond kMaxTimeoutS.
 struct ServeLimits {
   int count = 0;
   double timeout_s = 0;

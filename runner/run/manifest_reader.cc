@@ -10,6 +10,8 @@
 namespace areagraph {
 namespace {
 
+constexpr char kUtf8ByteOrderMark[] = "\xEF\xBB\xBF";
+
 std::string Trim(const std::string& text) {
   const size_t first = text.find_first_not_of(" \t\r");
   if (first == std::string::npos) return "";
@@ -81,6 +83,8 @@ ManifestTable ReadManifest(const std::string& path) {
   std::string line;
   for (int number = 1; std::getline(file, line); ++number) {
     const std::string where = path + ":" + std::to_string(number);
+    // Spreadsheets save UTF-8 CSV with a byte order mark; it is no part of a name.
+    if (number == 1 && line.rfind(kUtf8ByteOrderMark, 0) == 0) line.erase(0, 3);
     if (line.find('\0') != std::string::npos) {
       throw InputError(where + ": not a text line (the manifest must be TSV or CSV text)");
     }

@@ -23,10 +23,10 @@ std::string LowerCaseExtension(const std::string& path);
 bool IsManifestPath(const std::string& path);
 
 // Reads a TSV (.tsv: tab-separated, no quoting) or CSV (.csv: comma-separated,
-// RFC 4180 double quotes within one line) manifest. Blank lines and lines
-// starting with '#' are skipped. Throws InputError with file and line for an
-// unreadable file, a missing `path` column, a repeated column, or a row whose
-// width differs from the header's.
+// RFC 4180 double quotes within one line) manifest. A UTF-8 byte order mark
+// is skipped, as are blank lines and lines starting with '#'. Throws InputError with file and line
+// for an unreadable file, a missing `path` column, a repeated column, or a row whose width differs
+// from the header's.
 ManifestTable ReadManifest(const std::string& path);
 
 }  // namespace areagraph

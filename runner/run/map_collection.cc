@@ -26,6 +26,11 @@ void AddDirectory(const std::string& directory, std::vector<MapEntry>* entries) 
   if (error) {
     throw InputError("cannot search directory '" + directory + "': " + error.message());
   }
+  if (images.empty()) {
+    throw InputError("directory '" + directory +
+                     "' holds no map images (.png, .pgm, .ppm, .pbm, .jpg, .jpeg, .bmp, .tif, "
+                     ".tiff), not even in subfolders");
+  }
   std::sort(images.begin(), images.end());
   for (const fs::path& image : images) {
     fs::path relative = image.lexically_relative(directory);
@@ -51,6 +56,9 @@ void CheckManifestColumns(const std::string& manifest, const std::vector<std::st
 void AddManifest(const std::string& manifest, std::vector<MapEntry>* entries) {
   const ManifestTable table = ReadManifest(manifest);
   CheckManifestColumns(manifest, table.header);
+  if (table.rows.empty()) {
+    throw InputError("manifest '" + manifest + "' lists no maps (it has only its header)");
+  }
   const fs::path base = fs::path(manifest).parent_path();
   for (const ManifestRow& row : table.rows) {
     MapEntry entry;

@@ -29,9 +29,10 @@ bool IsMapImagePath(const std::string& path);
 // - a manifest (.tsv or .csv) with a header row naming `path` (required),
 //   `name` (optional) and option keys such as `cut.room_width_m`. Relative
 //   paths are relative to the manifest.
-// Throws InputError for a missing path, an unreadable manifest row or two maps
-// with the same name, and OptionsError for a column that names no option; the
-// message gives the file and line.
+// Throws InputError for a missing path, a directory without images, a
+// manifest without rows, an unreadable manifest row or two maps with the same
+// name, and OptionsError for a column that names no option; the message gives
+// the file and line.
 std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments);
 
 // `base` with the entry's overrides applied. Throws OptionsError naming the

@@ -5,7 +5,11 @@
 #include <google/protobuf/io/zero_copy_stream_impl_lite.h>
 #include <google/protobuf/text_format.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <optional>
 #include <regex>
 #include <sstream>
 
@@ -80,13 +84,97 @@ void NumbersTurnAutoOff(proto::PipelineOptions* options) {
   }
 }
 
+// The values a numeric option may take, from the unit its name ends in.
+struct NumberRange {
+  double max;
+  const char* unit;
+};
+
+bool EndsWith(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
+}
+
+NumberRange RangeOf(const FieldDescriptor& field) {
+  if (EndsWith(field.name(), "_m2")) return {kMaxOptionAreaM2, "square metres"};
+  if (EndsWith(field.name(), "_m")) return {kMaxOptionLengthM, "metres"};
+  if (EndsWith(field.name(), "_percent")) return {100, "percent"};
+  return {kMaxOptionLengthM, ""};
+}
+
+std::string NumberText(double value) {
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+
+// Throws OptionsError when a set floating-point field of `stage_options` is
+// not finite or lies outside the range of its unit, or an integer is negative.
+void CheckNumbersOfStage(const std::string& stage_name, const Message& stage_options) {
+  const Descriptor* descriptor = stage_options.GetDescriptor();
+  const Reflection* reflection = stage_options.GetReflection();
+  for (int i = 0; i < descriptor->field_count(); ++i) {
+    const FieldDescriptor* field = descriptor->field(i);
+    if (!reflection->HasField(stage_options, field)) continue;
+    double value = 0;
+    switch (field->cpp_type()) {
+      case FieldDescriptor::CPPTYPE_DOUBLE:
+        value = reflection->GetDouble(stage_options, field);
+        break;
+      case FieldDescriptor::CPPTYPE_FLOAT:
+        value = reflection->GetFloat(stage_options, field);
+        break;
+      case FieldDescriptor::CPPTYPE_INT32:
+      case FieldDescriptor::CPPTYPE_INT64: {
+        // Counts, grey values and limits: never negative; the stages check the rest.
+        const int64_t count = field->cpp_type() == FieldDescriptor::CPPTYPE_INT32
+                                  ? reflection->GetInt32(stage_options, field)
+                                  : reflection->GetInt64(stage_options, field);
+        if (count >= 0) continue;
+        throw OptionsError("option '" + stage_name + "." + field->name() +
+                           "' must not be negative, got " + std::to_string(count));
+      }
+      default:
+        continue;
+    }
+    const NumberRange range = RangeOf(*field);
+    if (value >= 0 && value <= range.max) continue;  // NaN fails both
+    throw OptionsError("option '" + stage_name + "." + field->name() + "' must be a number" +
+                       (*range.unit != '\0' ? std::string(" of ") + range.unit : "") + " in [0, " +
+                       NumberText(range.max) + "], got " + NumberText(value));
+  }
+}
+
+// "true"/"false" or "1"/"0" in any letter case; nullopt otherwise.
+std::optional<bool> ParseBool(std::string value) {
+  std::transform(value.begin(), value.end(), value.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (value == "true" || value == "1") return true;
+  if (value == "false" || value == "0") return false;
+  return std::nullopt;
+}
+
 }  // namespace
 
+void CheckOptionNumbers(const proto::PipelineOptions& options) {
+  const Descriptor* pipeline = proto::PipelineOptions::descriptor();
+  for (int i = 0; i < pipeline->field_count(); ++i) {
+    const FieldDescriptor* stage = pipeline->field(i);
+    CheckNumbersOfStage(stage->name(), options.GetReflection()->GetMessage(options, stage));
+  }
+}
+
 proto::PipelineOptions ReadOptionsFile(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw OptionsError("options file '" + path + "' is a folder; name a .pbtxt file");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw OptionsError("cannot read options file '" + path + "'");
   std::stringstream text;
   text << in.rdbuf();
+  if (in.bad() || (!in.eof() && in.fail())) {
+    throw OptionsError("cannot read options file '" + path + "'");
+  }
   proto::PipelineOptions options;
   google::protobuf::TextFormat::Parser parser;
   ErrorCollector errors;
@@ -95,6 +183,11 @@ proto::PipelineOptions ReadOptionsFile(const std::string& path) {
     throw OptionsError("options file '" + path + "', " + errors.first_error);
   }
   NumbersTurnAutoOff(&options);
+  try {
+    CheckOptionNumbers(options);
+  } catch (const OptionsError& error) {
+    throw OptionsError("options file '" + path + "': " + error.what());
+  }
   return options;
 }
 
@@ -138,6 +231,15 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
     SetAuto(stage_options, *auto_option, true);
     return;
   }
+  if (field->cpp_type() == FieldDescriptor::CPPTYPE_BOOL) {
+    const std::optional<bool> flag = ParseBool(value);
+    if (!flag) {
+      throw OptionsError("option '" + stage_name + "." + field_name +
+                         "' expects true or false (or 1 or 0), got '" + value + "'");
+    }
+    stage_options->GetReflection()->SetBool(stage_options, field, *flag);
+    return;
+  }
   google::protobuf::TextFormat::Parser parser;
   ErrorCollector errors;  // keeps protobuf from logging its own line to stderr
   parser.RecordErrorsTo(&errors);
@@ -146,6 +248,7 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
                        field->type_name() + (auto_option != nullptr ? " or auto" : "") + ", got '" +
                        value + "'");
   }
+  CheckNumbersOfStage(stage_name, *stage_options);
   if (auto_option != nullptr) SetAuto(stage_options, *auto_option, false);
 }
 

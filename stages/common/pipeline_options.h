@@ -9,16 +9,31 @@
 
 namespace areagraph {
 
+// Bounds of every floating-point option, by the unit its name ends in (_m,
+// _m2; _percent is at most 100): no option makes sense beyond them, and
+// lengths this large overflow once converted to pixels.
+inline constexpr double kMaxOptionLengthM = 1e4;
+inline constexpr double kMaxOptionAreaM2 = 1e8;
+
+// Throws OptionsError naming the option when a set floating-point option is
+// not finite, negative, or beyond the bound of its unit, or when an integer
+// option is negative (the stages check the finer ranges). ReadOptionsFile and
+// ApplyOverride call it, so options from files, --set and manifests are
+// checked before any map is read.
+void CheckOptionNumbers(const proto::PipelineOptions& options);
+
 // Reads a PipelineOptions text-format file. Throws OptionsError on a missing
-// file or a parse error (with line and column). `room_width_m: auto` means
-// `room_width_auto: true`; a number for room_width_m without a
-// room_width_auto line means that number (auto off).
+// file, a folder, a parse error (with line and column) or a number out of
+// range. `room_width_m: auto` means `room_width_auto: true`; a number for
+// room_width_m without a room_width_auto line means that number (auto off).
 proto::PipelineOptions ReadOptionsFile(const std::string& path);
 
 // Applies one "stage.field=value" override, for example
 // "cut.room_width_m=1.1". "cut.room_width_m=auto" sets cut.room_width_auto
-// and a number clears it. Throws OptionsError naming the valid keys when the
-// key is unknown, and saying the expected type when the value does not parse.
+// and a number clears it. A boolean takes true or false (any letter case) or
+// 1 or 0. Throws OptionsError naming the valid keys when the key is unknown,
+// saying the expected type when the value does not parse, and the range when
+// a number is out of it (see CheckOptionNumbers).
 void ApplyOverride(const std::string& assignment, proto::PipelineOptions* options);
 
 // Every key that ApplyOverride accepts, as "stage.field".

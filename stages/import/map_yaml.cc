@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 #include "store/error.h"
@@ -27,6 +28,15 @@ class YamlReader {
   }
 
   bool Has(const char* key) const { return root_[key].IsDefined() && !root_[key].IsNull(); }
+
+  // yaml-cpp keeps every pair of a mapping, so a repeated key is still there.
+  void RefuseRepeatedKeys() const {
+    std::set<std::string> seen;
+    for (const auto& pair : root_) {
+      const std::string key = pair.first.IsScalar() ? pair.first.Scalar() : "(not a name)";
+      if (!seen.insert(key).second) Fail("'" + key + "' is given twice");
+    }
+  }
 
   double Number(const char* key) const { return Number(root_[key], key); }
 
@@ -82,12 +92,24 @@ YAML::Node LoadYaml(const std::string& yaml_text, const std::string& yaml_path) 
 }  // namespace
 
 void CheckResolution(double resolution_m, const std::string& what, bool is_option) {
-  if (std::isfinite(resolution_m) && resolution_m > 0 && resolution_m <= kMaxResolutionM) return;
-  const std::string message = what + " must be a resolution in (0, " +
-                              FormatNumber(kMaxResolutionM) + "] metres per pixel, got " +
+  if (resolution_m >= kMinResolutionM && resolution_m <= kMaxResolutionM) return;  // NaN fails
+  const std::string message = what + " must be a resolution in [" + FormatNumber(kMinResolutionM) +
+                              ", " + FormatNumber(kMaxResolutionM) + "] metres per pixel, got " +
                               FormatNumber(resolution_m);
   if (is_option) throw OptionsError(message);
   throw InputError(message);
+}
+
+std::string OriginProblem(double x_m, double y_m, double yaw_rad) {
+  constexpr double kTwoPi = 6.283185307179586;
+  if (!(std::fabs(x_m) <= kMaxOriginM) || !(std::fabs(y_m) <= kMaxOriginM)) {  // NaN fails
+    return "origin x and y must be finite metres within +-" + FormatNumber(kMaxOriginM) + ", got " +
+           FormatNumber(x_m) + ", " + FormatNumber(y_m);
+  }
+  if (!(std::fabs(yaw_rad) <= kTwoPi)) {
+    return "origin yaw must be finite radians within +-2 pi, got " + FormatNumber(yaw_rad);
+  }
+  return "";
 }
 
 MapYaml ParseMapYaml(const std::string& yaml_text, const std::string& yaml_path,
@@ -95,6 +117,7 @@ MapYaml ParseMapYaml(const std::string& yaml_text, const std::string& yaml_path,
   const YAML::Node root = LoadYaml(yaml_text, yaml_path);
   const YamlReader reader(root, yaml_path);
   if (!root.IsMap()) reader.Fail("expected keys such as 'image' and 'resolution'");
+  reader.RefuseRepeatedKeys();
 
   MapYaml yaml;
   if (reader.Has("image")) {
@@ -116,12 +139,15 @@ MapYaml ParseMapYaml(const std::string& yaml_text, const std::string& yaml_path,
 
   if (reader.Has("origin")) {
     const YAML::Node origin = root["origin"];
-    if (!origin.IsSequence() || origin.size() < 2 || origin.size() > 3) {
-      reader.Fail("'origin' must be [x, y, yaw]");
+    if (!origin.IsSequence() || origin.size() != 3) {
+      reader.Fail("'origin' must be [x, y, yaw] (three numbers, as map_server reads it)");
     }
     yaml.origin_x_m = reader.Number(origin[0], "origin x");
     yaml.origin_y_m = reader.Number(origin[1], "origin y");
-    if (origin.size() == 3) yaml.origin_yaw_rad = reader.Number(origin[2], "origin yaw");
+    yaml.origin_yaw_rad = reader.Number(origin[2], "origin yaw");
+    const std::string problem =
+        OriginProblem(yaml.origin_x_m, yaml.origin_y_m, yaml.origin_yaw_rad);
+    if (!problem.empty()) reader.Fail("'origin': " + problem);
   }
   if (reader.Has("negate")) yaml.negate = reader.Flag("negate");
   if (reader.Has("occupied_thresh")) yaml.occupied_thresh = reader.Probability("occupied_thresh");

@@ -4,13 +4,24 @@
 
 namespace areagraph {
 
-// Largest accepted resolution. Anything coarser than a kilometre per pixel is
-// a typo (or a unit mix-up), not a map.
+// Accepted resolutions. Anything coarser than a kilometre per pixel, or finer
+// than a tenth of a millimetre, is a typo (or a unit mix-up), not a building
+// map; beyond them lengths in pixels overflow.
+inline constexpr double kMinResolutionM = 1e-4;
 inline constexpr double kMaxResolutionM = 1000.0;
 
+// Largest accepted distance of a map origin from the world origin. UTM
+// northings reach 1e7 m; far beyond that, doubles lose the centimetres of
+// the map's cells and exports (GeoJSON, osmAG) come out degenerate.
+inline constexpr double kMaxOriginM = 1e8;
+
 // Throws `Exception` (InputError or OptionsError) unless `resolution_m` is
-// finite, positive and at most kMaxResolutionM. `what` names its source.
+// finite and within [kMinResolutionM, kMaxResolutionM]. `what` names its source.
 void CheckResolution(double resolution_m, const std::string& what, bool is_option);
+
+// "" when (x, y, yaw) is a usable map origin: finite, |x| and |y| at most
+// kMaxOriginM, |yaw| at most 2 pi. Otherwise what is wrong with it.
+std::string OriginProblem(double x_m, double y_m, double yaw_rad);
 
 // A ROS map_server map description (the YAML beside the image).
 struct MapYaml {
@@ -30,10 +41,11 @@ struct MapYaml {
 };
 
 // Parses map_server YAML text read from `yaml_path`. `resolution` is required;
-// `image` too when `image_required`. `origin` ([x, y] or [x, y, yaw]),
-// `negate` (0/1 or true/false), `occupied_thresh`, `free_thresh` and `mode`
-// (trinary, scale or raw) take map_server's defaults when absent. Throws
-// InputError with one line naming the file and the offending key.
+// `image` too when `image_required`. `origin` ([x, y, yaw], as map_server
+// requires), `negate` (0/1 or true/false), `occupied_thresh`, `free_thresh`
+// and `mode` (trinary, scale or raw) take map_server's defaults when absent.
+// A key given twice is refused (YAML forbids it; parsers differ on which
+// wins). Throws InputError with one line naming the file and the offending key.
 MapYaml ParseMapYaml(const std::string& yaml_text, const std::string& yaml_path,
                      bool image_required);
 

@@ -1,8 +1,8 @@
 // ag-eval: scores segmentations against ground-truth images (MCC, precision,
 // recall), for one map or for a folder of maps.
 #include <CLI/CLI.hpp>
-#include <cstdio>
 #include <iostream>
+#include <regex>
 #include <string>
 
 #include "stages/common/command_line.h"
@@ -17,13 +17,14 @@ namespace {
 
 // "X,Y" -> point; throws OptionsError otherwise.
 cv::Point ParseOffset(const std::string& text) {
-  int x = 0, y = 0;
-  char comma = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d %c %d %c", &x, &comma, &y, &extra) != 3 || comma != ',') {
+  // At most 9 digits each, so that no number overflows an int.
+  static const std::regex kOffset(R"(\s*(-?[0-9]{1,9})\s*,\s*(-?[0-9]{1,9})\s*)");
+  std::smatch match;
+  if (!std::regex_match(text, match, kOffset)) {
     throw areagraph::OptionsError("--gt-offset needs X,Y in pixels, e.g. 192,0; got '" + text +
                                   "'");
   }
-  return {x, y};
+  return {std::stoi(match[1]), std::stoi(match[2])};
 }
 
 }  // namespace

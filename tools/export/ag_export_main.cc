@@ -34,12 +34,7 @@ int main(int argc, char** argv) {
     settings.format = areagraph::ParseExportFormat(format_name);
     settings.map_name = map_name;
     settings.anchor = anchor;
-    if (anchor.lat_deg < -89 || anchor.lat_deg > 89 || anchor.lon_deg < -180 ||
-        anchor.lon_deg > 180) {
-      throw areagraph::OptionsError(
-          "--anchor-lat must be in [-89, 89] and --anchor-lon in "
-          "[-180, 180]");
-    }
+    areagraph::CheckGeoAnchor(anchor);
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     const auto graph = areagraph::ReadHeadArtifact<areagraph::proto::AreaGraph>(
         *store, map_name, areagraph::kMergeStage);

@@ -1,5 +1,6 @@
 #include "tools/export/osmag_export.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -47,11 +48,16 @@ std::string Tag(const std::string& key, const std::string& value) {
   return "    <tag k=\"" + XmlEscaped(key) + "\" v=\"" + XmlEscaped(value) + "\"/>\n";
 }
 
-std::string Metres(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.3f", value);
+// `value` with `decimals` digits after the point, however long it gets.
+std::string Fixed(double value, int decimals) {
+  const int length = std::snprintf(nullptr, 0, "%.*f", decimals, value);
+  std::string text(static_cast<size_t>(std::max(length, 0)) + 1, '\0');
+  std::snprintf(text.data(), text.size(), "%.*f", decimals, value);
+  text.pop_back();
   return text;
 }
+
+std::string Metres(double value) { return Fixed(value, 3); }
 
 // Hands out negative ids and one node per distinct position (to the micrometre).
 class OsmNodeTable {
@@ -64,11 +70,19 @@ class OsmNodeTable {
     if (!std::isfinite(x_m) || !std::isfinite(y_m)) {
       throw InputError("the Area Graph has a vertex that is not a finite number");
     }
+    const LatLon position = MetresToLatLon(anchor_, x_m, y_m);
+    if (!(std::fabs(position.lat_deg) <= 90) || !(std::fabs(position.lon_deg) <= 180)) {
+      throw InputError("the Area Graph's point (" + Metres(x_m) + ", " + Metres(y_m) +
+                       ") m lies off the globe from the anchor (latitude " +
+                       Fixed(position.lat_deg, 3) +
+                       "); osmAG needs map coordinates in local "
+                       "metres near --anchor-lat/--anchor-lon");
+    }
     const std::pair<int64_t, int64_t> key{std::llround(x_m * 1e6), std::llround(y_m * 1e6)};
     auto [it, inserted] = ids_.emplace(key, 0);
     if (inserted) {
       it->second = NextId();
-      xml_ += NodeXml(it->second, MetresToLatLon(anchor_, x_m, y_m), "");
+      xml_ += NodeXml(it->second, position, "");
     }
     return it->second;
   }
@@ -82,12 +96,10 @@ class OsmNodeTable {
 
  private:
   static std::string NodeXml(int64_t id, const LatLon& position, const std::string& tags) {
-    char head[160];
-    std::snprintf(head, sizeof(head),
-                  "  <node id=\"%lld\" visible=\"true\" lat=\"%.10f\" lon=\"%.10f\"",
-                  static_cast<long long>(id), position.lat_deg, position.lon_deg);
-    return tags.empty() ? std::string(head) + "/>\n"
-                        : std::string(head) + ">\n" + tags + "  </node>\n";
+    const std::string head = "  <node id=\"" + std::to_string(id) + "\" visible=\"true\" lat=\"" +
+                             Fixed(position.lat_deg, 10) + "\" lon=\"" +
+                             Fixed(position.lon_deg, 10) + "\"";
+    return tags.empty() ? head + "/>\n" : head + ">\n" + tags + "  </node>\n";
   }
 
   GeoAnchor anchor_;
@@ -103,6 +115,17 @@ std::string WayXml(int64_t id, const std::vector<int64_t>& nodes, const std::str
 }
 
 }  // namespace
+
+void CheckGeoAnchor(const GeoAnchor& anchor) {
+  if (!(anchor.lat_deg >= -89 && anchor.lat_deg <= 89)) {  // NaN fails
+    throw OptionsError("--anchor-lat must be a latitude in [-89, 89] degrees, got " +
+                       Fixed(anchor.lat_deg, 6));
+  }
+  if (!(anchor.lon_deg >= -180 && anchor.lon_deg <= 180)) {
+    throw OptionsError("--anchor-lon must be a longitude in [-180, 180] degrees, got " +
+                       Fixed(anchor.lon_deg, 6));
+  }
+}
 
 LatLon MetresToLatLon(const GeoAnchor& anchor, double x_m, double y_m) {
   const double lat0_rad = anchor.lat_deg / kDegreesPerRadian;

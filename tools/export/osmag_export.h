@@ -13,6 +13,10 @@ struct GeoAnchor {
   double lon_deg = 121.59042;
 };
 
+// Throws OptionsError unless the anchor is a finite latitude in [-89, 89]
+// (the tangent plane degenerates at the poles) and longitude in [-180, 180].
+void CheckGeoAnchor(const GeoAnchor& anchor);
+
 struct LatLon {
   double lat_deg = 0;
   double lon_deg = 0;
@@ -37,7 +41,8 @@ LatLon MetresToLatLon(const GeoAnchor& anchor, double x_m, double y_m);
 //   osmAG:from=area_<a>, osmAG:to=area_<b>, name=passage_<id>, width=<m>.
 // Nodes come first, then area ways, then passage ways. New objects have
 // negative ids, unique across nodes and ways. Throws InputError for an area
-// with fewer than three vertices or coordinates that are not finite.
+// with fewer than three vertices, or coordinates that are not finite or lie
+// off the globe from the anchor.
 std::string AreaGraphToOsmAg(const proto::AreaGraph& graph, const std::string& map_name,
                              const GeoAnchor& anchor);
 

@@ -60,16 +60,24 @@ TEST(GridMapConversion, RejectsInvalidGrids) {
     return message;
   };
   using M = areagraph_lcm::grid_map_t;
-  EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.resolution_m = 0; })); },
-                            "grid_map_t 'lab': resolution_m must be positive and finite, got 0"));
-  EXPECT_TRUE(
-      ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.resolution_m = std::nan(""); })); },
-                    "resolution_m must be positive and finite"));
+  EXPECT_TRUE(ThrowsMessage(
+      [&] { GridMapFromLcm(with([](M& m) { m.resolution_m = 0; })); },
+      "grid_map_t 'lab': resolution_m must be a resolution in [0.0001, 1000] metres per pixel, "
+      "got 0"));
+  EXPECT_TRUE(ThrowsMessage(
+      [&] { GridMapFromLcm(with([](M& m) { m.resolution_m = std::nan(""); })); },
+      "resolution_m must be a resolution in [0.0001, 1000] metres per pixel, got nan"));
   EXPECT_TRUE(ThrowsMessage(
       [&] {
         GridMapFromLcm(with([](M& m) { m.origin_x_m = std::numeric_limits<double>::infinity(); }));
       },
-      "the origin is not finite"));
+      "origin x and y must be finite metres within +-1e+08, got inf"));
+  EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.origin_y_m = 1.7e308; })); },
+                            "origin x and y must be finite metres within +-1e+08"));
+  EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.origin_yaw_rad = 1e9; })); },
+                            "origin yaw must be finite radians within +-2 pi"));
+  EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.resolution_m = 1e-300; })); },
+                            "resolution_m must be a resolution in [0.0001, 1000]"));
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.width = 0; })); },
                             "size 0x2 is not positive"));
   EXPECT_TRUE(ThrowsMessage([&] { GridMapFromLcm(with([](M& m) { m.width = 4; })); },

@@ -41,7 +41,8 @@ TEST(LiveCli, RefusesBadFlagsAndStores) {
   testing::TempDir dir;
   const std::string missing_dir_store = dir.File("no/such/dir/x.db");
   ExpectFailure("ag-live", {"--count", "-1"}, "--count must be 0 (no limit) or positive");
-  ExpectFailure("ag-listen", {"--timeout", "-2"}, "--timeout must be 0 (none) or positive");
+  ExpectFailure("ag-listen", {"--timeout", "-2"},
+                "--timeout must be 0 (none) or a number of seconds up to 10000000");
   ExpectFailure("ag-live", {"--set", "cut.no_such_option=1"},
                 "unknown option 'cut.no_such_option'");
   ExpectFailure("ag-live", {"--set", "import.max_pixels=0", "--store", ":memory:"},

@@ -227,5 +227,43 @@ TEST_F(AgRunTest, HelpDescribesMapKinds) {
   EXPECT_NE(run.out.find("--shard"), std::string::npos);
 }
 
+// Inputs that used to be accepted: a collection with nothing in it ("0
+// maps", exit 0), a BOM that hid the `path` column, TRUE refused where t was
+// taken, and an options folder read as the defaults.
+TEST(AgRunInputTest, EmptyCollectionsAreErrorsAndNothingIsCreated) {
+  TempDir dir;
+  std::filesystem::create_directory(dir.File("empty"));
+  WriteFile(dir.File("header.tsv"), "path\tname\n");
+  for (const std::string& input : {dir.File("empty"), dir.File("header.tsv")}) {
+    const CommandResult run = RunTool("ag-run", {"--store", dir.File("s.db"), input});
+    EXPECT_EQ(run.exit_code, 1) << input;
+    EXPECT_EQ(CountLines(run.err), 1) << run.err;
+    EXPECT_NE(run.err.find(input), std::string::npos) << run.err;
+    EXPECT_EQ(run.out, "");
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.File("s.db")));
+}
+
+TEST(AgRunInputTest, ByteOrderMarkAndCapitalBooleansAreRead) {
+  TempDir dir;
+  WriteRandomMaps(dir.path(), 1, /*first_seed=*/5);
+  WriteFile(dir.File("maps.csv"), "\xEF\xBB\xBFpath,merge.fold_open_bays\nmap_5.png,FALSE\n");
+  CommandResult run;
+  const proto::RunSummary summary = RunJson(
+      {"--store", dir.File("s.db"), "--set", "voronoi.keep_rays=TRUE", dir.File("maps.csv")}, &run);
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(summary.succeeded(), 1);
+}
+
+TEST(AgRunInputTest, OptionsFolderIsRefused) {
+  TempDir dir;
+  WriteRandomMaps(dir.path(), 1, /*first_seed=*/5);
+  const CommandResult run = RunTool(
+      "ag-run", {"--store", dir.File("s.db"), "--options", dir.path(), dir.File("map_5.png")});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.err, "ag-run: options file '" + dir.path() + "' is a folder; name a .pbtxt file\n");
+  EXPECT_FALSE(std::filesystem::exists(dir.File("s.db")));
+}
+
 }  // namespace
 }  // namespace areagraph::testing

@@ -118,5 +118,49 @@ TEST(MapCollectionTest, BinaryManifestIsRefused) {
   EXPECT_NE(error.find("list.tsv:2"), std::string::npos) << error;
 }
 
+// Excel saves "CSV UTF-8" with a byte order mark before the first column name.
+TEST(MapCollectionTest, ManifestWithAByteOrderMarkIsRead) {
+  TempDir dir;
+  WriteFile(dir.File("list.csv"), "\xEF\xBB\xBFpath,name\na.png,first\n");
+  const std::vector<MapEntry> maps = CollectMaps({dir.File("list.csv")});
+  ASSERT_EQ(maps.size(), 1u);
+  EXPECT_EQ(maps[0].name, "first");
+  WriteFile(dir.File("list.tsv"), "\xEF\xBB\xBFpath\na.png\n");
+  EXPECT_EQ(CollectMaps({dir.File("list.tsv")}).at(0).name, "a");
+}
+
+TEST(MapCollectionTest, HeaderOnlyManifestIsRefused) {
+  TempDir dir;
+  WriteFile(dir.File("list.tsv"), "path\tname\n# nothing yet\n\n");
+  EXPECT_EQ(ErrorOf<InputError>([&] { CollectMaps({dir.File("list.tsv")}); }),
+            "manifest '" + dir.File("list.tsv") + "' lists no maps (it has only its header)");
+}
+
+TEST(MapCollectionTest, DirectoryWithoutImagesIsRefusedEvenBesideOthers) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.File("empty/sub"));
+  WriteFile(dir.File("empty/sub/notes.txt"), "x");
+  WriteFile(dir.File("a.png"), "x");
+  const std::string error = ErrorOf<InputError>([&] {
+    CollectMaps({dir.File("a.png"), dir.File("empty")});
+  });
+  EXPECT_EQ(error.rfind("directory '" + dir.File("empty") + "' holds no map images", 0), 0u)
+      << error;
+}
+
+TEST(MapCollectionTest, ManifestNumbersThatAreNotFiniteOrAbsurdNameTheRow) {
+  TempDir dir;
+  WriteFile(dir.File("list.csv"),
+            "path,name,cut.room_width_m,voronoi.keep_rays\n"
+            "a.png,a,nan,true\nb.png,b,1e308,TRUE\nc.png,c,1.2,T\n");
+  const std::vector<MapEntry> maps = CollectMaps({dir.File("list.csv")});
+  ASSERT_EQ(maps.size(), 3u);
+  for (int row = 0; row < 3; ++row) {
+    const std::string error =
+        ErrorOf<OptionsError>([&] { OptionsForMap(proto::PipelineOptions(), maps[row]); });
+    EXPECT_NE(error.find("list.csv:" + std::to_string(row + 2)), std::string::npos) << error;
+  }
+}
+
 }  // namespace
 }  // namespace areagraph

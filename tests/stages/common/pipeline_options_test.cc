@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "store/error.h"
 #include "tests/support/test_support.h"
@@ -118,6 +120,88 @@ TEST(PipelineOptionsTest, ShippedOptionFilesParse) {
       ReadOptionsFile(testing::SourcePath("examples/options/paper.pbtxt"));
   EXPECT_EQ(paper.merge().min_area_m2(), 0);
   EXPECT_TRUE(paper.merge().cover_removed_obstacles());
+}
+
+// Every numeric option key, by reflection, so that a new option is covered.
+std::vector<std::string> NumericOptionKeys() {
+  std::vector<std::string> keys;
+  const google::protobuf::Descriptor* pipeline = proto::PipelineOptions::descriptor();
+  for (int i = 0; i < pipeline->field_count(); ++i) {
+    const google::protobuf::FieldDescriptor* stage = pipeline->field(i);
+    for (int j = 0; j < stage->message_type()->field_count(); ++j) {
+      const google::protobuf::FieldDescriptor* field = stage->message_type()->field(j);
+      if (field->cpp_type() != google::protobuf::FieldDescriptor::CPPTYPE_BOOL) {
+        keys.push_back(stage->name() + "." + field->name());
+      }
+    }
+  }
+  return keys;
+}
+
+// Non-finite and absurd numbers, as a user could type them.
+const char* const kAbsurdNumbers[] = {"nan", "inf", "-inf", "1e308", "-1e308", "-1"};
+
+TEST(PipelineOptionsTest, NoNumericOptionTakesANonFiniteOrAbsurdNumber) {
+  const std::vector<std::string> keys = NumericOptionKeys();
+  ASSERT_GE(keys.size(), 15u);  // a broken reflection walk finds none
+  for (const std::string& key : keys) {
+    for (const char* value : kAbsurdNumbers) {
+      proto::PipelineOptions options;
+      const std::string error =
+          testing::ErrorOf<OptionsError>([&] { ApplyOverride(key + "=" + value, &options); });
+      EXPECT_NE(error.find(key), std::string::npos) << key << "=" << value << ": " << error;
+    }
+  }
+}
+
+TEST(PipelineOptionsTest, OptionsFileWithANonFiniteOrAbsurdNumberIsRefused) {
+  TempDir dir;
+  for (const std::string& key : NumericOptionKeys()) {
+    const size_t dot = key.find('.');
+    for (const char* value : kAbsurdNumbers) {
+      const std::string path = dir.File("absurd.pbtxt");
+      WriteFile(path, key.substr(0, dot) + " { " + key.substr(dot + 1) + ": " + value + " }\n");
+      const std::string error = testing::ErrorOf<OptionsError>([&] { ReadOptionsFile(path); });
+      EXPECT_NE(error.find("absurd.pbtxt"), std::string::npos) << key << ": " << value << error;
+    }
+  }
+}
+
+TEST(PipelineOptionsTest, NumbersAtTheirBoundsAreAccepted) {
+  proto::PipelineOptions options;
+  ApplyOverride("prune.min_clearance_m=0", &options);
+  ApplyOverride("prune.boundary_alpha_radius_m=10000", &options);
+  ApplyOverride("merge.min_area_m2=1e8", &options);
+  ApplyOverride("clean.outlier_percent=99.5", &options);
+  EXPECT_EQ(options.prune().boundary_alpha_radius_m(), 10000);
+  EXPECT_EQ(testing::ErrorOf<OptionsError>([&] { CheckOptionNumbers(options); }), "");
+}
+
+TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
+  for (const char* yes : {"true", "TRUE", "True", "1"}) {
+    proto::PipelineOptions options;
+    ApplyOverride(std::string("voronoi.keep_rays=") + yes, &options);
+    EXPECT_TRUE(options.voronoi().has_keep_rays()) << yes;
+    EXPECT_TRUE(options.voronoi().keep_rays()) << yes;
+  }
+  for (const char* no : {"false", "FALSE", "fAlSe", "0"}) {
+    proto::PipelineOptions options;
+    ApplyOverride(std::string("merge.fold_open_bays=") + no, &options);
+    EXPECT_FALSE(options.merge().fold_open_bays()) << no;
+  }
+  for (const char* unclear : {"t", "f", "yes", "2", "", "true "}) {
+    proto::PipelineOptions options;
+    EXPECT_EQ(testing::ErrorOf<OptionsError>(
+                  [&] { ApplyOverride(std::string("voronoi.keep_rays=") + unclear, &options); }),
+              "option 'voronoi.keep_rays' expects true or false (or 1 or 0), got '" +
+                  std::string(unclear) + "'");
+  }
+}
+
+TEST(PipelineOptionsTest, OptionsFolderIsRefusedNotReadAsDefaults) {
+  TempDir dir;
+  EXPECT_EQ(testing::ErrorOf<OptionsError>([&] { ReadOptionsFile(dir.path()); }),
+            "options file '" + dir.path() + "' is a folder; name a .pbtxt file");
 }
 
 }  // namespace

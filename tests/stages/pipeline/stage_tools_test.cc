@@ -53,7 +53,8 @@ TEST_F(StageTools, BadOptionsAndMissingInputsFailWithOneLine) {
   CommandResult result = Run("ag-clean", {"--set", "clean.outlier_percent=-3"});
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_EQ(result.err,
-            "ag-clean: clean.outlier_percent must be at least 0 and below 100 (got -3)\n");
+            "ag-clean: option 'clean.outlier_percent' must be a number of percent in [0, 100], got "
+            "-3\n");
 
   result = Run("ag-voronoi");
   EXPECT_EQ(result.exit_code, 1);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "store/error.h"
+#include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"
 
 namespace areagraph {
@@ -71,6 +72,61 @@ TEST(OsmAgExport, RejectsDegenerateAreas) {
   graph.mutable_areas(0)->mutable_polygon_m()->mutable_outer()->mutable_points()->RemoveLast();
   graph.mutable_areas(0)->mutable_polygon_m()->mutable_outer()->mutable_points()->RemoveLast();
   EXPECT_THROW(AreaGraphToOsmAg(graph, "house", GeoAnchor()), InputError);
+}
+
+// The graph moved by (dx, dy) metres, as a far map origin would place it.
+proto::AreaGraph ShiftedAreaGraph(double dx, double dy) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  for (proto::Area& area : *graph.mutable_areas()) {
+    for (proto::Point2& point : *area.mutable_polygon_m()->mutable_outer()->mutable_points()) {
+      point.set_x(point.x() + dx);
+      point.set_y(point.y() + dy);
+    }
+  }
+  for (proto::Passage& passage : *graph.mutable_passages()) {
+    for (proto::Point2* end :
+         {passage.mutable_segment_m()->mutable_a(), passage.mutable_segment_m()->mutable_b()}) {
+      end->set_x(end->x() + dx);
+      end->set_y(end->y() + dy);
+    }
+  }
+  return graph;
+}
+
+// The case: an origin of 1.7e308 m used to give node lines cut off
+// by a fixed buffer. Off the globe is refused; far but on the globe is whole.
+TEST(OsmAgExport, PointsOffTheGlobeAreRefusedAndFarOnesStayWellFormed) {
+  for (const double far : {1.7e308, -1e8, 2.5e7}) {
+    const std::string error = testing::ErrorOf<InputError>(
+        [&] { AreaGraphToOsmAg(ShiftedAreaGraph(0, far), "house", GeoAnchor()); });
+    EXPECT_NE(error.find("lies off the globe"), std::string::npos) << far << ": " << error;
+  }
+  const std::string xml = AreaGraphToOsmAg(ShiftedAreaGraph(5e5, -3e6), "house", GeoAnchor());
+  const std::vector<std::string> nodes = AllMatches(xml, "(<node [^\n]*)\n");
+  ASSERT_EQ(nodes.size(), 9u);
+  const std::regex whole(
+      "<node id=\"-\\d+\" visible=\"true\" lat=\"-?\\d+\\.\\d{10}\" "
+      "lon=\"-?\\d+\\.\\d{10}\"/?>");
+  for (const std::string& node : nodes) EXPECT_TRUE(std::regex_match(node, whole)) << node;
+}
+
+TEST(OsmAgExport, NonFiniteAndAbsurdAnchorsAreRefused) {
+  const double nan = std::nan(""), inf = INFINITY;
+  for (const double bad : {nan, inf, -inf, 1e308, -1e308, 90.0, -89.5}) {
+    EXPECT_NE(testing::ErrorOf<OptionsError>([&] {
+                CheckGeoAnchor({bad, 0});
+              }).find("--anchor-lat"),
+              std::string::npos)
+        << bad;
+  }
+  for (const double bad : {nan, inf, -inf, 1e308, -1e308, 180.5}) {
+    EXPECT_NE(testing::ErrorOf<OptionsError>([&] {
+                CheckGeoAnchor({0, bad});
+              }).find("--anchor-lon"),
+              std::string::npos)
+        << bad;
+  }
+  EXPECT_EQ(testing::ErrorOf<OptionsError>([&] { CheckGeoAnchor({-89, 180}); }), "");
 }
 
 }  // namespace
