@@ -102,7 +102,8 @@ void WriteResult(EventWriter& events, const MapResult& result) {
   events.Write({"R", result.ok ? "1" : "0", std::to_string(result.areas),
                 std::to_string(result.passages), result.fully_cached ? "1" : "0",
                 result.published ? "1" : "0", result.failure_recorded ? "1" : "0",
-                result.failed_stage, result.error});
+                result.failed_stage, result.error, std::to_string(result.components),
+                std::to_string(result.dropped_parts)});
 }
 
 MapResult ReadResult(const std::vector<std::string>& fields) {
@@ -116,6 +117,10 @@ MapResult ReadResult(const std::vector<std::string>& fields) {
   result.failure_recorded = fields[6] == "1";
   result.failed_stage = fields[7];
   result.error = fields[8];
+  if (fields.size() >= 11) {
+    result.components = std::stoi(fields[9]);
+    result.dropped_parts = std::stoi(fields[10]);
+  }
   return result;
 }
 

@@ -92,6 +92,8 @@ MapResult MapWorker::Run(const MapTask& task, const PipelineObserver& observer) 
       const auto graph = ReadHeadArtifact<proto::AreaGraph>(store, name, kMergeStage, &key);
       result.areas = graph.areas_size();
       result.passages = graph.passages_size();
+      result.components = graph.components();
+      result.dropped_parts = graph.dropped_parts();
       result.graph_changed = old_graph != key;
       if (result.graph_changed && publish_) {
         stage = "publish";

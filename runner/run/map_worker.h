@@ -35,6 +35,8 @@ struct MapResult {
   std::string error;         // when !ok
   int areas = 0;             // of the merge head, when merge ran
   int passages = 0;
+  int components = 0;
+  int dropped_parts = 0;       // smaller than prune.min_component_m2
   bool fully_cached = false;   // every stage was a hit
   bool graph_changed = false;  // the merge head is new or different
   bool published = false;

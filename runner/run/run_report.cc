@@ -37,17 +37,23 @@ void RunReport::MapEnded(int task, const MapResult& result) {
   summary_.set_succeeded(summary_.succeeded() + 1);
   summary_.set_areas(summary_.areas() + result.areas);
   summary_.set_passages(summary_.passages() + result.passages);
+  summary_.set_components(summary_.components() + result.components);
+  summary_.set_dropped_parts(summary_.dropped_parts() + result.dropped_parts);
   if (result.fully_cached) summary_.set_fully_cached(summary_.fully_cached() + 1);
   if (result.published) summary_.set_published(summary_.published() + 1);
-  char line[256];
-  if (result.fully_cached) {
-    std::snprintf(line, sizeof(line), "%d areas, %d passages (all cached)", result.areas,
-                  result.passages);
-  } else {
-    std::snprintf(line, sizeof(line), "%d areas, %d passages (computed in %.2f s)", result.areas,
-                  result.passages, compute_ms_[task] / 1000);
+  std::string line =
+      std::to_string(result.areas) + " areas, " + std::to_string(result.passages) + " passages";
+  if (result.components > 1) line += ", " + std::to_string(result.components) + " components";
+  if (result.dropped_parts > 0) {
+    line += ", " + std::to_string(result.dropped_parts) + " small parts dropped";
   }
-  progress_.MapDone(false, name + ": " + line);
+  char how[64];
+  if (result.fully_cached) {
+    std::snprintf(how, sizeof(how), " (all cached)");
+  } else {
+    std::snprintf(how, sizeof(how), " (computed in %.2f s)", compute_ms_[task] / 1000);
+  }
+  progress_.MapDone(false, name + ": " + line + how);
 }
 
 void RunReport::MapCrashed(int task, const std::string& what) {
@@ -102,7 +108,9 @@ void PrintSummary(const proto::RunSummary& summary, std::ostream& out) {
       << summary.maps_per_s() << " maps/s, " << summary.jobs()
       << (summary.jobs() == 1 ? " job" : " jobs")
       << (summary.shard().empty() ? "" : ", shard " + summary.shard()) << ")\n";
-  out << "  " << summary.areas() << " areas, " << summary.passages() << " passages";
+  out << "  " << summary.areas() << " areas, " << summary.passages() << " passages, "
+      << summary.components() << " components, " << summary.dropped_parts()
+      << " small parts dropped (prune.min_component_m2)";
   if (summary.published() > 0) out << ", " << summary.published() << " graphs published";
   out << "\n  cache: " << summary.cache_hits() << " hits, " << summary.cache_misses() << " misses";
   if (summary.cache_misses() == 0 && summary.cache_hits() > 0) out << " (every stage was a hit)";

@@ -21,7 +21,9 @@ std::string EncodePng(const cv::Mat& image, int compression) {
 }
 
 void WritePngFile(const std::string& target, const cv::Mat& image) {
-  WriteOutputFile(target, EncodePng(image, 9));
+  // zlib's own default: on ag-render's pictures 1-2 % larger than level 9 in
+  // a sixth of the time (level 9 took 2.4 s of a 2.8 s render of lab_a).
+  WriteOutputFile(target, EncodePng(image, 6));
 }
 
 }  // namespace areagraph

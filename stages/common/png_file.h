@@ -10,7 +10,7 @@ namespace areagraph {
 // encode it.
 std::string EncodePng(const cv::Mat& image, int compression);
 
-// EncodePng with the strongest compression, written through WriteOutputFile,
+// EncodePng at zlib's default level 6, written through WriteOutputFile,
 // so "-", links, devices and full disks are handled as for every other
 // output. Throws InputError naming `target` when it cannot be written.
 void WritePngFile(const std::string& target, const cv::Mat& image);

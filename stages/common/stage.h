@@ -23,13 +23,16 @@ inline constexpr StageInfo kImportStage{"import", 1};
 // clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
 inline constexpr StageInfo kCleanStage{"clean", 3};
 inline constexpr StageInfo kVoronoiStage{"voronoi", 2};  // 2: edges in face order
-inline constexpr StageInfo kPruneStage{"prune", 1};
+// prune 2: every part of the map above prune.min_component_m2 is kept, not only the biggest.
+inline constexpr StageInfo kPruneStage{"prune", 2};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
-inline constexpr StageInfo kCutStage{"cut", 2};
+// cut 3: room detection inside every part's boundary; parts carried to merge.
+inline constexpr StageInfo kCutStage{"cut", 3};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
-inline constexpr StageInfo kMergeStage{"merge", 4};
+// merge 5: areas in every part's boundary; components and dropped parts counted.
+inline constexpr StageInfo kMergeStage{"merge", 5};
 
 // The stages in pipeline order.
 inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,

@@ -71,7 +71,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   const proto::RoomWidthEstimate room_width = ChooseRoomWidth(options, map.frame(), topology);
   const double room_width_px = room_width.room_width_m() / grid.resolution_m();
 
-  const cv::Mat inside = PolygonMask(topology.boundary(), cv::Size(grid.width(), grid.height()));
+  const cv::Mat inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
+                                      cv::Size(grid.width(), grid.height()));
   auto inside_boundary = [&](const Eigen::Vector2d& p) {
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
@@ -85,6 +86,10 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   out.set_format_version(1);
   *out.mutable_frame() = map.frame();
   *out.mutable_boundary() = topology.boundary();
+  *out.mutable_part_boundaries() = topology.part_boundaries();
+  out.set_parts(topology.parts());
+  out.set_dropped_parts(topology.dropped_parts());
+  out.set_dropped_area_m2(topology.dropped_area_m2());
   *out.mutable_vertices() = topology.vertices();
   *out.mutable_room_width() = room_width;
 

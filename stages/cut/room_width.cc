@@ -1,10 +1,13 @@
 #include "stages/cut/room_width.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "stages/cut/width_estimate.h"
+#include "stages/geometry/disjoint_sets.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -30,6 +33,29 @@ void CheckFitsMap(double width, const proto::MapFrame& frame) {
     throw OptionsError("the room width W = " + Text(width) + " m is wider than the map (" +
                        Text(map_width_m) + " x " + Text(map_height_m) + " m)");
   }
+}
+
+// The graph with only the edges of its connected part with the most edge
+// length: the one part of the paper, and the one W is estimated from.
+// Smaller parts (a room seen through a window, the fans of free cells that
+// laser rays leave outside an incomplete scan) would otherwise shift the
+// door estimate, and with it every room of the main part.
+proto::TopologyGraph LongestPart(const proto::TopologyGraph& topology) {
+  DisjointSets parts(topology.vertices_size());
+  for (const proto::GraphEdge& edge : topology.edges()) parts.Union(edge.source(), edge.target());
+  std::vector<double> length(topology.vertices_size(), 0.0);
+  for (const proto::GraphEdge& edge : topology.edges()) {
+    length[parts.Find(edge.source())] += edge.length_px();
+  }
+  if (length.empty()) return topology;
+  const int longest =
+      static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
+  proto::TopologyGraph part = topology;
+  part.clear_edges();
+  for (const proto::GraphEdge& edge : topology.edges()) {
+    if (parts.Find(edge.source()) == longest) *part.add_edges() = edge;
+  }
+  return part;
 }
 
 }  // namespace
@@ -65,8 +91,8 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
   proto::RoomWidthEstimate estimate;
   if (options.room_width_auto() && !strategy) {
-    estimate =
-        EstimateRoomWidth(topology, frame.resolution_m(), fixed, options.room_width_above_doors());
+    estimate = EstimateRoomWidth(LongestPart(topology), frame.resolution_m(), fixed,
+                                 options.room_width_above_doors());
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);

@@ -17,8 +17,9 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
 
 // The W that ag-cut uses, and how it came about: RoomWidthM when door and
 // corridor widths are given or cut.room_width_auto is off, else
-// EstimateRoomWidth on the Topology Graph (falling back to
-// cut.room_width_m when it finds neither doors nor corridors). Throws as
+// EstimateRoomWidth on the connected part of the Topology Graph with the
+// most edge length (falling back to cut.room_width_m when it finds neither
+// doors nor corridors). Throws as
 // RoomWidthM does.
 proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
                                          const proto::MapFrame& frame,

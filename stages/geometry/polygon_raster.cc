@@ -42,4 +42,12 @@ cv::Mat PolygonMask(const proto::Polygon& polygon, cv::Size size) {
   return mask;
 }
 
+cv::Mat BoundaryMask(const google::protobuf::RepeatedPtrField<proto::Polygon>& parts,
+                     const proto::Polygon& boundary, cv::Size size) {
+  if (parts.empty()) return PolygonMask(boundary, size);
+  cv::Mat mask = cv::Mat::zeros(size, CV_8U);
+  for (const proto::Polygon& part : parts) FillPolygon(part, 255, &mask);
+  return mask;
+}
+
 }  // namespace areagraph

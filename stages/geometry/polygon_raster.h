@@ -14,4 +14,10 @@ void FillPolygon(const proto::Polygon& polygon, int value, cv::Mat* image);
 // A CV_8U mask of `size` with the cells of `polygon` set to 255.
 cv::Mat PolygonMask(const proto::Polygon& polygon, cv::Size size);
 
+// The mask of the map's boundaries: every polygon of `parts` (a Topology or
+// Cut Graph's part_boundaries), or `boundary` alone when there are none (an
+// artifact from before parts were kept).
+cv::Mat BoundaryMask(const google::protobuf::RepeatedPtrField<proto::Polygon>& parts,
+                     const proto::Polygon& boundary, cv::Size size);
+
 }  // namespace areagraph

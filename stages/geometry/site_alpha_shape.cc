@@ -67,7 +67,7 @@ proto::Ring ToProtoRing(const PointList& points) {
 struct SiteAlphaShape::Impl {
   AlphaShape shape;
   Face hint;
-  int biggest_region = -1;
+  int enclosed_regions = 0;  // found by FindEnclosedRegions
 
   explicit Impl(const std::vector<Kernel::Point_2>& points, double alpha)
       : shape(points.begin(), points.end(), alpha, AlphaShape::GENERAL) {}
@@ -171,10 +171,10 @@ int SiteAlphaShape::FaceCount() const {
   return impl_->HasFaces() ? static_cast<int>(impl_->shape.number_of_faces()) : 0;
 }
 
-proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
+std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
   Impl& impl = *impl_;
-  impl.biggest_region = -1;
-  if (!impl.HasFaces()) return proto::Polygon();
+  impl.enclosed_regions = 0;
+  if (!impl.HasFaces()) return {};
 
   // Outside: what infinity reaches without crossing the alpha complex. Edges
   // of the complex (singular ones too) are walls, so a thin wall whose
@@ -194,30 +194,29 @@ proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
       queue.push_back(next);
     }
   }
-  // The enclosed faces in edge-connected pieces; the biggest is the map.
-  const int count =
+  impl.enclosed_regions =
       impl.LabelRegions([](const Face& face) { return !face->info().outside; },
                         [](const Face&, int) { return true; }, &FaceInfo::filled_region);
-  std::vector<double> area(count, 0.0);
+  std::vector<double> area(impl.enclosed_regions, 0.0);
   for (Face face : impl.shape.finite_face_handles()) {
     if (face->info().filled_region >= 0) area[face->info().filled_region] += TriangleArea(face);
   }
-  for (int region = 0; region < count; ++region) {
-    if (impl.biggest_region < 0 || area[region] > area[impl.biggest_region]) {
-      impl.biggest_region = region;
-    }
-  }
-  if (impl.biggest_region < 0) return proto::Polygon();
-  const auto rings = impl.RegionRings(&FaceInfo::filled_region, impl.biggest_region);
-  const auto found = rings.find(impl.biggest_region);
-  if (found == rings.end()) return proto::Polygon();
-  return Impl::ToPolygon(found->second, /*with_holes=*/false);
+  return area;
 }
 
-bool SiteAlphaShape::InsideBiggestShape(const Eigen::Vector2d& point) {
-  if (!impl_->HasFaces() || impl_->biggest_region < 0) return false;
+int SiteAlphaShape::EnclosedRegionAt(const Eigen::Vector2d& point) {
+  if (!impl_->HasFaces() || impl_->enclosed_regions == 0) return -1;
   const Face face = impl_->Locate(point);
-  return !impl_->shape.is_infinite(face) && face->info().filled_region == impl_->biggest_region;
+  return impl_->shape.is_infinite(face) ? -1 : face->info().filled_region;
+}
+
+proto::Polygon SiteAlphaShape::EnclosedRegionOutline(int region) {
+  Impl& impl = *impl_;
+  if (!impl.HasFaces() || region < 0 || region >= impl.enclosed_regions) return proto::Polygon();
+  const auto rings = impl.RegionRings(&FaceInfo::filled_region, region);
+  const auto found = rings.find(region);
+  if (found == rings.end()) return proto::Polygon();
+  return Impl::ToPolygon(found->second, /*with_holes=*/false);
 }
 
 int SiteAlphaShape::DetectRooms(

@@ -12,7 +12,7 @@ namespace areagraph {
 
 // The Delaunay triangulation of obstacle sites, classified by one alpha
 // (CGAL Alpha_shape_2, GENERAL mode; alpha = squared radius). Used twice:
-// ag-prune takes the biggest region the shape encloses as the map boundary,
+// ag-prune takes the regions the shape encloses as the map's boundaries,
 // ag-cut takes the empty regions (faces wider than the alpha disk) as rooms.
 class SiteAlphaShape {
  public:
@@ -23,14 +23,17 @@ class SiteAlphaShape {
 
   // --- The boundary (ag-prune) ---
 
-  // The biggest alpha shape: the faces that the alpha complex (its regular
-  // and singular edges) encloses, that is that infinity cannot reach without
-  // crossing one of its edges, grouped into edge-connected pieces; returns
-  // the outer ring of the piece with the biggest area (rooms wider than alpha
-  // are inside it, not holes). Empty when nothing is enclosed.
-  proto::Polygon BiggestShapeOutline();
-  // True when `point` lies in the piece found by BiggestShapeOutline.
-  bool InsideBiggestShape(const Eigen::Vector2d& point);
+  // Finds the enclosed regions: the faces that the alpha complex (its
+  // regular and singular edges) encloses, that is that infinity cannot reach
+  // without crossing one of its edges, grouped into edge-connected pieces (a
+  // building each). Returns the area (square pixels) of every region, by id;
+  // empty when nothing is enclosed.
+  std::vector<double> FindEnclosedRegions();
+  // The region (of FindEnclosedRegions) containing `point`, or -1.
+  int EnclosedRegionAt(const Eigen::Vector2d& point);
+  // The outer ring of a region (rooms wider than alpha are inside it, not
+  // holes); empty for an unknown region.
+  proto::Polygon EnclosedRegionOutline(int region);
 
   // --- Rooms (ag-cut) ---
 

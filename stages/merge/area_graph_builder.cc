@@ -3,16 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <set>
 
 #include "stages/common/map_frame.h"
 #include "stages/geometry/cell_grid.h"
+#include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/polygon_raster.h"
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/region_outline.h"
+#include "stages/merge/small_area_folding.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -38,74 +40,6 @@ void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
   }
 }
 
-// The areas that share a graph vertex with each area.
-std::vector<std::set<int>> GraphNeighbours(const proto::CutGraph& graph, const AreaPlan& plan) {
-  std::vector<std::set<int>> areas_at(graph.vertices_size());
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    areas_at[graph.edges(e).source()].insert(plan.area_of_edge[e]);
-    areas_at[graph.edges(e).target()].insert(plan.area_of_edge[e]);
-  }
-  std::vector<std::set<int>> neighbours(plan.areas.size());
-  for (const std::set<int>& at : areas_at) {
-    for (int a : at) {
-      for (int b : at) {
-        if (a != b) neighbours[a].insert(b);
-      }
-    }
-  }
-  return neighbours;
-}
-
-// Folds areas with fewer than `min_cells` cells into a neighbour: one that
-// shares a vertex and a border, else the one with the longest border, else
-// (no cells at all) the biggest that shares a vertex.
-void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* plan,
-                    AreaRaster* raster) {
-  std::set<int> unfoldable;
-  std::vector<cv::Rect> box = AreaBoxes(*raster);
-  for (;;) {
-    int smallest = -1;
-    for (size_t k = 0; k < plan->areas.size(); ++k) {
-      if (raster->cell_count[k] >= min_cells || unfoldable.count(static_cast<int>(k))) continue;
-      if (smallest < 0 || raster->cell_count[k] < raster->cell_count[smallest]) {
-        smallest = static_cast<int>(k);
-      }
-    }
-    if (smallest < 0 || plan->areas.size() < 2) return;
-    const std::vector<std::set<int>> neighbours = GraphNeighbours(graph, *plan);
-    const int64_t count = static_cast<int64_t>(plan->areas.size());
-    const std::vector<int64_t> border = BordersOf(*raster, smallest, box[smallest]);
-    auto pick = [&](auto score, bool graph_only) {
-      int best = -1;
-      for (int k = 0; k < count; ++k) {
-        if (k == smallest || (graph_only && !neighbours[smallest].count(k))) continue;
-        if (score(k) <= 0) continue;
-        if (best < 0 || score(k) > score(best)) best = k;
-      }
-      return best;
-    };
-    auto by_border = [&](int k) { return border[k]; };
-    auto by_size = [&](int k) { return raster->cell_count[k] + 1; };
-    int into = pick(by_border, true);
-    if (into < 0) into = pick(by_border, false);
-    if (into < 0 && raster->cell_count[smallest] == 0) into = pick(by_size, true);
-    if (into < 0) {
-      unfoldable.insert(smallest);
-      continue;
-    }
-    plan->MergeInto(smallest, into);
-    MergeAreaCells(smallest, into, raster);
-    if (box[smallest].area() > 0) {
-      box[into] = box[into].area() == 0 ? box[smallest] : (box[into] | box[smallest]);
-    }
-    box.erase(box.begin() + smallest);
-    // Indices above `smallest` shifted down.
-    std::set<int> shifted;
-    for (int k : unfoldable) shifted.insert(k > smallest ? k - 1 : k);
-    unfoldable = std::move(shifted);
-  }
-}
-
 // The paths of areas that run through a vertex (two or more of their edge
 // ends meet there), at every vertex where one does.
 std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph,
@@ -123,6 +57,16 @@ std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph
     }
   }
   return paths;
+}
+
+// Connected components of areas joined by passages.
+int CountComponents(const proto::AreaGraph& graph) {
+  DisjointSets components(graph.areas_size());
+  int count = graph.areas_size();
+  for (const proto::Passage& passage : graph.passages()) {
+    if (components.Union(passage.area_a(), passage.area_b())) --count;
+  }
+  return count;
 }
 
 proto::Ring ToRing(const PointList& points, const MapTransform* transform) {
@@ -178,9 +122,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
       }
     }
   }
-  AreaRaster raster =
-      PartitionFreeSpace(grid, graph.boundary(), polygons, paths, ThroughPaths(graph, plan),
-                         options.grow_min_gap_m() / grid.resolution_m(), removed);
+  AreaRaster raster = PartitionFreeSpace(grid,
+                                         BoundaryMask(graph.part_boundaries(), graph.boundary(),
+                                                      cv::Size(grid.width(), grid.height())),
+                                         polygons, paths, ThroughPaths(graph, plan),
+                                         options.grow_min_gap_m() / grid.resolution_m(), removed);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);
@@ -245,6 +191,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     out.mutable_areas(plan_passage.area_a)->add_passage_ids(passage->id());
     out.mutable_areas(plan_passage.area_b)->add_passage_ids(passage->id());
   }
+  out.set_components(CountComponents(out));
+  out.set_dropped_parts(graph.dropped_parts());
+  out.set_dropped_area_m2(graph.dropped_area_m2());
   if (raster_out != nullptr) *raster_out = std::move(raster);
   return out;
 }

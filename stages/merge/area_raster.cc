@@ -138,13 +138,13 @@ void CountCells(AreaRaster* raster) {
 
 }  // namespace
 
-AreaRaster PartitionFreeSpace(const CellGrid& grid, const proto::Polygon& boundary,
+AreaRaster PartitionFreeSpace(const CellGrid& grid, const cv::Mat& boundary_mask,
                               const std::vector<std::vector<const proto::Polygon*>>& area_polygons,
                               const std::vector<std::vector<PointList>>& area_paths,
                               const std::vector<std::pair<PointList, int>>& through_paths,
                               double min_gap_px, const cv::Mat& keep_out) {
   const cv::Size size(grid.width(), grid.height());
-  cv::Mat domain = PolygonMask(boundary, size);
+  cv::Mat domain = boundary_mask.clone();
   AreaRaster raster;
   for (int r = 0; r < size.height; ++r) {
     uint8_t* row = domain.ptr<uint8_t>(r);
@@ -183,38 +183,6 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, const proto::Polygon& bounda
   raster.cell_count.assign(area_polygons.size(), 0);
   CountCells(&raster);
   return raster;
-}
-
-void MergeAreaCells(int from, int into, AreaRaster* raster) {
-  const int from_label = from + 1, into_label = into + 1;
-  for (int r = 0; r < raster->labels.rows; ++r) {
-    int* row = raster->labels.ptr<int>(r);
-    for (int c = 0; c < raster->labels.cols; ++c) {
-      if (row[c] == from_label) row[c] = into_label;
-      if (row[c] > from_label) --row[c];
-    }
-  }
-  raster->cell_count[into] += raster->cell_count[from];
-  raster->cell_count.erase(raster->cell_count.begin() + from);
-}
-
-std::vector<int64_t> BordersOf(const AreaRaster& raster, int area, const cv::Rect& box) {
-  std::vector<int64_t> border(raster.cell_count.size(), 0);
-  const cv::Mat& labels = raster.labels;
-  const int label = area + 1;
-  const cv::Rect inside = box & cv::Rect(0, 0, labels.cols, labels.rows);
-  for (int r = inside.y; r < inside.br().y; ++r) {
-    for (int c = inside.x; c < inside.br().x; ++c) {
-      if (labels.at<int>(r, c) != label) continue;
-      for (int k = 0; k < 4; ++k) {
-        const int x = c + kDx[k], y = r + kDy[k];
-        if (x < 0 || y < 0 || x >= labels.cols || y >= labels.rows) continue;
-        const int other = labels.at<int>(y, x);
-        if (other > 0 && other != label) ++border[other - 1];
-      }
-    }
-  }
-  return border;
 }
 
 std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {

@@ -21,7 +21,8 @@ struct AreaRaster {
 };
 
 // Paints every area's polygons (area_polygons[k] for area k) on the free
-// cells inside `boundary`, then the paths of its edges on top (so that areas
+// cells inside the boundaries (`boundary_mask`, CV_8U, map size, see
+// BoundaryMask), then the paths of its edges on top (so that areas
 // that share a graph vertex touch there), grows the labels into the remaining such cells
 // (breadth first, 4-connected), keeps only the main 4-connected piece of
 // each area (the one with most of its paths, else the biggest) and grows again, so that every area
@@ -39,19 +40,11 @@ struct AreaRaster {
 //
 // Cells where `keep_out` (CV_8U, map size, optional) is non-zero are not
 // part of the domain: no area covers them.
-AreaRaster PartitionFreeSpace(const CellGrid& grid, const proto::Polygon& boundary,
+AreaRaster PartitionFreeSpace(const CellGrid& grid, const cv::Mat& boundary_mask,
                               const std::vector<std::vector<const proto::Polygon*>>& area_polygons,
                               const std::vector<std::vector<PointList>>& area_paths,
                               const std::vector<std::pair<PointList, int>>& through_paths,
                               double min_gap_px = 0, const cv::Mat& keep_out = cv::Mat());
-
-// Gives the cells of area `from` to area `into` and drops `from` (later
-// areas' labels shift down by one).
-void MergeAreaCells(int from, int into, AreaRaster* raster);
-
-// How many cell sides area `area` shares with each area (indexed by area),
-// looking only at its cells inside `box` (which must hold all of them).
-std::vector<int64_t> BordersOf(const AreaRaster& raster, int area, const cv::Rect& box);
 
 // The bounding box of every area's cells (empty for an area without cells).
 std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster);

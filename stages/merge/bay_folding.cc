@@ -57,15 +57,21 @@ void FoldOpenBays(const proto::CutGraph& graph, AreaPlan* plan) {
       if (!added) it->second = std::min(it->second, width);
     }
   }
+  // The vertices each area touches, in vertex order: scanning every vertex for
+  // every area took seconds on cluttered maps with thousands of each.
+  std::vector<std::vector<int>> vertices_of(area_count);
+  for (int v = 0; v < graph.vertices_size(); ++v) {
+    for (const auto& [area, width] : mouth_at[v]) vertices_of[area].push_back(v);
+  }
   std::vector<int> into(area_count, -1);
   for (int k = 0; k < area_count; ++k) {
     if (plan->areas[k].kind == proto::AREA_ROOM || length[k] > kMaxBayLengthWidths * typical[k]) {
       continue;
     }
     double widest = 0;
-    for (const std::map<int, double>& at : mouth_at) {
+    for (const int v : vertices_of[k]) {
+      const std::map<int, double>& at = mouth_at[v];
       const auto own = at.find(k);
-      if (own == at.end()) continue;
       for (const auto& [other, width] : at) {
         const double mouth = std::min(own->second, width);
         if (plan->areas[other].kind != proto::AREA_ROOM || mouth < kOpenMouthShare * typical[k] ||

@@ -32,8 +32,9 @@ int main(int argc, char** argv) {
                      std::fflush(stdout);
                    });
     const auto graph = ReadHeadArtifact<proto::AreaGraph>(*store, flags.map_name, kMergeStage);
-    std::printf("ag-pipeline: map '%s': %d areas, %d passages\n", flags.map_name.c_str(),
-                graph.areas_size(), graph.passages_size());
+    std::printf("ag-pipeline: map '%s': %d areas, %d passages, %d components, %d parts dropped\n",
+                flags.map_name.c_str(), graph.areas_size(), graph.passages_size(),
+                graph.components(), graph.dropped_parts());
     return 0;
   });
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "stages/geometry/disjoint_sets.h"
 
@@ -123,8 +124,10 @@ void ChainGraph::JoinDegreeTwoChains() {
   edges = std::move(joined);
 }
 
-void ChainGraph::KeepBiggestGroup() {
-  if (vertices.empty()) return;
+PartSelection ChainGraph::KeepParts(const std::function<int(int vertex)>& part_of,
+                                    const std::vector<int64_t>& part_cells, int64_t min_cells) {
+  PartSelection selection;
+  if (vertices.empty()) return selection;
   DisjointSets groups(vertices.size());
   for (const ChainEdge& edge : edges) {
     if (!edge.removed) groups.Union(edge.source, edge.target);
@@ -133,12 +136,46 @@ void ChainGraph::KeepBiggestGroup() {
   for (const ChainEdge& edge : edges) {
     if (!edge.removed) group_length[groups.Find(edge.source)] += edge.Length();
   }
+  // The part of each group: where most of its vertices are.
+  std::vector<std::map<int, int>> votes(vertices.size());
+  for (size_t v = 0; v < vertices.size(); ++v) {
+    const int group = groups.Find(static_cast<int>(v));
+    if (group_length[group] > 0) ++votes[group][part_of(static_cast<int>(v))];
+  }
+  std::vector<int> group_part(vertices.size(), -1);
+  for (size_t group = 0; group < vertices.size(); ++group) {
+    int most = 0;
+    for (const auto& [part, count] : votes[group]) {
+      if (count > most) most = count, group_part[group] = part;
+    }
+  }
   const int biggest = static_cast<int>(std::max_element(group_length.begin(), group_length.end()) -
                                        group_length.begin());
+  // Per part, its longest group (the biggest group wins its own part).
+  std::map<int, int> longest_in_part;
+  for (size_t group = 0; group < vertices.size(); ++group) {
+    if (group_length[group] <= 0) continue;
+    auto [it, added] = longest_in_part.emplace(group_part[group], static_cast<int>(group));
+    if (!added && group_length[group] > group_length[it->second])
+      it->second = static_cast<int>(group);
+  }
+  longest_in_part[group_part[biggest]] = biggest;
+  std::vector<char> keep(vertices.size(), 0);
+  for (const auto& [part, group] : longest_in_part) {
+    const bool big_enough = part >= 0 && part_cells[part] >= min_cells;
+    if (group == biggest || big_enough) {
+      keep[group] = 1;
+      ++selection.kept;
+    } else if (part >= 0) {
+      ++selection.dropped;
+      selection.dropped_cells += part_cells[part];
+    }
+  }
   for (ChainEdge& edge : edges) {
-    if (!edge.removed && groups.Find(edge.source) != biggest) edge.removed = true;
+    if (!edge.removed && !keep[groups.Find(edge.source)]) edge.removed = true;
   }
   CompactEdges();
+  return selection;
 }
 
 }  // namespace areagraph

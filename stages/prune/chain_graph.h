@@ -1,6 +1,8 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "proto/artifacts.pb.h"
@@ -48,6 +50,15 @@ struct Incidence {
   bool at_target = false;
 };
 
+// What ChainGraph::KeepParts kept and dropped.
+struct PartSelection {
+  // Parts of the free space with a group kept.
+  int kept = 0;
+  // Parts whose groups were all dropped for the part's size, and their cells.
+  int dropped = 0;
+  int64_t dropped_cells = 0;
+};
+
 // The multigraph of chains that ag-prune reduces to the Topology Graph.
 class ChainGraph {
  public:
@@ -61,9 +72,15 @@ class ChainGraph {
   // Pure cycles get one vertex marked as a forced junction.
   void JoinDegreeTwoChains();
 
-  // Removes every edge outside the connected group with the largest total
-  // edge length.
-  void KeepBiggestGroup();
+  // Keeps the connected group with the largest total edge length (the
+  // paper's keepBiggestGroup) and, in every other part of the free space
+  // with at least `min_cells` cells, the longest group there; removes the
+  // edges of the rest. `part_of` gives a vertex's part (-1: none) and
+  // `part_cells` each part's size: a group belongs to the part of most of
+  // its vertices. Groups in a part that has a longer one are dropped as the
+  // paper drops them (their cells are covered by the part's areas anyway).
+  PartSelection KeepParts(const std::function<int(int vertex)>& part_of,
+                          const std::vector<int64_t>& part_cells, int64_t min_cells);
 
   // Drops removed edges (edge indices change; vertex indices do not).
   void CompactEdges();

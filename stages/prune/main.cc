@@ -14,7 +14,8 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Prunes a map's head VoronoiDiagram (run ag-voronoi first) into the Topology Graph: "
       "boundary alpha shape, clearance filter, dead-end removal with the polygons joined "
-      "(the paper's Alg. 2), biggest connected group. Stores a TopologyGraph."};
+      "(the paper's Alg. 2), the biggest connected part and every other part of at least "
+      "prune.min_component_m2 (the smaller ones are counted). Stores a TopologyGraph."};
   StageCommandLine flags;
   AddStageFlags(app, flags);
   return RunCommand("ag-prune", app, argc, argv, [&] {
@@ -32,9 +33,12 @@ int main(int argc, char** argv) {
         },
         flags.force);
     const auto graph = ReadHeadArtifact<proto::TopologyGraph>(*store, flags.map_name, kPruneStage);
-    std::printf("ag-prune: map '%s': %d vertices, %d edges, %.0f ms, key %.12s (%s)\n",
-                flags.map_name.c_str(), graph.vertices_size(), graph.edges_size(), run.elapsed_ms,
-                run.cache_key.c_str(), run.cache_hit ? "cached" : "computed");
+    std::printf(
+        "ag-prune: map '%s': %d vertices, %d edges, %d parts (%d smaller dropped), %.0f ms, key "
+        "%.12s (%s)\n",
+        flags.map_name.c_str(), graph.vertices_size(), graph.edges_size(), graph.parts(),
+        graph.dropped_parts(), run.elapsed_ms, run.cache_key.c_str(),
+        run.cache_hit ? "cached" : "computed");
     return 0;
   });
 }

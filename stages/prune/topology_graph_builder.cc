@@ -1,7 +1,11 @@
 #include "stages/prune/topology_graph_builder.h"
 
+#include <algorithm>
 #include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
@@ -42,7 +46,7 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
   std::vector<char> keep(vertex_count, 0);
   for (int v = 0; v < vertex_count; ++v) {
     const Eigen::Vector2d p = FromProtoPoint(diagram.vertices(v).position());
-    keep[v] = grid.FreeAt(p) && boundary_shape.InsideBiggestShape(p);
+    keep[v] = grid.FreeAt(p) && boundary_shape.EnclosedRegionAt(p) >= 0;
   }
 
   DisjointSets same_point(vertex_count);
@@ -94,12 +98,67 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
   return graph;
 }
 
+// The 4-connected pieces of the map's free cells: the parts of the map.
+struct FreeSpaceParts {
+  cv::Mat labels;  // CV_32S; 0 for cells that are not free, else part + 1
+  std::vector<int64_t> cells;
+
+  int PartAt(const Eigen::Vector2d& p) const {
+    const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
+    if (col < 0 || row < 0 || col >= labels.cols || row >= labels.rows) return -1;
+    return labels.at<int>(row, col) - 1;
+  }
+};
+
+FreeSpaceParts LabelFreeSpace(const CellGrid& grid) {
+  cv::Mat free_cells(grid.height(), grid.width(), CV_8U);
+  for (int r = 0; r < grid.height(); ++r) {
+    uint8_t* row = free_cells.ptr<uint8_t>(r);
+    for (int c = 0; c < grid.width(); ++c) row[c] = grid.IsFree(c, r) ? 1 : 0;
+  }
+  FreeSpaceParts parts;
+  cv::Mat stats, centroids;
+  const int count =
+      cv::connectedComponentsWithStats(free_cells, parts.labels, stats, centroids, 4, CV_32S);
+  for (int label = 1; label < count; ++label) {
+    parts.cells.push_back(stats.at<int>(label, cv::CC_STAT_AREA));
+  }
+  return parts;
+}
+
+// The outlines of the enclosed regions that hold a vertex of the kept graph,
+// biggest region first (ties: the lower id).
+std::vector<proto::Polygon> PartBoundaries(const ChainGraph& graph, SiteAlphaShape& shape,
+                                           const std::vector<double>& region_area) {
+  std::set<int> regions;
+  for (const ChainEdge& edge : graph.edges) {
+    for (const int v : {edge.source, edge.target}) {
+      const int region = shape.EnclosedRegionAt(graph.vertices[v].position);
+      if (region >= 0) regions.insert(region);
+    }
+  }
+  std::vector<int> order(regions.begin(), regions.end());
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return region_area[a] > region_area[b]; });
+  std::vector<proto::Polygon> outlines;
+  for (const int region : order) {
+    proto::Polygon outline = shape.EnclosedRegionOutline(region);
+    if (outline.outer().points_size() >= 3) outlines.push_back(std::move(outline));
+  }
+  return outlines;
+}
+
 proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& frame,
-                             proto::Polygon boundary) {
+                             std::vector<proto::Polygon> parts, const PartSelection& selection) {
   proto::TopologyGraph out;
   out.set_format_version(1);
   *out.mutable_frame() = frame;
-  *out.mutable_boundary() = std::move(boundary);
+  if (!parts.empty()) *out.mutable_boundary() = parts.front();
+  for (proto::Polygon& part : parts) *out.add_part_boundaries() = std::move(part);
+  out.set_parts(selection.kept);
+  out.set_dropped_parts(selection.dropped);
+  const double resolution = frame.resolution_m();
+  out.set_dropped_area_m2(static_cast<double>(selection.dropped_cells) * resolution * resolution);
 
   const auto incidences = graph.Incidences();
   std::vector<int> new_id(graph.vertices.size(), -1);
@@ -150,6 +209,10 @@ void CheckPruneOptions(const proto::PruneOptions& options) {
   require(options.dead_end_passes() >= 0 && options.dead_end_passes() <= 1000,
           "prune.dead_end_passes must be between 0 and 1000, got " +
               std::to_string(options.dead_end_passes()));
+  const double min_part = options.min_component_m2();
+  require(
+      std::isfinite(min_part) && min_part >= 0,
+      "prune.min_component_m2 must be zero or more square metres, got " + std::to_string(min_part));
 }
 
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
@@ -172,8 +235,8 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                      " obstacle cells next to free space, too few to enclose any");
   }
   SiteAlphaShape boundary_shape(sites, options.boundary_alpha_radius_m() / resolution);
-  proto::Polygon boundary = boundary_shape.BiggestShapeOutline();
-  if (boundary.outer().points_size() < 3) {
+  const std::vector<double> region_area = boundary_shape.FindEnclosedRegions();
+  if (region_area.empty()) {
     throw InputError(what +
                      ": no Topology Graph: the obstacles enclose no space (no alpha shape with " +
                      Metres(options.boundary_alpha_radius_m()) + " radius)");
@@ -192,8 +255,15 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
     graph.JoinDegreeTwoChains();
   }
   if (MergeCloseJunctions(&graph) > 0) graph.JoinDegreeTwoChains();
-  graph.KeepBiggestGroup();
-  return ToProto(graph, map.frame(), std::move(boundary));
+  const FreeSpaceParts free_space = LabelFreeSpace(grid);
+  const PartSelection selection = graph.KeepParts(
+      [&](int v) { return free_space.PartAt(graph.vertices[v].position); }, free_space.cells,
+      static_cast<int64_t>(std::ceil(options.min_component_m2() / (resolution * resolution))));
+  std::vector<proto::Polygon> parts = PartBoundaries(graph, boundary_shape, region_area);
+  if (parts.empty()) {
+    throw InputError(what + ": no Topology Graph: no part of the graph lies inside the boundary");
+  }
+  return ToProto(graph, map.frame(), std::move(parts), selection);
 }
 
 }  // namespace areagraph

@@ -15,9 +15,11 @@ void CheckPruneOptions(const proto::PruneOptions& options);
 // cell go, as do rays and edges closer to an obstacle than
 // min_clearance_m; chains of degree-2 vertices become edges; short dead ends
 // are removed with their polygons absorbed (Alg. 2); close junctions merge;
-// the connected group with the most edge length stays. Throws InputError
-// ("map '<map_name>': no Topology Graph: ...") when nothing is left, and
-// OptionsError on bad options.
+// the connected group with the most edge length stays, and so does every
+// other group with at least prune.min_component_m2 of free space (each with
+// the outline of the alpha-shape region around it in part_boundaries); the
+// groups dropped are counted. Throws InputError ("map '<map_name>': no
+// Topology Graph: ...") when nothing is left, and OptionsError on bad options.
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
                                         const proto::PruneOptions& options,

@@ -103,9 +103,9 @@ cv::Mat UnreachedRooms(const AreaRaster& raster, const proto::CleanedMap& map, d
 // Free cells inside the boundary that are 4-connected (through such cells,
 // outside UnreachedRooms) to a labelled cell, those included.
 int64_t ReachableCells(const AreaRaster& raster, const proto::CleanedMap& map,
-                       const proto::Polygon& boundary, double min_gap_px) {
+                       const proto::CutGraph& cut, double min_gap_px) {
   const cv::Size size = raster.labels.size();
-  const cv::Mat inside = PolygonMask(boundary, size);
+  const cv::Mat inside = BoundaryMask(cut.part_boundaries(), cut.boundary(), size);
   const cv::Mat unreached = UnreachedRooms(raster, map, min_gap_px);
   cv::Mat seen = cv::Mat::zeros(size, CV_8U);
   std::deque<cv::Point> queue;
@@ -225,9 +225,8 @@ void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap
   EXPECT_GE(static_cast<double>(covered) / raster.domain_cells, min_coverage);
   EXPECT_GE(static_cast<double>(polygon_cells) / raster.domain_cells, min_coverage);
   const double min_gap_px = stages.options.merge().grow_min_gap_m() / map.frame().resolution_m();
-  EXPECT_GE(
-      static_cast<double>(covered) / ReachableCells(raster, map, stages.cut.boundary(), min_gap_px),
-      0.99);
+  EXPECT_GE(static_cast<double>(covered) / ReachableCells(raster, map, stages.cut, min_gap_px),
+            0.99);
 
   // Passages join two areas that meet there.
   const MapTransform transform(map.frame());
@@ -261,19 +260,25 @@ void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap
     }
   }
 
-  // Connected through the passages.
+  // Connected through the passages into as many components as it says (one
+  // per part of the map that prune kept).
   std::vector<bool> reached(area_count, false);
-  std::deque<int> queue{0};
-  reached[0] = true;
-  while (!queue.empty()) {
-    const int a = queue.front();
-    queue.pop_front();
-    for (int b : neighbours[a]) {
-      if (!reached[b]) reached[b] = true, queue.push_back(b);
+  int components = 0;
+  for (int start = 0; start < area_count; ++start) {
+    if (reached[start]) continue;
+    ++components;
+    std::deque<int> queue{start};
+    reached[start] = true;
+    while (!queue.empty()) {
+      const int a = queue.front();
+      queue.pop_front();
+      for (int b : neighbours[a]) {
+        if (!reached[b]) reached[b] = true, queue.push_back(b);
+      }
     }
   }
-  EXPECT_EQ(std::count(reached.begin(), reached.end(), true), area_count)
-      << "the Area Graph is not connected";
+  EXPECT_EQ(components, graph.components());
+  EXPECT_LE(components, std::max(1, stages.cut.parts())) << "more components than parts of the map";
 
   // Every cut edge in exactly one area.
   std::multiset<int> edges;

@@ -41,7 +41,8 @@ AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOpti
 //   reached do not count;
 // - every passage joins two different existing areas, and both have cells
 //   next to the passage point;
-// - the areas are connected through the passages;
+// - the areas are connected through the passages into AreaGraph.components
+//   components, no more than the parts of the map that prune kept;
 // - every CutGraph edge belongs to exactly one area.
 void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap& map,
                                double min_coverage = 0.95);

@@ -7,6 +7,7 @@
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
 #include "tools/example_maps/floor_plan.h"
+#include "tools/example_maps/random_floor_plan.h"
 
 namespace areagraph::floorplan {
 namespace {
@@ -84,8 +85,19 @@ int main(int argc, char** argv) {
       "two_rooms.png, corridor_rooms.png, office_small.png and office_small.yaml. The "
       "drawings are deterministic, so re-running reproduces the files in examples/."};
   std::string out_dir = ".";
+  int clutter_px = 0;
   app.add_option("--out", out_dir, "folder to write to (e.g. examples)")->capture_default_str();
+  app.add_option("--clutter", clutter_px,
+                 "instead: write clutter_N.png, an N x N px room with 1 % of its cells random "
+                 "obstacles (the speed benchmark's worst case)")
+      ->check(CLI::Range(20, 20000));
   return areagraph::RunCommand("ag-make-example-maps", app, argc, argv, [&] {
+    if (clutter_px > 0) {
+      const std::string name = "clutter_" + std::to_string(clutter_px) + ".png";
+      WritePlanPng(ClutteredRoomPlan(clutter_px, 1.0, /*seed=*/1), out_dir + "/" + name);
+      std::cout << "wrote " << name << " to " << out_dir << "\n";
+      return 0;
+    }
     WritePlanPng(TwoRooms(), out_dir + "/two_rooms.png");
     WritePlanPng(CorridorRooms(), out_dir + "/corridor_rooms.png");
     const FloorPlan office = OfficeSmall();

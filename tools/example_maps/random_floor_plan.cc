@@ -48,4 +48,13 @@ FloorPlan RandomOfficePlan(uint32_t seed) {
   return plan;
 }
 
+FloorPlan ClutteredRoomPlan(int size_px, double percent, uint32_t seed) {
+  const double size_m = size_px * 0.05;
+  FloorPlan plan(size_m, size_m);
+  DrawRoom(plan, {0, 0, size_m, size_m});
+  const int free_cells = cv::countNonZero(plan.image() == kFreeGrey);
+  DrawNoiseDots(plan, static_cast<int>(free_cells * percent / 100), seed);
+  return plan;
+}
+
 }  // namespace areagraph::floorplan

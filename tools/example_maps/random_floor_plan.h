@@ -12,4 +12,10 @@ namespace areagraph::floorplan {
 // build synthetic collections (ag-make-collection, benchmarks, runner tests).
 FloorPlan RandomOfficePlan(uint32_t seed);
 
+// One walled square room `size_px` pixels wide (0.05 m/px) in which
+// `percent` of the free cells are single obstacle cells at random: the worst
+// case of clutter for the Voronoi-based stages (thousands of tiny areas to
+// fold). Used by the speed benchmark and its test.
+FloorPlan ClutteredRoomPlan(int size_px, double percent, uint32_t seed);
+
 }  // namespace areagraph::floorplan

@@ -119,6 +119,15 @@ ArtifactRecord FindArtifact(ArtifactStore& store, const std::string& map_name,
   return *store.ReadArtifact(map_name, found);
 }
 
+// The parts of the map kept (-1: not known here) and those dropped as
+// smaller than prune.min_component_m2.
+static void PrintParts(int kept, int dropped, double dropped_area_m2, std::ostream& out) {
+  if (kept >= 0) out << "parts: " << kept << " kept";
+  out << (kept >= 0 ? ", " : "parts: ") << dropped << " dropped";
+  if (dropped > 0) out << " (" << dropped_area_m2 << " m2 of free space)";
+  out << " (prune.min_component_m2)\n";
+}
+
 // W and, when it was estimated, the doors and corridors behind it.
 static void PrintRoomWidth(const proto::RoomWidthEstimate& estimate, std::ostream& out) {
   out << "room width W: " << estimate.room_width_m() << " m"
@@ -157,13 +166,17 @@ void PrintArtifactSummary(const ArtifactRecord& artifact, std::ostream& out) {
   } else if (const auto* topology = dynamic_cast<const proto::TopologyGraph*>(message.get())) {
     out << "topology graph: " << topology->vertices_size() << " vertices, "
         << topology->edges_size() << " edges\n";
+    PrintParts(topology->parts(), topology->dropped_parts(), topology->dropped_area_m2(), out);
   } else if (const auto* cut = dynamic_cast<const proto::CutGraph*>(message.get())) {
     out << "cut graph: " << cut->room_shapes_size() << " rooms, " << cut->edges_size() << " edges, "
         << cut->passage_points_size() << " passage points\n";
+    PrintParts(cut->parts(), cut->dropped_parts(), cut->dropped_area_m2(), out);
     PrintRoomWidth(cut->room_width(), out);
   } else if (const auto* areas = dynamic_cast<const proto::AreaGraph*>(message.get())) {
     out << "area graph: " << areas->areas_size() << " areas, " << areas->passages_size()
-        << " passages\n";
+        << " passages, " << areas->components() << " component"
+        << (areas->components() == 1 ? "" : "s") << "\n";
+    PrintParts(-1, areas->dropped_parts(), areas->dropped_area_m2(), out);
   }
   out << "options:\n" << artifact.options_text;
 }

@@ -50,6 +50,13 @@ proto::Point2 ToPixel(const MapTransform& transform, const proto::Point2& metres
   return point;
 }
 
+// Every part's boundary, or the one boundary of an artifact from before parts.
+void DrawBoundaries(const google::protobuf::RepeatedPtrField<proto::Polygon>& parts,
+                    const proto::Polygon& boundary, Canvas& canvas) {
+  if (parts.empty()) canvas.Outline(boundary.outer(), kBoundary, 2);
+  for (const proto::Polygon& part : parts) canvas.Outline(part.outer(), kBoundary, 2);
+}
+
 }  // namespace
 
 void DrawCleanedMap(const proto::CleanedMap& cleaned, Canvas& canvas) {
@@ -82,7 +89,7 @@ void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas) {
 
 void DrawTopologyGraph(const proto::TopologyGraph& graph, Canvas& canvas) {
   DrawEdges(graph.edges(), canvas, /*colour_by_room=*/false);
-  canvas.Outline(graph.boundary().outer(), kBoundary, 2);
+  DrawBoundaries(graph.part_boundaries(), graph.boundary(), canvas);
   DrawVertices(graph.vertices(), canvas);
 }
 
@@ -91,7 +98,7 @@ void DrawCutGraph(const proto::CutGraph& graph, Canvas& canvas) {
     canvas.Outline(graph.room_shapes(room).outer(), DistinctColour(room) * 0.6, 2);
   }
   DrawEdges(graph.edges(), canvas, /*colour_by_room=*/true);
-  canvas.Outline(graph.boundary().outer(), kBoundary, 2);
+  DrawBoundaries(graph.part_boundaries(), graph.boundary(), canvas);
   DrawVertices(graph.vertices(), canvas);
   for (const proto::PassagePoint& passage : graph.passage_points()) {
     canvas.Dot(passage.position(), kPassage, std::max(3, canvas.scale() + 1));

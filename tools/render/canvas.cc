@@ -11,6 +11,18 @@ namespace {
 
 const cv::Vec3b kFree(255, 255, 255), kOccupied(40, 40, 40), kUnknown(200, 200, 200);
 
+// Canvas points carry kShift fractional bits (cv's fixed-point drawing).
+constexpr int kShift = 4;
+constexpr int kSubPixels = 1 << kShift;
+
+// The whole canvas pixels that points with fractional bits can touch.
+cv::Rect PixelBox(const std::vector<cv::Point>& points) {
+  const cv::Rect fine = cv::boundingRect(points);
+  const int x0 = fine.x >> kShift, y0 = fine.y >> kShift;  // floor, also below zero
+  const int x1 = ((fine.x + fine.width) >> kShift) + 2, y1 = ((fine.y + fine.height) >> kShift) + 2;
+  return cv::Rect(x0, y0, x1 - x0, y1 - y0);
+}
+
 std::vector<cv::Point> RingPoints(const Canvas& canvas, const proto::Ring& ring) {
   std::vector<cv::Point> points;
   points.reserve(ring.points_size());
@@ -53,17 +65,21 @@ void Canvas::Outline(const proto::Ring& ring, const cv::Scalar& colour, int thic
 
 void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha) {
   if (polygon.outer().points_size() < 3) return;
-  cv::Mat mask = cv::Mat::zeros(image_.size(), CV_8UC1);
   std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, polygon.outer())};
-  cv::fillPoly(mask, rings, cv::Scalar(255), cv::LINE_8, 4);
+  // Only the polygon's bounding box (holes lie inside it) is masked and
+  // blended: a whole canvas per polygon made big maps take minutes.
+  const cv::Rect box = PixelBox(rings[0]) & cv::Rect(0, 0, image_.cols, image_.rows);
+  if (box.empty()) return;
+  const cv::Point offset(-box.x * kSubPixels, -box.y * kSubPixels);
+  cv::Mat mask = cv::Mat::zeros(box.size(), CV_8UC1);
+  cv::fillPoly(mask, rings, cv::Scalar(255), cv::LINE_8, kShift, offset);
   for (const proto::Ring& hole : polygon.holes()) {
     rings = {RingPoints(*this, hole)};
-    cv::fillPoly(mask, rings, cv::Scalar(0), cv::LINE_8, 4);
+    cv::fillPoly(mask, rings, cv::Scalar(0), cv::LINE_8, kShift, offset);
   }
-  cv::Mat tinted;
-  cv::addWeighted(image_, 1.0 - alpha, cv::Mat(image_.size(), image_.type(), colour), alpha, 0,
-                  tinted);
-  tinted.copyTo(image_, mask);
+  cv::Mat area = image_(box), tinted;
+  cv::addWeighted(area, 1.0 - alpha, cv::Mat(box.size(), image_.type(), colour), alpha, 0, tinted);
+  tinted.copyTo(area, mask);
 }
 
 void Canvas::Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour) {

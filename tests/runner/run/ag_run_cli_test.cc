@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 
 #include "tests/runner/run/runner_test_support.h"
 
@@ -263,6 +265,50 @@ TEST(AgRunInputTest, OptionsFolderIsRefused) {
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_EQ(run.err, "ag-run: options file '" + dir.path() + "' is a folder; name a .pbtxt file\n");
   EXPECT_FALSE(std::filesystem::exists(dir.File("s.db")));
+}
+
+// The case: 2 x 2 tiles of lab_a kept the areas of one tile, with
+// exit 0 and no word. Every tile is a part of the map now, and the summary
+// and ag-inspect say how many components there are and how many small parts
+// were dropped.
+TEST(AgRunPartsTest, TilesOfAMapAreComponentsAndTheSummarySaysSo) {
+  if (!HaveSharedData()) GTEST_SKIP() << "no ../shared/data";
+  TempDir dir;
+  const cv::Mat lab_a = cv::imread(SharedDataPath("bormann/lab_a.png"), cv::IMREAD_UNCHANGED);
+  ASSERT_FALSE(lab_a.empty());
+  cv::Mat row, tiles;
+  cv::hconcat(lab_a, lab_a, row);
+  cv::vconcat(row, row, tiles);
+  ASSERT_TRUE(cv::imwrite(dir.File("tiles.png"), tiles));
+  const std::string store = dir.File("s.db");
+  CommandResult run;
+  const proto::RunSummary one =
+      RunJson({"--store", store, "--jobs", "1", SharedDataPath("bormann/lab_a.png")}, &run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(one.components(), 1);
+  const proto::RunSummary four =
+      RunJson({"--store", store, "--jobs", "1", dir.File("tiles.png")}, &run);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(four.components(), 4);
+  EXPECT_EQ(four.areas(), 4 * one.areas());
+  EXPECT_EQ(four.passages(), 4 * one.passages());
+  EXPECT_EQ(four.dropped_parts(), 4 * one.dropped_parts());
+
+  const CommandResult inspect =
+      RunTool("ag-inspect", {"--store", store, "--map", "tiles", "--stage", "merge"});
+  EXPECT_NE(inspect.out.find(std::to_string(four.areas()) + " areas, " +
+                             std::to_string(four.passages()) + " passages, 4 components"),
+            std::string::npos)
+      << inspect.out;
+  const CommandResult text = RunTool("ag-run", {"--store", store, dir.File("tiles.png")});
+  EXPECT_NE(text.err.find("tiles: " + std::to_string(four.areas()) + " areas, " +
+                          std::to_string(four.passages()) + " passages, 4 components"),
+            std::string::npos)
+      << text.err;
+  EXPECT_NE(text.out.find(", 4 components, " + std::to_string(four.dropped_parts()) +
+                          " small parts dropped (prune.min_component_m2)"),
+            std::string::npos)
+      << text.out;
 }
 
 }  // namespace

@@ -169,6 +169,10 @@ TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
 // A door narrower than twice the clearance keeps the Topology Graph out of
 // the small room (only the biggest connected group is kept), so no area's
 // edge reaches it: the big room's area must not grow through the door.
+// A room behind a door narrower than twice the clearance is no part of its
+// own (its free cells touch the rest through the door), so the paper's rule
+// holds: the Topology Graph does not reach it, and with the growth limit it
+// stays unlabelled.
 TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
   FloorPlan plan(9.5, 5);
   DrawRoom(plan, {0.5, 0.5, 5, 4});
@@ -181,6 +185,9 @@ TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
   const AreaStages stages = RunAreaStages(map, options);
   // The small room is 40 % of the free space.
   ExpectAreaGraphInvariants(stages, map, /*min_coverage=*/0.55);
+  EXPECT_EQ(stages.topology.parts(), 1);
+  EXPECT_EQ(stages.topology.dropped_parts(), 0);
+  EXPECT_EQ(stages.areas.components(), 1);
   ASSERT_EQ(stages.areas.areas_size(), 1);
   EXPECT_NE(AreaAt(stages.areas, 3, 2.5), -1);
   EXPECT_EQ(AreaAt(stages.areas, 7.25, 2.5), -1);
@@ -193,6 +200,49 @@ TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
   const AreaStages flooded = RunAreaStages(map, options);
   ASSERT_EQ(flooded.areas.areas_size(), 1);
   EXPECT_NE(AreaAt(flooded.areas, 7.25, 2.5), -1);
+}
+
+// Two buildings on one map, with unknown space between them (the issue's
+// 2 x 2 tiles of lab_a kept one tile): both get their areas, as two
+// components, and a closet too small to be an area is dropped and counted.
+TEST(AreaStagesTest, EveryBuildingOfAMapGetsItsAreas) {
+  const proto::CleanedMap one = CleanedMapFromImage(CorridorWithThreeRooms().image());
+  const AreaStages single = RunAreaStages(one);
+  ASSERT_EQ(single.areas.components(), 1);
+
+  // More than two alpha disks (3 m radius) apart: two boundary regions.
+  FloorPlan plan(36, 6.5);
+  const double room_width = 10.0 / 3;
+  for (const double left : {0.5, 24.5}) {
+    for (int i = 0; i < 3; ++i) DrawRoom(plan, {left + i * room_width, 0.5, room_width, 3.5});
+    DrawRoom(plan, {left, 4.0, 10, 1.75});
+    for (int i = 0; i < 3; ++i) {
+      DrawDoor(plan, left + (i + 0.5) * room_width, 4.0, 0.9, WallDirection::kHorizontal);
+    }
+  }
+  DrawRoom(plan, {17.0, 2.0, 1.2, 1.2});  // a closet of 1 m2 between them
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.topology.parts(), 2);
+  EXPECT_EQ(stages.topology.part_boundaries_size(), 2);
+  EXPECT_EQ(stages.areas.components(), 2);
+  EXPECT_EQ(stages.areas.areas_size(), 2 * single.areas.areas_size());
+  EXPECT_EQ(stages.areas.passages_size(), 2 * single.areas.passages_size());
+  EXPECT_NE(AreaAt(stages.areas, 2, 2), -1);
+  EXPECT_NE(AreaAt(stages.areas, 26, 2), -1);
+  EXPECT_EQ(AreaAt(stages.areas, 17.6, 2.6), -1);
+  EXPECT_EQ(stages.areas.dropped_parts(), 1);
+  // The closet's free cells: 1.2 m less a wall thickness (0.15 m) each way.
+  EXPECT_NEAR(stages.areas.dropped_area_m2(), 1.05 * 1.05, 0.15);
+
+  // The paper's behaviour keeps the bigger building's graph only.
+  proto::PipelineOptions paper;
+  paper.mutable_prune()->set_min_component_m2(1e8);
+  const AreaStages one_building = RunAreaStages(map, paper);
+  EXPECT_EQ(one_building.areas.components(), 1);
+  EXPECT_EQ(one_building.areas.areas_size(), single.areas.areas_size());
+  EXPECT_EQ(one_building.areas.dropped_parts(), 2);
 }
 
 // A door as wide as the limit still lets the areas grow: the room behind
