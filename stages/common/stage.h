@@ -29,7 +29,8 @@ inline constexpr StageInfo kCutStage{"cut", 2};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
-inline constexpr StageInfo kMergeStage{"merge", 4};
+// merge 5: polygons are a simplified planar partition, passages lie on shared borders.
+inline constexpr StageInfo kMergeStage{"merge", 5};
 
 // The stages in pipeline order.
 inline constexpr StageInfo kAllStages[] = {kImportStage, kCleanStage, kVoronoiStage,

@@ -31,16 +31,18 @@ AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOpti
 // Checks what every Area Graph must satisfy (gtest failures, not exceptions):
 // - every area polygon is simple (CGAL is_simple_2 per ring, and no ring
 //   touches another), with positive area;
-// - no cell centre lies inside two area polygons, and the raster labels one
-//   area per cell;
+// - no cell centre lies inside two area polygons, no two polygons' interiors
+//   overlap (exact), and a cell that a polygon other than its raster area's
+//   holds lies within merge.outline_tolerance_m (plus a cell) of that area;
 // - the areas cover at least `min_coverage` of the free cells inside the
 //   boundary, in the raster and in the polygons, and at least 99 % of those
 //   that are reachable (4-connected through free cells inside the boundary)
 //   from some area: real maps have closed-off pockets, such as courtyards,
 //   and rooms behind gaps narrower than merge.grow_min_gap_m that no area
 //   reached do not count;
-// - every passage joins two different existing areas, and both have cells
-//   next to the passage point;
+// - every passage joins two different existing areas, both have cells next
+//   to the passage point, and its end points are vertices of both areas'
+//   outlines (a piece of their shared border);
 // - the areas are connected through the passages;
 // - every CutGraph edge belongs to exactly one area.
 void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap& map,
