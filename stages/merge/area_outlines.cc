@@ -56,6 +56,10 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
   PartitionOutlines result;
   std::vector<RingRoles> roles(area_count);
   std::vector<bool> dropped(traced.size(), false);
+  // Kept holes that hold no area, (area, ring): a thin obstacle may be
+  // simplified below the minimum, and is then simplified again more finely
+  // (half a cell), at worst not at all, so it never shrinks past it.
+  std::vector<std::pair<int, int>> sized_holes;
   for (size_t k = 0; k < area_count; ++k) {
     const auto& rings = partition.rings[k];
     std::vector<double> areas;
@@ -69,25 +73,45 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
       // A second positive ring would be a second piece of the area; areas
       // are one 4-connected piece each, so there is none.
       if (!(areas[i] < 0)) continue;
-      if (-areas[i] < min_hole_px2 && HoldsNoArea(RingPoints(rings[i], traced), labels)) {
+      const bool obstacle = HoldsNoArea(RingPoints(rings[i], traced), labels);
+      if (obstacle && -areas[i] < min_hole_px2) {
         for (const ChainSide& side : rings[i]) dropped[side.chain] = true;
         ++result.dropped_holes;
-      } else {
-        roles[k].holes.push_back(static_cast<int>(i));
+        continue;
       }
+      roles[k].holes.push_back(static_cast<int>(i));
+      if (obstacle) sized_holes.emplace_back(static_cast<int>(k), static_cast<int>(i));
     }
   }
-
+  std::vector<double> tolerance(traced.size(), tolerance_px);
   std::vector<int> kept;
-  std::vector<PointList> borders;
   for (size_t c = 0; c < traced.size(); ++c) {
-    if (dropped[c]) continue;
-    kept.push_back(static_cast<int>(c));
-    borders.push_back(traced[c]);
+    if (!dropped[c]) kept.push_back(static_cast<int>(c));
   }
-  std::vector<PointList> simplified = SimplifyBorders(borders, tolerance_px);
-  result.chains.assign(traced.size(), {});
-  for (size_t i = 0; i < kept.size(); ++i) result.chains[kept[i]] = std::move(simplified[i]);
+  const double finer_steps[] = {std::min(tolerance_px, 0.5), 0.0};
+  for (int pass = 0;; ++pass) {
+    std::vector<PointList> borders;
+    std::vector<double> tolerances;
+    for (const int c : kept) {
+      borders.push_back(traced[c]);
+      tolerances.push_back(tolerance[c]);
+    }
+    std::vector<PointList> simplified = SimplifyBorders(borders, tolerances);
+    result.chains.assign(traced.size(), {});
+    for (size_t i = 0; i < kept.size(); ++i) result.chains[kept[i]] = std::move(simplified[i]);
+    if (pass == 2) break;
+    const double finer = finer_steps[pass];
+    bool shrunk = false;
+    for (const auto& [k, hole] : sized_holes) {
+      const auto& ring = partition.rings[k][hole];
+      if (-SignedArea(RingPoints(ring, result.chains)) >= min_hole_px2) continue;
+      for (const ChainSide& side : ring) {
+        shrunk = shrunk || tolerance[side.chain] > finer;
+        tolerance[side.chain] = std::min(tolerance[side.chain], finer);
+      }
+    }
+    if (!shrunk) break;
+  }
 
   result.areas.resize(area_count);
   for (size_t k = 0; k < area_count; ++k) {

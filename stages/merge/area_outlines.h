@@ -31,7 +31,9 @@ struct PartitionOutlines {
 // obstacle or unlabelled speck inside the area) is dropped, so the area
 // covers it. Then all remaining borders are simplified together
 // (SimplifyBorders with `tolerance_px`), so neighbours keep sharing their
-// borders and junctions, and no two borders cross.
+// borders and junctions, and no two borders cross. A kept hole that this
+// would shrink below the minimum (a thin obstacle) is simplified within half
+// a cell instead, or not at all.
 PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv::Mat& labels,
                                      double tolerance_px, double min_hole_px2);
 

@@ -6,6 +6,10 @@
 #include <CGAL/Constrained_triangulation_plus_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyline_simplification_2/simplify.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace areagraph {
 namespace {
@@ -14,27 +18,57 @@ namespace PS = CGAL::Polyline_simplification_2;
 // Exact predicates keep the triangulation of the (very degenerate) cell
 // corners consistent; the chains never cross, so nothing is constructed.
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = PS::Vertex_base_2<Kernel>;
+// Each vertex carries the factor that scales its cost to the global
+// tolerance: (largest tolerance / its chain's tolerance)^2, infinite for a
+// chain that keeps every point.
+using VertexBase =
+    PS::Vertex_base_2<Kernel, CGAL::Triangulation_vertex_base_with_info_2<double, Kernel>>;
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
 using ConstrainedTriangulation = CGAL::Constrained_triangulation_plus_2<Cdt>;
 
+// The squared distance cost scaled by the vertex's factor: one global
+// threshold then applies each chain's own tolerance.
+class ScaledSquaredDistanceCost {
+ public:
+  boost::optional<double> operator()(
+      const ConstrainedTriangulation& triangulation,
+      ConstrainedTriangulation::Vertices_in_constraint_iterator vertex) const {
+    const double factor = (*vertex)->info();
+    if (!std::isfinite(factor)) return boost::none;  // never removed
+    const boost::optional<double> cost = distance_(triangulation, vertex);
+    if (!cost) return cost;
+    return *cost * factor;
+  }
+
+ private:
+  PS::Squared_distance_cost distance_;
+};
+
 }  // namespace
 
-std::vector<PointList> SimplifyBorders(const std::vector<PointList>& chains, double tolerance_px) {
-  if (!(tolerance_px > 0)) return chains;
+std::vector<PointList> SimplifyBorders(const std::vector<PointList>& chains,
+                                       const std::vector<double>& tolerance_px) {
+  const double largest =
+      tolerance_px.empty() ? 0 : *std::max_element(tolerance_px.begin(), tolerance_px.end());
+  if (!(largest > 0)) return chains;
   ConstrainedTriangulation triangulation;
   std::vector<ConstrainedTriangulation::Constraint_id> ids;
   ids.reserve(chains.size());
   std::vector<Kernel::Point_2> points;
-  for (const PointList& chain : chains) {
+  for (size_t i = 0; i < chains.size(); ++i) {
     points.clear();
-    for (const Eigen::Vector2d& p : chain) points.emplace_back(p.x(), p.y());
+    for (const Eigen::Vector2d& p : chains[i]) points.emplace_back(p.x(), p.y());
     ids.push_back(triangulation.insert_constraint(points.begin(), points.end()));
+    const double ratio = tolerance_px[i] > 0 ? largest / tolerance_px[i] : INFINITY;
+    for (auto it = triangulation.vertices_in_constraint_begin(ids.back());
+         it != triangulation.vertices_in_constraint_end(ids.back()); ++it) {
+      (*it)->info() = ratio * ratio;
+    }
   }
-  PS::simplify(triangulation, PS::Squared_distance_cost(),
-               PS::Stop_above_cost_threshold(tolerance_px * tolerance_px));
+  PS::simplify(triangulation, ScaledSquaredDistanceCost(),
+               PS::Stop_above_cost_threshold(largest * largest));
   std::vector<PointList> simplified(chains.size());
   for (size_t i = 0; i < chains.size(); ++i) {
     for (auto it = triangulation.vertices_in_constraint_begin(ids[i]);

@@ -237,9 +237,32 @@ TEST(PlanarPartitionTest, SimplificationNeverLetsBordersCross) {
   }
 }
 
-TEST(BorderSimplificationTest, ZeroToleranceKeepsEveryPoint) {
-  const std::vector<PointList> chains{{{0, 0}, {1, 0}, {1, 1}, {2, 1}}};
-  EXPECT_EQ(SimplifyBorders(chains, 0), chains);
+TEST(BorderSimplificationTest, EachChainKeepsItsOwnTolerance) {
+  // Two staircases far apart; only the first may lose its steps.
+  PointList steps, other;
+  for (int i = 0; i < 10; ++i) {
+    steps.insert(steps.end(), {{double(i), double(i)}, {i + 1.0, double(i)}});
+    other.insert(other.end(), {{double(i), i + 20.0}, {i + 1.0, i + 20.0}});
+  }
+  const std::vector<PointList> chains{steps, other};
+  const std::vector<PointList> simplified = SimplifyBorders(chains, {1.0, 0.0});
+  EXPECT_EQ(simplified[0].size(), 2u);
+  EXPECT_EQ(simplified[1], other);
+  EXPECT_EQ(SimplifyBorders(chains, {0.0, 0.0}), chains);
+}
+
+TEST(PlanarPartitionTest, ThinObstaclesAreNotSimplifiedAway) {
+  // A one-cell-wide diagonal obstacle of 30 cells inside area 1: a
+  // tolerance of 2 px would flatten it to a sliver, so its ring is
+  // simplified more finely and keeps at least the minimum hole size.
+  std::vector<std::string> rows(34, std::string(34, '1'));
+  for (int i = 0; i < 30; ++i) rows[i + 2][i + 2] = '.';
+  const cv::Mat labels = Labels(rows);
+  const PartitionOutlines outlines =
+      SimplifiedOutlines(BuildPlanarPartition(labels, 1), labels, 2.0, 20.0);
+  ASSERT_EQ(outlines.areas[0].holes.size(), 1u);
+  EXPECT_GE(-SignedArea(outlines.areas[0].holes[0]), 20.0);
+  EXPECT_TRUE(RingsAreSimple(OutlineRings(outlines.areas[0])));
 }
 
 TEST(RingSimplicityTest, TellsSimpleRingsFromOthers) {
