@@ -41,6 +41,12 @@ bool HoldsNoArea(const PointList& ring, const cv::Mat& labels) {
   return true;
 }
 
+double Perimeter(const PointList& ring) {
+  double length = 0;
+  for (size_t i = 0; i < ring.size(); ++i) length += (ring[(i + 1) % ring.size()] - ring[i]).norm();
+  return length;
+}
+
 // Which rings of one area make its polygon.
 struct RingRoles {
   int outer = -1;
@@ -56,9 +62,8 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
   PartitionOutlines result;
   std::vector<RingRoles> roles(area_count);
   std::vector<bool> dropped(traced.size(), false);
-  // Kept holes that hold no area, (area, ring): a thin obstacle may be
-  // simplified below the minimum, and is then simplified again more finely
-  // (half a cell), at worst not at all, so it never shrinks past it.
+  // Kept holes that hold no area, (area, ring): they must stay at least the
+  // minimum size.
   std::vector<std::pair<int, int>> sized_holes;
   for (size_t k = 0; k < area_count; ++k) {
     const auto& rings = partition.rings[k];
@@ -73,8 +78,15 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
       // A second positive ring would be a second piece of the area; areas
       // are one 4-connected piece each, so there is none.
       if (!(areas[i] < 0)) continue;
-      const bool obstacle = HoldsNoArea(RingPoints(rings[i], traced), labels);
-      if (obstacle && -areas[i] < min_hole_px2) {
+      // No other area along the hole's border (an area nested further in is
+      // looked for only in small holes, where it is cheap).
+      const bool obstacle =
+          std::all_of(rings[i].begin(), rings[i].end(), [&](const ChainSide& side) {
+            const BorderChain& chain = partition.chains[side.chain];
+            return (side.reversed ? chain.right : chain.left) == 0;
+          });
+      if (obstacle && -areas[i] < min_hole_px2 &&
+          HoldsNoArea(RingPoints(rings[i], traced), labels)) {
         for (const ChainSide& side : rings[i]) dropped[side.chain] = true;
         ++result.dropped_holes;
         continue;
@@ -83,35 +95,31 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
       if (obstacle) sized_holes.emplace_back(static_cast<int>(k), static_cast<int>(i));
     }
   }
+  // A ring simplified within t loses at most t times its perimeter of area:
+  // a thin obstacle that this could shrink below the minimum gets half a
+  // cell, or keeps every point.
   std::vector<double> tolerance(traced.size(), tolerance_px);
+  for (const auto& [k, hole] : sized_holes) {
+    const auto& ring = partition.rings[k][hole];
+    const PointList points = RingPoints(ring, traced);
+    const double area = -SignedArea(points), perimeter = Perimeter(points);
+    double allowed = tolerance_px;
+    if (area - allowed * perimeter < min_hole_px2) allowed = std::min(allowed, 0.5);
+    if (area - allowed * perimeter < min_hole_px2) allowed = 0;
+    for (const ChainSide& side : ring) tolerance[side.chain] = allowed;
+  }
   std::vector<int> kept;
+  std::vector<PointList> borders;
+  std::vector<double> tolerances;
   for (size_t c = 0; c < traced.size(); ++c) {
-    if (!dropped[c]) kept.push_back(static_cast<int>(c));
+    if (dropped[c]) continue;
+    kept.push_back(static_cast<int>(c));
+    borders.push_back(traced[c]);
+    tolerances.push_back(tolerance[c]);
   }
-  const double finer_steps[] = {std::min(tolerance_px, 0.5), 0.0};
-  for (int pass = 0;; ++pass) {
-    std::vector<PointList> borders;
-    std::vector<double> tolerances;
-    for (const int c : kept) {
-      borders.push_back(traced[c]);
-      tolerances.push_back(tolerance[c]);
-    }
-    std::vector<PointList> simplified = SimplifyBorders(borders, tolerances);
-    result.chains.assign(traced.size(), {});
-    for (size_t i = 0; i < kept.size(); ++i) result.chains[kept[i]] = std::move(simplified[i]);
-    if (pass == 2) break;
-    const double finer = finer_steps[pass];
-    bool shrunk = false;
-    for (const auto& [k, hole] : sized_holes) {
-      const auto& ring = partition.rings[k][hole];
-      if (-SignedArea(RingPoints(ring, result.chains)) >= min_hole_px2) continue;
-      for (const ChainSide& side : ring) {
-        shrunk = shrunk || tolerance[side.chain] > finer;
-        tolerance[side.chain] = std::min(tolerance[side.chain], finer);
-      }
-    }
-    if (!shrunk) break;
-  }
+  std::vector<PointList> simplified = SimplifyBorders(borders, tolerances);
+  result.chains.assign(traced.size(), {});
+  for (size_t i = 0; i < kept.size(); ++i) result.chains[kept[i]] = std::move(simplified[i]);
 
   result.areas.resize(area_count);
   for (size_t k = 0; k < area_count; ++k) {

@@ -32,7 +32,7 @@ struct PartitionOutlines {
 // covers it. Then all remaining borders are simplified together
 // (SimplifyBorders with `tolerance_px`), so neighbours keep sharing their
 // borders and junctions, and no two borders cross. A kept hole that this
-// would shrink below the minimum (a thin obstacle) is simplified within half
+// could shrink below the minimum (a thin obstacle) is simplified within half
 // a cell instead, or not at all.
 PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv::Mat& labels,
                                      double tolerance_px, double min_hole_px2);

@@ -68,7 +68,7 @@ std::vector<PointList> SimplifyBorders(const std::vector<PointList>& chains,
     }
   }
   PS::simplify(triangulation, ScaledSquaredDistanceCost(),
-               PS::Stop_above_cost_threshold(largest * largest));
+               PS::Stop_above_cost_threshold(largest * largest), /*remove_points=*/false);
   std::vector<PointList> simplified(chains.size());
   for (size_t i = 0; i < chains.size(); ++i) {
     for (auto it = triangulation.vertices_in_constraint_begin(ids[i]);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 
 namespace areagraph {
 namespace {
@@ -42,7 +43,7 @@ struct Corner {
   bool short_edge = false;
 };
 
-Corner MakeCorner(int tl, int tr, int bl, int br) {
+inline Corner MakeCorner(int tl, int tr, int bl, int br) {
   Corner corner{tl, tr, bl, br};
   if (tr != br) corner.edges |= Bit(kEast);
   if (bl != br) corner.edges |= Bit(kSouth);
@@ -276,6 +277,7 @@ class PartitionTracer {
   void TraceChainsBetweenJunctions() {
     std::unordered_set<int64_t> used;
     ForEachBorderCorner([&](int x, int y, const Corner& corner) {
+      border_corners_.emplace_back(x, y);
       for (int point = 0; point < (corner.cut == Cut::kNone ? 1 : 2); ++point) {
         const unsigned out = OutDirections(corner, point);
         if (PopCount(out) == 2) continue;
@@ -304,7 +306,8 @@ class PartitionTracer {
   // chains at points of its convex hull, so that simplification keeps at
   // least a triangle.
   void TraceClosedLoops() {
-    ForEachBorderCorner([&](int x, int y, const Corner& corner) {
+    for (const auto& [x, y] : border_corners_) {
+      const Corner corner = CornerAt(x, y);
       for (const int dir : {kEast, kSouth}) {
         const uint8_t bit = dir == kEast ? 1 : 2;
         if (!(corner.edges & Bit(dir)) || (visited_[CornerIndex(x, y)] & bit)) continue;
@@ -314,7 +317,7 @@ class PartitionTracer {
         loop.pop_back();  // the start again
         AddLoop(WithoutCollinearPoints(loop), RightOf(corner, dir), LeftOf(corner, dir));
       }
-    });
+    }
   }
 
   static PointList WithoutCollinearPoints(const PointList& ring) {
@@ -421,6 +424,8 @@ class PartitionTracer {
   PlanarPartition partition_;
   // Per chain.
   std::vector<ChainEnds> ends_;
+  // Every grid corner where borders meet, in row order.
+  std::vector<std::pair<int, int>> border_corners_;
   std::unordered_map<int64_t, ChainSide> side_from_;
 };
 
