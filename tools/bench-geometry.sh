@@ -2,7 +2,8 @@
 # Geometry benchmark of the Area Graph as a map. Runs the pipeline with the
 # defaults (plus any --set) on the Area Graph paper's 16 maps and MAORIS' 20
 # RobotMap maps and prints, per map and in total: areas, vertices per area
-# (median, max), holes (and those under merge.min_hole_m2), passages (and
+# (outer ring: median, max; max with holes), holes (and those under
+# merge.min_hole_m2), passages (and
 # those whose end points are vertices of both areas' outlines), pairs of
 # areas that overlap, the largest distance from a simplified outline to the
 # raster's outline, and the MCC (MAORIS' code) of the raster partition and of
@@ -22,7 +23,7 @@ while [ $# -gt 0 ]; do
     --out) OUT=$2; shift 2 ;;
     --build) BUILD=$2; shift 2 ;;
     --set) SETS+=(--set "$2"); shift 2 ;;
-    -h|--help) sed -n '2,12p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,13p' "$0"; exit 0 ;;
     *) echo "bench-geometry: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -80,8 +81,8 @@ table() {
   echo
   echo "### $title"
   echo
-  echo "| map | areas | vertices/area median | max | holes | holes < min | passages | on both outlines | overlapping pairs | max distance m | MCC raster | MCC polygons |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| map | areas | vertices/area median | max | max with holes | holes | holes < min | passages | on both outlines | overlapping pairs | max distance m | MCC raster | MCC polygons |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
   local median
   median=$(cut -f2 "${vertices[@]}" | sort -n | awk '{ v[NR] = $1 } END {
     if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }')
@@ -92,14 +93,14 @@ table() {
     {
       m = $1
       r = ((("R", m) in mcc) ? mcc["R", m] : "-"); p = ((("P", m) in mcc) ? mcc["P", m] : "-")
-      print "| " m " | " $2 " | " $3 " | " $4 " | " $5 " | " $6 " | " $7 " | " $8 " | " $9 " | " $11 " | " r " | " p " |"
-      areas += $2; if ($4 > vmax) vmax = $4; holes += $5; small += $6; passages += $7
+      print "| " m " | " $2 " | " $3 " | " $4 " | " $12 " | " $5 " | " $6 " | " $7 " | " $8 " | " $9 " | " $11 " | " r " | " p " |"
+      areas += $2; if ($4 > vmax) vmax = $4; if ($12 > hmax) hmax = $12; holes += $5; small += $6; passages += $7
       both += $8; overlaps += $9; if ($11 != "-" && $11 > dmax) dmax = $11
       if (r != "-") { rs += r; rn++ } if (p != "-") { ps += p; pn++ }
     }
     END {
-      printf "| **total** | %d | %s | %d | %d | %d | %d | %d (%.1f %%) | %d | %.3f | %.3f | %.3f |\n",
-        areas, median, vmax, holes, small, passages, both, passages ? 100 * both / passages : 100,
+      printf "| **total** | %d | %s | %d | %d | %d | %d | %d | %d (%.1f %%) | %d | %.3f | %.3f | %.3f |\n",
+        areas, median, vmax, hmax, holes, small, passages, both, passages ? 100 * both / passages : 100,
         overlaps, dmax, rn ? rs / rn : 0, pn ? ps / pn : 0
     }' "$OUT/.mcc" "${tsvs[@]}"
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
@@ -122,21 +123,15 @@ std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph
 }  // namespace
 
 void CheckMergeOptions(const proto::MergeOptions& options) {
-  if (!std::isfinite(options.min_area_m2()) || options.min_area_m2() < 0) {
-    throw OptionsError("merge.min_area_m2 must be zero or more square metres, got " +
-                       std::to_string(options.min_area_m2()));
-  }
-  if (!std::isfinite(options.grow_min_gap_m()) || options.grow_min_gap_m() < 0) {
-    throw OptionsError("merge.grow_min_gap_m must be zero or more metres, got " +
-                       std::to_string(options.grow_min_gap_m()));
-  }
-  if (!std::isfinite(options.outline_tolerance_m()) || options.outline_tolerance_m() < 0) {
-    throw OptionsError("merge.outline_tolerance_m must be zero or more metres, got " +
-                       std::to_string(options.outline_tolerance_m()));
-  }
-  if (!std::isfinite(options.min_hole_m2()) || options.min_hole_m2() < 0) {
-    throw OptionsError("merge.min_hole_m2 must be zero or more square metres, got " +
-                       std::to_string(options.min_hole_m2()));
+  const std::pair<double, const char*> checks[] = {
+      {options.min_area_m2(), "merge.min_area_m2 must be zero or more square metres"},
+      {options.grow_min_gap_m(), "merge.grow_min_gap_m must be zero or more metres"},
+      {options.outline_tolerance_m(), "merge.outline_tolerance_m must be zero or more metres"},
+      {options.min_hole_m2(), "merge.min_hole_m2 must be zero or more square metres"}};
+  for (const auto& [value, rule] : checks) {
+    if (!std::isfinite(value) || value < 0) {
+      throw OptionsError(std::string(rule) + ", got " + std::to_string(value));
+    }
   }
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "stages/common/map_frame.h"
-#include "stages/geometry/ring_simplicity.h"
 #include "stages/merge/area_outlines.h"
 #include "stages/merge/passage_borders.h"
 #include "stages/merge/passage_finder.h"
@@ -77,8 +76,8 @@ void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
   for (int e = 0; e < graph.edges_size(); ++e) {
     final_area_of_edge[e] = area_id[plan.area_of_edge[e]];
   }
-  const std::vector<PassageOnBorder> placed = PlacePassagesOnBorders(
-      FindPassages(graph, final_area_of_edge), partition, label_of_area);
+  const std::vector<PassageOnBorder> placed =
+      PlacePassagesOnBorders(FindPassages(graph, final_area_of_edge), partition, label_of_area);
   for (const PassageOnBorder& on_border : placed) {
     const PassagePlan& plan_passage = on_border.passage;
     proto::Passage* passage = out->add_passages();

@@ -60,8 +60,7 @@ std::vector<PassageOnBorder> PlacePassagesOnBorders(const std::vector<PassagePla
   std::vector<PassageOnBorder> placed;
   std::map<int, size_t> passage_on_chain;
   for (const PassagePlan& passage : passages) {
-    const auto labels =
-        std::minmax(label_of_area[passage.area_a], label_of_area[passage.area_b]);
+    const auto labels = std::minmax(label_of_area[passage.area_a], label_of_area[passage.area_b]);
     int best = -1;
     double best_distance = std::numeric_limits<double>::infinity();
     const auto it = chains_between.find(labels);

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "tools/bench/area_graph_checks.h"
 #include "tools/bench/outline_distance.h"
 #include "tools/export/area_label_image.h"
+#include "tools/export/area_polygons.h"
 
 using namespace areagraph;
 
@@ -26,23 +28,13 @@ namespace {
 // The columns, in the order they are printed.
 constexpr const char* kHeader =
     "map\tareas\tvertices_median\tvertices_max\tholes\tholes_under_min\tpassages\t"
-    "passages_on_both\toverlapping_pairs\tmax_distance_px\tmax_distance_m";
+    "passages_on_both\toverlapping_pairs\tmax_distance_px\tmax_distance_m\t"
+    "vertices_with_holes_max";
 
 int VertexCount(const proto::Polygon& polygon) {
   int count = polygon.outer().points_size();
   for (const proto::Ring& hole : polygon.holes()) count += hole.points_size();
   return count;
-}
-
-double RingArea(const proto::Ring& ring) {
-  double twice = 0;
-  const int n = ring.points_size();
-  for (int i = 0; i < n; ++i) {
-    const proto::Point2& p = ring.points(i);
-    const proto::Point2& q = ring.points((i + 1) % n);
-    twice += p.x() * q.y() - q.x() * p.y();
-  }
-  return std::abs(twice) / 2;
 }
 
 // The merge options the head Area Graph was made with.
@@ -78,12 +70,13 @@ void PrintMap(ArtifactStore& store, const std::string& map, const std::string& l
   const double min_hole_px2 = options.min_hole_m2() / (resolution_m * resolution_m);
 
   std::vector<int> vertices;
-  int holes = 0, small_holes = 0;
+  int holes = 0, small_holes = 0, with_holes = 0;
   for (const proto::Area& area : graph.areas()) {
-    vertices.push_back(VertexCount(area.polygon_px()));
+    vertices.push_back(area.polygon_px().outer().points_size());
+    with_holes = std::max(with_holes, VertexCount(area.polygon_px()));
     for (const proto::Ring& hole : area.polygon_px().holes()) {
       ++holes;
-      small_holes += RingArea(hole) < min_hole_px2;
+      small_holes += std::abs(TwiceSignedArea(hole)) / 2 < min_hole_px2;
     }
   }
   if (vertex_list != nullptr) {
@@ -107,8 +100,7 @@ void PrintMap(ArtifactStore& store, const std::string& map, const std::string& l
     double farthest = 0;
     for (int k = 0; k < graph.areas_size(); ++k) {
       farthest = std::max(farthest, BoundaryDistancePx(graph.areas(k).polygon_px(),
-                                                       raster.areas(k).polygon_px(),
-                                                       min_hole_px2));
+                                                       raster.areas(k).polygon_px(), min_hole_px2));
     }
     char text[64];
     std::snprintf(text, sizeof(text), "%.2f", farthest);
@@ -120,9 +112,10 @@ void PrintMap(ArtifactStore& store, const std::string& map, const std::string& l
     WriteLabels(raster, labels_dir + "/raster/" + map + ".png");
     WriteLabels(graph, labels_dir + "/polygons/" + map + ".png");
   }
-  std::printf("%s\t%d\t%.1f\t%d\t%d\t%d\t%d\t%d\t%zu\t%s\t%s\n", map.c_str(), graph.areas_size(),
-              median, vertices.empty() ? 0 : vertices.back(), holes, small_holes,
-              graph.passages_size(), on_both, overlaps, distance_px.c_str(), distance_m.c_str());
+  std::printf("%s\t%d\t%.1f\t%d\t%d\t%d\t%d\t%d\t%zu\t%s\t%s\t%d\n", map.c_str(),
+              graph.areas_size(), median, vertices.empty() ? 0 : vertices.back(), holes,
+              small_holes, graph.passages_size(), on_both, overlaps, distance_px.c_str(),
+              distance_m.c_str(), with_holes);
   std::fflush(stdout);
 }
 
@@ -131,12 +124,13 @@ void PrintMap(ArtifactStore& store, const std::string& map, const std::string& l
 int main(int argc, char** argv) {
   CLI::App app{
       "Prints geometry statistics of the head Area Graph of each map, one tab-separated line "
-      "per map: areas; vertices per area (outer ring and holes; median, max); holes, and holes "
+      "per map: areas; vertices per area (outer ring; median, max); holes, and holes "
       "smaller than merge.min_hole_m2; passages, and those whose two end points are vertices "
       "of both areas' outlines; pairs of areas whose interiors overlap (exact); the largest "
       "distance between an area's outline and the same area's outline along the raster's cell "
       "edges (recomputed from the stored CutGraph with merge.outline_tolerance_m = 0, holes "
-      "under the minimum left out). --labels DIR writes DIR/raster/MAP.png and "
+      "under the minimum left out); the most vertices of an area with its holes. --labels DIR "
+      "writes DIR/raster/MAP.png and "
       "DIR/polygons/MAP.png, label images of both, for ag-eval. A benchmark: it checks "
       "nothing."};
   std::string store_path = "areagraph.db", labels_dir, vertex_list_path;
@@ -150,14 +144,13 @@ int main(int argc, char** argv) {
   app.add_option("MAP", maps, "maps in the store")->required();
   return RunCommand("ag-bench-geometry", app, argc, argv, [&] {
     auto store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
-    std::FILE* vertex_list = nullptr;
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> vertex_list(nullptr, std::fclose);
     if (!vertex_list_path.empty()) {
-      vertex_list = std::fopen(vertex_list_path.c_str(), "w");
-      if (vertex_list == nullptr) throw InputError("cannot write " + vertex_list_path);
+      vertex_list.reset(std::fopen(vertex_list_path.c_str(), "w"));
+      if (!vertex_list) throw InputError("cannot write " + vertex_list_path);
     }
     if (header) std::printf("%s\n", kHeader);
-    for (const std::string& map : maps) PrintMap(*store, map, labels_dir, vertex_list);
-    if (vertex_list != nullptr) std::fclose(vertex_list);
+    for (const std::string& map : maps) PrintMap(*store, map, labels_dir, vertex_list.get());
     return 0;
   });
 }

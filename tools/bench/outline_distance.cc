@@ -6,23 +6,14 @@
 #include <limits>
 #include <vector>
 
+#include "tools/export/area_polygons.h"
+
 namespace areagraph {
 namespace {
 
 struct Segment {
   Eigen::Vector2d a, b;
 };
-
-double TwiceArea(const proto::Ring& ring) {
-  double sum = 0;
-  const int n = ring.points_size();
-  for (int i = 0; i < n; ++i) {
-    const proto::Point2& p = ring.points(i);
-    const proto::Point2& q = ring.points((i + 1) % n);
-    sum += p.x() * q.y() - q.x() * p.y();
-  }
-  return sum;
-}
 
 void AddRing(const proto::Ring& ring, std::vector<Segment>* segments) {
   const int n = ring.points_size();
@@ -37,7 +28,7 @@ std::vector<Segment> Boundary(const proto::Polygon& polygon, double ignore_holes
   std::vector<Segment> segments;
   AddRing(polygon.outer(), &segments);
   for (const proto::Ring& hole : polygon.holes()) {
-    if (std::abs(TwiceArea(hole)) / 2 >= ignore_holes_below_px2) AddRing(hole, &segments);
+    if (std::abs(TwiceSignedArea(hole)) / 2 >= ignore_holes_below_px2) AddRing(hole, &segments);
   }
   return segments;
 }

@@ -23,7 +23,8 @@ using Vertex = std::pair<double, double>;
 
 std::vector<Vertex> Outer(const proto::Area& area) {
   std::vector<Vertex> points;
-  for (const proto::Point2& p : area.polygon_m().outer().points()) points.emplace_back(p.x(), p.y());
+  for (const proto::Point2& p : area.polygon_m().outer().points())
+    points.emplace_back(p.x(), p.y());
   return points;
 }
 
@@ -82,8 +83,8 @@ TEST(MapGeometryTest, TwoRoomsShareOneBorderWithTheDoorOnItAndAreRectangles) {
   }
   // The door's end points are its jambs: 0.9 m apart, in the wall at x = 4.5 m.
   const proto::Segment& segment = door.segment_m();
-  EXPECT_NEAR(std::hypot(segment.a().x() - segment.b().x(), segment.a().y() - segment.b().y()),
-              0.9, 0.1);
+  EXPECT_NEAR(std::hypot(segment.a().x() - segment.b().x(), segment.a().y() - segment.b().y()), 0.9,
+              0.1);
   for (const proto::Point2* end : {&segment.a(), &segment.b()}) {
     EXPECT_NEAR(end->x(), 4.5, 0.1);
   }

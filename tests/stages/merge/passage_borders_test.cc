@@ -1,7 +1,7 @@
 // Passages put on the borders they open.
-#include <gtest/gtest.h>
-
 #include "stages/merge/passage_borders.h"
+
+#include <gtest/gtest.h>
 
 namespace areagraph {
 namespace {
@@ -21,7 +21,7 @@ PassagePlan Passage(int a, int b, double x, double y, double width_px = 2) {
   PassagePlan passage;
   passage.area_a = a;
   passage.area_b = b;
-  passage.point = {x, y};
+  passage.point = passage.side_a = passage.side_b = {x, y};
   passage.width_px = width_px;
   return passage;
 }
@@ -30,8 +30,8 @@ const std::vector<int> kLabelOfArea{1, 2, 3};
 
 TEST(PassageBordersTest, EachPassageLiesOnTheBorderBetweenItsAreas) {
   const PlanarPartition partition = BuildPlanarPartition(ThreeAreas(), 3);
-  const auto placed = PlacePassagesOnBorders(
-      {Passage(0, 1, 1.0, 2.0), Passage(1, 2, 4.0, 2.0)}, partition, kLabelOfArea);
+  const auto placed = PlacePassagesOnBorders({Passage(0, 1, 1.0, 2.0), Passage(1, 2, 4.0, 2.0)},
+                                             partition, kLabelOfArea);
   ASSERT_EQ(placed.size(), 2u);
   for (const PassageOnBorder& p : placed) {
     ASSERT_GE(p.chain, 0);

@@ -1,5 +1,7 @@
 // The planar partition of a label image: shared border chains, rings built
 // from them, hole removal and topology-preserving simplification.
+#include "stages/merge/planar_partition.h"
+
 #include <gtest/gtest.h>
 
 #include <set>
@@ -7,7 +9,6 @@
 #include "stages/geometry/ring_simplicity.h"
 #include "stages/merge/area_outlines.h"
 #include "stages/merge/border_simplification.h"
-#include "stages/merge/planar_partition.h"
 
 namespace areagraph {
 namespace {
