@@ -1,0 +1,73 @@
+#include "tools/export/html_viewer.h"
+
+#include <memory>
+
+#include "stages/common/artifact_types.h"
+#include "stages/common/stage.h"
+#include "store/error.h"
+#include "tools/export/area_graph_export.h"
+#include "tools/export/html_page_text.h"
+#include "tools/export/viewer_assets.h"
+#include "tools/export/viewer_run.h"
+
+namespace areagraph {
+namespace {
+
+std::string GeneratorText() {
+  std::string text = "areagraph viewer; stage versions";
+  for (const StageInfo& stage : kAllStages) {
+    text += std::string(" ") + stage.name + " " + std::to_string(stage.version);
+  }
+  return text;
+}
+
+// Every artifact message carries the map frame in its field `frame`.
+proto::MapFrame FrameOf(const ArtifactRecord& artifact) {
+  const std::unique_ptr<google::protobuf::Message> message =
+      NewArtifactMessage(artifact.proto_type);
+  if (!message || !message->ParseFromString(artifact.payload)) return proto::MapFrame();
+  const auto* field = message->GetDescriptor()->FindFieldByName("frame");
+  if (field == nullptr || field->message_type() != proto::MapFrame::descriptor()) {
+    return proto::MapFrame();
+  }
+  proto::MapFrame frame;
+  frame.CopyFrom(message->GetReflection()->GetMessage(*message, field));
+  return frame;
+}
+
+}  // namespace
+
+viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
+                             const std::string& key, const std::string& compare_key) {
+  viewer::Page page;
+  page.set_map_name(map_name);
+  page.set_generator(GeneratorText());
+  const std::vector<ArtifactRecord> first = RunArtifacts(store, map_name, key);
+  *page.add_runs() = ViewerRunOf(first, "A");
+  if (!compare_key.empty()) {
+    *page.add_runs() = ViewerRunOf(RunArtifacts(store, map_name, compare_key), "B", &page.runs(0));
+  }
+  if (!first.empty()) *page.mutable_frame() = FrameOf(first.front());
+  if (page.frame().resolution_m() <= 0 || page.frame().width_px() <= 0) {
+    throw StoreError("the artifacts of map '" + map_name + "' hold no valid map frame");
+  }
+  return page;
+}
+
+std::string ViewerPageHtml(const viewer::Page& page) {
+  return FillTemplate(embedded::kViewerHtml, {{"{{TITLE}}", HtmlEscape(page.map_name())},
+                                              {"/*{{STYLE}}*/", embedded::kViewerCss},
+                                              {"/*{{SCRIPT}}*/", embedded::kViewerJs},
+                                              {"{{DATA}}", ScriptJson(page)}});
+}
+
+int ExportViewerPage(const std::string& store_path, const std::string& map_name,
+                     const std::string& key, const std::string& compare_key,
+                     const std::string& out_path) {
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  const viewer::Page page = BuildViewerPage(*store, map_name, key, compare_key);
+  WriteExportFile(out_path, ViewerPageHtml(page));
+  return 0;
+}
+
+}  // namespace areagraph

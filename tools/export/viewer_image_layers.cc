@@ -1,0 +1,80 @@
+// The viewer's raster layers: the grid map and what cleaning changed.
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <vector>
+
+#include "store/error.h"
+#include "tools/export/svg_path.h"
+#include "tools/export/viewer_layers.h"
+
+namespace areagraph {
+namespace {
+
+// The same greys as ag-render's pictures.
+constexpr uint8_t kFreeGrey = 255, kOccupiedGrey = 40, kUnknownGrey = 200;
+
+std::string EncodePng(const cv::Mat& image) {
+  std::vector<uchar> bytes;
+  if (!cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, 9})) {
+    throw Error("cannot encode a viewer layer as PNG");
+  }
+  return std::string(bytes.begin(), bytes.end());
+}
+
+void CheckCells(const std::string& cells, const proto::MapFrame& frame) {
+  const int64_t expected = static_cast<int64_t>(frame.width_px()) * frame.height_px();
+  if (frame.width_px() <= 0 || frame.height_px() <= 0 ||
+      static_cast<int64_t>(cells.size()) != expected) {
+    throw StoreError("a map artifact's cells do not match its frame");
+  }
+}
+
+}  // namespace
+
+std::string GridMapPng(const proto::GridMap& grid) {
+  CheckCells(grid.cells(), grid.frame());
+  cv::Mat image(grid.frame().height_px(), grid.frame().width_px(), CV_8UC1);
+  for (size_t i = 0; i < grid.cells().size(); ++i) {
+    const uint8_t cell = static_cast<uint8_t>(grid.cells()[i]);
+    image.data[i] = cell == proto::CELL_FREE       ? kFreeGrey
+                    : cell == proto::CELL_OCCUPIED ? kOccupiedGrey
+                                                   : kUnknownGrey;
+  }
+  return EncodePng(image);
+}
+
+viewer::CleanLayer CleanLayerOf(const proto::CleanedMap& cleaned, const proto::GridMap* grid) {
+  CheckCells(cleaned.cells(), cleaned.frame());
+  const int64_t cell_count = static_cast<int64_t>(cleaned.cells().size());
+  // BGRA, transparent where cleaning changed nothing.
+  cv::Mat image(cleaned.frame().height_px(), cleaned.frame().width_px(), CV_8UC4,
+                cv::Scalar(0, 0, 0, 0));
+  auto paint = [&](int64_t cell, const cv::Vec4b& colour) {
+    if (cell >= 0 && cell < cell_count) {
+      image.at<cv::Vec4b>(static_cast<int>(cell / image.cols),
+                          static_cast<int>(cell % image.cols)) = colour;
+    }
+  };
+  viewer::CleanLayer layer;
+  if (grid != nullptr && grid->cells().size() == cleaned.cells().size()) {
+    int freed = 0;
+    for (int64_t i = 0; i < cell_count; ++i) {
+      if (grid->cells()[i] == proto::CELL_UNKNOWN && cleaned.cells()[i] == proto::CELL_FREE) {
+        paint(i, cv::Vec4b(230, 200, 60, 200));  // cyan-blue
+        ++freed;
+      }
+    }
+    layer.set_freed_unknown_cells(freed);
+  }
+  for (const int cell : cleaned.removed_outlier_cells()) paint(cell, cv::Vec4b(40, 40, 230, 255));
+  for (const int cell : cleaned.removed_furniture_cells()) paint(cell, cv::Vec4b(0, 150, 255, 255));
+  layer.set_changes_png(EncodePng(image));
+  std::string outlines;
+  for (const proto::Polygon& shape : cleaned.furniture_shapes()) outlines += PolygonPath(shape);
+  layer.set_furniture_outlines(outlines);
+  layer.set_outlier_cells(cleaned.removed_outlier_cells_size());
+  layer.set_furniture_cells(cleaned.removed_furniture_cells_size());
+  return layer;
+}
+
+}  // namespace areagraph
