@@ -22,6 +22,7 @@
 #include "stages/merge/area_graph_builder.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "store/error.h"
+#include "tools/report/collection_report.h"
 
 namespace areagraph {
 namespace {
@@ -35,6 +36,7 @@ struct RunFlags {
   std::string shard;
   std::string publish_url;
   bool json = false;
+  std::string report_dir;
 };
 
 void CheckStageName(const std::string& name, const char* flag) {
@@ -183,6 +185,7 @@ int Run(const RunFlags& flags) {
   } else {
     PrintSummary(summary, std::cout);
   }
+  if (!flags.report_dir.empty()) WriteRunReport(settings.store_path, tasks, flags.report_dir);
   return summary.failed() > 0 ? 1 : 0;
 }
 
@@ -219,6 +222,8 @@ int main(int argc, char** argv) {
       ->expected(0, 1)
       ->default_str(kDefaultLcmUrl);
   app.add_flag("--json", flags.json, "print the summary as JSON");
+  app.add_option("--report", flags.report_dir,
+                 "write DIR/index.html (a table of the maps) and a viewer page per map");
   app.add_option("MAP", flags.maps, "map image, directory or manifest")->required();
   return RunCommand("ag-run", app, argc, argv, [&] {
     if (app.get_option("--publish")->count() > 0 && flags.publish_url.empty()) {

@@ -37,21 +37,26 @@ proto::MapFrame FrameOf(const ArtifactRecord& artifact) {
 
 }  // namespace
 
-viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
-                             const std::string& key, const std::string& compare_key) {
+viewer::Page ViewerPageOf(const std::string& map_name, const std::vector<ArtifactRecord>& first,
+                          const std::vector<ArtifactRecord>* second) {
   viewer::Page page;
   page.set_map_name(map_name);
   page.set_generator(GeneratorText());
-  const std::vector<ArtifactRecord> first = RunArtifacts(store, map_name, key);
   *page.add_runs() = ViewerRunOf(first, "A");
-  if (!compare_key.empty()) {
-    *page.add_runs() = ViewerRunOf(RunArtifacts(store, map_name, compare_key), "B", &page.runs(0));
-  }
+  if (second != nullptr) *page.add_runs() = ViewerRunOf(*second, "B", &page.runs(0));
   if (!first.empty()) *page.mutable_frame() = FrameOf(first.front());
   if (page.frame().resolution_m() <= 0 || page.frame().width_px() <= 0) {
     throw StoreError("the artifacts of map '" + map_name + "' hold no valid map frame");
   }
   return page;
+}
+
+viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
+                             const std::string& key, const std::string& compare_key) {
+  const std::vector<ArtifactRecord> first = RunArtifacts(store, map_name, key);
+  if (compare_key.empty()) return ViewerPageOf(map_name, first);
+  const std::vector<ArtifactRecord> second = RunArtifacts(store, map_name, compare_key);
+  return ViewerPageOf(map_name, first, &second);
 }
 
 std::string ViewerPageHtml(const viewer::Page& page) {

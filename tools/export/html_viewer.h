@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "store/artifact_store.h"
 #include "tools/export/viewer_page.pb.h"
@@ -12,6 +13,11 @@ namespace areagraph {
 // `compare_key` is not empty, the run behind that key for the diff view.
 viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
                              const std::string& key, const std::string& compare_key);
+
+// The same from artifacts already read (RunArtifacts): `second`, when not
+// null, is the run to compare with.
+viewer::Page ViewerPageOf(const std::string& map_name, const std::vector<ArtifactRecord>& first,
+                          const std::vector<ArtifactRecord>* second = nullptr);
 
 // The page as one self-contained HTML file: the template, style and script
 // of html/ with the data as one JSON blob. It loads nothing at view time
