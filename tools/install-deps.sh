@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
+  chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
 )
 
 missing=()

@@ -14,15 +14,22 @@ class BandPaths {
  public:
   BandPaths() : writers_(ClearanceBands().size()) {}
   SvgPathWriter& operator[](int band) { return writers_[band]; }
+  const SvgPathWriter& operator[](int band) const { return writers_[band]; }
 
-  void AddTo(google::protobuf::RepeatedPtrField<viewer::PathBucket>* buckets) const {
-    for (size_t band = 0; band < writers_.size(); ++band) {
-      if (writers_[band].empty()) continue;
-      viewer::PathBucket* bucket = buckets->Add();
-      bucket->set_colour(ClearanceBands()[band].colour);
-      bucket->set_label(ClearanceBands()[band].label);
-      bucket->set_path(writers_[band].text());
+  // Band `first` and up; band 0 holds the edges that hug obstacles.
+  void AddTo(google::protobuf::RepeatedPtrField<viewer::PathBucket>* buckets,
+             size_t first = 0) const {
+    for (size_t band = first; band < writers_.size(); ++band) {
+      if (!writers_[band].empty()) *buckets->Add() = Bucket(static_cast<int>(band));
     }
+  }
+
+  viewer::PathBucket Bucket(int band) const {
+    viewer::PathBucket bucket;
+    bucket.set_colour(ClearanceBands()[band].colour);
+    bucket.set_label(ClearanceBands()[band].label);
+    bucket.set_path(writers_[band].text());
+    return bucket;
   }
 
  private:
@@ -107,7 +114,8 @@ viewer::VoronoiLayer VoronoiLayerOf(const proto::VoronoiDiagram& voronoi) {
     ChainEdges(voronoi, band_edges[band], paths[static_cast<int>(band)]);
   }
   viewer::VoronoiLayer layer;
-  paths.AddTo(layer.mutable_buckets());
+  paths.AddTo(layer.mutable_buckets(), 1);
+  if (!paths[0].empty()) *layer.mutable_hugging() = paths.Bucket(0);
   layer.set_vertices(voronoi.vertices_size());
   layer.set_edges(voronoi.edges_size());
   layer.set_sites(voronoi.sites_size());

@@ -1,6 +1,8 @@
 // The HTML viewer (ag-export --format html) in a real browser: Debian's
 // chromium, headless, on the page of the shipped example office_small. The
 // tests skip only where chromium cannot start.
+#include <google/protobuf/struct.pb.h>
+#include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
 
 #include <memory>
@@ -170,7 +172,7 @@ std::string TroubleOf(const HeadlessChromium::PageLoad& load) {
 
 TEST_F(ViewerInBrowser, PageLoadsWithoutNetworkAndWithoutConsoleMessages) {
   const auto load = HeadlessChromium::DumpDom(FileUrl(example_->page) +
-                                              "#layers=grid,clean,voronoi,topology,rooms,"
+                                              "#layers=grid,clean,hugging,voronoi,topology,rooms,"
                                               "areas,passages,widths&select=passage/0");
   SKIP_UNLESS_BROWSER_RAN(load.exit_code == 0);
   ASSERT_EQ(load.exit_code, 0);
@@ -184,6 +186,72 @@ TEST_F(ViewerInBrowser, PageLoadsWithoutNetworkAndWithoutConsoleMessages) {
   testing::WriteFile(example_->dir.File("fetching.html"), page);
   const auto fetching = HeadlessChromium::DumpDom(FileUrl(example_->dir.File("fetching.html")));
   EXPECT_NE(TroubleOf(fetching).find("192.0.2.1"), std::string::npos) << TroubleOf(fetching);
+}
+
+// Drives the page with synthetic mouse events (a wheel turn, a drag, a hover
+// and a click on the first area) from a script added after the viewer's,
+// and leaves what happened on <body data-probe="...">.
+constexpr char kMouseProbe[] = R"(<script>
+(function () {
+  const svg = document.querySelector('.view svg');
+  const viewport = svg.querySelector('g.viewport');
+  const scale = () => Number(/scale\(([^)]*)\)/.exec(viewport.getAttribute('transform'))[1]);
+  const translate = () => /translate\(([^ ]*) ([^)]*)\)/.exec(viewport.getAttribute('transform')).slice(1).map(Number);
+  const metres = () => Number(svg.querySelector('g.scalebar').dataset.metres);
+  const box = svg.getBoundingClientRect();
+  const at = (x, y) => ({ clientX: box.left + x, clientY: box.top + y, bubbles: true, cancelable: true, button: 0, pointerId: 1 });
+  const probe = { scale0: scale(), metres0: metres() };
+  svg.dispatchEvent(new WheelEvent('wheel', Object.assign({ deltaY: -600 }, at(200, 150))));
+  probe.scale1 = scale();
+  probe.metres1 = metres();
+  const before = translate();
+  svg.dispatchEvent(new PointerEvent('pointerdown', at(300, 300)));
+  svg.dispatchEvent(new PointerEvent('pointermove', at(360, 330)));
+  svg.dispatchEvent(new PointerEvent('pointerup', at(360, 330)));
+  const after = translate();
+  probe.panned = [after[0] - before[0], after[1] - before[1]];
+  const area = document.querySelector('path.area');
+  area.dispatchEvent(new PointerEvent('pointermove', at(0, 0)));
+  probe.hoverInfo = document.getElementById('info').dataset.selected;
+  probe.hovering = document.getElementById('info').dataset.hovering;
+  probe.hashAfterHover = location.hash;
+  area.dispatchEvent(new PointerEvent('pointerdown', at(0, 0)));
+  area.dispatchEvent(new PointerEvent('pointerup', at(0, 0)));
+  probe.hashAfterClick = location.hash;
+  probe.area = area.dataset.id;
+  document.body.dataset.probe = JSON.stringify(probe);
+})();
+</script>)";
+
+TEST_F(ViewerInBrowser, WheelZoomsDragPansHoverShowsAndClickSelects) {
+  std::string page = ReadFile(example_->page);
+  const size_t end = page.rfind("</body>");
+  ASSERT_NE(end, std::string::npos);
+  page.insert(end, kMouseProbe);
+  testing::WriteFile(example_->dir.File("probe.html"), page);
+  const auto load = HeadlessChromium::DumpDom(FileUrl(example_->dir.File("probe.html")));
+  SKIP_UNLESS_BROWSER_RAN(load.exit_code == 0);
+  ASSERT_EQ(TroubleOf(load), "");
+  std::smatch match;
+  ASSERT_TRUE(std::regex_search(load.dom, match, std::regex("data-probe=\"([^\"]*)\"")));
+  google::protobuf::Struct probe;
+  const std::string json = std::regex_replace(match[1].str(), std::regex("&quot;"), "\"");
+  ASSERT_TRUE(google::protobuf::util::JsonStringToMessage(json, &probe).ok()) << json;
+  const auto& fields = probe.fields();
+  const auto number = [&](const char* key) { return fields.at(key).number_value(); };
+  // The wheel zooms in, and the scale bar shows fewer metres.
+  EXPECT_GT(number("scale1"), number("scale0") * 1.5);
+  EXPECT_LT(number("metres1"), number("metres0"));
+  // The drag moves the map by the mouse's way.
+  const auto& panned = fields.at("panned").list_value();
+  EXPECT_DOUBLE_EQ(panned.values(0).number_value(), 60);
+  EXPECT_DOUBLE_EQ(panned.values(1).number_value(), 30);
+  // Hovering shows the area without selecting it; a click selects it.
+  const std::string area = "area/" + fields.at("area").string_value();
+  EXPECT_EQ(fields.at("hoverInfo").string_value(), area);
+  EXPECT_EQ(fields.at("hovering").string_value(), "yes");
+  EXPECT_EQ(fields.at("hashAfterHover").string_value().find("select="), std::string::npos);
+  EXPECT_NE(fields.at("hashAfterClick").string_value().find("select=" + area), std::string::npos);
 }
 
 TEST_F(ViewerInBrowser, DiffViewShowsBothRunsSideBySide) {

@@ -127,7 +127,11 @@ TEST(VoronoiLayerOf, DrawsEveryFiniteEdgeOnceInItsClearanceBand) {
   const viewer::VoronoiLayer layer = VoronoiLayerOf(voronoi);
   std::multiset<Segment> drawn;
   std::set<std::string> colours;
-  for (const viewer::PathBucket& bucket : layer.buckets()) {
+  std::vector<viewer::PathBucket> buckets(layer.buckets().begin(), layer.buckets().end());
+  ASSERT_TRUE(layer.has_hugging());
+  EXPECT_EQ(layer.hugging().colour(), ClearanceBands()[0].colour);
+  buckets.push_back(layer.hugging());
+  for (const viewer::PathBucket& bucket : buckets) {
     colours.insert(bucket.colour());
     for (const auto& [a, b] : PathSegments(bucket.path())) {
       drawn.insert(Undirected(a.x, a.y, b.x, b.y));
@@ -152,6 +156,7 @@ TEST(VoronoiLayerOf, DrawsEveryFiniteEdgeOnceInItsClearanceBand) {
   }
   EXPECT_EQ(drawn, expected);
   EXPECT_EQ(colours.size(), 5u);
+  EXPECT_EQ(layer.buckets_size(), 4);  // the hugging edges are apart
   EXPECT_EQ(layer.edges(), voronoi.edges_size());
 }
 

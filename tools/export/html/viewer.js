@@ -45,7 +45,8 @@
   const LAYERS = [
     { id: 'grid', name: 'Grid map', stage: 'import', on: true },
     { id: 'clean', name: 'Cleaned map: removed outliers and furniture', stage: 'clean' },
-    { id: 'voronoi', name: 'Voronoi diagram', stage: 'voronoi' },
+    { id: 'hugging', name: 'Voronoi edges hugging obstacles', stage: 'voronoi' },
+    { id: 'voronoi', name: 'Voronoi diagram, by clearance', stage: 'voronoi' },
     { id: 'topology', name: 'Topology Graph, by clearance', stage: 'prune' },
     { id: 'rooms', name: 'Room shapes and cut points', stage: 'cut' },
     { id: 'areas', name: 'Areas', stage: 'merge', on: true },
@@ -129,6 +130,12 @@
       for (const bucket of voronoi.buckets || []) {
         svg('path', { d: bucket.path, stroke: bucket.colour }, group);
       }
+    },
+    hugging(group, run) {
+      const hugging = (run.voronoi || {}).hugging;
+      if (!hugging) return;
+      group.classList.add('voronoi');
+      svg('path', { d: hugging.path, stroke: hugging.colour }, group);
     },
     topology(group, run) {
       const topology = run.topology;
@@ -300,14 +307,8 @@
   }
 
   let views = [];
-  let transformQueued = false;
-  function queueTransform() {
-    if (transformQueued) return;
-    transformQueued = true;
-    requestAnimationFrame(() => {
-      transformQueued = false;
-      for (const view of views) view.applyTransform();
-    });
+  function applyTransforms() {
+    for (const view of views) view.applyTransform();
   }
 
   function fitMap() {
@@ -316,7 +317,7 @@
     state.k = Math.min(width / mapWidth, height / mapHeight) * 0.96;
     state.tx = (width - mapWidth * state.k) / 2;
     state.ty = (height - mapHeight * state.k) / 2;
-    for (const view of views) view.applyTransform();
+    applyTransforms();
   }
 
   function attachPointer(view) {
@@ -331,12 +332,16 @@
       state.tx = x - (x - state.tx) * (k / state.k);
       state.ty = y - (y - state.ty) * (k / state.k);
       state.k = k;
-      queueTransform();
+      applyTransforms();
     }, { passive: false });
     element.addEventListener('pointerdown', (event) => {
       if (event.button !== 0) return;
       drag = { x: event.clientX, y: event.clientY, tx: state.tx, ty: state.ty, moved: false, target: event.target };
-      element.setPointerCapture(event.pointerId);
+      try {
+        element.setPointerCapture(event.pointerId);
+      } catch (error) {
+        // A synthetic event has no pointer to capture; dragging still works inside the view.
+      }
     });
     element.addEventListener('pointermove', (event) => {
       if (!drag) {
@@ -349,7 +354,7 @@
       if (drag.moved) {
         state.tx = drag.tx + dx;
         state.ty = drag.ty + dy;
-        queueTransform();
+        applyTransforms();
       }
     });
     element.addEventListener('pointerup', () => {
@@ -548,7 +553,10 @@
         writeFragment();
       });
       const legend = LEGENDS[layer.id] && present ? LEGENDS[layer.id]() : null;
-      if (legend) container.appendChild(legend);
+      if (legend) {
+        legend.dataset.legendFor = layer.id;
+        container.appendChild(legend);
+      }
     }
   }
 
@@ -565,6 +573,7 @@
   const LEGENDS = {
     clean: () => legendOf([['#e62828', 'outliers removed'], ['#ff9600', 'furniture removed'],
       ['#3cc8e6', 'unknown islands made free']]),
+    hugging: () => legendOf(((runs[0].voronoi || {}).hugging ? [runs[0].voronoi.hugging] : []).map((b) => [b.colour, 'clearance under 2 px: most of the diagram, not its skeleton'])),
     voronoi: () => legendOf(((runs[0].voronoi || {}).buckets || []).map((b) => [b.colour, 'clearance ' + b.label])),
     topology: () => legendOf([['#dc1e1e', 'dead end'], ['#821ea0', 'junction'], ['#1e5ac8', 'boundary (dashed)']]),
     widths: () => legendOf([['#c800c8', 'door (ring as wide as the door; dashed: left out)'], ['#00a0c8', 'corridor']]),
@@ -734,7 +743,8 @@
   function applyLayers() {
     for (const view of views) view.showLayers();
     for (const box of document.querySelectorAll('input[data-layer]')) box.checked = state.layers.has(box.dataset.layer);
-    for (const view of views) view.applyTransform();
+    for (const legend of document.querySelectorAll('[data-legend-for]')) legend.hidden = !state.layers.has(legend.dataset.legendFor);
+    applyTransforms();
     highlightSelection();
     document.documentElement.dataset.layers = [...state.layers].join(',');
   }
@@ -778,6 +788,8 @@
   buildOptions();
   applyFragment();
   window.addEventListener('hashchange', applyFragment);
-  window.addEventListener('resize', () => { for (const view of views) view.applyTransform(); });
+  window.addEventListener('resize', applyTransforms);
+  // For tests and tools/bench-viewer.sh: the script ran to its end, this many
+  // milliseconds after the navigation started.
   document.documentElement.dataset.ready = String(Math.round(performance.now()));
 })();
