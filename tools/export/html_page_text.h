@@ -17,9 +17,6 @@ namespace areagraph {
 std::string FillTemplate(const std::string& templ,
                          const std::vector<std::pair<std::string, std::string>>& fills);
 
-// `text` with &, <, >, " and ' escaped, for element content and attributes.
-std::string HtmlEscape(const std::string& text);
-
 // `message` as compact JSON (protobuf's printer, .proto field names) that is
 // safe inside <script type="application/json">: every '<' is written \u003c,
 // so no "</script>" or "<!--" can end or bend the element.

@@ -7,6 +7,7 @@
 #include "store/error.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"
+#include "tools/export/markup_escape.h"
 #include "tools/export/viewer_assets.h"
 #include "tools/export/viewer_run.h"
 
@@ -60,7 +61,7 @@ viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
 }
 
 std::string ViewerPageHtml(const viewer::Page& page) {
-  return FillTemplate(embedded::kViewerHtml, {{"{{TITLE}}", HtmlEscape(page.map_name())},
+  return FillTemplate(embedded::kViewerHtml, {{"{{TITLE}}", MarkupEscaped(page.map_name())},
                                               {"/*{{STYLE}}*/", embedded::kViewerCss},
                                               {"/*{{SCRIPT}}*/", embedded::kViewerJs},
                                               {"{{DATA}}", ScriptJson(page)}});

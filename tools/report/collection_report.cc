@@ -14,6 +14,7 @@
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"
 #include "tools/export/html_viewer.h"
+#include "tools/export/markup_escape.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_run.h"
 #include "tools/report/collection_index.pb.h"
@@ -114,7 +115,7 @@ CollectionReport WriteCollectionReport(const std::string& store_path,
   }
   report.index_path = dir + "/index.html";
   WriteExportFile(report.index_path,
-                  FillTemplate(embedded::kIndexHtml, {{"{{TITLE}}", HtmlEscape(index.title())},
+                  FillTemplate(embedded::kIndexHtml, {{"{{TITLE}}", MarkupEscaped(index.title())},
                                                       {"/*{{SCRIPT}}*/", embedded::kIndexJs},
                                                       {"{{DATA}}", ScriptJson(index)}}));
   return report;

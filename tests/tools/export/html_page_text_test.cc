@@ -4,6 +4,7 @@
 #include <google/protobuf/util/json_util.h>
 #include <gtest/gtest.h>
 
+#include "tools/export/markup_escape.h"
 #include "tools/export/viewer_page.pb.h"
 
 namespace areagraph {
@@ -15,8 +16,8 @@ TEST(FillTemplate, FilledTextIsNeverSearchedAgain) {
   EXPECT_THROW(FillTemplate("no placeholder", {{"{{X}}", "x"}}), std::exception);
 }
 
-TEST(HtmlEscape, EscapesMarkupCharacters) {
-  EXPECT_EQ(HtmlEscape("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");
+TEST(MarkupEscaped, EscapesMarkupCharacters) {
+  EXPECT_EQ(MarkupEscaped("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&apos;");
 }
 
 TEST(ScriptJson, NoTextCanCloseTheScriptElementAndTheJsonReadsBack) {
