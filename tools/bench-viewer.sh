@@ -83,7 +83,7 @@ ready_ms() {  # ready_ms URL -> median of the page's data-ready
 
 blanks=$(for _ in $(seq "$RUNS"); do shot_ms "data:text/html,<p>blank</p>"; done | median)
 ALL="#layers=grid,clean,hugging,voronoi,topology,rooms,areas,passages,widths"
-pages=$(ls -S "$OUT"/report/maps/*.html | head -n "$TOP")
+pages=$(ls -S "$OUT"/report/maps/*.html | sed -n "1,${TOP}p")  # sed reads all: no SIGPIPE
 echo "### Viewer pages of the $TOP largest of $(ls "$OUT"/report/maps | wc -l) Bormann maps ($(date -u +%Y-%m-%d), median of $RUNS)"
 echo
 echo "| map | size px | page MB | script done ms | open, default layers ms | open, all layers ms |"
@@ -102,4 +102,4 @@ echo
 echo "A screenshot of a blank page took ${blanks} ms (median); each opening time above is a page's" \
   "screenshot minus the blank one just before it, median of $RUNS pairs. Load average at the end:" \
   "$(cut -d' ' -f1-3 /proc/loadavg). Largest page of all:" \
-  "$(ls -S "$OUT"/report/maps/*.html | head -n 1 | xargs stat -c '%s %n' | awk '{ printf "%.2f MB (%s)", $1 / 1048576, $2 }')."
+  "$(ls -S "$OUT"/report/maps/*.html | sed -n 1p | xargs stat -c '%s %n' | awk '{ printf "%.2f MB (%s)", $1 / 1048576, $2 }')."

@@ -60,9 +60,12 @@ const std::string& HeadlessChromium::Unavailable() {
   return reason;
 }
 
-HeadlessChromium::PageLoad HeadlessChromium::DumpDom(const std::string& url) {
+HeadlessChromium::PageLoad HeadlessChromium::DumpDom(const std::string& url, int settle_ms) {
   TempDir profile;
-  const CommandResult run = RunProgram(ChromiumCommand(profile.path(), {"--dump-dom", url}));
+  std::vector<std::string> flags = {"--dump-dom", url};
+  if (settle_ms > 0)
+    flags.insert(flags.begin(), "--virtual-time-budget=" + std::to_string(settle_ms));
+  const CommandResult run = RunProgram(ChromiumCommand(profile.path(), flags));
   PageLoad load;
   load.exit_code = run.exit_code;
   load.dom = run.out;

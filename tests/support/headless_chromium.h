@@ -27,8 +27,10 @@ class HeadlessChromium {
     std::string console;  // the page's console messages (chromium's log lines)
   };
 
-  // Loads `url` and dumps the DOM after the load event.
-  static PageLoad DumpDom(const std::string& url);
+  // Loads `url` and dumps the DOM after the load event, or with `settle_ms`
+  // once the page has been idle or that much virtual time has passed (for
+  // work the page does after loading, such as decoding images).
+  static PageLoad DumpDom(const std::string& url, int settle_ms = 0);
 
   // Loads `url` in a window of width x height and writes a PNG screenshot.
   // Returns false when chromium fails or writes no file.

@@ -171,12 +171,17 @@ std::string TroubleOf(const HeadlessChromium::PageLoad& load) {
 }
 
 TEST_F(ViewerInBrowser, PageLoadsWithoutNetworkAndWithoutConsoleMessages) {
-  const auto load = HeadlessChromium::DumpDom(FileUrl(example_->page) +
-                                              "#layers=grid,clean,hugging,voronoi,topology,rooms,"
-                                              "areas,passages,widths&select=passage/0");
+  const auto load =
+      HeadlessChromium::DumpDom(FileUrl(example_->page) +
+                                    "#layers=grid,clean,hugging,voronoi,topology,rooms,"
+                                    "areas,passages,widths&select=passage/0",
+                                /*settle_ms=*/5000);
   SKIP_UNLESS_BROWSER_RAN(load.exit_code == 0);
   ASSERT_EQ(load.exit_code, 0);
   EXPECT_EQ(TroubleOf(load), "") << (HeadlessChromium::Offline() ? "offline" : "online");
+  // The cleaning layer was coloured after loading, into a data: URL.
+  EXPECT_TRUE(std::regex_search(
+      load.dom, std::regex("class=\"clean-image\"[^>]*href=\"data:image/png;base64,")));
 
   // The same check catches a page that tries to fetch something.
   std::string page = ReadFile(example_->page);

@@ -117,10 +117,10 @@
     clean(group, run) {
       const clean = run.clean;
       if (!clean) return;
-      svg('image', {
-        href: 'data:image/png;base64,' + clean.changes_png, x: 0, y: 0, width: mapWidth,
-        height: mapHeight, class: 'clean-image', preserveAspectRatio: 'none',
+      const image = svg('image', {
+        x: 0, y: 0, width: mapWidth, height: mapHeight, class: 'clean-image', preserveAspectRatio: 'none',
       }, group);
+      colourChanges(clean.changes_png, (url) => image.setAttribute('href', url));
       if (clean.furniture_outlines) svg('path', { d: clean.furniture_outlines, class: 'furniture' }, group);
     },
     voronoi(group, run) {
@@ -232,6 +232,35 @@
       }
     },
   };
+
+  // The cleaning codes of viewer_page.proto's CleanChange, as RGBA.
+  const CLEAN_COLOURS = [[0, 0, 0, 0], [230, 40, 40, 255], [255, 150, 0, 255], [60, 200, 230, 200]];
+
+  // Colours the grey PNG of cleaning codes through a canvas and hands the
+  // result on as a data: URL (the page may load nothing else).
+  function colourChanges(pngBase64, done) {
+    const codes = new Image();
+    codes.onload = () => {
+      const canvas = document.createElement('canvas');
+      canvas.width = codes.naturalWidth;
+      canvas.height = codes.naturalHeight;
+      const context = canvas.getContext('2d');
+      context.drawImage(codes, 0, 0);
+      const pixels = context.getImageData(0, 0, canvas.width, canvas.height);
+      const data = pixels.data;
+      for (let i = 0; i < data.length; i += 4) {
+        const colour = CLEAN_COLOURS[data[i]] || CLEAN_COLOURS[0];
+        data[i] = colour[0];
+        data[i + 1] = colour[1];
+        data[i + 2] = colour[2];
+        data[i + 3] = colour[3];
+      }
+      context.putImageData(pixels, 0, 0);
+      done(canvas.toDataURL('image/png'));
+    };
+    codes.onerror = () => recordError('cannot decode the cleaning layer');
+    codes.src = 'data:image/png;base64,' + pngBase64;
+  }
 
   function layerPresent(run, layerId) {
     const layer = LAYERS.find((l) => l.id === layerId);
@@ -478,8 +507,15 @@
     },
   };
 
+  let shownInfo = null;
   function showInfo(selection, hovering) {
     const info = document.getElementById('info');
+    // Pointer moves within one element redraw nothing.
+    const shown = selectKey(selection) + (hovering ? ' hover' : '');
+    if (shown === shownInfo && info.childElementCount > 0) return;
+    shownInfo = shown;
+    delete info.dataset.selected;
+    delete info.dataset.hovering;
     if (!selection) {
       info.className = 'muted';
       info.textContent = 'Hover over or click an area, passage, door, corridor, edge, room shape or cut point.';
@@ -508,12 +544,14 @@
     const selection = state.select;
     if (!selection) return;
     for (const view of views) {
-      if (view.run.index !== selection.run) continue;
-      const key = selection.kind + '/' + selection.id;
+      // The selected run's own view, or A's view with B drawn over it.
+      const own = view.run.index === selection.run;
+      if (!own && !(view.run.index === 0 && selection.run === 1)) continue;
+      const key = (own ? '' : 'b/') + selection.kind + '/' + selection.id;
       for (const element of view.svg.querySelectorAll('[data-sel="' + key + '"]')) {
         if (!element.classList.contains('hit') && !element.classList.contains('passage-hit')) element.classList.add('selected');
       }
-      const run = view.run;
+      const run = runs[selection.run];
       let edgeIds = [];
       if (selection.kind === 'area') edgeIds = (findItem(run, 'area', selection.id) || {}).topology_edge_ids || [];
       if (selection.kind === 'cutedge') edgeIds = [selection.id];
@@ -571,8 +609,8 @@
   }
 
   const LEGENDS = {
-    clean: () => legendOf([['#e62828', 'outliers removed'], ['#ff9600', 'furniture removed'],
-      ['#3cc8e6', 'unknown islands made free']]),
+    clean: () => legendOf([['rgb(230,40,40)', 'outliers removed'], ['rgb(255,150,0)', 'furniture removed'],
+      ['rgb(60,200,230)', 'unknown islands made free']]),
     hugging: () => legendOf(((runs[0].voronoi || {}).hugging ? [runs[0].voronoi.hugging] : []).map((b) => [b.colour, 'clearance under 2 px: most of the diagram, not its skeleton'])),
     voronoi: () => legendOf(((runs[0].voronoi || {}).buckets || []).map((b) => [b.colour, 'clearance ' + b.label])),
     topology: () => legendOf([['#dc1e1e', 'dead end'], ['#821ea0', 'junction'], ['#1e5ac8', 'boundary (dashed)']]),
