@@ -4,13 +4,13 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/live_map_server.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

@@ -3,8 +3,8 @@
 #include <iostream>
 #include <new>
 
+#include "common/error.h"
 #include "stages/common/pipeline_options.h"
-#include "store/error.h"
 
 namespace areagraph {
 

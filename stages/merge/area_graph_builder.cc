@@ -5,7 +5,10 @@
 #include <map>
 #include <set>
 
+#include "common/error.h"
 #include "stages/common/map_frame.h"
+#include "stages/common/pipeline_options_check.h"
+#include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/merge/area_assignment.h"
@@ -13,7 +16,6 @@
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/region_outline.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
@@ -22,9 +24,9 @@ namespace {
 // no cell centre changes sides: polygons and raster agree cell by cell.
 constexpr double kOutlineTolerancePx = 0.45;
 
-void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
+void CheckCutGraph(const proto::CutGraph& graph) {
   if (graph.edges_size() == 0) {
-    throw InputError(what + ": no Area Graph: the cut graph has no edges");
+    throw InputError("no Area Graph: the cut graph has no edges");
   }
   for (const proto::GraphEdge& edge : graph.edges()) {
     const bool ok = edge.source() >= 0 && edge.source() < graph.vertices_size() &&
@@ -32,8 +34,7 @@ void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
                     edge.path_size() >= 2 && edge.left_sites_size() == edge.path_size() - 1 &&
                     edge.right_sites_size() == edge.path_size() - 1;
     if (!ok) {
-      throw InputError(what + ": the CutGraph artifact is corrupt (edge " +
-                       std::to_string(edge.id()) + ")");
+      throw InputError("the CutGraph artifact is corrupt (edge " + std::to_string(edge.id()) + ")");
     }
   }
 }
@@ -135,24 +136,11 @@ proto::Ring ToRing(const PointList& points, const MapTransform* transform) {
 
 }  // namespace
 
-void CheckMergeOptions(const proto::MergeOptions& options) {
-  if (!std::isfinite(options.min_area_m2()) || options.min_area_m2() < 0) {
-    throw OptionsError("merge.min_area_m2 must be zero or more square metres, got " +
-                       std::to_string(options.min_area_m2()));
-  }
-  if (!std::isfinite(options.grow_min_gap_m()) || options.grow_min_gap_m() < 0) {
-    throw OptionsError("merge.grow_min_gap_m must be zero or more metres, got " +
-                       std::to_string(options.grow_min_gap_m()));
-  }
-}
-
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
-                                const proto::MergeOptions& options, const std::string& map_name,
-                                AreaRaster* raster_out) {
+                                const proto::MergeOptions& options, AreaRaster* raster_out) {
   CheckMergeOptions(options);
-  const std::string what = "map '" + map_name + "'";
-  const CellGrid grid(map, what);
-  CheckCutGraph(graph, what);
+  const CellGrid grid(map);
+  CheckCutGraph(graph);
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);
@@ -186,7 +174,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   FoldSmallAreas(graph, min_cells, &plan, &raster);
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
-    throw InputError(what + ": no Area Graph: no free cell lies inside the map's boundary");
+    throw InputError("no Area Graph: no free cell lies inside the map's boundary");
   }
 
   // Bounding box and centroid of every area, in one pass.
@@ -205,7 +193,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
 
   const MapTransform transform(map.frame());
   proto::AreaGraph out;
-  out.set_format_version(1);
+  out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
   std::vector<int> area_id(area_count, -1);
   for (int k = 0; k < area_count; ++k) {

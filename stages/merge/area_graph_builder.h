@@ -8,10 +8,6 @@
 
 namespace areagraph {
 
-// Throws OptionsError when merge.min_area_m2 or merge.grow_min_gap_m is
-// negative or not finite.
-void CheckMergeOptions(const proto::MergeOptions& options);
-
 // ag-merge: the Area Graph. The CutGraph's edges are grouped into areas
 // (AssignAreas); the areas split the map's free cells inside the boundary
 // among themselves (PartitionFreeSpace), so they never overlap and each is
@@ -22,10 +18,9 @@ void CheckMergeOptions(const proto::MergeOptions& options);
 // neighbour they share the longest border with. Every
 // area's polygon is traced along cell edges and lightly simplified; the
 // passages are where areas meet at graph vertices (FindPassages). When
-// `raster` is given it receives the final label image. Throws InputError
-// naming `map_name` for an unusable CutGraph.
+// `raster` is given it receives the final label image. Throws InputError for
+// an unusable CutGraph.
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
-                                const proto::MergeOptions& options, const std::string& map_name,
-                                AreaRaster* raster = nullptr);
+                                const proto::MergeOptions& options, AreaRaster* raster = nullptr);
 
 }  // namespace areagraph

@@ -158,14 +158,13 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) 
   return map;
 }
 
-AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options,
-                         const std::string& map_name) {
+AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options) {
   AreaStages stages;
   stages.options = options;
-  stages.diagram = ComputeVoronoiStage(map, options.voronoi(), map_name);
-  stages.topology = BuildTopologyGraph(stages.diagram, map, options.prune(), map_name);
-  stages.cut = BuildCutGraph(stages.topology, map, options.cut(), map_name);
-  stages.areas = BuildAreaGraph(stages.cut, map, options.merge(), map_name, &stages.raster);
+  stages.diagram = ComputeVoronoiStage(map, options.voronoi());
+  stages.topology = BuildTopologyGraph(stages.diagram, map, options.prune());
+  stages.cut = BuildCutGraph(stages.topology, map, options.cut());
+  stages.areas = BuildAreaGraph(stages.cut, map, options.merge(), &stages.raster);
   return stages;
 }
 

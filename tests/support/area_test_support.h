@@ -25,8 +25,7 @@ struct AreaStages {
 };
 
 // Runs ag-voronoi, ag-prune, ag-cut and ag-merge in process.
-AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options = {},
-                         const std::string& map_name = "test");
+AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options = {});
 
 // Checks what every Area Graph must satisfy (gtest failures, not exceptions):
 // - every area polygon is simple (CGAL is_simple_2 per ring, and no ring

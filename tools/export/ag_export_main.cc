@@ -4,11 +4,11 @@
 #include <iostream>
 #include <string>
 
+#include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_viewer.h"
 

@@ -8,7 +8,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_label_image.h"
 #include "tools/export/geojson_export.h"
 

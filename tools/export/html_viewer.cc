@@ -2,9 +2,9 @@
 
 #include <memory>
 
-#include "stages/common/artifact_types.h"
+#include "common/error.h"
 #include "stages/common/stage.h"
-#include "store/error.h"
+#include "stages/common/stage_table.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"
 #include "tools/export/markup_escape.h"
@@ -16,8 +16,8 @@ namespace {
 
 std::string GeneratorText() {
   std::string text = "areagraph viewer; stage versions";
-  for (const StageInfo& stage : kAllStages) {
-    text += std::string(" ") + stage.name + " " + std::to_string(stage.version);
+  for (const StageDefinition& stage : StageTable()) {
+    text += std::string(" ") + stage.info.name + " " + std::to_string(stage.info.version);
   }
   return text;
 }

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_polygons.h"
 #include "tools/export/markup_escape.h"
 

@@ -3,7 +3,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
 

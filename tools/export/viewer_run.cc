@@ -3,9 +3,10 @@
 #include <map>
 #include <set>
 
+#include "common/error.h"
+#include "common/text.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/stage.h"
-#include "store/error.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
 #include "tools/export/viewer_options.h"
@@ -16,8 +17,9 @@ namespace {
 
 // The head of the latest stage that the map has.
 ArtifactRecord NewestStageHead(ArtifactStore& store, const std::string& map_name) {
-  for (auto stage = std::rbegin(kAllStages); stage != std::rend(kAllStages); ++stage) {
-    std::optional<ArtifactRecord> head = store.ReadHead(map_name, stage->name);
+  const std::vector<StageDefinition>& stages = StageTable();
+  for (auto stage = stages.rbegin(); stage != stages.rend(); ++stage) {
+    std::optional<ArtifactRecord> head = store.ReadHead(map_name, stage->info.name);
     if (head) return *head;
   }
   throw InputError("map '" + map_name + "' has no artifacts");
@@ -110,8 +112,8 @@ std::vector<ArtifactRecord> RunArtifacts(ArtifactStore& store, const std::string
     by_stage.emplace(stage, std::move(artifact));
   }
   std::vector<ArtifactRecord> ordered;
-  for (const StageInfo& stage : kAllStages) {
-    auto found = by_stage.find(stage.name);
+  for (const StageDefinition& stage : StageTable()) {
+    auto found = by_stage.find(stage.info.name);
     if (found != by_stage.end()) ordered.push_back(std::move(found->second));
   }
   return ordered;

@@ -4,12 +4,12 @@
 #include <iostream>
 #include <memory>
 
+#include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/listen/area_graph_listener.h"
 
 namespace areagraph {

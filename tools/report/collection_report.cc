@@ -7,10 +7,10 @@
 #include <map>
 #include <memory>
 
+#include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/stage.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"
 #include "tools/export/html_viewer.h"

@@ -25,7 +25,7 @@ class ViewerCli : public ::testing::Test {
     std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
     StageInputs inputs;
     inputs.digests = {"cut-artifact-digest"};  // not in the store: merge is all there is
-    merge_key_ = RunCachedStage(*store, "house", kMergeStage, proto::MergeOptions(), inputs, [] {
+    merge_key_ = RunCachedStage(*store, "house", StageOf(kMergeStage), {}, inputs, [] {
                    return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph());
                  }).cache_key;
   }

@@ -6,10 +6,10 @@
 
 #include <memory>
 
+#include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
 #include "stages/common/stage.h"
-#include "store/error.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"
 #include "tools/export/html_viewer.h"
@@ -27,42 +27,34 @@ class ViewerRun : public ::testing::Test {
     grid_.set_format_version(1);
     *grid_.mutable_frame() = testing::TwoRoomAreaGraph().frame();
     grid_.set_cells(std::string(40 * 20, static_cast<char>(proto::CELL_FREE)));
-    StageInputs file;
-    file.digests = {"file-digest"};
-    import_key_ = Run(kImportStage, proto::ImportOptions(), file, grid_);
-    clean_key_ = RunClean(proto::CleanOptions());
-    merge_key_ = RunMerge(clean_key_, proto::MergeOptions());
+    import_key_ = Run(kImportStage, {}, "file-digest", grid_);
+    clean_key_ = RunClean({});
+    merge_key_ = RunMerge(clean_key_, {});
   }
 
-  std::string Run(const StageInfo& stage, const google::protobuf::Message& options,
-                  const StageInputs& inputs, const google::protobuf::Message& result) {
-    return RunCachedStage(*store_, "house", stage, options, inputs,
+  // Stores `result` as the artifact of `stage` with one input key.
+  std::string Run(const StageInfo& stage, const proto::PipelineOptions& options,
+                  const std::string& input_key, const google::protobuf::Message& result) {
+    StageInputs inputs;
+    inputs.digests = {input_key};
+    return RunCachedStage(*store_, "house", StageOf(stage), options, inputs,
                           [&] {
-                            std::unique_ptr<google::protobuf::Message> copy(result.New());
+                            MessagePtr copy(result.New());
                             copy->CopyFrom(result);
                             return copy;
                           })
         .cache_key;
   }
 
-  std::string RunClean(const proto::CleanOptions& options) {
+  std::string RunClean(const proto::PipelineOptions& options) {
     proto::CleanedMap cleaned;
     *cleaned.mutable_frame() = grid_.frame();
     cleaned.set_cells(grid_.cells());
-    StageInputs inputs;
-    inputs.digests = {import_key_};
-    return RunCachedStage(*store_, "house", kCleanStage, options, inputs,
-                          [&] { return std::make_unique<proto::CleanedMap>(cleaned); })
-        .cache_key;
+    return Run(kCleanStage, options, import_key_, cleaned);
   }
 
-  std::string RunMerge(const std::string& clean_key, const proto::MergeOptions& options) {
-    StageInputs inputs;
-    inputs.digests = {clean_key};
-    return RunCachedStage(
-               *store_, "house", kMergeStage, options, inputs,
-               [] { return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph()); })
-        .cache_key;
+  std::string RunMerge(const std::string& clean_key, const proto::PipelineOptions& options) {
+    return Run(kMergeStage, options, clean_key, testing::TwoRoomAreaGraph());
   }
 
   std::unique_ptr<ArtifactStore> store_;
@@ -77,8 +69,8 @@ std::vector<std::string> KeysOf(const std::vector<ArtifactRecord>& artifacts) {
 }
 
 TEST_F(ViewerRun, FollowsInputKeysNotTheHeadsOfEarlierStages) {
-  proto::CleanOptions other;
-  other.set_outlier_percent(3);
+  proto::PipelineOptions other;
+  other.mutable_clean()->set_outlier_percent(3);
   const std::string newer_clean = RunClean(other);  // now the clean head
   const auto artifacts = RunArtifacts(*store_, "house", "");
   EXPECT_EQ(KeysOf(artifacts), (std::vector<std::string>{import_key_, clean_key_, merge_key_}));
@@ -105,8 +97,8 @@ TEST_F(ViewerRun, LayersOfEveryStagePresent) {
 }
 
 TEST_F(ViewerRun, SecondRunLeavesOutTheLayersItShares) {
-  proto::MergeOptions other;
-  other.set_min_area_m2(1);
+  proto::PipelineOptions other;
+  other.mutable_merge()->set_min_area_m2(1);
   const std::string other_merge = RunMerge(clean_key_, other);
   const viewer::Run first = ViewerRunOf(RunArtifacts(*store_, "house", merge_key_), "A");
   const viewer::Run second = ViewerRunOf(RunArtifacts(*store_, "house", other_merge), "B", &first);

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "runner/run/map_worker.h"
+#include "stages/common/command_line.h"
+
+namespace areagraph {
+
+// ag-run's command line.
+struct RunFlags {
+  StageCommandLine stage;  // --store, --options, --set, --force
+  std::vector<std::string> maps;
+  std::string from_stage;
+  std::string only_stage;
+  int jobs = 0;
+  std::string shard;
+  std::string publish_url;
+  bool json = false;
+  std::string report_dir;  // --report: viewer pages and an index (tools/report)
+};
+
+// Adds ag-run's flags and MAP arguments to `app`; --jobs defaults to the
+// number of cores.
+void AddRunFlags(CLI::App& app, RunFlags& flags);
+
+// Completes `flags` after parsing (a bare --publish means the default URL)
+// and checks what needs no map: --jobs, stage names. Throws OptionsError.
+void FinishRunFlags(const CLI::App& app, RunFlags& flags);
+
+// The run settings that --store, --from, --only and --force ask for.
+RunSettings SettingsFrom(const RunFlags& flags);
+
+}  // namespace areagraph
