@@ -22,5 +22,5 @@ done
 "$BIN/ag-export" --store "$STORE" --map "$name" --format osmag --out "out/$name.osm"
 "$BIN/ag-export" --store "$STORE" --map "$name" --format labels --out "out/$name-labels.png"
 "$BIN/ag-inspect" --store "$STORE" --map "$name"
-echo "open first: out/$name.html in a browser (every stage as a layer; hover, zoom, options, W)"
 echo "pictures: out/$name-{clean,voronoi,prune,cut,merge}.png; exports: out/$name.geojson, out/$name.osm"
+echo "open first: out/$name.html in a browser (every stage as a layer; hover, zoom, options, W)"

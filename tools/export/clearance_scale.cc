@@ -6,12 +6,14 @@
 namespace areagraph {
 namespace {
 
+// "0.15": a band limit as its label shows it.
 std::string LimitText(double metres) {
   char text[16];
   std::snprintf(text, sizeof(text), "%g", metres);
   return text;
 }
 
+// Band 0 faint; the others from red to blue by equal steps of hue.
 std::vector<ClearanceBand> MakeBands() {
   std::vector<ClearanceBand> bands = {{"#f3d9e6", "hugs an obstacle (< 2 px)"}};
   const int count = static_cast<int>(std::size(kClearanceBandLimitsM)) + 1;

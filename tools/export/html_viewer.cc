@@ -14,6 +14,7 @@
 namespace areagraph {
 namespace {
 
+// Which stage versions wrote the page, for whoever finds it later.
 std::string GeneratorText() {
   std::string text = "areagraph viewer; stage versions";
   for (const StageDefinition& stage : StageTable()) {

@@ -68,6 +68,7 @@ void SvgPathWriter::ContinueAt(double x, double y) {
 
 namespace {
 
+// A closed subpath; rings of fewer than 3 points draw nothing.
 void AppendRing(const proto::Ring& ring, SvgPathWriter& path) {
   if (ring.points_size() < 3) return;
   path.MoveTo(ring.points(0).x(), ring.points(0).y());

@@ -12,12 +12,14 @@
 namespace areagraph {
 namespace {
 
+// Sets `out` to the pixel position of a point in map metres, rounded for the page.
 void SetPixel(const MapTransform& transform, const proto::Point2& metres, viewer::Point* out) {
   const Eigen::Vector2d pixel = transform.WorldToPixel({metres.x(), metres.y()});
   out->set_x(Rounded(pixel.x(), 1));
   out->set_y(Rounded(pixel.y(), 1));
 }
 
+// "1.35 m": widths in the rule's words.
 std::string Metres(double value) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.2f m", value);

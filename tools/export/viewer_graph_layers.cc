@@ -74,6 +74,7 @@ void ChainEdges(const proto::VoronoiDiagram& voronoi, const std::vector<int>& ed
   for (int vertex = 0; vertex < vertex_count; ++vertex) walk_from(vertex);
 }
 
+// An edge for hovering: its path, length and narrowest clearance in metres.
 viewer::GraphEdge EdgeOf(const proto::GraphEdge& edge, double resolution_m) {
   viewer::GraphEdge out;
   out.set_id(edge.id());

@@ -13,6 +13,7 @@ namespace {
 // The same greys as ag-render's pictures.
 constexpr uint8_t kFreeGrey = 255, kOccupiedGrey = 40, kUnknownGrey = 200;
 
+// PNG bytes of a one-channel image.
 std::string EncodePng(const cv::Mat& image) {
   std::vector<uchar> bytes;
   // Run-length deflate: as small as level 9 on maps (few grey values in long
@@ -25,6 +26,7 @@ std::string EncodePng(const cv::Mat& image) {
   return std::string(bytes.begin(), bytes.end());
 }
 
+// Throws StoreError when the cells do not fill the frame (a damaged artifact).
 void CheckCells(const std::string& cells, const proto::MapFrame& frame) {
   const int64_t expected = static_cast<int64_t>(frame.width_px()) * frame.height_px();
   if (frame.width_px() <= 0 || frame.height_px() <= 0 ||

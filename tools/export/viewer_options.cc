@@ -24,6 +24,7 @@ std::unique_ptr<Message> NewStageOptions(const std::string& stage) {
           .New());
 }
 
+// A field's value as text format writes it (1.25, true, 18).
 std::string FieldText(const Message& message, const FieldDescriptor* field) {
   std::string text;
   google::protobuf::TextFormat::PrintFieldValueToString(message, field, -1, &text);

@@ -25,16 +25,21 @@ ArtifactRecord NewestStageHead(ArtifactStore& store, const std::string& map_name
   throw InputError("map '" + map_name + "' has no artifacts");
 }
 
+// The artifact's payload as T; throws StoreError when it is not one, or is
+// of a format newer than this build.
 template <typename T>
 T Parse(const ArtifactRecord& artifact) {
   T message;
+  const std::string what = "the " + artifact.stage + " artifact " + ShortKey(artifact.cache_key) +
+                           " of map '" + artifact.map_name + "'";
   if (artifact.proto_type != message.GetTypeName() || !message.ParseFromString(artifact.payload)) {
-    throw StoreError("the " + artifact.stage + " artifact " + artifact.cache_key.substr(0, 12) +
-                     " of map '" + artifact.map_name + "' is not a valid " + message.GetTypeName());
+    throw StoreError(what + " is not a valid " + message.GetTypeName());
   }
+  CheckFormatVersion(message, what);
   return message;
 }
 
+// The panel's record of one artifact: key, time, options.
 viewer::StageRecord RecordOf(const ArtifactRecord& artifact) {
   viewer::StageRecord record;
   record.set_stage(artifact.stage);
@@ -50,6 +55,7 @@ viewer::StageRecord RecordOf(const ArtifactRecord& artifact) {
   return record;
 }
 
+// Whether the diff view's first run holds the artifact with `key` already.
 bool FirstHasKey(const viewer::Run* first, const std::string& key) {
   if (first == nullptr) return false;
   for (const viewer::StageRecord& stage : first->stages()) {

@@ -26,6 +26,7 @@ namespace {
 
 constexpr int kThumbnailSide = 120;
 
+// File names compared without case, for file systems that ignore it.
 std::string Lower(std::string text) {
   for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return text;
