@@ -81,8 +81,6 @@ void SqliteStatement::BindDouble(int index, double value) {
   Check(sqlite3_bind_double(stmt_, index, value));
 }
 
-void SqliteStatement::BindNull(int index) { Check(sqlite3_bind_null(stmt_, index)); }
-
 bool SqliteStatement::Step() {
   const int rc = sqlite3_step(stmt_);
   Check(rc);

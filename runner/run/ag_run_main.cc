@@ -5,6 +5,7 @@
 
 #include "runner/run/collection_run.h"
 #include "stages/common/stage_table.h"
+#include "tools/report/run_report_writer.h"
 
 int main(int argc, char** argv) {
   using namespace areagraph;
@@ -17,8 +18,15 @@ int main(int argc, char** argv) {
       "the others go on; the exit status is 1 when any map failed."};
   RunFlags flags;
   AddRunFlags(app, flags);
+  std::string report_dir;
+  app.add_option("--report", report_dir,
+                 "then write DIR/index.html (a table of the maps) and DIR/maps/<map>.html (each "
+                 "map's viewer page, as ag-export --format html writes it)")
+      ->type_name("DIR");
   return RunCommand("ag-run", app, argc, argv, [&] {
     FinishRunFlags(app, flags);
-    return RunCollection(flags);
+    const int status = RunCollection(flags);
+    if (!report_dir.empty()) WriteRunReport(flags, report_dir);
+    return status;
   });
 }

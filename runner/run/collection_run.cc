@@ -14,7 +14,6 @@
 #include "runner/run/shard.h"
 #include "runner/run/worker_events.h"
 #include "stages/common/pipeline_options_check.h"
-#include "tools/report/collection_report.h"
 
 namespace areagraph {
 namespace {
@@ -93,7 +92,6 @@ int RunCollection(const RunFlags& flags) {
   } else {
     PrintSummary(summary, std::cout);
   }
-  if (!flags.report_dir.empty()) WriteRunReport(settings.store_path, tasks, flags.report_dir);
   return summary.failed() > 0 ? 1 : 0;
 }
 

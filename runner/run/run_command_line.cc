@@ -30,10 +30,6 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
       ->expected(0, 1)
       ->default_str(kDefaultLcmUrl);
   app.add_flag("--json", flags.json, "print the summary as JSON");
-  app.add_option("--report", flags.report_dir,
-                 "write DIR/index.html (a table of the maps) and DIR/maps/<map>.html (the viewer "
-                 "page of each map, as ag-export --format html writes it)")
-      ->type_name("DIR");
   app.add_option("MAP", flags.maps, "map image, directory or manifest")->required();
 }
 

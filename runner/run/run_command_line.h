@@ -19,7 +19,6 @@ struct RunFlags {
   std::string shard;
   std::string publish_url;
   bool json = false;
-  std::string report_dir;  // --report: viewer pages and an index (tools/report)
 };
 
 // Adds ag-run's flags and MAP arguments to `app`; --jobs defaults to the

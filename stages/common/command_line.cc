@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "stages/common/pipeline_options.h"
+#include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
 
@@ -25,6 +26,7 @@ proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags) {
   proto::PipelineOptions options;
   if (!flags.options_file.empty()) options = ReadOptionsFile(flags.options_file);
   for (const std::string& assignment : flags.overrides) ApplyOverride(assignment, &options);
+  CheckPipelineOptions(options);
   return options;
 }
 

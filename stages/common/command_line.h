@@ -22,7 +22,8 @@ struct StageCommandLine {
 // is false for ag-import, whose map name defaults to the file's stem.
 void AddStageFlags(CLI::App& app, StageCommandLine& flags, bool map_required = true);
 
-// The options file (if any) with every --set applied in order.
+// The options file (if any) with every --set applied in order, checked
+// (CheckPipelineOptions): bad options fail before any tool opens a store.
 proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags);
 
 // Parses the command line and runs `body`, turning every error into one line

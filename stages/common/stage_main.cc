@@ -6,7 +6,6 @@
 
 #include "common/text.h"
 #include "stages/common/command_line.h"
-#include "stages/common/pipeline_options_check.h"
 #include "stages/common/stage.h"
 
 namespace areagraph {
@@ -19,7 +18,6 @@ int RunStageMain(const StageInfo& info, int argc, char** argv) {
   AddStageFlags(app, flags);
   return RunCommand(tool, app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
-    CheckPipelineOptions(options);
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
     const StageRun run = RunStageOnHeads(*store, flags.map_name, stage, options, flags.force);
     std::printf("%s: map '%s': %s, %.0f ms, key %s (%s)\n", tool.c_str(), flags.map_name.c_str(),

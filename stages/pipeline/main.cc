@@ -5,7 +5,6 @@
 
 #include "common/text.h"
 #include "stages/common/command_line.h"
-#include "stages/common/pipeline_options_check.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "store/artifact_store.h"
 
@@ -19,7 +18,6 @@ int main(int argc, char** argv) {
   AddStageFlags(app, flags);
   return RunCommand("ag-pipeline", app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
-    CheckPipelineOptions(options);  // bad options fail before any work
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
     std::string last_summary;
     RunMapPipeline(*store, flags.map_name, options, flags.force,

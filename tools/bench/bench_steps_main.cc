@@ -32,8 +32,9 @@ enum Step {
   kSerialize,
   kStepCount
 };
-const char* const kStepNames[kStepCount] = {"import", "outliers", "furniture", "clean",
-                                            "sites",  "diagram",  "voronoi",   "serialize"};
+const char* const kStepNames[kStepCount] = {kImportStage.name,  "outliers", "furniture",
+                                            kCleanStage.name,   "sites",    "diagram",
+                                            kVoronoiStage.name, "serialize"};
 
 std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOptions& options,
                               int repeat) {

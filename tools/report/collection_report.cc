@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <iostream>
 #include <map>
 #include <memory>
 
@@ -120,13 +119,6 @@ CollectionReport WriteCollectionReport(const std::string& store_path,
                                                       {"/*{{SCRIPT}}*/", embedded::kIndexJs},
                                                       {"{{DATA}}", ScriptJson(index)}}));
   return report;
-}
-
-void WriteRunReportOf(const std::string& store_path, const std::vector<std::string>& names,
-                      const std::string& dir) {
-  const CollectionReport report = WriteCollectionReport(store_path, names, dir, std::cerr);
-  std::cerr << "ag-run: report: " << report.index_path << " (" << report.pages << " map pages, "
-            << report.failed << " failed)\n";
 }
 
 }  // namespace areagraph

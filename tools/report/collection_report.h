@@ -24,19 +24,6 @@ CollectionReport WriteCollectionReport(const std::string& store_path,
                                        const std::vector<std::string>& map_names,
                                        const std::string& dir, std::ostream& progress);
 
-// ag-run --report: the report of the maps named in `names`, with progress
-// and the index's path on stderr ("ag-run: report: ...").
-void WriteRunReportOf(const std::string& store_path, const std::vector<std::string>& names,
-                      const std::string& dir);
-
-// The same for ag-run's tasks (anything whose elements have .entry.name).
-template <typename Tasks>
-void WriteRunReport(const std::string& store_path, const Tasks& tasks, const std::string& dir) {
-  std::vector<std::string> names;
-  for (const auto& task : tasks) names.push_back(task.entry.name);
-  WriteRunReportOf(store_path, names, dir);
-}
-
 // The page file name of a map, relative to the report folder: "maps/" and the
 // name with every character outside [A-Za-z0-9._-] turned into '_' (a map
 // name from a folder holds '/'), made unique among `taken` (lower case).

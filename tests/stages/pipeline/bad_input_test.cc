@@ -186,5 +186,30 @@ TEST(AreaStagesBadInputTest, StageFailuresNameTheMapAndTheStage) {
   }
 }
 
+// An artifact written by a newer build, in a format this one does not know,
+// is refused instead of misread.
+TEST(AreaStagesBadInputTest, ArtifactOfANewerFormatIsRefused) {
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(":memory:");
+  proto::AreaGraph graph;
+  graph.set_format_version(kAreaGraphFormatVersion + 1);
+  StageInputs inputs;
+  inputs.digests = {"cut key", "clean key"};
+  const StageRun run = RunCachedStage(*store, "future", StageOf(kMergeStage), {}, inputs,
+                                      [&] { return std::make_unique<proto::AreaGraph>(graph); });
+  const std::string expected = "format version " + std::to_string(kAreaGraphFormatVersion + 1) +
+                               ", newer than this build's " +
+                               std::to_string(kAreaGraphFormatVersion);
+  EXPECT_NE(ErrorOf<StoreError>([&] {
+              ReadHeadArtifact<proto::AreaGraph>(*store, "future", kMergeStage);
+            }).find(expected),
+            std::string::npos);
+  EXPECT_NE(ErrorOf<StoreError>([&] {
+              ReadArtifactAs<proto::AreaGraph>(*store, "future", run.cache_key);
+            }).find(expected),
+            std::string::npos);
+  graph.set_format_version(kAreaGraphFormatVersion);
+  EXPECT_NO_THROW(CheckFormatVersion(graph, "current"));
+}
+
 }  // namespace
 }  // namespace areagraph::testing
