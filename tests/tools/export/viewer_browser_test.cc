@@ -278,6 +278,7 @@ TEST_F(ViewerInBrowser, DiffViewShowsBothRunsSideBySide) {
   EXPECT_NE(load.dom.find("class=\"non-default differs\""), std::string::npos);
 
   const auto overlay = HeadlessChromium::DumpDom(FileUrl(example_->diff_page) + "#view=overlay");
+  ASSERT_EQ(overlay.exit_code, 0);
   EXPECT_EQ(CountOccurrences(overlay.dom, "class=\"view\""), 1);
   EXPECT_EQ(CountOccurrences(overlay.dom, "class=\"area-outline\""), other.areas_size());
 }

@@ -133,6 +133,8 @@ TEST_F(RunReport, IndexSortsByTheColumnInTheFragment) {
 
   const auto by_name =
       HeadlessChromium::DumpDom(FileUrl(shared_->report + "/index.html") + "#sort=name");
+  ASSERT_EQ(by_name.exit_code, 0);
+  ASSERT_NE(by_name.dom.find("data-map=\"two_rooms\""), std::string::npos);
   EXPECT_LT(by_name.dom.find("data-map=\"broken\""), by_name.dom.find("data-map=\"two_rooms\""));
 }
 

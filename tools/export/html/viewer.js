@@ -196,6 +196,7 @@
       const graph = run.area_graph;
       if (!graph) return;
       for (const passage of graph.passages || []) {
+        if (!passage.a || !passage.b) continue;  // a passage without its segment: nothing to draw
         const ends = { x1: passage.a.x, y1: passage.a.y, x2: passage.b.x, y2: passage.b.y };
         svg('line', Object.assign({ class: 'passage-hit', 'data-sel': 'passage/' + passage.id }, ends), group);
         svg('line', Object.assign({ class: 'passage', 'data-sel': 'passage/' + passage.id, 'data-id': passage.id }, ends), group);
@@ -225,6 +226,7 @@
         svg('path', { d: area.path, class: 'area-outline', 'data-sel': 'b/area/' + area.id }, group);
       }
       for (const passage of other.area_graph.passages || []) {
+        if (!passage.a || !passage.b) continue;
         svg('line', {
           x1: passage.a.x, y1: passage.a.y, x2: passage.b.x, y2: passage.b.y, class: 'passage-b',
           'data-sel': 'b/passage/' + passage.id,
