@@ -1,4 +1,5 @@
 // The viewer's graph layers: Voronoi diagram, Topology Graph, cut graph.
+#include <algorithm>
 #include <vector>
 
 #include "tools/export/clearance_scale.h"
@@ -36,9 +37,36 @@ class BandPaths {
   std::vector<SvgPathWriter> writers_;
 };
 
+// The part of segment a-b inside the map's rectangle (Liang-Barsky), or
+// false when none is: the diagram's edges run far out into the unknown
+// space around a map, where there is nothing to inspect.
+bool ClipToMap(const proto::MapFrame& frame, proto::Point2* a, proto::Point2* b) {
+  const double dx = b->x() - a->x(), dy = b->y() - a->y();
+  double enter = 0, leave = 1;
+  const double p[] = {-dx, dx, -dy, dy};
+  const double q[] = {a->x(), frame.width_px() - a->x(), a->y(), frame.height_px() - a->y()};
+  for (int i = 0; i < 4; ++i) {
+    if (p[i] == 0) {
+      if (q[i] < 0) return false;  // parallel to this side and outside it
+      continue;
+    }
+    const double t = q[i] / p[i];
+    if (p[i] < 0) enter = std::max(enter, t);
+    if (p[i] > 0) leave = std::min(leave, t);
+  }
+  if (enter > leave) return false;
+  const proto::Point2 from = *a;
+  a->set_x(from.x() + enter * dx);
+  a->set_y(from.y() + enter * dy);
+  b->set_x(from.x() + leave * dx);
+  b->set_y(from.y() + leave * dy);
+  return true;
+}
+
 // Chains the edges of one band into polylines: walks start at vertices where
 // an odd number of the band's edges meet (the ends of chains), then at any
-// vertex with edges left, and follow unused edges as far as they go.
+// vertex with edges left, and follow unused edges as far as they go. Edges
+// are clipped to the map.
 void ChainEdges(const proto::VoronoiDiagram& voronoi, const std::vector<int>& edges,
                 SvgPathWriter& path) {
   const int vertex_count = voronoi.vertices_size();
@@ -60,11 +88,12 @@ void ChainEdges(const proto::VoronoiDiagram& voronoi, const std::vector<int>& ed
     int e;
     while ((e = take_edge_at(vertex)) >= 0) {
       used[e] = true;
-      const proto::Point2& from = voronoi.vertices(vertex).position();
-      path.ContinueAt(from.x(), from.y());
+      proto::Point2 from = voronoi.vertices(vertex).position();
       const proto::VoronoiEdge& edge = voronoi.edges(e);
       vertex = edge.source() == vertex ? edge.target() : edge.source();
-      const proto::Point2& to = voronoi.vertices(vertex).position();
+      proto::Point2 to = voronoi.vertices(vertex).position();
+      if (!ClipToMap(voronoi.frame(), &from, &to)) continue;
+      path.ContinueAt(from.x(), from.y());
       path.LineTo(to.x(), to.y());
     }
   };

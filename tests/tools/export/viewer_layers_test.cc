@@ -168,6 +168,33 @@ TEST(VoronoiLayerOf, ChainsEdgesOfOneBandIntoLongPolylines) {
   EXPECT_EQ(PathSegments(layer.buckets(0).path()).size(), 24u);
 }
 
+TEST(VoronoiLayerOf, EdgesAreClippedToTheMap) {
+  proto::VoronoiDiagram voronoi;
+  *voronoi.mutable_frame() = Frame(100, 50);
+  for (const auto& [x, y] : {std::pair{50.0, 25.0}, {-50.0, 25.0}, {-50.0, -40.0}, {-10.0, 25.0}}) {
+    proto::Point2* position = voronoi.add_vertices()->mutable_position();
+    position->set_x(x);
+    position->set_y(y);
+  }
+  for (const auto& [source, target] : {std::pair{0, 1}, {1, 2}, {2, 3}}) {
+    proto::VoronoiEdge* edge = voronoi.add_edges();
+    edge->set_source(source);
+    edge->set_target(target);
+    edge->set_clearance_px(10);
+  }
+  const viewer::VoronoiLayer layer = VoronoiLayerOf(voronoi);
+  ASSERT_EQ(layer.buckets_size(), 1);
+  // 0-1 crosses the left side and ends there; 1-2 lies outside; 2-3 passes
+  // outside the corner.
+  const auto segments = PathSegments(layer.buckets(0).path());
+  ASSERT_EQ(segments.size(), 1u);
+  const auto [a, b] = segments[0];
+  EXPECT_DOUBLE_EQ(std::min(a.x, b.x), 0);
+  EXPECT_DOUBLE_EQ(std::max(a.x, b.x), 50);
+  EXPECT_DOUBLE_EQ(a.y, 25);
+  EXPECT_DOUBLE_EQ(b.y, 25);
+}
+
 TEST(ClearanceBandOf, HuggingEdgesAndMetreLimits) {
   EXPECT_EQ(ClearanceBandOf(1.9, 0.05), 0);
   EXPECT_EQ(ClearanceBandOf(2.0, 0.05), 1);  // 0.10 m
