@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   RunFlags flags;
   AddRunFlags(app, flags);
   return RunCommand("ag-run", app, argc, argv, [&] {
-    FinishRunFlags(app, flags);
+    CheckRunFlags(app, flags);
     return RunCollection(flags);
   });
 }
