@@ -9,13 +9,6 @@
 namespace areagraph::testing {
 namespace {
 
-using proto::AREA_CORRIDOR;
-using proto::AREA_DEAD_END;
-using proto::AREA_ROOM;
-using proto::VERTEX_DEAD_END;
-using proto::VERTEX_JUNCTION;
-using proto::VERTEX_PASSAGE;
-
 TEST(AreaAssignmentTest, OneAreaPerRoomAndPerRoomlessEdge) {
   proto::CutGraph graph;
   const int a = AddVertex(&graph, VERTEX_JUNCTION, 10);

@@ -9,12 +9,6 @@
 namespace areagraph::testing {
 namespace {
 
-using proto::AREA_CORRIDOR;
-using proto::AREA_DEAD_END;
-using proto::AREA_ROOM;
-using proto::VERTEX_DEAD_END;
-using proto::VERTEX_JUNCTION;
-
 // Clearance along an edge whose width never drops below the median's 3/4.
 const std::vector<double> kUniform = {10, 9, 10, 11, 10};
 // A door on the way: 4 px against a median of 10.
@@ -34,6 +28,19 @@ AreaPlan OneAreaPerEdge(const std::vector<proto::AreaKind>& kinds) {
         {kinds[e], kinds[e] == AREA_ROOM ? static_cast<int>(e) : -1, {static_cast<int>(e)}});
     plan.area_of_edge.push_back(static_cast<int>(e));
   }
+  return plan;
+}
+
+// Two room-less pieces of `kind` through a vertex of kind `middle`, their far
+// ends of kind `ends`, the second with `clearance`, after JoinCorridorPieces.
+AreaPlan JoinTwoPieces(proto::VertexKind middle, proto::VertexKind ends, proto::AreaKind kind,
+                       const std::vector<double>& clearance) {
+  proto::CutGraph graph;
+  const int vertex = AddVertex(&graph, middle);
+  AddPiece(&graph, AddVertex(&graph, ends), vertex, kUniform);
+  AddPiece(&graph, vertex, AddVertex(&graph, ends), clearance);
+  AreaPlan plan = OneAreaPerEdge({kind, kind});
+  JoinCorridorPieces(graph, &plan);
   return plan;
 }
 
@@ -58,23 +65,13 @@ TEST(CorridorJoiningTest, CorridorCutAtSideDoorsBecomesOneCorridor) {
 }
 
 TEST(CorridorJoiningTest, PiecesMeetingAtAPassagePointAreJoinedWhenNeitherNarrows) {
-  proto::CutGraph graph;
-  const int cut = AddVertex(&graph, proto::VERTEX_PASSAGE);
-  AddPiece(&graph, AddVertex(&graph, VERTEX_JUNCTION), cut, kUniform);
-  AddPiece(&graph, cut, AddVertex(&graph, VERTEX_JUNCTION), kUniform);
-  AreaPlan plan = OneAreaPerEdge({AREA_CORRIDOR, AREA_CORRIDOR});
-  JoinCorridorPieces(graph, &plan);
-  ExpectPlan(plan, {{AREA_CORRIDOR, -1, {0, 1}}}, {0, 0});
+  ExpectPlan(JoinTwoPieces(VERTEX_PASSAGE, VERTEX_JUNCTION, AREA_CORRIDOR, kUniform),
+             {{AREA_CORRIDOR, -1, {0, 1}}}, {0, 0});
 }
 
 TEST(CorridorJoiningTest, DeadEndsOnlyStayADeadEnd) {
-  proto::CutGraph graph;
-  const int middle = AddVertex(&graph, VERTEX_JUNCTION);
-  AddPiece(&graph, AddVertex(&graph, VERTEX_DEAD_END), middle, kUniform);
-  AddPiece(&graph, middle, AddVertex(&graph, VERTEX_DEAD_END), kUniform);
-  AreaPlan plan = OneAreaPerEdge({AREA_DEAD_END, AREA_DEAD_END});
-  JoinCorridorPieces(graph, &plan);
-  ExpectPlan(plan, {{AREA_DEAD_END, -1, {0, 1}}}, {0, 0});
+  ExpectPlan(JoinTwoPieces(VERTEX_JUNCTION, VERTEX_DEAD_END, AREA_DEAD_END, kUniform),
+             {{AREA_DEAD_END, -1, {0, 1}}}, {0, 0});
 }
 
 TEST(CorridorJoiningTest, ThreePiecesAtAForkStayApart) {
@@ -121,24 +118,14 @@ TEST(CorridorJoiningTest, OneNarrowingEdgeMakesTheWholeAreaStayApart) {
 
 TEST(CorridorJoiningTest, UniformMeansAtLeastThreeQuartersOfTheMedian) {
   for (const auto& [lowest, joined] : {std::pair{7.5, true}, std::pair{7.4, false}}) {
-    proto::CutGraph graph;
-    const int middle = AddVertex(&graph, VERTEX_JUNCTION);
-    AddPiece(&graph, AddVertex(&graph, VERTEX_JUNCTION), middle, kUniform);
-    AddPiece(&graph, middle, AddVertex(&graph, VERTEX_JUNCTION), {10, lowest, 10, 12});
-    AreaPlan plan = OneAreaPerEdge({AREA_CORRIDOR, AREA_CORRIDOR});
-    JoinCorridorPieces(graph, &plan);
+    const AreaPlan plan =
+        JoinTwoPieces(VERTEX_JUNCTION, VERTEX_JUNCTION, AREA_CORRIDOR, {10, lowest, 10, 12});
     EXPECT_EQ(plan.areas.size(), joined ? 1u : 2u) << "lowest clearance " << lowest;
   }
 }
 
 TEST(CorridorJoiningTest, EdgeWithoutClearancesIsNotUniform) {
-  proto::CutGraph graph;
-  const int middle = AddVertex(&graph, VERTEX_JUNCTION);
-  AddPiece(&graph, AddVertex(&graph, VERTEX_JUNCTION), middle, kUniform);
-  AddPiece(&graph, middle, AddVertex(&graph, VERTEX_JUNCTION), {});
-  AreaPlan plan = OneAreaPerEdge({AREA_CORRIDOR, AREA_CORRIDOR});
-  JoinCorridorPieces(graph, &plan);
-  EXPECT_EQ(plan.areas.size(), 2u);
+  EXPECT_EQ(JoinTwoPieces(VERTEX_JUNCTION, VERTEX_JUNCTION, AREA_CORRIDOR, {}).areas.size(), 2u);
 }
 
 TEST(CorridorJoiningTest, RoomsAreNeverJoined) {

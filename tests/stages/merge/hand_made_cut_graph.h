@@ -13,6 +13,14 @@ namespace areagraph::testing {
 // vertices' kinds, positions and clearances and the edges' ends, rooms,
 // lengths, clearances and sites: a graph with just those fields set.
 
+// Short names for the kinds that the tests spell out again and again.
+using proto::AREA_CORRIDOR;
+using proto::AREA_DEAD_END;
+using proto::AREA_ROOM;
+using proto::VERTEX_DEAD_END;
+using proto::VERTEX_JUNCTION;
+using proto::VERTEX_PASSAGE;
+
 // Adds a vertex and returns its index (which is also its id).
 inline int AddVertex(proto::CutGraph* graph, proto::VertexKind kind, double clearance_px = 0,
                      double x = 0, double y = 0) {

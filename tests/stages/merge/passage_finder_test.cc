@@ -10,9 +10,6 @@
 namespace areagraph::testing {
 namespace {
 
-using proto::VERTEX_JUNCTION;
-using proto::VERTEX_PASSAGE;
-
 // The sites left and right of one path segment.
 struct SitePair {
   Eigen::Vector2d left, right;
