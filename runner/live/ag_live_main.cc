@@ -16,7 +16,7 @@ namespace areagraph {
 namespace {
 
 struct LiveFlags {
-  std::string url = kDefaultLcmUrl;
+  std::string url;
   StageCommandLine stage;
   ServeLimits limits;
 };
@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
       "(area_graph_t) on AREA_GRAPH. Malformed messages and failing maps are reported on stderr "
       "and skipped. Stops on SIGINT or SIGTERM after the map in hand."};
   LiveFlags flags;
-  app.add_option("--url", flags.url, "LCM URL; udpm must keep ttl=0 (traffic stays on the host)")
-      ->capture_default_str();
+  AddLcmUrlFlag(app, flags.url);
   app.add_option("--store", flags.stage.store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--options", flags.stage.options_file,
                  "PipelineOptions in protobuf text format (see examples/options/)");

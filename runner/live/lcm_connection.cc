@@ -95,4 +95,10 @@ bool HandleOneMessage(lcm::LCM& lcm, int timeout_ms, const std::string& url) {
   return status > 0;
 }
 
+void AddLcmUrlFlag(CLI::App& app, std::string& url) {
+  url = kDefaultLcmUrl;
+  app.add_option("--url", url, "LCM URL; udpm must keep ttl=0 (traffic stays on the host)")
+      ->capture_default_str();
+}
+
 }  // namespace areagraph

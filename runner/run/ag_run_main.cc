@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
                  "map's viewer page, as ag-export --format html writes it)")
       ->type_name("DIR");
   return RunCommand("ag-run", app, argc, argv, [&] {
-    FinishRunFlags(app, flags);
+    CheckRunFlags(app, flags);
     const int status = RunCollection(flags);
     if (!report_dir.empty()) WriteRunReport(flags, report_dir);
     return status;

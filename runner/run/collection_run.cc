@@ -55,7 +55,7 @@ int RunCollection(const RunFlags& flags) {
   const RunSettings settings = SettingsFrom(flags);
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
-  const GraphPublisher publish = MakePublisher(flags.publish_url);
+  const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork().
   OpenArtifactStore(settings.store_path).reset();

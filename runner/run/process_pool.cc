@@ -90,6 +90,10 @@ void ProcessPool::WorkerLoop(int task_fd, int event_fd) {
       events.WriteFrame(kTaskDoneFrame, "");
     } catch (const std::exception& error) {
       events.WriteFrame(kTaskThrewFrame, error.what());
+    } catch (...) {
+      // Anything else must not unwind into the code that forked this worker.
+      events.WriteFrame(kTaskThrewFrame,
+                        "the task threw an exception that is not a std::exception");
     }
   }
   std::fflush(nullptr);

@@ -4,7 +4,7 @@
 #include <thread>
 
 #include "common/error.h"
-#include "runner/live/area_graph_publisher.h"
+#include "runner/live/lcm_connection.h"
 #include "stages/common/stage_table.h"
 
 namespace areagraph {
@@ -23,19 +23,16 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
       ->capture_default_str();
   app.add_option("--shard", flags.shard,
                  "K/N: run only the maps whose name hashes to K modulo N (0 <= K < N)");
-  app.add_option("--publish", flags.publish_url,
-                 "publish each new or changed Area Graph on LCM channel AREA_GRAPH (URL "
-                 "optional; default " +
-                     std::string(kDefaultLcmUrl) + ")")
-      ->expected(0, 1)
-      ->default_str(kDefaultLcmUrl);
+  app.add_flag("--publish", flags.publish,
+               "publish each new or changed Area Graph on LCM channel AREA_GRAPH (at --url)");
+  AddLcmUrlFlag(app, flags.url);
   app.add_flag("--json", flags.json, "print the summary as JSON");
   app.add_option("MAP", flags.maps, "map image, directory or manifest")->required();
 }
 
-void FinishRunFlags(const CLI::App& app, RunFlags& flags) {
-  if (app.get_option("--publish")->count() > 0 && flags.publish_url.empty()) {
-    flags.publish_url = kDefaultLcmUrl;
+void CheckRunFlags(const CLI::App& app, const RunFlags& flags) {
+  if (app.get_option("--url")->count() > 0 && !flags.publish) {
+    throw OptionsError("--url is where --publish sends; add --publish, or drop --url");
   }
   if (flags.jobs < 1 || flags.jobs > 1024) {
     throw OptionsError("--jobs " + std::to_string(flags.jobs) + " must be between 1 and 1024");

@@ -17,7 +17,8 @@ struct RunFlags {
   std::string only_stage;
   int jobs = 0;
   std::string shard;
-  std::string publish_url;
+  bool publish = false;
+  std::string url;
   bool json = false;
 };
 
@@ -25,9 +26,9 @@ struct RunFlags {
 // number of cores.
 void AddRunFlags(CLI::App& app, RunFlags& flags);
 
-// Completes `flags` after parsing (a bare --publish means the default URL)
-// and checks what needs no map: --jobs, stage names. Throws OptionsError.
-void FinishRunFlags(const CLI::App& app, RunFlags& flags);
+// Checks what needs no map: --jobs, stage names, --url without --publish.
+// Throws OptionsError.
+void CheckRunFlags(const CLI::App& app, const RunFlags& flags);
 
 // The run settings that --store, --from, --only and --force ask for.
 RunSettings SettingsFrom(const RunFlags& flags);

@@ -4,6 +4,7 @@
 #include <new>
 
 #include "common/error.h"
+#include "common/version.h"
 #include "stages/common/pipeline_options.h"
 #include "stages/common/pipeline_options_check.h"
 
@@ -32,10 +33,14 @@ proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags) {
 
 int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
                const std::function<int()>& body) {
+  app.set_version_flag("--version", std::string(VersionText()));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
+    return 0;
+  } catch (const CLI::CallForVersion& version) {
+    std::cout << tool << ": " << version.what() << "\n";
     return 0;
   } catch (const CLI::ParseError& e) {
     std::cerr << tool << ": " << e.what() << " (see --help)\n";
