@@ -14,6 +14,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
+  chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
 )
 
 missing=()
@@ -30,6 +31,6 @@ fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "install-deps: installing ${missing[*]}"
+echo "install-deps: installing ${#missing[@]} Debian packages (on a fresh machine about 5 minutes): ${missing[*]}"
 $SUDO apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

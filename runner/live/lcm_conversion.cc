@@ -6,15 +6,13 @@
 #include <set>
 #include <sstream>
 
+#include "common/error.h"
 #include "runner/live/lcm_message_bounds.h"
 #include "stages/common/map_frame.h"
-#include "store/error.h"
+#include "stages/common/stage_info.h"
 
 namespace areagraph {
 namespace {
-
-// AreaGraph.format_version of ag-merge's output, which received graphs copy.
-constexpr uint32_t kReceivedAreaGraphFormatVersion = 1;
 
 areagraph_lcm::ring_t ToLcmRing(const proto::Ring& ring) {
   areagraph_lcm::ring_t out;
@@ -139,7 +137,7 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
     Reject(name, "the grid size is not positive");
 
   proto::AreaGraph graph;
-  graph.set_format_version(kReceivedAreaGraphFormatVersion);
+  graph.set_format_version(kAreaGraphFormatVersion);
   proto::MapFrame* frame = graph.mutable_frame();
   frame->set_resolution_m(message.resolution_m);
   frame->set_origin_x_m(message.origin_x_m);

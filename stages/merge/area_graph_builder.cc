@@ -6,20 +6,22 @@
 #include <set>
 #include <utility>
 
+#include "common/error.h"
+#include "stages/common/pipeline_options_check.h"
+#include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
 
-void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
+void CheckCutGraph(const proto::CutGraph& graph) {
   if (graph.edges_size() == 0) {
-    throw InputError(what + ": no Area Graph: the cut graph has no edges");
+    throw InputError("no Area Graph: the cut graph has no edges");
   }
   for (const proto::GraphEdge& edge : graph.edges()) {
     const bool ok = edge.source() >= 0 && edge.source() < graph.vertices_size() &&
@@ -27,8 +29,7 @@ void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
                     edge.path_size() >= 2 && edge.left_sites_size() == edge.path_size() - 1 &&
                     edge.right_sites_size() == edge.path_size() - 1;
     if (!ok) {
-      throw InputError(what + ": the CutGraph artifact is corrupt (edge " +
-                       std::to_string(edge.id()) + ")");
+      throw InputError("the CutGraph artifact is corrupt (edge " + std::to_string(edge.id()) + ")");
     }
   }
 }
@@ -122,26 +123,11 @@ std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph
 
 }  // namespace
 
-void CheckMergeOptions(const proto::MergeOptions& options) {
-  const std::pair<double, const char*> checks[] = {
-      {options.min_area_m2(), "merge.min_area_m2 must be zero or more square metres"},
-      {options.grow_min_gap_m(), "merge.grow_min_gap_m must be zero or more metres"},
-      {options.outline_tolerance_m(), "merge.outline_tolerance_m must be zero or more metres"},
-      {options.min_hole_m2(), "merge.min_hole_m2 must be zero or more square metres"}};
-  for (const auto& [value, rule] : checks) {
-    if (!std::isfinite(value) || value < 0) {
-      throw OptionsError(std::string(rule) + ", got " + std::to_string(value));
-    }
-  }
-}
-
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
-                                const proto::MergeOptions& options, const std::string& map_name,
-                                AreaRaster* raster_out) {
+                                const proto::MergeOptions& options, AreaRaster* raster_out) {
   CheckMergeOptions(options);
-  const std::string what = "map '" + map_name + "'";
-  const CellGrid grid(map, what);
-  CheckCutGraph(graph, what);
+  const CellGrid grid(map);
+  CheckCutGraph(graph);
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);
@@ -175,11 +161,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   FoldSmallAreas(graph, min_cells, &plan, &raster);
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
-    throw InputError(what + ": no Area Graph: no free cell lies inside the map's boundary");
+    throw InputError("no Area Graph: no free cell lies inside the map's boundary");
   }
 
   proto::AreaGraph out;
-  out.set_format_version(1);
+  out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
   AddAreasAndPassages(graph, plan, raster, options, &out);
   if (raster_out != nullptr) *raster_out = std::move(raster);

@@ -8,10 +8,6 @@
 
 namespace areagraph {
 
-// Throws OptionsError when merge.min_area_m2, merge.grow_min_gap_m,
-// merge.outline_tolerance_m or merge.min_hole_m2 is negative or not finite.
-void CheckMergeOptions(const proto::MergeOptions& options);
-
 // ag-merge: the Area Graph. The CutGraph's edges are grouped into areas
 // (AssignAreas); the areas split the map's free cells inside the boundary
 // among themselves (PartitionFreeSpace), so they never overlap and each is
@@ -23,10 +19,9 @@ void CheckMergeOptions(const proto::MergeOptions& options);
 // a planar partition of that raster, simplified without changing its
 // topology, and the passages (where areas meet at graph vertices) lie on the
 // borders they open (AddAreasAndPassages). When
-// `raster` is given it receives the final label image. Throws InputError
-// naming `map_name` for an unusable CutGraph.
+// `raster` is given it receives the final label image. Throws InputError for
+// an unusable CutGraph.
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
-                                const proto::MergeOptions& options, const std::string& map_name,
-                                AreaRaster* raster = nullptr);
+                                const proto::MergeOptions& options, AreaRaster* raster = nullptr);
 
 }  // namespace areagraph

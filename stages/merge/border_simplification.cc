@@ -31,8 +31,8 @@ struct VertexCostInfo {
   // run, and give different outlines.
   double tie_break = 0;
 };
-using VertexBase = PS::Vertex_base_2<
-    Kernel, CGAL::Triangulation_vertex_base_with_info_2<VertexCostInfo, Kernel>>;
+using VertexBase =
+    PS::Vertex_base_2<Kernel, CGAL::Triangulation_vertex_base_with_info_2<VertexCostInfo, Kernel>>;
 // Tie-break step per vertex (square pixels): a million vertices move costs by
 // 1e-6 px^2 at most.
 constexpr double kTieBreakStep = 1e-12;

@@ -159,14 +159,13 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) 
   return map;
 }
 
-AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options,
-                         const std::string& map_name) {
+AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options) {
   AreaStages stages;
   stages.options = options;
-  stages.diagram = ComputeVoronoiStage(map, options.voronoi(), map_name);
-  stages.topology = BuildTopologyGraph(stages.diagram, map, options.prune(), map_name);
-  stages.cut = BuildCutGraph(stages.topology, map, options.cut(), map_name);
-  stages.areas = BuildAreaGraph(stages.cut, map, options.merge(), map_name, &stages.raster);
+  stages.diagram = ComputeVoronoiStage(map, options.voronoi());
+  stages.topology = BuildTopologyGraph(stages.diagram, map, options.prune());
+  stages.cut = BuildCutGraph(stages.topology, map, options.cut());
+  stages.areas = BuildAreaGraph(stages.cut, map, options.merge(), &stages.raster);
   return stages;
 }
 
@@ -304,6 +303,37 @@ void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap
     edges.insert(area.topology_edge_ids().begin(), area.topology_edge_ids().end());
   }
   for (const proto::GraphEdge& edge : stages.cut.edges()) EXPECT_EQ(edges.count(edge.id()), 1u);
+}
+
+floorplan::FloorPlan TwoRoomsWithADoor() {
+  floorplan::FloorPlan plan(9.5, 5);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 4, 4});
+  floorplan::DrawRoom(plan, {4.5, 0.5, 4.5, 4});
+  floorplan::DrawDoor(plan, 4.5, 2.5, 0.9, floorplan::WallDirection::kVertical);
+  return plan;
+}
+
+floorplan::FloorPlan LCorridor() {
+  floorplan::FloorPlan plan(7.5, 7.5);
+  floorplan::DrawRegion(plan, {{0.5, 0.5, 1.15, 6.5}, {0.5, 5.85, 6.5, 1.15}});
+  return plan;
+}
+
+floorplan::FloorPlan FiveByFiveMaze() {
+  floorplan::FloorPlan plan(6.75, 6.75);
+  floorplan::DrawMaze(plan, {0.5, 0.5, 5.75, 5.75}, 5, 5, 7);
+  return plan;
+}
+
+proto::PipelineOptions PaperMazeOptions() {
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_room_width_m(2.0);
+  options.mutable_cut()->set_room_width_auto(false);  // a fixed W (auto is the default)
+  // Every area kept (the default folds areas below merge.min_area_m2, and the
+  // dead ends hold about 1-3 m2), and no corridor pieces joined.
+  options.mutable_merge()->set_min_area_m2(0);
+  options.mutable_merge()->set_join_corridor_pieces(false);
+  return options;
 }
 
 int AreaAt(const proto::AreaGraph& graph, double x_m, double y_m, double resolution_m) {

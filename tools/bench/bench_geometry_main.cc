@@ -11,11 +11,11 @@
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
 #include "stages/merge/area_graph_builder.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/bench/area_graph_checks.h"
 #include "tools/bench/outline_distance.h"
 #include "tools/export/area_label_image.h"
@@ -55,7 +55,7 @@ proto::AreaGraph RasterOutlines(ArtifactStore& store, const std::string& map,
   options.set_min_hole_m2(0);
   const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
   const auto cleaned = ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage);
-  return BuildAreaGraph(cut, cleaned, options, map);
+  return BuildAreaGraph(cut, cleaned, options);
 }
 
 void WriteLabels(const proto::AreaGraph& graph, const std::string& path) {

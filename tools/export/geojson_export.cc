@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_polygons.h"
 #include "tools/export/json_text.h"
 

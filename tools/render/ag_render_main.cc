@@ -5,9 +5,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
-#include "store/error.h"
 #include "tools/render/artifact_drawing.h"
 
 namespace areagraph {
@@ -15,11 +15,10 @@ namespace {
 
 // The cells to draw under a stage's artifact: the raw map for import and
 // clean (so removed obstacles show), the cleaned map after that.
-Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const std::string& stage,
-                  int scale) {
+Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const StageInfo& stage, int scale) {
   proto::MapFrame frame;
   std::string cells;
-  if (stage == kImportStage.name || stage == kCleanStage.name) {
+  if (SameStage(stage, kImportStage) || SameStage(stage, kCleanStage)) {
     const auto grid = ReadHeadArtifact<proto::GridMap>(store, map, kImportStage);
     frame = grid.frame();
     cells = grid.cells();
@@ -49,21 +48,11 @@ cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
 
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
             bool doors, int width, const std::string& crop, const std::string& out) {
-  Canvas canvas = BaseCanvas(store, map, stage, scale);
-  if (stage == kCleanStage.name) {
-    DrawCleanedMap(ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage), canvas);
-  } else if (stage == kVoronoiStage.name) {
-    DrawVoronoiDiagram(ReadHeadArtifact<proto::VoronoiDiagram>(store, map, kVoronoiStage), canvas);
-  } else if (stage == kPruneStage.name) {
-    DrawTopologyGraph(ReadHeadArtifact<proto::TopologyGraph>(store, map, kPruneStage), canvas);
-  } else if (stage == kCutStage.name) {
-    DrawCutGraph(ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage), canvas);
-  } else if (stage == kMergeStage.name) {
-    DrawAreaGraph(ReadHeadArtifact<proto::AreaGraph>(store, map, kMergeStage), canvas);
-  } else if (stage != kImportStage.name) {
-    throw InputError("unknown stage '" + stage +
-                     "'; use import, clean, voronoi, prune, cut or merge");
-  }
+  const StageDefinition& definition = FindStage(stage, "--stage");
+  Canvas canvas = BaseCanvas(store, map, definition.info, scale);
+  const MessagePtr artifact(definition.prototype->New());
+  ParseHeadArtifact(store, map, definition.info, artifact.get(), nullptr);
+  DrawArtifact(*artifact, canvas);
   if (doors) {
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
@@ -87,14 +76,13 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
 
 int main(int argc, char** argv) {
   CLI::App app{"Draws the head artifact of one stage over its map as a PNG."};
-  std::string store_path = "areagraph.db", map, stage = "merge", out;
+  std::string store_path = "areagraph.db", map, stage = areagraph::kMergeStage.name, out;
   int scale = 0;
   bool doors = false;
   int width = 0;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map, "map name")->required();
-  app.add_option("--stage", stage, "import, clean, voronoi, prune, cut or merge")
-      ->capture_default_str();
+  app.add_option("--stage", stage, areagraph::StageNameList())->capture_default_str();
   app.add_option("--out", out, "PNG file to write")->required();
   app.add_flag("--doors", doors,
                "also draw the doors (rings) and corridors (dots) that ag-cut found for "

@@ -132,4 +132,18 @@ void DrawDetectedWidths(const proto::RoomWidthEstimate& estimate, double resolut
   }
 }
 
+void DrawArtifact(const google::protobuf::Message& artifact, Canvas& canvas) {
+  if (const auto* cleaned = dynamic_cast<const proto::CleanedMap*>(&artifact)) {
+    DrawCleanedMap(*cleaned, canvas);
+  } else if (const auto* voronoi = dynamic_cast<const proto::VoronoiDiagram*>(&artifact)) {
+    DrawVoronoiDiagram(*voronoi, canvas);
+  } else if (const auto* topology = dynamic_cast<const proto::TopologyGraph*>(&artifact)) {
+    DrawTopologyGraph(*topology, canvas);
+  } else if (const auto* cut = dynamic_cast<const proto::CutGraph*>(&artifact)) {
+    DrawCutGraph(*cut, canvas);
+  } else if (const auto* areas = dynamic_cast<const proto::AreaGraph*>(&artifact)) {
+    DrawAreaGraph(*areas, canvas);
+  }
+}
+
 }  // namespace areagraph

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/error.h"
 #include "stages/common/map_frame.h"
-#include "store/error.h"
 #include "tests/runner/live/lcm_test_maps.h"
 
 namespace areagraph {

@@ -3,7 +3,7 @@
 #include <initializer_list>
 #include <utility>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph::testing {
 namespace {

@@ -12,13 +12,6 @@
 namespace areagraph::testing {
 namespace {
 
-using floorplan::DrawDoor;
-using floorplan::DrawMaze;
-using floorplan::DrawRegion;
-using floorplan::DrawRoom;
-using floorplan::FloorPlan;
-using floorplan::WallDirection;
-
 using Vertex = std::pair<double, double>;
 
 std::vector<Vertex> Outer(const proto::Area& area) {
@@ -58,11 +51,7 @@ int Corners(const std::vector<Vertex>& ring) {
 }
 
 TEST(MapGeometryTest, TwoRoomsShareOneBorderWithTheDoorOnItAndAreRectangles) {
-  FloorPlan plan(9.5, 5);
-  DrawRoom(plan, {0.5, 0.5, 4, 4});
-  DrawRoom(plan, {4.5, 0.5, 4.5, 4});
-  DrawDoor(plan, 4.5, 2.5, 0.9, WallDirection::kVertical);
-  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const proto::CleanedMap map = CleanedMapFromImage(TwoRoomsWithADoor().image());
   const AreaStages stages = RunAreaStages(map);
   ExpectAreaGraphInvariants(stages, map);
   const proto::AreaGraph& graph = stages.areas;
@@ -97,8 +86,7 @@ TEST(MapGeometryTest, TwoRoomsShareOneBorderWithTheDoorOnItAndAreRectangles) {
 }
 
 TEST(MapGeometryTest, NoisyLCorridorOutlineHasItsSixCorners) {
-  FloorPlan plan(7.5, 7.5);
-  DrawRegion(plan, {{0.5, 0.5, 1.15, 6.5}, {0.5, 5.85, 6.5, 1.15}});
+  floorplan::FloorPlan plan = LCorridor();
   // Scan noise: one-cell bumps on the walls every 7 cells, which the
   // outline should not follow.
   cv::Mat& image = plan.image();
@@ -125,15 +113,8 @@ TEST(MapGeometryTest, NoisyLCorridorOutlineHasItsSixCorners) {
 }
 
 TEST(MapGeometryTest, EveryMazeJunctionIsAVertexOfThreeOrMoreOutlines) {
-  FloorPlan plan(6.75, 6.75);
-  DrawMaze(plan, {0.5, 0.5, 5.75, 5.75}, 5, 5, 7);
-  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
-  proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_m(2.0);
-  options.mutable_cut()->set_room_width_auto(false);
-  options.mutable_merge()->set_min_area_m2(0);
-  options.mutable_merge()->set_join_corridor_pieces(false);
-  const AreaStages stages = RunAreaStages(map, options);
+  const proto::CleanedMap map = CleanedMapFromImage(FiveByFiveMaze().image());
+  const AreaStages stages = RunAreaStages(map, PaperMazeOptions());
   ExpectAreaGraphInvariants(stages, map);
   const proto::AreaGraph& graph = stages.areas;
   const std::map<Vertex, std::set<int>> owners = VertexOwners(graph);

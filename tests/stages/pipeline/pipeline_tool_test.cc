@@ -46,7 +46,8 @@ TEST_F(AreaToolsTest, StagesNameTheStageToRunFirst) {
   ExpectOneLineError(Run("ag-cut"), "run ag-prune first");
   ExpectOneLineError(Run("ag-merge"), "run ag-cut first");
   const CommandResult unknown = RunTool("ag-pipeline", {"--store", store_, "--map", "nowhere"});
-  ExpectOneLineError(unknown, "map 'nowhere' is not in the store; run ag-import first");
+  ExpectOneLineError(unknown,
+                     "map 'nowhere', clean: the map is not in the store; run ag-import first");
 }
 
 TEST_F(AreaToolsTest, PipelineRunsEveryStageOnceThenHitsTheCache) {

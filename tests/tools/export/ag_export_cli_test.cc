@@ -36,7 +36,7 @@ class AgExportCli : public ::testing::Test {
     std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
     StageInputs inputs;
     inputs.digests = {"cut-artifact-digest"};
-    RunCachedStage(*store, "house", kMergeStage, proto::MergeOptions(), inputs,
+    RunCachedStage(*store, "house", StageOf(kMergeStage), {}, inputs,
                    [] { return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph()); });
   }
 
@@ -214,7 +214,7 @@ TEST_F(AgExportCli, MissingMergeArtifactNamesTheStageToRun) {
     std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
     StageInputs inputs;
     inputs.digests = {"source"};
-    RunCachedStage(*store, "other", kImportStage, proto::ImportOptions(), inputs,
+    RunCachedStage(*store, "other", StageOf(kImportStage), {}, inputs,
                    [] { return std::make_unique<proto::GridMap>(); });
   }
   auto run = RunTool("ag-export", {"--store", store_path_, "--map", "other", "--format", "json",
