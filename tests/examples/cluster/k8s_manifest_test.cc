@@ -20,7 +20,9 @@ YAML::Node Manifest(const std::string& name) {
   return YAML::LoadFile(SourcePath("examples/cluster/" + name));
 }
 
-YAML::Node Container(const YAML::Node& job) { return job["spec"]["template"]["spec"]["containers"][0]; }
+YAML::Node Container(const YAML::Node& job) {
+  return job["spec"]["template"]["spec"]["containers"][0];
+}
 
 // The value of environment variable `name` in the container, "" if unset.
 std::string EnvValue(const YAML::Node& container, const std::string& name) {
@@ -30,20 +32,13 @@ std::string EnvValue(const YAML::Node& container, const std::string& name) {
   return "";
 }
 
-// "map stage payload-digest" of every head, sorted.
-std::vector<std::string> Heads(const std::string& store) {
-  return QueryColumn(store,
-                     "SELECT m.name || ' ' || h.stage || ' ' || a.payload_digest FROM heads h"
-                     " JOIN maps m ON m.id = h.map_id JOIN artifacts a ON a.id = h.artifact_id"
-                     " ORDER BY 1");
-}
-
 // Runs the container's command as the pod would, with `mount` (the volume's
 // mount path) standing for `folder` and `env` added to the environment.
 CommandResult RunContainer(const YAML::Node& container, const std::string& folder,
                            std::vector<std::string> env) {
   const std::string mount = container["volumeMounts"][0]["mountPath"].as<std::string>();
-  std::vector<std::string> argv = {"env", "-i", "PATH=" + std::string(AG_BIN_DIR) + ":/usr/bin:/bin"};
+  std::vector<std::string> argv = {"env", "-i",
+                                   "PATH=" + std::string(AG_BIN_DIR) + ":/usr/bin:/bin"};
   argv.insert(argv.end(), env.begin(), env.end());
   for (const auto& word : container["command"]) argv.push_back(word.as<std::string>());
   for (const auto& word : container["args"]) {
@@ -70,8 +65,9 @@ TEST(KubernetesManifestTest, SchemaCheckFindsTheUsualMistakes) {
     edit(job);
     return ::testing::PrintToString(CheckKubernetesJob(job));
   };
-  EXPECT_NE(problems_after([](YAML::Node& job) { job["spec"]["completionmode"] = "Indexed"; })
-                .find(".spec.completionmode is not a field of JobSpec"),
+  EXPECT_NE(problems_after([](YAML::Node& job) {
+              job["spec"]["completionmode"] = "Indexed";
+            }).find(".spec.completionmode is not a field of JobSpec"),
             std::string::npos);
   EXPECT_NE(problems_after([](YAML::Node& job) {
               Container(job)["env"][0]["value"] = YAML::Load("8");
@@ -81,11 +77,13 @@ TEST(KubernetesManifestTest, SchemaCheckFindsTheUsualMistakes) {
               job["spec"]["template"]["spec"]["restartPolicy"] = "Always";
             }).find("must be Never or OnFailure"),
             std::string::npos);
-  EXPECT_NE(problems_after([](YAML::Node& job) { job["spec"]["completions"] = "eight"; })
-                .find(".spec.completions must be a non-negative integer"),
+  EXPECT_NE(problems_after([](YAML::Node& job) {
+              job["spec"]["completions"] = "eight";
+            }).find(".spec.completions must be a non-negative integer"),
             std::string::npos);
-  EXPECT_NE(problems_after([](YAML::Node& job) { Container(job).remove("image"); })
-                .find(".image is required in Container"),
+  EXPECT_NE(problems_after([](YAML::Node& job) {
+              Container(job).remove("image");
+            }).find(".image is required in Container"),
             std::string::npos);
   EXPECT_NE(problems_after([](YAML::Node& job) {
               Container(job)["volumeMounts"][0]["name"] = "scratch";
@@ -119,10 +117,9 @@ TEST(KubernetesManifestTest, ContainerCommandsShardAndMergeLikeOneRun) {
   const YAML::Node shards = Container(Manifest("k8s-indexed-job.yaml"));
   const int count = Manifest("k8s-indexed-job.yaml")["spec"]["completions"].as<int>();
   for (int index = 0; index < count; ++index) {
-    const CommandResult pod =
-        RunContainer(shards, data,
-                     {"JOB_COMPLETION_INDEX=" + std::to_string(index),
-                      "SHARDS=" + EnvValue(shards, "SHARDS")});
+    const CommandResult pod = RunContainer(
+        shards, data,
+        {"JOB_COMPLETION_INDEX=" + std::to_string(index), "SHARDS=" + EnvValue(shards, "SHARDS")});
     ASSERT_EQ(pod.exit_code, 0) << "index " << index << ": " << pod.err;
   }
   const CommandResult merge = RunContainer(Container(Manifest("k8s-merge-job.yaml")), data, {});
@@ -130,8 +127,8 @@ TEST(KubernetesManifestTest, ContainerCommandsShardAndMergeLikeOneRun) {
   EXPECT_NE(merge.out.find("checked 24 artifacts: no problems"), std::string::npos) << merge.out;
 
   ASSERT_EQ(RunTool("ag-run", {"--store", dir.File("whole.db"), data + "/maps"}).exit_code, 0);
-  EXPECT_EQ(Heads(dir.File("whole.db")).size(), 24u);
-  EXPECT_EQ(Heads(data + "/stores/collection.db"), Heads(dir.File("whole.db")));
+  EXPECT_EQ(HeadDigests(dir.File("whole.db")).size(), 24u);
+  EXPECT_EQ(HeadDigests(data + "/stores/collection.db"), HeadDigests(dir.File("whole.db")));
 }
 
 }  // namespace

@@ -13,7 +13,7 @@ enum class Kind { kString, kInt, kBool, kObject, kList, kStringMap };
 
 struct Field {
   Kind kind;
-  std::string type;                 // object type for kObject and kList ("" = strings)
+  std::string type;  // object type for kObject and kList ("" = strings)
   bool required = false;
   std::vector<std::string> values;  // allowed values of an enum string
 };
@@ -171,8 +171,10 @@ std::vector<std::string> CheckKubernetesJob(const YAML::Node& manifest) {
   const YAML::Node spec = manifest["spec"];
   const std::string restart = spec["template"]["spec"]["restartPolicy"].as<std::string>("Always");
   if (restart != "Never" && restart != "OnFailure") {
-    checker.problems.push_back(".spec.template.spec.restartPolicy of a Job must be Never or "
-                               "OnFailure, not " + restart);
+    checker.problems.push_back(
+        ".spec.template.spec.restartPolicy of a Job must be Never or "
+        "OnFailure, not " +
+        restart);
   }
   if (spec["completionMode"].as<std::string>("") == "Indexed" && !spec["completions"]) {
     checker.problems.push_back(".spec.completions is required for an Indexed Job");

@@ -22,13 +22,12 @@ bool HasEnded(const std::string& state_and_reason) {
 }  // namespace
 
 LocalSlurmCluster::LocalSlurmCluster(const std::string& dir) : dir_(dir) {
-  const CommandResult start =
-      RunProgram({"bash", SourcePath("tools/slurm-local.sh"), "start", dir_, "--stop-with",
-                  std::to_string(getpid())});
+  const CommandResult start = RunProgram({"bash", SourcePath("tools/slurm-local.sh"), "start", dir_,
+                                          "--stop-with", std::to_string(getpid())});
   running_ = start.exit_code == 0;
   if (!running_) {
-    problem_ = "tools/slurm-local.sh start exited " + std::to_string(start.exit_code) + ": " +
-               start.err;
+    problem_ =
+        "tools/slurm-local.sh start exited " + std::to_string(start.exit_code) + ": " + start.err;
   }
 }
 
@@ -38,9 +37,12 @@ LocalSlurmCluster::~LocalSlurmCluster() {
 
 CommandResult LocalSlurmCluster::Run(const std::vector<std::string>& argv, const std::string& cwd,
                                      const std::vector<std::string>& env) const {
-  std::vector<std::string> all = {"env", "-i", "--chdir=" + cwd,
+  std::vector<std::string> all = {"env",
+                                  "-i",
+                                  "--chdir=" + cwd,
                                   "PATH=" + std::string(AG_BIN_DIR) + ":/usr/bin:/bin",
-                                  "HOME=" + cwd, "SLURM_CONF=" + dir_ + "/slurm.conf"};
+                                  "HOME=" + cwd,
+                                  "SLURM_CONF=" + dir_ + "/slurm.conf"};
   all.insert(all.end(), env.begin(), env.end());
   all.insert(all.end(), argv.begin(), argv.end());
   return RunProgram(all);

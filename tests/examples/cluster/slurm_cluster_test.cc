@@ -23,14 +23,6 @@ namespace fs = std::filesystem;
 constexpr int kShards = 4;
 constexpr double kJobTimeoutS = 150;  // the whole collection takes about 25 s here
 
-// "map stage payload-digest" of every head, sorted: what two stores must share.
-std::vector<std::string> Heads(const std::string& store) {
-  return QueryColumn(store,
-                     "SELECT m.name || ' ' || h.stage || ' ' || a.payload_digest FROM heads h"
-                     " JOIN maps m ON m.id = h.map_id JOIN artifacts a ON a.id = h.artifact_id"
-                     " ORDER BY 1");
-}
-
 // "map stage" of every recorded failure, sorted.
 std::vector<std::string> Failures(const std::string& store) {
   return QueryColumn(store, "SELECT map_name || ' ' || stage FROM failures ORDER BY 1");
@@ -87,8 +79,8 @@ class SlurmClusterTest : public ::testing::Test {
   // Runs slurm-submit.sh for `tasks` (all when empty) of kShards shards.
   SubmittedCollection Submit(const std::string& stores, const std::string& tasks = "",
                              const std::vector<std::string>& env = {}) const {
-    std::vector<std::string> argv = {"bash", SourcePath("examples/cluster/slurm-submit.sh"),
-                                     maps(), stores, std::to_string(kShards)};
+    std::vector<std::string> argv = {"bash", SourcePath("examples/cluster/slurm-submit.sh"), maps(),
+                                     stores, std::to_string(kShards)};
     if (!tasks.empty()) argv.push_back(tasks);
     const CommandResult submit = cluster_->Run(argv, dir_->path(), env);
     EXPECT_EQ(submit.exit_code, 0) << submit.err;
@@ -126,16 +118,15 @@ TEST_F(SlurmClusterTest, ShardArrayAndMergeGiveTheHeadsOfOneRun) {
   for (int shard = 0; shard < kShards; ++shard) {
     const std::string store = stores + "/shard-" + std::to_string(shard) + ".db";
     ASSERT_TRUE(fs::exists(store)) << store;
-    EXPECT_FALSE(Heads(store).empty()) << store;
+    EXPECT_FALSE(HeadDigests(store).empty()) << store;
   }
   const std::string merge_log = ReadFile(stores + "/logs/merge-job" + jobs.merge + ".out");
-  EXPECT_NE(merge_log.find("checked 216 artifacts: no problems"), std::string::npos)
-      << merge_log;
+  EXPECT_NE(merge_log.find("checked 216 artifacts: no problems"), std::string::npos) << merge_log;
 
   const std::string merged = stores + "/collection.db";
-  const std::vector<std::string> expected = Heads(reference());
+  const std::vector<std::string> expected = HeadDigests(reference());
   ASSERT_EQ(expected.size(), 36u * 6u);  // six stages of 36 maps; broken.png has none
-  EXPECT_EQ(Heads(merged), expected);
+  EXPECT_EQ(HeadDigests(merged), expected);
   EXPECT_EQ(Failures(merged), std::vector<std::string>{"broken import"});
   EXPECT_EQ(Failures(merged), Failures(reference()));
 }
@@ -145,7 +136,7 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   // of its first map; its other worker finishes the rest, then the task is
   // cancelled while it still runs.
   std::vector<std::vector<std::string>> names(kShards);
-  for (const std::string& head : Heads(reference())) {
+  for (const std::string& head : HeadDigests(reference())) {
     const std::string name = head.substr(0, head.find(' '));
     if (head.find(" merge ") == std::string::npos) continue;
     for (int shard = 0; shard < kShards; ++shard) {
@@ -188,7 +179,7 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   ASSERT_EQ(cancel.exit_code, 0) << cancel.err;
   ASSERT_TRUE(cluster_->WaitUntilEnded({first.shards}, kJobTimeoutS)) << Logs(stores);
   EXPECT_EQ(cluster_->States(task).at(task).substr(0, 9), "CANCELLED");
-  EXPECT_EQ(Heads(shard_store).size(), static_cast<size_t>(others * 6 + 4))
+  EXPECT_EQ(HeadDigests(shard_store).size(), static_cast<size_t>(others * 6 + 4))
       << "import to prune of " << stalled << " should be stored";
   // The merge waits for every task to succeed, which can no longer happen.
   const std::string never = "PENDING DependencyNeverSatisfied";
@@ -199,16 +190,14 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   // Queue that one shard again, with a new merge.
   const SubmittedCollection again = Submit(stores, std::to_string(target));
   ASSERT_FALSE(again.merge.empty());
-  ASSERT_TRUE(cluster_->WaitUntilEnded({again.shards, again.merge}, kJobTimeoutS))
-      << Logs(stores);
+  ASSERT_TRUE(cluster_->WaitUntilEnded({again.shards, again.merge}, kJobTimeoutS)) << Logs(stores);
   EXPECT_EQ(cluster_->States(again.merge).at(again.merge), "COMPLETED None") << Logs(stores);
   const std::string merge_log = ReadFile(stores + "/logs/merge-job" + again.merge + ".out");
-  EXPECT_NE(merge_log.find("checked 216 artifacts: no problems"), std::string::npos)
-      << merge_log;
+  EXPECT_NE(merge_log.find("checked 216 artifacts: no problems"), std::string::npos) << merge_log;
 
   // It reused everything its store held: only cut and merge of the stalled map ran.
-  const std::string log = ReadFile(stores + "/logs/shard-" + std::to_string(target) + "-job" +
-                                   again.shards + ".out");
+  const std::string log =
+      ReadFile(stores + "/logs/shard-" + std::to_string(target) + "-job" + again.shards + ".out");
   std::smatch match;
   ASSERT_TRUE(std::regex_search(log, match, std::regex(R"(cache: (\d+) hits, (\d+) misses)")))
       << log;
@@ -216,7 +205,7 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   EXPECT_EQ(std::stoi(match[2]), 2) << log;
   EXPECT_NE(log.find("(" + std::to_string(others) + " fully cached)"), std::string::npos) << log;
 
-  EXPECT_EQ(Heads(stores + "/collection.db"), Heads(reference()));
+  EXPECT_EQ(HeadDigests(stores + "/collection.db"), HeadDigests(reference()));
   EXPECT_EQ(Failures(stores + "/collection.db"), Failures(reference()));
 }
 
