@@ -133,7 +133,9 @@ start_munge() {
   local dir="$1"
   mkdir -p "$dir/munge"
   chmod 755 "$dir/munge"  # clients need to reach the socket; the key itself is 0400
-  if command -v mungekey >/dev/null; then
+  if [ -s "$dir/munge/munge.key" ]; then
+    :  # DIR's earlier run made it
+  elif command -v mungekey >/dev/null; then
     mungekey --create --keyfile="$dir/munge/munge.key" >/dev/null
   else
     head -c 1024 /dev/urandom >"$dir/munge/munge.key"
@@ -160,9 +162,9 @@ start() {
   write_config "$dir"
   export SLURM_CONF="$dir/slurm.conf"
   start_munge "$dir"
-  # -i: ignore state from an earlier run of this DIR; -N: the node is "aglocal"
-  # whatever this machine's host name is.
-  setsid slurmctld -i -f "$SLURM_CONF" </dev/null >>"$dir/logs/slurmctld.log" 2>&1 ||
+  # -c: start clean even if DIR holds an earlier run's state; -N: the node is
+  # "aglocal" whatever this machine's host name is.
+  setsid slurmctld -c -f "$SLURM_CONF" </dev/null >>"$dir/logs/slurmctld.log" 2>&1 ||
     { stop "$dir"; die 77 "slurmctld did not start: $(log_tail "$dir/logs/slurmctld.log")"; }
   setsid slurmd -N "$NODE" -f "$SLURM_CONF" </dev/null >>"$dir/logs/slurmd.log" 2>&1 ||
     { stop "$dir"; die 77 "slurmd did not start: $(log_tail "$dir/logs/slurmd.log")"; }

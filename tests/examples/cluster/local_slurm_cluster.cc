@@ -25,6 +25,7 @@ LocalSlurmCluster::LocalSlurmCluster(const std::string& dir) : dir_(dir) {
   const CommandResult start = RunProgram({"bash", SourcePath("tools/slurm-local.sh"), "start", dir_,
                                           "--stop-with", std::to_string(getpid())});
   running_ = start.exit_code == 0;
+  unavailable_ = start.exit_code == 77;  // the script's "cannot run here"
   if (!running_) {
     problem_ =
         "tools/slurm-local.sh start exited " + std::to_string(start.exit_code) + ": " + start.err;

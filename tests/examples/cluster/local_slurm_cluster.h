@@ -13,14 +13,17 @@ namespace areagraph::testing {
 // test process dies without running its destructors).
 class LocalSlurmCluster {
  public:
-  // Starts the daemons with their files under `dir`. When they cannot run
-  // on this machine, running() is false and problem() says why.
+  // Starts the daemons with their files under `dir`. When that fails,
+  // running() is false and problem() says why.
   explicit LocalSlurmCluster(const std::string& dir);
   ~LocalSlurmCluster();
   LocalSlurmCluster(const LocalSlurmCluster&) = delete;
   LocalSlurmCluster& operator=(const LocalSlurmCluster&) = delete;
 
   bool running() const { return running_; }
+  // The daemons cannot run here (not installed, or one did not come up), as
+  // opposed to a fault of the script or its use.
+  bool unavailable() const { return unavailable_; }
   const std::string& problem() const { return problem_; }
 
   // Runs `argv` in `cwd` with a clean environment: this cluster's SLURM_CONF,
@@ -44,6 +47,7 @@ class LocalSlurmCluster {
  private:
   std::string dir_;
   bool running_ = false;
+  bool unavailable_ = false;
   std::string problem_;
 };
 
