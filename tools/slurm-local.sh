@@ -18,8 +18,9 @@
 # With --stop-with PID a watcher stops the cluster when process PID ends (a
 # test that is killed still leaves no daemon behind).
 #
-# `stop` ends only the daemons that this DIR's pid files name (and whose
-# command line names DIR), first with SIGTERM, then SIGKILL.
+# `stop` cancels the cluster's jobs, then ends only the daemons that this
+# DIR's pid files name (and whose command line names DIR), first with SIGTERM,
+# then SIGKILL.
 #
 # Exit status: 0 done, 2 usage, 77 the daemons cannot run here (not installed,
 # or one of them did not come up: its log is quoted), 1 anything else.
@@ -188,6 +189,15 @@ node_idle() { [ "$(sinfo -h -n "$NODE" -o %t)" = "idle" ]; }
 stop() {
   local dir pid
   dir="$(cd "$1" 2>/dev/null && pwd)" || return 0
+  # Jobs first: their processes (slurmstepd and the job's own) would outlive
+  # slurmd. Up to 10 s for them to end (KillWait is 5 s).
+  if our_pid "$dir" slurmctld >/dev/null; then
+    SLURM_CONF="$dir/slurm.conf" scancel --user="$(id -un)" >/dev/null 2>&1 || true
+    for _ in $(seq 100); do
+      [ -z "$(SLURM_CONF="$dir/slurm.conf" squeue -h -t R,CG 2>/dev/null)" ] && break
+      sleep 0.1
+    done
+  fi
   for name in "${DAEMONS[@]}"; do
     pid="$(our_pid "$dir" "$name")" || continue
     kill -TERM "$pid" 2>/dev/null || true
