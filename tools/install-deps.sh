@@ -14,7 +14,11 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
+  python3-protobuf python3-networkx  # examples/python and its test
   chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
+  # Test dependencies: the one-node Slurm cluster of tools/slurm-local.sh, on
+  # which tests/examples/cluster runs examples/cluster's Slurm scripts.
+  slurm-wlm munge
 )
 
 missing=()
