@@ -6,8 +6,9 @@
 
 #include <cstdio>
 
+#include "common/error.h"
+#include "common/text.h"
 #include "store/digest.h"
-#include "store/error.h"
 #include "store/protobuf_wire.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
@@ -84,12 +85,12 @@ void SqliteArtifactStore::CheckMergeSourcePayloads(const std::string& path) {
                        "merging: checking the payloads of '" + path + "'");
   StatementUse use(find);
   if (!find.Step()) return;
-  throw StoreError(
-      "store '" + path + "' is damaged: artifact " +
-      store_internal::ShortKey(find.ColumnText(2, "artifacts.cache_key")) + " of map '" +
-      find.ColumnText(0, "maps.name") + "' (" + find.ColumnText(1, "artifacts.stage") +
-      ") has a corrupt payload (" + find.ColumnText(3, "problem") +
-      "); nothing was merged from it (ag-store verify --store " + path + " lists the problems)");
+  throw StoreError("store '" + path + "' is damaged: artifact " +
+                   ShortKey(find.ColumnText(2, "artifacts.cache_key")) + " of map '" +
+                   find.ColumnText(0, "maps.name") + "' (" + find.ColumnText(1, "artifacts.stage") +
+                   ") has a corrupt payload (" + find.ColumnText(3, "problem") +
+                   "); nothing was merged from it (ag-store verify --store " + path +
+                   " lists the problems)");
 }
 
 bool SqliteArtifactStore::FoldWriteAheadLog() {

@@ -9,14 +9,14 @@
 #include <filesystem>
 #include <unordered_set>
 
-#include "store/error.h"
+#include "common/error.h"
+#include "common/text.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
 #include "store/store_maintenance.h"
 
 namespace areagraph {
 
-using store_internal::ShortKey;
 using store_internal::SplitLines;
 
 namespace {
@@ -80,6 +80,7 @@ int64_t Run(sqlite3* db, const std::string& store_path, const char* sql,
 }  // namespace
 
 std::vector<VerifyProblem> SqliteArtifactStore::Verify(
+    const std::vector<std::string>& file_input_stages,
     const std::function<void(int64_t, int64_t)>& progress, StructureCheck structure) {
   std::vector<VerifyProblem> problems;
   try {
@@ -87,7 +88,7 @@ std::vector<VerifyProblem> SqliteArtifactStore::Verify(
     for (const std::string& finding : CheckStructure("main", structure)) {
       problems.push_back({"", "", "", "SQLite: " + finding});
     }
-    CheckArtifacts(progress, problems);
+    CheckArtifacts(file_input_stages, progress, problems);
     FindBrokenHeads(problems);
   } catch (const StoreError& error) {
     // Damage that stops the reading itself ("database disk image is malformed").
@@ -97,7 +98,8 @@ std::vector<VerifyProblem> SqliteArtifactStore::Verify(
   return problems;
 }
 
-void SqliteArtifactStore::CheckArtifacts(const std::function<void(int64_t, int64_t)>& progress,
+void SqliteArtifactStore::CheckArtifacts(const std::vector<std::string>& file_input_stages,
+                                         const std::function<void(int64_t, int64_t)>& progress,
                                          std::vector<VerifyProblem>& problems) {
   int64_t total = 0;
   {
@@ -110,13 +112,14 @@ void SqliteArtifactStore::CheckArtifacts(const std::function<void(int64_t, int64
   StatementUse use(rows);
   int64_t done = 0;
   while (rows.Step()) {  // one payload in memory at a time
-    CheckArtifactRow(rows, problems);
+    CheckArtifactRow(rows, file_input_stages, problems);
     ++done;
     if (progress) progress(done, std::max(total, done));
   }
 }
 
 void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
+                                           const std::vector<std::string>& file_input_stages,
                                            std::vector<VerifyProblem>& problems) {
   VerifyProblem found;
   const auto report = [&](const std::string& problem) {
@@ -138,7 +141,10 @@ void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
       return report(*damage + " (corrupt); recompute it with ag-" + found.stage + " --force");
     }
     if (damage) return report(*damage);
-    if (found.stage == "import") return;  // its input is the digest of a file, not an artifact
+    if (std::find(file_input_stages.begin(), file_input_stages.end(), found.stage) !=
+        file_input_stages.end()) {
+      return;  // its input is the digest of a file, not an artifact
+    }
     for (const std::string& key : SplitLines(row.ColumnText(6, "artifacts.input_keys"))) {
       StatementUse use_lookup(*sql_stmt_read_artifact_id_);
       sql_stmt_read_artifact_id_->BindInt64(1, map_id);
@@ -281,7 +287,9 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(const std::string& pa
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
   CheckMergeSourcePayloads(path);  // under the write lock: exactly what is copied next
-  counts.artifacts = run(store_sql::kMergeArtifacts, "copying artifacts");
+  counts.artifacts = run(
+      source_version >= 3 ? store_sql::kMergeArtifacts : store_sql::kMergeArtifactsBeforeSchema3,
+      "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");
   run(store_sql::kMergeMapSources, "updating map sources");

@@ -14,6 +14,11 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
+  python3-protobuf python3-networkx  # examples/python and its test
+  chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
+  # Test dependencies: the one-node Slurm cluster of tools/slurm-local.sh, on
+  # which tests/examples/cluster runs examples/cluster's Slurm scripts.
+  slurm-wlm munge
 )
 
 missing=()
@@ -30,6 +35,6 @@ fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "install-deps: installing ${missing[*]}"
+echo "install-deps: installing ${#missing[@]} Debian packages (on a fresh machine about 5 minutes): ${missing[*]}"
 $SUDO apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -4,10 +4,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/error.h"
 #include "runner/live/lcm_conversion.h"
+#include "stages/common/pipeline_options_check.h"
 #include "stages/import/import_stage.h"
 #include "stages/import/map_yaml.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

@@ -3,9 +3,11 @@
 #include <iostream>
 #include <new>
 
+#include "common/error.h"
+#include "common/version.h"
 #include "stages/common/output_file.h"
 #include "stages/common/pipeline_options.h"
-#include "store/error.h"
+#include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
 
@@ -26,22 +28,36 @@ proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags) {
   proto::PipelineOptions options;
   if (!flags.options_file.empty()) options = ReadOptionsFile(flags.options_file);
   for (const std::string& assignment : flags.overrides) ApplyOverride(assignment, &options);
+  CheckPipelineOptions(options);
   return options;
 }
 
+namespace {
+
+// Exit 0 once what --help or --version printed reached standard output, else 1.
+int FlushedExit(const std::string& tool) {
+  try {
+    FlushStandardOutput();
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << tool << ": " << e.what() << "\n";
+    return 1;
+  }
+}
+
+}  // namespace
+
 int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
                const std::function<int()>& body) {
+  app.set_version_flag("--version", std::string(VersionText()));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
-    try {
-      FlushStandardOutput();
-    } catch (const std::exception& e) {
-      std::cerr << tool << ": " << e.what() << "\n";
-      return 1;
-    }
-    return 0;
+    return FlushedExit(tool);
+  } catch (const CLI::CallForVersion& version) {
+    std::cout << tool << ": " << version.what() << "\n";
+    return FlushedExit(tool);
   } catch (const CLI::ParseError& e) {
     std::cerr << tool << ": " << e.what() << " (see --help)\n";
     return 2;

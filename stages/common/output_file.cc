@@ -14,7 +14,7 @@
 #include <iostream>
 #include <optional>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

@@ -3,8 +3,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "common/error.h"
 #include "stages/common/output_file.h"
-#include "store/error.h"
 
 namespace areagraph {
 

@@ -7,16 +7,12 @@
 #include <set>
 #include <sstream>
 
-#include "store/error.h"
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
 namespace {
-
-std::string FormatNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 // Wraps yaml-cpp's conversions so that every failure names file and key.
 class YamlReader {
@@ -90,15 +86,6 @@ YAML::Node LoadYaml(const std::string& yaml_text, const std::string& yaml_path) 
 }
 
 }  // namespace
-
-void CheckResolution(double resolution_m, const std::string& what, bool is_option) {
-  if (resolution_m >= kMinResolutionM && resolution_m <= kMaxResolutionM) return;  // NaN fails
-  const std::string message = what + " must be a resolution in [" + FormatNumber(kMinResolutionM) +
-                              ", " + FormatNumber(kMaxResolutionM) + "] metres per pixel, got " +
-                              FormatNumber(resolution_m);
-  if (is_option) throw OptionsError(message);
-  throw InputError(message);
-}
 
 std::string OriginProblem(double x_m, double y_m, double yaw_rad) {
   constexpr double kTwoPi = 6.283185307179586;

@@ -4,20 +4,10 @@
 
 namespace areagraph {
 
-// Accepted resolutions. Anything coarser than a kilometre per pixel, or finer
-// than a tenth of a millimetre, is a typo (or a unit mix-up), not a building
-// map; beyond them lengths in pixels overflow.
-inline constexpr double kMinResolutionM = 1e-4;
-inline constexpr double kMaxResolutionM = 1000.0;
-
 // Largest accepted distance of a map origin from the world origin. UTM
 // northings reach 1e7 m; far beyond that, doubles lose the centimetres of
 // the map's cells and exports (GeoJSON, osmAG) come out degenerate.
 inline constexpr double kMaxOriginM = 1e8;
-
-// Throws `Exception` (InputError or OptionsError) unless `resolution_m` is
-// finite and within [kMinResolutionM, kMaxResolutionM]. `what` names its source.
-void CheckResolution(double resolution_m, const std::string& what, bool is_option);
 
 // "" when (x, y, yaw) is a usable map origin: finite, |x| and |y| at most
 // kMaxOriginM, |yaw| at most 2 pi. Otherwise what is wrong with it.

@@ -4,15 +4,17 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <set>
-#include <sstream>
 #include <vector>
 
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/pipeline_options_check.h"
+#include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/site_alpha_shape.h"
 #include "stages/prune/chain_graph.h"
 #include "stages/prune/chain_pruning.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
@@ -21,26 +23,21 @@ namespace {
 // many co-circular sites, whose Voronoi vertices coincide.
 constexpr double kSamePointPx = 1e-6;
 
-std::string Metres(double value) {
-  std::ostringstream out;
-  out << value << " m";
-  return out.str();
-}
+std::string Metres(double value) { return FormatNumber(value) + " m"; }
 
 // Throws when a Voronoi edge names a vertex or site that does not exist.
-void CheckIndex(int index, int size, const char* element, int edge, const std::string& what) {
+void CheckIndex(int index, int size, const char* element, int edge) {
   if (index < 0 || index >= size) {
-    throw InputError(what + ": the Voronoi diagram artifact is corrupt: edge " +
-                     std::to_string(edge) + " names " + element + " " + std::to_string(index) +
-                     " of " + std::to_string(size));
+    throw InputError("the Voronoi diagram artifact is corrupt: edge " + std::to_string(edge) +
+                     " names " + element + " " + std::to_string(index) + " of " +
+                     std::to_string(size));
   }
 }
 
 // The Voronoi edges that survive the boundary, free-cell and clearance
 // filters, as one-segment chains.
 ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const CellGrid& grid,
-                                SiteAlphaShape& boundary_shape, double min_clearance_px,
-                                const std::string& what) {
+                                SiteAlphaShape& boundary_shape, double min_clearance_px) {
   const int vertex_count = diagram.vertices_size();
   const int site_count = diagram.sites_size();
   std::vector<char> keep(vertex_count, 0);
@@ -53,11 +50,11 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
   std::vector<int> kept_edges;
   for (int e = 0; e < diagram.edges_size(); ++e) {
     const proto::VoronoiEdge& edge = diagram.edges(e);
-    CheckIndex(edge.source(), vertex_count, "vertex", e, what);
+    CheckIndex(edge.source(), vertex_count, "vertex", e);
     if (edge.target() < 0) continue;  // a ray
-    CheckIndex(edge.target(), vertex_count, "vertex", e, what);
-    CheckIndex(edge.left_site(), site_count, "site", e, what);
-    CheckIndex(edge.right_site(), site_count, "site", e, what);
+    CheckIndex(edge.target(), vertex_count, "vertex", e);
+    CheckIndex(edge.left_site(), site_count, "site", e);
+    CheckIndex(edge.right_site(), site_count, "site", e);
     if (!keep[edge.source()] || !keep[edge.target()]) continue;
     if (!(edge.clearance_px() >= min_clearance_px)) continue;
     const Eigen::Vector2d a = FromProtoPoint(diagram.vertices(edge.source()).position());
@@ -151,7 +148,7 @@ std::vector<proto::Polygon> PartBoundaries(const ChainGraph& graph, SiteAlphaSha
 proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& frame,
                              std::vector<proto::Polygon> parts, const PartSelection& selection) {
   proto::TopologyGraph out;
-  out.set_format_version(1);
+  out.set_format_version(kTopologyGraphFormatVersion);
   *out.mutable_frame() = frame;
   if (!parts.empty()) *out.mutable_boundary() = parts.front();
   for (proto::Polygon& part : parts) *out.add_part_boundaries() = std::move(part);
@@ -191,37 +188,11 @@ proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& fra
 
 }  // namespace
 
-void CheckPruneOptions(const proto::PruneOptions& options) {
-  auto require = [](bool ok, const std::string& message) {
-    if (!ok) throw OptionsError(message);
-  };
-  const double radius = options.boundary_alpha_radius_m();
-  require(std::isfinite(radius) && radius > 0,
-          "prune.boundary_alpha_radius_m must be a positive number of metres, got " +
-              std::to_string(radius));
-  const double clearance = options.min_clearance_m();
-  require(std::isfinite(clearance) && clearance >= 0,
-          "prune.min_clearance_m must be zero or more metres, got " + std::to_string(clearance));
-  const double dead_end = options.dead_end_max_length_m();
-  require(
-      std::isfinite(dead_end) && dead_end >= 0,
-      "prune.dead_end_max_length_m must be zero or more metres, got " + std::to_string(dead_end));
-  require(options.dead_end_passes() >= 0 && options.dead_end_passes() <= 1000,
-          "prune.dead_end_passes must be between 0 and 1000, got " +
-              std::to_string(options.dead_end_passes()));
-  const double min_part = options.min_component_m2();
-  require(
-      std::isfinite(min_part) && min_part >= 0,
-      "prune.min_component_m2 must be zero or more square metres, got " + std::to_string(min_part));
-}
-
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
-                                        const proto::PruneOptions& options,
-                                        const std::string& map_name) {
+                                        const proto::PruneOptions& options) {
   CheckPruneOptions(options);
-  const std::string what = "map '" + map_name + "'";
-  const CellGrid grid(map, what);
+  const CellGrid grid(map);
   const double resolution = grid.resolution_m();
   const double map_size_px = std::hypot(grid.width(), grid.height());
   if (options.min_clearance_m() / resolution > map_size_px) {
@@ -231,22 +202,21 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
 
   const PointList sites = ToPointList(diagram.sites());
   if (sites.size() < 3) {
-    throw InputError(what + ": no Topology Graph: the map has " + std::to_string(sites.size()) +
+    throw InputError("no Topology Graph: the map has " + std::to_string(sites.size()) +
                      " obstacle cells next to free space, too few to enclose any");
   }
   SiteAlphaShape boundary_shape(sites, options.boundary_alpha_radius_m() / resolution);
   const std::vector<double> region_area = boundary_shape.FindEnclosedRegions();
   if (region_area.empty()) {
-    throw InputError(what +
-                     ": no Topology Graph: the obstacles enclose no space (no alpha shape with " +
+    throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +
                      Metres(options.boundary_alpha_radius_m()) + " radius)");
   }
 
   const double min_clearance_px = options.min_clearance_m() / resolution;
-  ChainGraph graph = FilteredVoronoiGraph(diagram, grid, boundary_shape, min_clearance_px, what);
+  ChainGraph graph = FilteredVoronoiGraph(diagram, grid, boundary_shape, min_clearance_px);
   graph.JoinDegreeTwoChains();
   if (graph.edges.empty()) {
-    throw InputError(what + ": no Topology Graph: no Voronoi edge inside the boundary keeps " +
+    throw InputError("no Topology Graph: no Voronoi edge inside the boundary keeps " +
                      Metres(options.min_clearance_m()) + " away from obstacles");
   }
   const double dead_end_px = options.dead_end_max_length_m() / resolution;
@@ -261,7 +231,7 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
       static_cast<int64_t>(std::ceil(options.min_component_m2() / (resolution * resolution))));
   std::vector<proto::Polygon> parts = PartBoundaries(graph, boundary_shape, region_area);
   if (parts.empty()) {
-    throw InputError(what + ": no Topology Graph: no part of the graph lies inside the boundary");
+    throw InputError("no Topology Graph: no part of the graph lies inside the boundary");
   }
   return ToProto(graph, map.frame(), std::move(parts), selection);
 }

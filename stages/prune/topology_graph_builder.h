@@ -7,9 +7,6 @@
 
 namespace areagraph {
 
-// Throws OptionsError naming the first prune option that is out of range.
-void CheckPruneOptions(const proto::PruneOptions& options);
-
 // ag-prune: the Topology Graph with a polygon on every edge (the paper's
 // G_A^0). Voronoi vertices outside the boundary alpha shape or not on a free
 // cell go, as do rays and edges closer to an obstacle than
@@ -18,11 +15,10 @@ void CheckPruneOptions(const proto::PruneOptions& options);
 // the connected group with the most edge length stays, and so does every
 // other group with at least prune.min_component_m2 of free space (each with
 // the outline of the alpha-shape region around it in part_boundaries); the
-// groups dropped are counted. Throws InputError ("map '<map_name>': no
-// Topology Graph: ...") when nothing is left, and OptionsError on bad options.
+// groups dropped are counted. Throws InputError ("no Topology Graph: ...")
+// when nothing is left, and OptionsError on bad options.
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
-                                        const proto::PruneOptions& options,
-                                        const std::string& map_name);
+                                        const proto::PruneOptions& options);
 
 }  // namespace areagraph

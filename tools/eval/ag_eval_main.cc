@@ -5,9 +5,9 @@
 #include <regex>
 #include <string>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
-#include "store/error.h"
 #include "tools/eval/dataset_evaluation.h"
 #include "tools/eval/evaluation_report.h"
 #include "tools/eval/gt_picture.h"

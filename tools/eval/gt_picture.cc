@@ -4,8 +4,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/error.h"
 #include "stages/common/png_file.h"
-#include "store/error.h"
 #include "tools/eval/map_evaluation.h"
 
 namespace areagraph {

@@ -1,16 +1,17 @@
 // ag-export: writes a map's Area Graph (the head ag-merge artifact) as a
-// label image, GeoJSON, osmAG XML or JSON.
+// label image, GeoJSON, osmAG XML or JSON, or the whole run as an HTML viewer.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
 
+#include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
 #include "stages/common/stage.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/export/area_graph_export.h"
+#include "tools/export/html_viewer.h"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -18,18 +19,28 @@ int main(int argc, char** argv) {
       "  labels   16-bit PNG the size of the map: 0 = no area, area id + 1 inside each area\n"
       "  geojson  FeatureCollection in map metres: areas as Polygons, passages as LineStrings\n"
       "  osmag    osmAG XML for JOSM: areas as closed ways, passages as two-node ways\n"
-      "  json     the AreaGraph message as JSON"};
-  std::string store_path = "areagraph.db", map_name, format_name, out_path;
+      "  json     the AreaGraph message as JSON\n"
+      "  html     one self-contained page to inspect every stage in a browser (layers, hover,\n"
+      "           zoom, options, times); --compare KEY shows a second run beside it"};
+  std::string store_path = "areagraph.db", map_name, format_name, out_path, key, compare_key;
   areagraph::GeoAnchor anchor;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map_name, "name of the map in the store")->required();
-  app.add_option("--format", format_name, "labels, geojson, osmag or json")->required();
+  app.add_option("--format", format_name, "labels, geojson, osmag, json or html")->required();
   app.add_option("--out", out_path, "file to write, or - for standard output")->required();
   app.add_option("--anchor-lat", anchor.lat_deg,
                  "osmag: latitude of the map's world origin in degrees (default 31.17947)");
   app.add_option("--anchor-lon", anchor.lon_deg,
                  "osmag: longitude of the map's world origin in degrees (default 121.59042)");
+  app.add_option("--key", key,
+                 "html: show the run behind this artifact key (prefix; default: heads)");
+  app.add_option("--compare", compare_key, "html: a second key of the map to compare with");
   return areagraph::RunCommand("ag-export", app, argc, argv, [&] {
+    if (format_name == "html")
+      return areagraph::ExportViewerPage(store_path, map_name, key, compare_key, out_path);
+    if (!key.empty() || !compare_key.empty()) {
+      throw areagraph::OptionsError("--key and --compare go with --format html");
+    }
     areagraph::ExportSettings settings;
     settings.format = areagraph::ParseExportFormat(format_name);
     settings.map_name = map_name;

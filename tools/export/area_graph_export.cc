@@ -5,8 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
+#include "common/error.h"
 #include "stages/common/png_file.h"
-#include "store/error.h"
 #include "tools/export/area_label_image.h"
 #include "tools/export/geojson_export.h"
 
@@ -17,7 +17,8 @@ ExportFormat ParseExportFormat(const std::string& name) {
   if (name == "geojson") return ExportFormat::kGeoJson;
   if (name == "osmag") return ExportFormat::kOsmAg;
   if (name == "json") return ExportFormat::kJson;
-  throw OptionsError("unknown export format '" + name + "'; use labels, geojson, osmag or json");
+  throw OptionsError("unknown export format '" + name +
+                     "'; use labels, geojson, osmag, json or html");
 }
 
 std::string AreaGraphToJson(const proto::AreaGraph& graph) {

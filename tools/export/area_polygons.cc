@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/error.h"
 #include "stages/common/map_frame.h"
-#include "store/error.h"
 
 namespace areagraph {
 

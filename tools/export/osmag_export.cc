@@ -8,8 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_polygons.h"
+#include "tools/export/markup_escape.h"
 
 namespace areagraph {
 
@@ -18,34 +19,8 @@ namespace {
 constexpr double kEarthRadiusM = 6378137.0;
 constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
 
-std::string XmlEscaped(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        escaped += "&amp;";
-        break;
-      case '<':
-        escaped += "&lt;";
-        break;
-      case '>':
-        escaped += "&gt;";
-        break;
-      case '"':
-        escaped += "&quot;";
-        break;
-      case '\'':
-        escaped += "&apos;";
-        break;
-      default:
-        escaped += c;
-    }
-  }
-  return escaped;
-}
-
 std::string Tag(const std::string& key, const std::string& value) {
-  return "    <tag k=\"" + XmlEscaped(key) + "\" v=\"" + XmlEscaped(value) + "\"/>\n";
+  return "    <tag k=\"" + MarkupEscaped(key) + "\" v=\"" + MarkupEscaped(value) + "\"/>\n";
 }
 
 // `value` with `decimals` digits after the point, however long it gets.

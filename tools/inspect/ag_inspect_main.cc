@@ -3,10 +3,10 @@
 #include <iostream>
 #include <sstream>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/inspect/failure_report.h"
 #include "tools/inspect/store_report.h"
 

@@ -6,8 +6,8 @@
 #include <cerrno>
 #include <filesystem>
 
+#include "common/error.h"
 #include "stages/common/output_file.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

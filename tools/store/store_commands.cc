@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <memory>
 
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/stage_table.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "store/store_maintenance.h"
 #include "tools/inspect/failure_report.h"
 #include "tools/store/new_store_file.h"
@@ -134,6 +136,7 @@ int VerifyStore(const std::string& store_path, bool progress, bool quick, std::o
   {
     ProgressLine line;
     problems = store->Verify(
+        FileInputStageNames(),
         [&](int64_t done, int64_t total) {
           checked = done;
           if (progress) line.Update(done, total);
@@ -142,7 +145,7 @@ int VerifyStore(const std::string& store_path, bool progress, bool quick, std::o
   }
   for (const VerifyProblem& problem : problems) {
     out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "
-        << OrDash(problem.cache_key.substr(0, 12)) << ": " << problem.problem << "\n";
+        << OrDash(ShortKey(problem.cache_key)) << ": " << problem.problem << "\n";
   }
   out << "checked " << Plural(checked, "artifact") << ": "
       << (problems.empty() ? "no problems"

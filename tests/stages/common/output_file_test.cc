@@ -16,7 +16,7 @@
 #include <string>
 #include <thread>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"
 

@@ -16,7 +16,7 @@
 namespace areagraph::testing {
 namespace {
 
-TEST(AgRenderCli, EveryStageOfAClutteredRoomWithinACpuLimit) {
+TEST(AgRenderSpeedCli, EveryStageOfAClutteredRoomWithinACpuLimit) {
   TempDir dir;
   floorplan::WritePlanPng(floorplan::ClutteredRoomPlan(500, 1.0, /*seed=*/1),
                           dir.File("clutter.png"));
