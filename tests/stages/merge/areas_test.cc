@@ -2,6 +2,8 @@
 // where the passages are, and the invariants every Area Graph must meet.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "tests/support/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
@@ -226,6 +228,59 @@ TEST(AreaStagesTest, EveryBuildingOfAMapGetsItsAreas) {
   EXPECT_EQ(one_building.areas.components(), 1);
   EXPECT_EQ(one_building.areas.areas_size(), single.areas.areas_size());
   EXPECT_EQ(one_building.areas.dropped_parts(), 2);
+}
+
+// A wing reached only through unknown space: one corridor runs from the
+// main building to the wing, but a 3 m stretch of it (walls and all) was
+// never scanned. Both sides lie in one boundary region (the gap is narrower
+// than the alpha disk), yet their free space is not connected: the wing is a
+// part of its own and keeps its rooms and its piece of the corridor. Before,
+// only the longest graph stayed and the wing's rooms had no area.
+TEST(AreaStagesTest, WingBehindUnknownSpaceGetsItsAreas) {
+  FloorPlan plan(26, 6.5);
+  const double room_width = 10.0 / 3;
+  for (const double left : {0.5, 15.5}) {
+    for (int i = 0; i < 3; ++i) DrawRoom(plan, {left + i * room_width, 0.5, room_width, 3.5});
+  }
+  DrawRoom(plan, {0.5, 4.0, 25, 1.75});
+  for (const double left : {0.5, 15.5}) {
+    for (int i = 0; i < 3; ++i) {
+      DrawDoor(plan, left + (i + 0.5) * room_width, 4.0, 0.9, WallDirection::kHorizontal);
+    }
+  }
+  const int gap_left = plan.ToPixels(11.5), gap_top = plan.ToPixels(3.6);
+  plan.image()(
+          cv::Rect(gap_left, gap_top, plan.ToPixels(14.5) - gap_left, plan.ToPixels(6.2) - gap_top))
+      .setTo(floorplan::kUnknownGrey);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const AreaStages stages = RunAreaStages(map);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.topology.parts(), 2);
+  EXPECT_EQ(stages.topology.part_boundaries_size(), 1);  // one alpha-shape region
+  EXPECT_EQ(stages.topology.dropped_parts(), 0);
+  EXPECT_EQ(stages.areas.components(), 2);
+  // Every room of both sides and both pieces of the corridor have an area.
+  std::set<int> areas;
+  for (const double left : {0.5, 15.5}) {
+    for (int i = 0; i < 3; ++i)
+      areas.insert(AreaAt(stages.areas, left + (i + 0.5) * room_width, 2));
+  }
+  areas.insert(AreaAt(stages.areas, 5, 4.9));
+  areas.insert(AreaAt(stages.areas, 20, 4.9));
+  EXPECT_EQ(areas.count(-1), 0u);
+  EXPECT_EQ(areas.size(), 8u);
+
+  // The paper's rule (only the biggest graph) leaves the wing without areas.
+  proto::PipelineOptions paper;
+  paper.mutable_prune()->set_min_component_m2(1e8);
+  const AreaStages biggest_only = RunAreaStages(map, paper);
+  EXPECT_EQ(biggest_only.areas.components(), 1);
+  EXPECT_EQ(biggest_only.areas.dropped_parts(), 1);
+  int wing_areas = 0;
+  for (int i = 0; i < 3; ++i) {
+    wing_areas += AreaAt(biggest_only.areas, 15.5 + (i + 0.5) * room_width, 2) != -1 ? 1 : 0;
+  }
+  EXPECT_EQ(wing_areas, 0);
 }
 
 // A door as wide as the limit still lets the areas grow: the room behind
