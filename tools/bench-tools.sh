@@ -4,9 +4,9 @@
 # rooms of 500, 1000 and 2000 px with 1 % of their cells random obstacles
 # (ag-make-example-maps --clutter), the worst case of clutter. Per map, in a
 # fresh store: ag-import, each stage executable, ag-pipeline --force, ag-run
-# --force, ag-render of every stage, ag-export in every format, ag-inspect
-# (summary and --json) of every stage, and ag-eval against the map's ground
-# truth where the data has one. Prints a Markdown table on stdout: per
+# --force, ag-render of every stage, ag-export in every format (html too),
+# ag-inspect (summary and --json) of every stage, ag-store verify, and ag-eval
+# against the map's ground truth where the data has one. Prints a Markdown table on stdout: per
 # executable the runs, the slowest map, its CPU time (user + system) and wall
 # time, and how many runs took more than 2 s of CPU (issue 13's bar). CPU time
 # is what counts on a machine shared with others; wall time is shown too.
@@ -106,11 +106,13 @@ while IFS=$'\t' read -r image name gt; do
     timed ag-inspect "$name" "${map[@]}" --stage "$stage"
     timed ag-inspect "$name" "${map[@]}" --stage "$stage" --json
   done
-  for format in labels geojson osmag json; do
+  for format in labels geojson osmag json html; do
     timed ag-export "$name" "${map[@]}" --format "$format" --out "$work/export.$format"
   done
-  [ "$gt" != - ] && [ -f "$gt" ] &&
+  timed ag-store "$name" verify --store "$store"
+  if [ "$gt" != - ] && [ -f "$gt" ]; then
     timed ag-eval "$name" --result "$work/export.labels" --gt "$gt"
+  fi
 done <"$work/maps"
 load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
