@@ -74,7 +74,8 @@ WriterCase ExportCase(const std::string& format, const std::string& magic) {
 
 std::vector<WriterCase> Writers() {
   std::vector<WriterCase> writers = {ExportCase("labels", kPngMagic), ExportCase("geojson", "{"),
-                                     ExportCase("osmag", "<?xml"), ExportCase("json", "{")};
+                                     ExportCase("osmag", "<?xml"), ExportCase("json", "{"),
+                                     ExportCase("html", "<!DOCTYPE html>")};
   writers.push_back({"render", "ag-render", [](const std::string& dir) { return dir + "/out"; },
                      [](const std::string& dir) {
                        return std::vector<std::string>{"--store", PipelineStore::Get().store(),
@@ -263,6 +264,7 @@ std::vector<ReporterCase> Reporters() {
   reporters.push_back({"make_example_maps", {"ag-make-example-maps", "--out", "{tmp}"}});
   reporters.push_back({"make_collection", {"ag-make-collection", "--count", "1", "{tmp}"}});
   reporters.push_back({"help", {"ag-inspect", "--help"}});
+  reporters.push_back({"version", {"ag-run", "--version"}});
   return reporters;
 }
 
