@@ -68,6 +68,24 @@ std::string ImageWithYaml(const TempDir& dir, const std::string& yaml) {
   return dir.File("map.png");
 }
 
+// ag-import of an image whose YAML holds the number between `before` and `after`.
+NumberEntry YamlEntry(const std::string& name, const std::string& before,
+                      const std::string& after) {
+  return {name, "ag-import", [=](const TempDir& dir, const AbsurdNumber& n) {
+            return std::vector<std::string>{"--store", dir.File("new.db"),
+                                            ImageWithYaml(dir, before + n.yaml + after)};
+          }};
+}
+
+// ag-export --format osmag with the number in the anchor flag `flag`.
+NumberEntry AnchorEntry(const std::string& name, const std::string& flag) {
+  return {name, "ag-export", [=](const TempDir& dir, const AbsurdNumber& n) {
+            return std::vector<std::string>{
+                "--store", Fixture::Get().store(), "--map",      "two_rooms", "--format", "osmag",
+                "--out",   dir.File("map.osm"),    flag + n.text};
+          }};
+}
+
 std::vector<NumberEntry> Entries() {
   const auto store = [] { return Fixture::Get().store(); };
   const auto image = [] { return Fixture::Get().image(); };
@@ -93,53 +111,12 @@ std::vector<NumberEntry> Entries() {
          return std::vector<std::string>{"--store",   store(),     "--map",
                                          "two_rooms", "--options", dir.File("o.pbtxt")};
        }},
-      {"yaml_resolution", "ag-import",
-       [=](const TempDir& dir, const AbsurdNumber& n) {
-         return std::vector<std::string>{"--store", dir.File("new.db"),
-                                         ImageWithYaml(dir, "resolution: " + n.yaml + "\n")};
-       }},
-      {"yaml_origin_x", "ag-import",
-       [=](const TempDir& dir, const AbsurdNumber& n) {
-         return std::vector<std::string>{
-             "--store", dir.File("new.db"),
-             ImageWithYaml(dir, "resolution: 0.05\norigin: [" + n.yaml + ", 0, 0]\n")};
-       }},
-      {"yaml_origin_yaw", "ag-import",
-       [=](const TempDir& dir, const AbsurdNumber& n) {
-         return std::vector<std::string>{
-             "--store", dir.File("new.db"),
-             ImageWithYaml(dir, "resolution: 0.05\norigin: [0, 0, " + n.yaml + "]\n")};
-       }},
-      {"yaml_threshold", "ag-import",
-       [=](const TempDir& dir, const AbsurdNumber& n) {
-         return std::vector<std::string>{
-             "--store", dir.File("new.db"),
-             ImageWithYaml(dir, "resolution: 0.05\nfree_thresh: " + n.yaml + "\n")};
-       }},
-      {"export_anchor_lat", "ag-export",
-       [=](const TempDir& dir, const AbsurdNumber& n) {
-         return std::vector<std::string>{"--store",
-                                         store(),
-                                         "--map",
-                                         "two_rooms",
-                                         "--format",
-                                         "osmag",
-                                         "--out",
-                                         dir.File("map.osm"),
-                                         "--anchor-lat=" + n.text};
-       }},
-      {"export_anchor_lon", "ag-export",
-       [=](const TempDir& dir, const AbsurdNumber& n) {
-         return std::vector<std::string>{"--store",
-                                         store(),
-                                         "--map",
-                                         "two_rooms",
-                                         "--format",
-                                         "osmag",
-                                         "--out",
-                                         dir.File("map.osm"),
-                                         "--anchor-lon=" + n.text};
-       }},
+      YamlEntry("yaml_resolution", "resolution: ", "\n"),
+      YamlEntry("yaml_origin_x", "resolution: 0.05\norigin: [", ", 0, 0]\n"),
+      YamlEntry("yaml_origin_yaw", "resolution: 0.05\norigin: [0, 0, ", "]\n"),
+      YamlEntry("yaml_threshold", "resolution: 0.05\nfree_thresh: ", "\n"),
+      AnchorEntry("export_anchor_lat", "--anchor-lat="),
+      AnchorEntry("export_anchor_lon", "--anchor-lon="),
       {"listen_timeout", "ag-listen",
        [=](const TempDir&, const AbsurdNumber& n) {
          return std::vector<std::string>{"--url", "memq://", "--timeout=" + n.text};
