@@ -51,6 +51,22 @@ class EncodedBytes {
   // ring_t: num_points, x[num_points], y[num_points].
   void SkipRing() { Skip(int64_t{Count(16)} * 16); }
 
+  // area_t: id, kind, outer, holes, area_m2, centroid, passage_ids.
+  void SkipArea() {
+    Skip(4 + 1);
+    SkipRing();
+    const int32_t holes = Count(4);
+    for (int32_t h = 0; ok_ && h < holes; ++h) SkipRing();
+    Skip(3 * 8);
+    Skip(int64_t{Count(4)} * 4);
+  }
+
+  // A count and that many passage_t: three int32 ids and seven doubles.
+  void SkipPassages() {
+    constexpr int kPassageBytes = 3 * 4 + 7 * 8;
+    Skip(int64_t{Count(kPassageBytes)} * kPassageBytes);
+  }
+
  private:
   const uint8_t* data_;
   int size_;
@@ -59,12 +75,9 @@ class EncodedBytes {
 };
 
 constexpr int kFingerprintBytes = 8;
-constexpr int kRingMinBytes = 4;
 // area_t without its arrays' elements: id, kind, outer ring count, num_holes,
 // area and centroid, num_passages.
 constexpr int kAreaMinBytes = 4 + 1 + 4 + 4 + 3 * 8 + 4;
-// passage_t: three int32 ids and seven doubles.
-constexpr int kPassageBytes = 3 * 4 + 7 * 8;
 
 }  // namespace
 
@@ -82,17 +95,39 @@ int AreaGraphEncodedSize(const void* data, int size) {
   bytes.Skip(kFingerprintBytes);
   bytes.SkipString();         // map_name
   bytes.SkipString();         // artifact_key
+  bytes.Skip(8);              // version
+  bytes.SkipString();         // predecessor_key
+  bytes.Skip(3 * 8);          // utime, sequence, map_utime
   bytes.Skip(4 * 8 + 2 * 4);  // resolution, origin, width_px, height_px
   const int32_t areas = bytes.Count(kAreaMinBytes);
-  for (int32_t i = 0; bytes.ok() && i < areas; ++i) {
-    bytes.Skip(4 + 1);  // id, kind
-    bytes.SkipRing();   // outer
-    const int32_t holes = bytes.Count(kRingMinBytes);
-    for (int32_t h = 0; bytes.ok() && h < holes; ++h) bytes.SkipRing();
-    bytes.Skip(3 * 8);                        // area_m2, centroid
-    bytes.Skip(int64_t{bytes.Count(4)} * 4);  // passage_ids
+  for (int32_t i = 0; bytes.ok() && i < areas; ++i) bytes.SkipArea();
+  bytes.SkipPassages();
+  return bytes.ok() ? bytes.position() : -1;
+}
+
+int AreaGraphDiffEncodedSize(const void* data, int size) {
+  EncodedBytes bytes(data, size);
+  bytes.Skip(kFingerprintBytes);
+  bytes.SkipString();  // map_name
+  bytes.SkipString();  // artifact_key
+  bytes.Skip(8);       // version
+  bytes.SkipString();  // predecessor_key
+  bytes.Skip(4 * 8);   // predecessor_version, utime, sequence, map_utime
+  const int32_t added = bytes.Count(kAreaMinBytes);
+  for (int32_t i = 0; bytes.ok() && i < added; ++i) bytes.SkipArea();
+  bytes.Skip(int64_t{bytes.Count(4)} * 4);  // removed_area_ids
+  const int32_t changed = bytes.Count(1 + kAreaMinBytes + 2 * 4);
+  for (int32_t i = 0; bytes.ok() && i < changed; ++i) {
+    bytes.Skip(1);  // changes
+    bytes.SkipArea();
+    bytes.Skip(int64_t{bytes.Count(4)} * 4);  // split_into
+    bytes.Skip(int64_t{bytes.Count(4)} * 4);  // merged_from
   }
-  bytes.Skip(int64_t{bytes.Count(kPassageBytes)} * kPassageBytes);
+  bytes.Skip(4);  // unchanged_areas
+  bytes.SkipPassages();
+  bytes.Skip(int64_t{bytes.Count(4)} * 4);  // removed_passage_ids
+  bytes.SkipPassages();
+  bytes.Skip(4);  // unchanged_passages
   return bytes.ok() ? bytes.position() : -1;
 }
 

@@ -40,7 +40,8 @@ TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
   EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
             std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
-  EXPECT_EQ(Tables(path), (std::vector<std::string>{"artifacts", "failures", "heads", "maps"}));
+  EXPECT_EQ(Tables(path),
+            (std::vector<std::string>{"artifacts", "failures", "heads", "maps", "versions"}));
   ExpectVersion1DataIntact(*store);
   EXPECT_TRUE(store->ReadFailures().empty());
   FailureRecord failure;
