@@ -26,11 +26,11 @@ VALUES (?1, ?2, ?3, ?4, ?5, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))
 ON CONFLICT (map_id, cache_key) DO NOTHING)sql";
 
 // Each row with whether its artifact is still stored and is its stage's head.
-#define AG_READ_VERSIONS(where)                                                                \
-  "SELECT v.cache_key, v.predecessor_key, v.number, v.stage, v.created_at, a.id IS NOT NULL,"  \
-  " h.artifact_id IS NOT NULL FROM maps m JOIN versions v ON v.map_id = m.id"                  \
+#define AG_READ_VERSIONS(where)                                                               \
+  "SELECT v.cache_key, v.predecessor_key, v.number, v.stage, v.created_at, a.id IS NOT NULL," \
+  " h.artifact_id IS NOT NULL FROM maps m JOIN versions v ON v.map_id = m.id"                 \
   " LEFT JOIN artifacts a ON a.map_id = v.map_id AND a.cache_key = v.cache_key"               \
-  " LEFT JOIN heads h ON h.map_id = v.map_id AND h.stage = v.stage AND h.artifact_id = a.id" \
+  " LEFT JOIN heads h ON h.map_id = v.map_id AND h.stage = v.stage AND h.artifact_id = a.id"  \
   " WHERE m.name = ?1" where
 inline constexpr char kReadVersions[] = AG_READ_VERSIONS(" ORDER BY v.created_at, v.number");
 inline constexpr char kReadVersion[] = AG_READ_VERSIONS(" AND v.cache_key = ?2");

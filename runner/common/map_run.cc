@@ -33,10 +33,11 @@ bool SetHeadsIfFullyCached(ArtifactStore& store, const std::string& map_name,
   const StageDefinition& import = StageOf(kImportStage);
   std::vector<std::pair<StageInfo, std::string>> keys = {
       {kImportStage, StageCacheKey(kImportStage, import.options_of(options), inputs.digests)}};
-  const std::vector<std::string> planned = PlanPipelineKeys(
-      keys[0].second, options, [&](const StageDefinition& stage, const std::vector<std::string>& in) {
-        return PreviousVersionOf(store, map_name, stage, options, in);
-      });
+  const std::vector<std::string> planned =
+      PlanPipelineKeys(keys[0].second, options,
+                       [&](const StageDefinition& stage, const std::vector<std::string>& in) {
+                         return PreviousVersionOf(store, map_name, stage, options, in);
+                       });
   const std::vector<StageInfo> stages = PipelineStages();
   for (size_t i = 0; i < planned.size(); ++i) keys.emplace_back(stages[i], planned[i]);
   for (const auto& [stage, key] : keys) {

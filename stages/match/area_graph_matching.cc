@@ -100,8 +100,8 @@ void CheckIsMatched(const proto::AreaGraph& previous) {
     throw InputError("the previous version has no stable ids (it is not a match artifact)");
   }
   for (const proto::Passage& passage : previous.passages()) {
-    if (passage.area_a() < 0 || passage.area_a() >= previous.areas_size() ||
-        passage.area_b() < 0 || passage.area_b() >= previous.areas_size()) {
+    if (passage.area_a() < 0 || passage.area_a() >= previous.areas_size() || passage.area_b() < 0 ||
+        passage.area_b() >= previous.areas_size()) {
       throw InputError("a passage of the previous version joins an area it does not have");
     }
   }
@@ -112,8 +112,8 @@ void CheckIsMatched(const proto::AreaGraph& previous) {
 proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::AreaGraph* previous,
                                 const VersionLink& version, const proto::MatchOptions& options) {
   for (const proto::Passage& passage : current.passages()) {
-    if (passage.area_a() < 0 || passage.area_a() >= current.areas_size() ||
-        passage.area_b() < 0 || passage.area_b() >= current.areas_size()) {
+    if (passage.area_a() < 0 || passage.area_a() >= current.areas_size() || passage.area_b() < 0 ||
+        passage.area_b() >= current.areas_size()) {
       throw InputError("passage " + std::to_string(passage.id()) +
                        " joins an area that is not in the graph");
     }
@@ -134,7 +134,8 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
   NumberNewOnes(passage_ids, next_passage_id);
 
   proto::AreaGraph matched = current;
-  for (int i = 0; i < matched.areas_size(); ++i) matched.mutable_areas(i)->set_stable_id(area_ids[i]);
+  for (int i = 0; i < matched.areas_size(); ++i)
+    matched.mutable_areas(i)->set_stable_id(area_ids[i]);
   for (int i = 0; i < matched.passages_size(); ++i) {
     matched.mutable_passages(i)->set_stable_id(passage_ids[i]);
   }

@@ -12,8 +12,8 @@ namespace areagraph {
 
 // Where a stage that reads its previous version stands when it runs on
 // `input_keys` (PreviousVersionOf on a store).
-using PreviousVersionLookup = std::function<VersionLink(const StageDefinition& stage,
-                                                        const std::vector<std::string>& input_keys)>;
+using PreviousVersionLookup = std::function<VersionLink(
+    const StageDefinition& stage, const std::vector<std::string>& input_keys)>;
 
 // The cache keys that the stages after import get when every one runs on the
 // import artifact `import_key` with `options`, in PipelineStages() order.

@@ -43,7 +43,8 @@ void WriteThreeVersions(ArtifactStore& store) {
   for (int i = 1; i <= 3; ++i) {
     const std::string n = std::to_string(i);
     store.WriteArtifact(Artifact("m", "merge", "g" + n, {}, "graph " + n));
-    store.WriteArtifact(Version("m", "v" + n, "g" + n, i == 1 ? "" : "v" + std::to_string(i - 1), i));
+    store.WriteArtifact(
+        Version("m", "v" + n, "g" + n, i == 1 ? "" : "v" + std::to_string(i - 1), i));
   }
 }
 

@@ -156,20 +156,20 @@ double ColdPipelineMs(const proto::GridMap& grid, const std::string& scratch_dir
     FailureLog failures(*store);
     const std::string digest = LiveGridDigest(grid);
     MapImport import;
-    import.read_inputs = [&] {
-      StageInputs inputs;
-      inputs.digests = {digest};
-      return inputs;
-    };
-    import.decode = [&] { return std::make_unique<proto::GridMap>(grid); };
-    elapsed = ElapsedMs([&] {
-      RunOneMap(*store, failures, "cold", "", import, proto::PipelineOptions(), MapRunSettings(),
-                PipelineObserver(), nullptr);
-    });
-  }
-  std::remove(path.c_str());
-  return elapsed;
-}
+    import.read_inputs = [&] { StageInputs inputs;
+    inputs.digests = {digest};
+    return inputs;
+  };
+  import.decode = [&] { return std::make_unique<proto::GridMap>(grid);
+};
+elapsed = ElapsedMs([&] {
+  RunOneMap(*store, failures, "cold", "", import, proto::PipelineOptions(), MapRunSettings(),
+            PipelineObserver(), nullptr);
+});
+}  // namespace
+std::remove(path.c_str());
+return elapsed;
+}  // namespace areagraph
 
 std::string Percent(int part, int whole) {
   if (whole == 0) return "-";
@@ -242,13 +242,13 @@ int RunBench(const BenchFlags& flags) {
       std::snprintf(text, sizeof(text), "%.2f", live_ms / cold_ms);
       ratio = text;
     }
-    std::printf("| %d%s | %.0f %% | %dx%d | %d | %lld | %.0f | %.0f | %.0f | %s | %s | %s |\n", step,
-                step > flags.steps ? " (noise)" : "",
-                100.0 * cv::countNonZero(map.seen & (truth.cells == floorplan::kFreeCell)) /
-                    free_cells,
-                grid.frame().width_px(), grid.frame().height_px(), published.num_areas,
-                static_cast<long long>(published.version), live_ms, round_trip, cold_ms,
-                ratio.c_str(), tracked.c_str(), kept.c_str());
+    std::printf(
+        "| %d%s | %.0f %% | %dx%d | %d | %lld | %.0f | %.0f | %.0f | %s | %s | %s |\n", step,
+        step > flags.steps ? " (noise)" : "",
+        100.0 * cv::countNonZero(map.seen & (truth.cells == floorplan::kFreeCell)) / free_cells,
+        grid.frame().width_px(), grid.frame().height_px(), published.num_areas,
+        static_cast<long long>(published.version), live_ms, round_trip, cold_ms, ratio.c_str(),
+        tracked.c_str(), kept.c_str());
     std::fflush(stdout);
     std::cerr << "ag-bench-live: " << flags.name << ": step " << step << " done" << std::endl;
     previous = view;
@@ -259,9 +259,9 @@ int RunBench(const BenchFlags& flags) {
       "%s of all ids stayed. Update / cold: median %.2f, max %.2f.\n\n",
       flags.name.c_str(), Percent(explored_total.kept, explored_total.tracked).c_str(),
       explored_total.kept, explored_total.tracked,
-      Percent(noise_total.kept, noise_total.tracked).c_str(), noise_total.kept,
-      noise_total.tracked, Percent(noise_total.ids_kept, noise_total.ids_before).c_str(),
-      Median(ratios), ratios.empty() ? 0 : *std::max_element(ratios.begin(), ratios.end()));
+      Percent(noise_total.kept, noise_total.tracked).c_str(), noise_total.kept, noise_total.tracked,
+      Percent(noise_total.ids_kept, noise_total.ids_before).c_str(), Median(ratios),
+      ratios.empty() ? 0 : *std::max_element(ratios.begin(), ratios.end()));
   return 0;
 }
 
@@ -287,8 +287,9 @@ int main(int argc, char** argv) {
                  "instead of --map: a generated office floor this many metres square");
   app.add_option("--seed", flags.seed, "seed of the generated floor and of the noise")
       ->capture_default_str();
-  app.add_option("--steps", flags.steps, "growing maps")->capture_default_str()->check(
-      CLI::Range(1, 1000));
+  app.add_option("--steps", flags.steps, "growing maps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   app.add_option("--noise-steps", flags.noise_steps, "noise-only maps after the last step")
       ->capture_default_str()
       ->check(CLI::Range(0, 1000));

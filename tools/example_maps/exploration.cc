@@ -67,7 +67,8 @@ std::vector<cv::Point> PathToFrontier(const cv::Mat& truth, const cv::Mat& seen,
     const int x = cell % width, y = cell / width;
     if (cell != start && IsFrontier(truth, seen, x, y)) {
       std::vector<cv::Point> path;
-      for (int at = cell; parent[at] != -1; at = parent[at]) path.emplace_back(at % width, at / width);
+      for (int at = cell; parent[at] != -1; at = parent[at])
+        path.emplace_back(at % width, at / width);
       std::reverse(path.begin(), path.end());
       return path;
     }
@@ -97,7 +98,8 @@ cv::Mat ClassifyGrey(const cv::Mat& grey) {
 
 Exploration::Exploration(const cv::Mat& truth, const ExplorationSettings& settings)
     : truth_(truth.clone()), settings_(settings), seen_(truth.size(), CV_8U, cv::Scalar(0)) {
-  const int spacing = std::max(1, static_cast<int>(settings_.scan_spacing_m / settings_.resolution_m));
+  const int spacing =
+      std::max(1, static_cast<int>(settings_.scan_spacing_m / settings_.resolution_m));
   cv::Mat seen(truth_.size(), CV_8U, cv::Scalar(0));
   // A region the robot cannot drive into (behind a door drawn closed) is
   // explored after the others, as if it were carried there.

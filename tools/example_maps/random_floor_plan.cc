@@ -50,8 +50,7 @@ FloorPlan RandomOfficePlan(uint32_t seed) {
   return plan;
 }
 
-FloorPlan LargeOfficePlan(double width_m, double height_m, uint32_t seed,
-                          FloorPlan* rooms_closed) {
+FloorPlan LargeOfficePlan(double width_m, double height_m, uint32_t seed, FloorPlan* rooms_closed) {
   std::mt19937 random(seed);
   // mt19937's sequence is the same everywhere; the distributions are not.
   auto uniform = [&](double low, double high) {

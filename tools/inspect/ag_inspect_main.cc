@@ -59,7 +59,8 @@ int main(int argc, char** argv) {
     } else if (!diff_versions.empty()) {
       if (map_name.empty()) throw areagraph::InputError("--diff needs --map");
       if (failures || !stage.empty() || !key_prefix.empty()) {
-        throw areagraph::InputError("--diff compares two versions; drop --failures, --stage, --key");
+        throw areagraph::InputError(
+            "--diff compares two versions; drop --failures, --stage, --key");
       }
       areagraph::PrintVersionDiff(*store, map_name, diff_versions[0], diff_versions[1], thresholds,
                                   json, std::cout);

@@ -51,7 +51,8 @@ TEST(LcmMessageBounds, WalkersAgreeWithTheGeneratedEncoders) {
 
 TEST(LcmMessageDecoding, DecodesDiffsAndRejectsForgedCounts) {
   auto bytes = Encode(DiffMessage());
-  const areagraph_lcm::area_graph_diff_t diff = DecodeAreaGraphDiffMessage(bytes.data(), Size(bytes));
+  const areagraph_lcm::area_graph_diff_t diff =
+      DecodeAreaGraphDiffMessage(bytes.data(), Size(bytes));
   EXPECT_EQ(diff.version, 2);
   ASSERT_EQ(diff.changed_areas.size(), 1u);
   EXPECT_EQ(diff.changed_areas[0].area.id, 1);

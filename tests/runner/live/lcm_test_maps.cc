@@ -88,8 +88,7 @@ void MakeTwoVersions(proto::AreaGraph& first, proto::AreaGraph& second) {
   proto::Area* dead_end = grown.add_areas();
   dead_end->set_id(2);
   dead_end->set_kind(proto::AREA_DEAD_END);
-  SetRing(dead_end->mutable_polygon_m()->mutable_outer(),
-          {{3, 1.3}, {4, 1.3}, {4, 2.3}, {3, 2.3}});
+  SetRing(dead_end->mutable_polygon_m()->mutable_outer(), {{3, 1.3}, {4, 1.3}, {4, 2.3}, {3, 2.3}});
   dead_end->set_area_m2(1.0);
   dead_end->mutable_centroid_m()->set_x(3.5);
   dead_end->mutable_centroid_m()->set_y(1.8);

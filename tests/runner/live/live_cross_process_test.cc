@@ -4,13 +4,12 @@
 // reaches the host's network.
 #include <gtest/gtest.h>
 
+#include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "proto/artifacts.pb.h"
 #include "stages/common/stage.h"
@@ -208,7 +207,8 @@ TEST(LiveAcrossProcesses, IdsAndVersionsArriveAsStored) {
   ASSERT_EQ(history.size(), 2u);
   EXPECT_EQ(history[1].predecessor_key, history[0].cache_key);
   std::string live_key;
-  const auto made = ReadHeadArtifact<proto::AreaGraph>(*live_store, "robot", kMatchStage, &live_key);
+  const auto made =
+      ReadHeadArtifact<proto::AreaGraph>(*live_store, "robot", kMatchStage, &live_key);
   EXPECT_EQ(live_key, history[1].cache_key);
   const auto first = ReadArtifactAs<proto::AreaGraph>(*live_store, "robot", history[0].cache_key);
   int kept = 0;
@@ -250,7 +250,8 @@ TEST(LiveAcrossProcesses, IdsAndVersionsArriveAsStored) {
       << example;
   for (const proto::Area& area : made.areas()) {
     EXPECT_NE(example.find("  area " + std::to_string(area.stable_id()) + ": "), std::string::npos)
-        << area.stable_id() << "\n" << example;
+        << area.stable_id() << "\n"
+        << example;
   }
 }
 

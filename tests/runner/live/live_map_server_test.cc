@@ -76,11 +76,11 @@ TEST_F(LiveMapServerTest, PublishesTheGraphAndASecondIdenticalMapIsCached) {
   SendGrid("two_rooms", grid, 2);  // a new utime, the same grid
   EXPECT_EQ(server_.Serve(1000), 1);
   const std::string second = out_.str().substr(first.size());
-  EXPECT_TRUE(std::regex_match(second, std::regex("two_rooms: " + match[1].str() + " areas, " +
-                                                  match[2].str() + " passages, key " +
-                                                  match[3].str() +
-                                                  ", version 1, cached, published \\d+ ms "
-                                                  "after receipt\n")))
+  EXPECT_TRUE(
+      std::regex_match(second, std::regex("two_rooms: " + match[1].str() + " areas, " +
+                                          match[2].str() + " passages, key " + match[3].str() +
+                                          ", version 1, cached, published \\d+ ms "
+                                          "after receipt\n")))
       << second;
   EXPECT_EQ(store_->ReadArtifactSummaries("two_rooms").size(), artifacts);
   EXPECT_EQ(*store_->ReadHeadKey("two_rooms", "import"), import_key);
@@ -150,7 +150,7 @@ TEST_F(LiveMapServerTest, AFailingMapIsRecordedAndTheNextOneServed) {
 TEST_F(LiveMapServerTest, AGrowingMapKeepsItsIdsAndSendsDiffs) {
   server_.set_publish_diffs(true);
   AreaGraphListener with_diffs{publisher_.connection(), publisher_.url(), nullptr, heard_,
-                               listener_log_, /*diffs=*/true};
+                               listener_log_,           /*diffs=*/true};
   const proto::GridMap whole = ExampleGrid("corridor_rooms.png");
   proto::GridMap part = whole;
   // Unknown beyond the left 60 % of the columns.

@@ -34,7 +34,7 @@ TEST_F(AgRunTest, SecondRunIsAllCacheHits) {
   EXPECT_EQ(cold.succeeded(), 3);
   EXPECT_EQ(cold.cache_hits(), 0);
   EXPECT_EQ(cold.cache_misses(), 21);  // 3 maps, 7 stages
-  EXPECT_GT(cold.areas(), 3 * 4);  // every floor has at least 2 rooms a side and a corridor
+  EXPECT_GT(cold.areas(), 3 * 4);      // every floor has at least 2 rooms a side and a corridor
   EXPECT_EQ(cold.passages() > 0, true);
 
   const proto::RunSummary warm = RunJson(Args({}), &run);

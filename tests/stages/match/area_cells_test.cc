@@ -14,8 +14,8 @@ using testing::RectGraph;
 
 TEST(AreaCellsTest, CountsTheCellsWhoseCentresLieInside) {
   // 2 m x 1 m and its neighbour: 40 x 20 and 20 x 20 cells, none shared.
-  const AreaCells cells = RasterizeAreas(RectGraph(Frame(100, 60), {{0, 0, 2, 1}, {2, 0, 3, 1}}),
-                                         Frame(100, 60));
+  const AreaCells cells =
+      RasterizeAreas(RectGraph(Frame(100, 60), {{0, 0, 2, 1}, {2, 0, 3, 1}}), Frame(100, 60));
   EXPECT_EQ(cells.cells, (std::vector<int64_t>{800, 400}));
   int64_t in_rows = 0;
   for (const auto& row : cells.rows) {
@@ -28,8 +28,8 @@ TEST(AreaCellsTest, HolesAreLeftOutAndTheFrameClips) {
   proto::AreaGraph graph = RectGraph(Frame(100, 60), {{-1, 0, 3, 2}});
   // A 1 m x 1 m hole (clockwise or not: even-odd).
   proto::Ring* hole = graph.mutable_areas(0)->mutable_polygon_m()->add_holes();
-  for (const auto& [x, y] : std::vector<std::pair<double, double>>{{1, 1}, {1, 0.5}, {2, 0.5},
-                                                                   {2, 1.5}, {1, 1.5}}) {
+  for (const auto& [x, y] :
+       std::vector<std::pair<double, double>>{{1, 1}, {1, 0.5}, {2, 0.5}, {2, 1.5}, {1, 1.5}}) {
     proto::Point2* point = hole->add_points();
     point->set_x(x);
     point->set_y(y);

@@ -18,7 +18,9 @@ using testing::Frame;
 using testing::RectGraph;
 using Ids = std::vector<int>;
 
-Ids ToIds(const google::protobuf::RepeatedField<int32_t>& ids) { return Ids(ids.begin(), ids.end()); }
+Ids ToIds(const google::protobuf::RepeatedField<int32_t>& ids) {
+  return Ids(ids.begin(), ids.end());
+}
 
 proto::AreaGraph Next(const proto::AreaGraph& current, const proto::AreaGraph* previous) {
   VersionLink link;
@@ -84,8 +86,7 @@ TEST(AreaGraphDiffTest, ReportsSplitsMergesGrowthAndNewSpace) {
   EXPECT_NE(text.find("  - area 2 (into area 1)\n"), std::string::npos) << text;
   EXPECT_NE(text.find("  ~ area 0: split off 4, shrunk (24.0 -> 16.0 m2)\n"), std::string::npos)
       << text;
-  EXPECT_NE(text.find("  ~ area 1: took in 2, grown, passages changed"), std::string::npos)
-      << text;
+  EXPECT_NE(text.find("  ~ area 1: took in 2, grown, passages changed"), std::string::npos) << text;
 }
 
 TEST(AreaGraphDiffTest, SmallChangesStayUnderTheThresholds) {

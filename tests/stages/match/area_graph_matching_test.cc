@@ -110,8 +110,8 @@ TEST(AreaGraphMatchingTest, ASmallOverlapIsNoMatch) {
   EXPECT_EQ(AreaIds(second), (Ids{1}));
   proto::MatchOptions loose;
   loose.set_min_overlap(0.3);
-  const proto::AreaGraph with_loose = MatchAreaGraph(
-      RectGraph(Frame(200, 100), {{2.5, 0, 9, 4}}), &first, VersionLink{"k", 2}, loose);
+  const proto::AreaGraph with_loose = MatchAreaGraph(RectGraph(Frame(200, 100), {{2.5, 0, 9, 4}}),
+                                                     &first, VersionLink{"k", 2}, loose);
   EXPECT_EQ(AreaIds(with_loose), (Ids{0}));
 }
 

@@ -33,13 +33,13 @@ class HistoryCliTest : public ::testing::Test {
   void SetUp() override {
     std::filesystem::create_directory(dir_.File("maps"));
     WriteHouse(dir_.File("maps/house.png"), true);
-    ASSERT_EQ(RunTool("ag-run", {"--store", store_, "--set", "cut.room_width_m=1.25", maps()})
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        RunTool("ag-run", {"--store", store_, "--set", "cut.room_width_m=1.25", maps()}).exit_code,
+        0);
     WriteHouse(dir_.File("maps/house.png"), false);
-    ASSERT_EQ(RunTool("ag-run", {"--store", store_, "--set", "cut.room_width_m=1.25", maps()})
-                  .exit_code,
-              0);
+    ASSERT_EQ(
+        RunTool("ag-run", {"--store", store_, "--set", "cut.room_width_m=1.25", maps()}).exit_code,
+        0);
   }
   std::string maps() const { return dir_.File("maps"); }
   CommandResult Inspect(std::vector<std::string> args) {
@@ -94,8 +94,8 @@ TEST_F(HistoryCliTest, DiffSaysTheWallIsGoneAndWhichIdSurvived) {
 
   // The newest graph carries its stable ids into the exports.
   const std::string exported = dir_.File("house.json");
-  ASSERT_EQ(RunTool("ag-export", {"--store", store_, "--map", "house", "--format", "json", "--out",
-                                  exported})
+  ASSERT_EQ(RunTool("ag-export",
+                    {"--store", store_, "--map", "house", "--format", "json", "--out", exported})
                 .exit_code,
             0);
   EXPECT_NE(ReadFile(exported).find("\"stable_id\""), std::string::npos);
