@@ -130,6 +130,11 @@ areagraph_lcm::passage_t ToLcmPassage(const proto::Passage& passage, const LcmId
   lcm_passage.bx = passage.segment_m().b().x();
   lcm_passage.by = passage.segment_m().b().y();
   lcm_passage.width_m = passage.width_m();
+  for (const proto::Point2& point : passage.border_m()) {
+    lcm_passage.border_x.push_back(point.x());
+    lcm_passage.border_y.push_back(point.y());
+  }
+  lcm_passage.num_border_points = static_cast<int32_t>(lcm_passage.border_x.size());
   return lcm_passage;
 }
 
@@ -299,6 +304,11 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
     *passage->mutable_segment_m()->mutable_a() = Point(lcm_passage.ax, lcm_passage.ay);
     *passage->mutable_segment_m()->mutable_b() = Point(lcm_passage.bx, lcm_passage.by);
     passage->set_width_m(lcm_passage.width_m);
+    for (int i = 0; i < lcm_passage.num_border_points; ++i) {
+      CheckFinite(name, lcm_passage.border_x[i], what + " border x");
+      CheckFinite(name, lcm_passage.border_y[i], what + " border y");
+      *passage->add_border_m() = Point(lcm_passage.border_x[i], lcm_passage.border_y[i]);
+    }
   }
   if (message.version < 0) Reject(name, "version " + std::to_string(message.version) + " < 0");
   if (message.version > 0) {

@@ -48,7 +48,7 @@ class EncodedBytes {
     Skip(length);
   }
 
-  // ring_t: num_points, x[num_points], y[num_points].
+  // ring_t (num_points, x[num_points], y[num_points]), or any such point list.
   void SkipRing() { Skip(int64_t{Count(16)} * 16); }
 
   // area_t: id, kind, outer, holes, area_m2, centroid, passage_ids.
@@ -61,10 +61,15 @@ class EncodedBytes {
     Skip(int64_t{Count(4)} * 4);
   }
 
-  // A count and that many passage_t: three int32 ids and seven doubles.
+  // A count and that many passage_t: three int32 ids, seven doubles, and the
+  // border (num_border_points, border_x[], border_y[]).
   void SkipPassages() {
-    constexpr int kPassageBytes = 3 * 4 + 7 * 8;
-    Skip(int64_t{Count(kPassageBytes)} * kPassageBytes);
+    constexpr int kPassageFixedBytes = 3 * 4 + 7 * 8;
+    const int32_t passages = Count(kPassageFixedBytes + 4);
+    for (int32_t i = 0; ok_ && i < passages; ++i) {
+      Skip(kPassageFixedBytes);
+      SkipRing();
+    }
   }
 
  private:

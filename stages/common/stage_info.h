@@ -27,7 +27,8 @@ inline constexpr StageInfo kCutStage{"cut", 2};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
-inline constexpr StageInfo kMergeStage{"merge", 4};
+// merge 5: polygons are a simplified planar partition, passages lie on shared borders.
+inline constexpr StageInfo kMergeStage{"merge", 5};
 inline constexpr StageInfo kMatchStage{"match", 1};
 
 // Whether two StageInfos name the same stage.

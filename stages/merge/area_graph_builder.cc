@@ -4,25 +4,20 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 
 #include "common/error.h"
-#include "stages/common/map_frame.h"
 #include "stages/common/pipeline_options_check.h"
 #include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
-#include "stages/merge/passage_finder.h"
-#include "stages/merge/region_outline.h"
 
 namespace areagraph {
 namespace {
-
-// Douglas-Peucker tolerance for area outlines (px). Below half a cell, so
-// no cell centre changes sides: polygons and raster agree cell by cell.
-constexpr double kOutlineTolerancePx = 0.45;
 
 void CheckCutGraph(const proto::CutGraph& graph) {
   if (graph.edges_size() == 0) {
@@ -126,14 +121,6 @@ std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph
   return paths;
 }
 
-proto::Ring ToRing(const PointList& points, const MapTransform* transform) {
-  proto::Ring ring;
-  for (const Eigen::Vector2d& p : points) {
-    *ring.add_points() = ToProtoPoint(transform ? transform->PixelToWorld(p) : p);
-  }
-  return ring;
-}
-
 }  // namespace
 
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
@@ -177,62 +164,10 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     throw InputError("no Area Graph: no free cell lies inside the map's boundary");
   }
 
-  // Bounding box and centroid of every area, in one pass.
-  const int area_count = static_cast<int>(plan.areas.size());
-  std::vector<cv::Rect> box(area_count);
-  std::vector<Eigen::Vector2d> centre_sum(area_count, Eigen::Vector2d::Zero());
-  for (int r = 0; r < raster.labels.rows; ++r) {
-    const int* row = raster.labels.ptr<int>(r);
-    for (int c = 0; c < raster.labels.cols; ++c) {
-      if (row[c] == 0) continue;
-      const int k = row[c] - 1;
-      box[k] = box[k].area() == 0 ? cv::Rect(c, r, 1, 1) : (box[k] | cv::Rect(c, r, 1, 1));
-      centre_sum[k] += Eigen::Vector2d(c + 0.5, r + 0.5);
-    }
-  }
-
-  const MapTransform transform(map.frame());
   proto::AreaGraph out;
   out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  std::vector<int> area_id(area_count, -1);
-  for (int k = 0; k < area_count; ++k) {
-    if (raster.cell_count[k] == 0) continue;  // left out: nothing to draw
-    area_id[k] = out.areas_size();
-    proto::Area* area = out.add_areas();
-    area->set_id(area_id[k]);
-    const RegionOutline outline =
-        SimplifyOutline(TraceRegionOutline(raster.labels, k + 1, box[k]), kOutlineTolerancePx);
-    *area->mutable_polygon_px()->mutable_outer() = ToRing(outline.outer, nullptr);
-    *area->mutable_polygon_m()->mutable_outer() = ToRing(outline.outer, &transform);
-    for (const PointList& hole : outline.holes) {
-      *area->mutable_polygon_px()->add_holes() = ToRing(hole, nullptr);
-      *area->mutable_polygon_m()->add_holes() = ToRing(hole, &transform);
-    }
-    area->set_area_m2(raster.cell_count[k] * cell_m2);
-    *area->mutable_centroid_m() = ToProtoPoint(
-        transform.PixelToWorld(centre_sum[k] / static_cast<double>(raster.cell_count[k])));
-    area->set_kind(plan.areas[k].kind);
-    for (int e : plan.areas[k].edges) area->add_topology_edge_ids(graph.edges(e).id());
-  }
-
-  std::vector<int> final_area_of_edge(graph.edges_size(), -1);
-  for (int e = 0; e < graph.edges_size(); ++e)
-    final_area_of_edge[e] = area_id[plan.area_of_edge[e]];
-  for (const PassagePlan& plan_passage : FindPassages(graph, final_area_of_edge)) {
-    proto::Passage* passage = out.add_passages();
-    passage->set_id(out.passages_size() - 1);
-    passage->set_area_a(plan_passage.area_a);
-    passage->set_area_b(plan_passage.area_b);
-    *passage->mutable_point_m() = ToProtoPoint(transform.PixelToWorld(plan_passage.point));
-    *passage->mutable_segment_m()->mutable_a() =
-        ToProtoPoint(transform.PixelToWorld(plan_passage.side_a));
-    *passage->mutable_segment_m()->mutable_b() =
-        ToProtoPoint(transform.PixelToWorld(plan_passage.side_b));
-    passage->set_width_m(plan_passage.width_px * grid.resolution_m());
-    out.mutable_areas(plan_passage.area_a)->add_passage_ids(passage->id());
-    out.mutable_areas(plan_passage.area_b)->add_passage_ids(passage->id());
-  }
+  AddAreasAndPassages(graph, plan, raster, options, &out);
   if (raster_out != nullptr) *raster_out = std::move(raster);
   return out;
 }

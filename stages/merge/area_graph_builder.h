@@ -15,9 +15,10 @@ namespace areagraph {
 // merge.cover_removed_obstacles, and free space behind gaps narrower than
 // merge.grow_min_gap_m that no edge reaches stays unlabelled; areas smaller
 // than merge.min_area_m2 (and areas left without cells) fold into the
-// neighbour they share the longest border with. Every
-// area's polygon is traced along cell edges and lightly simplified; the
-// passages are where areas meet at graph vertices (FindPassages). When
+// neighbour they share the longest border with. The areas' polygons are
+// a planar partition of that raster, simplified without changing its
+// topology, and the passages (where areas meet at graph vertices) lie on the
+// borders they open (AddAreasAndPassages). When
 // `raster` is given it receives the final label image. Throws InputError for
 // an unusable CutGraph.
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,

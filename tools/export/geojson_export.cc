@@ -42,18 +42,22 @@ std::string AreaFeature(const proto::AreaGraph& graph, const proto::Area& area) 
          ",\"name\":" + JsonString(AreaName(area.id())) + "}}";
 }
 
+// The passage as a line: the border its areas share (whose points are
+// vertices of both area polygons), or the segment across the opening.
 std::string PassageFeature(const proto::Passage& passage) {
-  const proto::Segment& segment = passage.segment_m();
-  for (const double value :
-       {segment.a().x(), segment.a().y(), segment.b().x(), segment.b().y(), passage.width_m()}) {
-    if (!std::isfinite(value)) {
+  std::vector<proto::Point2> line(passage.border_m().begin(), passage.border_m().end());
+  if (line.size() < 2) line = {passage.segment_m().a(), passage.segment_m().b()};
+  std::string coordinates;
+  for (const proto::Point2& point : line) {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y()) ||
+        !std::isfinite(passage.width_m())) {
       throw InputError("passage " + std::to_string(passage.id()) +
                        " has a coordinate that is not a finite number");
     }
+    coordinates += (coordinates.empty() ? "" : ",") + Position(point);
   }
   return "{\"type\":\"Feature\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":[" +
-         Position(segment.a()) + "," + Position(segment.b()) +
-         "]},\"properties\":{\"id\":" + std::to_string(passage.id()) +
+         coordinates + "]},\"properties\":{\"id\":" + std::to_string(passage.id()) +
          ",\"kind\":\"passage\",\"width_m\":" + JsonNumber(passage.width_m()) +
          ",\"from\":" + std::to_string(passage.area_a()) +
          ",\"to\":" + std::to_string(passage.area_b()) + "}}";

@@ -1,5 +1,6 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
@@ -30,8 +31,23 @@ Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const StageInfo&
   return Canvas(cells, frame.width_px(), frame.height_px(), scale);
 }
 
+// The canvas pixels of a window "X,Y,W,H" given in map cells.
+cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
+  int x = 0, y = 0, w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &x, &y, &w, &h, &tail) != 4 || x < 0 || y < 0 ||
+      w <= 0 || h <= 0) {
+    throw InputError("--crop must be X,Y,W,H in map cells (W and H positive), got '" + text + "'");
+  }
+  const int s = scale;
+  const cv::Rect window =
+      cv::Rect(x * s, y * s, w * s, h * s) & cv::Rect(0, 0, size.width, size.height);
+  if (window.area() == 0) throw InputError("--crop '" + text + "' lies outside the map");
+  return window;
+}
+
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
-            bool doors, int width, const std::string& out) {
+            bool doors, int width, const std::string& crop, const std::string& out) {
   const StageDefinition& definition = FindStage(stage, "--stage");
   Canvas canvas = BaseCanvas(store, map, definition.info, scale);
   const MessagePtr artifact(definition.prototype->New());
@@ -42,9 +58,10 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
   }
   cv::Mat picture = canvas.image();
+  if (!crop.empty()) picture = picture(CropWindow(crop, canvas.scale(), picture.size())).clone();
   if (width > 0 && picture.cols > width) {
     const double factor = static_cast<double>(width) / picture.cols;
-    cv::resize(canvas.image(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
+    cv::resize(picture.clone(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
   }
   bool written = false;
   try {
@@ -72,11 +89,13 @@ int main(int argc, char** argv) {
                "cut.room_width_m=auto");
   app.add_option("--width", width, "shrink the picture to at most this many pixels wide");
   app.add_option("--scale", scale, "output pixels per map cell (default: about 1600 px wide)");
+  std::string crop;
+  app.add_option("--crop", crop, "draw only the window X,Y,W,H (map cells; with --scale to zoom)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
     if (scale < 0 || scale > 16) throw areagraph::InputError("--scale must be between 1 and 16");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     if (width < 0) throw areagraph::InputError("--width must be positive");
-    areagraph::Render(*store, map, stage, scale, doors, width, out);
+    areagraph::Render(*store, map, stage, scale, doors, width, crop, out);
     std::cout << "wrote " << out << "\n";
     return 0;
   });

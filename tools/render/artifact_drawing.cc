@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <string>
+#include <vector>
 
 #include "stages/common/map_frame.h"
 
@@ -105,8 +106,12 @@ void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas) {
     canvas.Outline(area.polygon_px().outer(), DistinctColour(area.id()) * 0.55, 1);
   }
   for (const proto::Passage& passage : graph.passages()) {
-    canvas.Line(ToPixel(transform, passage.segment_m().a()),
-                ToPixel(transform, passage.segment_m().b()), kPassage, 3);
+    // The shared border the passage opens, or the segment across it.
+    std::vector<proto::Point2> line(passage.border_m().begin(), passage.border_m().end());
+    if (line.size() < 2) line = {passage.segment_m().a(), passage.segment_m().b()};
+    for (size_t i = 1; i < line.size(); ++i) {
+      canvas.Line(ToPixel(transform, line[i - 1]), ToPixel(transform, line[i]), kPassage, 3);
+    }
     canvas.Dot(ToPixel(transform, passage.point_m()), kPassage, std::max(3, canvas.scale() + 1));
   }
   for (const proto::Area& area : graph.areas()) {

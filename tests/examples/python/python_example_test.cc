@@ -16,14 +16,16 @@ constexpr char kPython[] = "/usr/bin/python3";
 class PythonExampleTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const CommandResult run =
-        RunTool("ag-run", {"--store", store_, "--jobs", "1", SourcePath("examples/office_small.png"),
-                           SourcePath("examples/two_rooms.png")});
+    const CommandResult run = RunTool(
+        "ag-run", {"--store", store_, "--jobs", "1", SourcePath("examples/office_small.png"),
+                   SourcePath("examples/two_rooms.png")});
     ASSERT_EQ(run.exit_code, 0) << run.err;
   }
   CommandResult Show(std::vector<std::string> extra) const {
-    std::vector<std::string> argv = {kPython, SourcePath("examples/python/show_area_graph.py"),
-                                     "--store", store_, "--descriptors", AG_DESCRIPTOR_SET};
+    std::vector<std::string> argv = {
+        kPython,         SourcePath("examples/python/show_area_graph.py"),
+        "--store",       store_,
+        "--descriptors", AG_DESCRIPTOR_SET};
     argv.insert(argv.end(), extra.begin(), extra.end());
     return RunProgram(argv);
   }

@@ -92,6 +92,9 @@ TEST_F(AreaToolsTest, ChangingCutOptionsRerunsCutAndMergeOnly) {
 TEST_F(AreaToolsTest, BadOptionsGiveOneLine) {
   ASSERT_EQ(Run("ag-pipeline").exit_code, 0);
   ExpectOneLineError(Run("ag-merge", {"--set", "merge.min_area_m2=-1"}), "merge.min_area_m2");
+  ExpectOneLineError(Run("ag-merge", {"--set", "merge.outline_tolerance_m=-0.1"}),
+                     "merge.outline_tolerance_m must be zero or more metres");
+  ExpectOneLineError(Run("ag-merge", {"--set", "merge.min_hole_m2=nan"}), "merge.min_hole_m2");
   ExpectOneLineError(Run("ag-cut", {"--set", "cut.door_width_m=0.9"}), "set both or neither");
   ExpectOneLineError(Run("ag-prune", {"--set", "prune.min_clearance_m=-0.5"}),
                      "prune.min_clearance_m");
