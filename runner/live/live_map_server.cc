@@ -109,49 +109,50 @@ void LiveMapServer::HandleMap(const std::string& map_name, PendingGrid pending) 
   const std::string digest = LiveGridDigest(grid);
   grid.set_source_path(LiveSourcePath());
   grid.set_source_digest(digest);
-  MapImport import;
-  import.read_inputs = [&] { StageInputs inputs;
-  inputs.digests = {digest};
-  inputs.source_path = grid.source_path();
-  inputs.source_digest = digest;
-  return inputs;
-};
-import.decode = [&grid] { return std::make_unique<proto::GridMap>(grid);
-};  // namespace areagraph
-MapRunSettings settings;
-settings.publish_unchanged = true;  // every grid received gets its graph
-std::string key;
-int64_t version = 0;
-const MapOutcome outcome = RunOneMap(
-    store_, failures_, map_name, LiveSourcePath(), import, options_, settings, PipelineObserver{},
-    [&](const std::string& name, const std::string& graph_key, const proto::AreaGraph& graph) {
-      key = graph_key;
-      version = graph.version().number();
-      PublishGraph(name, graph_key, graph, pending.utime);
-    });
-const double latency_ms =
-    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pending.received)
-        .count();
-++maps_handled_;
-if (!outcome.ok) {
-  ++maps_failed_;
-  log_ << "ag-live: map '" << map_name << "' failed"
-       << (outcome.failed_step.empty() ? "" : " in " + outcome.failed_step) << ": " << outcome.error
-       << "; still serving" << std::endl;
-  if (!outcome.failure_recorded) log_ << "ag-live: cannot record the failure" << std::endl;
-  return;
-}
-std::ostringstream line;
-line << map_name << ": " << outcome.areas << " areas, " << outcome.passages << " passages, key "
-     << ShortKey(key) << ", version " << version << ", ";
-if (outcome.fully_cached) {
-  line << "cached";
-} else {
-  line << "computed " << (outcome.stages_run - outcome.cache_hits) << " of " << outcome.stages_run
-       << " stages in " << std::lround(outcome.compute_ms) << " ms";
-}
-line << ", published " << std::lround(latency_ms) << " ms after receipt";
-out_ << line.str() << std::endl;
+  MapImport map_import;
+  map_import.read_inputs = [&] {
+    StageInputs inputs;
+    inputs.digests = {digest};
+    inputs.source_path = grid.source_path();
+    inputs.source_digest = digest;
+    return inputs;
+  };
+  map_import.decode = [&grid] { return std::make_unique<proto::GridMap>(grid); };
+  MapRunSettings settings;
+  settings.publish_unchanged = true;  // every grid received gets its graph
+  std::string key;
+  int64_t version = 0;
+  const MapOutcome outcome = RunOneMap(
+      store_, failures_, map_name, LiveSourcePath(), map_import, options_, settings,
+      PipelineObserver{},
+      [&](const std::string& name, const std::string& graph_key, const proto::AreaGraph& graph) {
+        key = graph_key;
+        version = graph.version().number();
+        PublishGraph(name, graph_key, graph, pending.utime);
+      });
+  const double latency_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pending.received)
+          .count();
+  ++maps_handled_;
+  if (!outcome.ok) {
+    ++maps_failed_;
+    log_ << "ag-live: map '" << map_name << "' failed"
+         << (outcome.failed_step.empty() ? "" : " in " + outcome.failed_step) << ": "
+         << outcome.error << "; still serving" << std::endl;
+    if (!outcome.failure_recorded) log_ << "ag-live: cannot record the failure" << std::endl;
+    return;
+  }
+  std::ostringstream line;
+  line << map_name << ": " << outcome.areas << " areas, " << outcome.passages << " passages, key "
+       << ShortKey(key) << ", version " << version << ", ";
+  if (outcome.fully_cached) {
+    line << "cached";
+  } else {
+    line << "computed " << (outcome.stages_run - outcome.cache_hits) << " of " << outcome.stages_run
+         << " stages in " << std::lround(outcome.compute_ms) << " ms";
+  }
+  line << ", published " << std::lround(latency_ms) << " ms after receipt";
+  out_ << line.str() << std::endl;
 }
 
 }  // namespace areagraph

@@ -155,21 +155,21 @@ double ColdPipelineMs(const proto::GridMap& grid, const std::string& scratch_dir
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
     FailureLog failures(*store);
     const std::string digest = LiveGridDigest(grid);
-    MapImport import;
-    import.read_inputs = [&] { StageInputs inputs;
-    inputs.digests = {digest};
-    return inputs;
-  };
-  import.decode = [&] { return std::make_unique<proto::GridMap>(grid);
-};
-elapsed = ElapsedMs([&] {
-  RunOneMap(*store, failures, "cold", "", import, proto::PipelineOptions(), MapRunSettings(),
-            PipelineObserver(), nullptr);
-});
-}  // namespace
-std::remove(path.c_str());
-return elapsed;
-}  // namespace areagraph
+    MapImport map_import;
+    map_import.read_inputs = [&] {
+      StageInputs inputs;
+      inputs.digests = {digest};
+      return inputs;
+    };
+    map_import.decode = [&] { return std::make_unique<proto::GridMap>(grid); };
+    elapsed = ElapsedMs([&] {
+      RunOneMap(*store, failures, "cold", "", map_import, proto::PipelineOptions(),
+                MapRunSettings(), PipelineObserver(), nullptr);
+    });
+  }
+  std::remove(path.c_str());
+  return elapsed;
+}
 
 std::string Percent(int part, int whole) {
   if (whole == 0) return "-";

@@ -18,17 +18,16 @@ MapOutcome RunPlan(ArtifactStore& store, const std::string& map_name, const cv::
   std::vector<uchar> png;
   cv::imencode(".png", grey, png);
   source.image_bytes.assign(png.begin(), png.end());
-  MapImport import;
-  import.read_inputs = [&] { return ImportInputs(source);
-};
-import.decode = [&] {
-  return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
-};  // namespace areagraph::testing
-FailureLog failures(store);
-const MapOutcome outcome = RunOneMap(store, failures, map_name, source.image_path, import, options,
-                                     MapRunSettings(), PipelineObserver(), nullptr);
-EXPECT_TRUE(outcome.ok) << map_name << ": " << outcome.failed_step << ": " << outcome.error;
-return outcome;
+  MapImport map_import;
+  map_import.read_inputs = [&] { return ImportInputs(source); };
+  map_import.decode = [&] {
+    return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
+  };
+  FailureLog failures(store);
+  const MapOutcome outcome = RunOneMap(store, failures, map_name, source.image_path, map_import,
+                                       options, MapRunSettings(), PipelineObserver(), nullptr);
+  EXPECT_TRUE(outcome.ok) << map_name << ": " << outcome.failed_step << ": " << outcome.error;
+  return outcome;
 }
 
 proto::AreaGraph MatchedGraph(ArtifactStore& store, const std::string& map_name, std::string* key) {
