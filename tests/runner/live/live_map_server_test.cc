@@ -202,6 +202,51 @@ TEST_F(LiveMapServerTest, AGrowingMapKeepsItsIdsAndSendsDiffs) {
   EXPECT_EQ(with_diffs.graphs_received(), 3);
 }
 
+// A subscriber that starts after version 1 went out, and so never sees it,
+// gets version 2 whole: every area and passage with the ids ag-live stored,
+// whether or not it also listens to the diffs.
+TEST_F(LiveMapServerTest, ASubscriberThatJoinsLateGetsTheWholeGraph) {
+  server_.set_publish_diffs(true);
+  const proto::GridMap whole = ExampleGrid("corridor_rooms.png");
+  proto::GridMap part = whole;
+  std::string cells = part.cells();
+  const int width = whole.frame().width_px();
+  for (size_t i = 0; i < cells.size(); ++i) {
+    if (static_cast<int>(i % width) >= width / 2) cells[i] = proto::CELL_UNKNOWN;
+  }
+  part.set_cells(cells);
+  SendGrid("robot", part, 100);
+  ASSERT_EQ(server_.Serve(1000), 1);
+  DrainListener();
+
+  std::unique_ptr<ArtifactStore> late_store = OpenArtifactStore(":memory:");
+  std::ostringstream late_heard, late_log;
+  AreaGraphListener late{
+      publisher_.connection(), publisher_.url(), late_store.get(), late_heard, late_log,
+      /*diffs=*/true};
+  SendGrid("robot", whole, 200);
+  ASSERT_EQ(server_.Serve(1000), 1);
+  DrainListener();
+  ASSERT_EQ(late.graphs_received(), 1) << late_log.str();
+  EXPECT_EQ(late.diffs_received(), 1);
+  const auto made = ReadHeadArtifact<proto::AreaGraph>(*store_, "robot", kMatchStage);
+  ASSERT_EQ(made.version().number(), 2);
+  EXPECT_GE(made.areas_size(), 2);
+  const auto received = ReadHeadArtifact<proto::AreaGraph>(*late_store, "robot", kMergeStage);
+  EXPECT_EQ(received.version().number(), 2);
+  ASSERT_EQ(received.areas_size(), made.areas_size());
+  for (int i = 0; i < made.areas_size(); ++i) {
+    EXPECT_EQ(received.areas(i).stable_id(), made.areas(i).stable_id()) << i;
+    EXPECT_EQ(received.areas(i).polygon_m().outer().points_size(),
+              made.areas(i).polygon_m().outer().points_size())
+        << i;
+  }
+  ASSERT_EQ(received.passages_size(), made.passages_size());
+  for (int i = 0; i < made.passages_size(); ++i) {
+    EXPECT_EQ(received.passages(i).stable_id(), made.passages(i).stable_id()) << i;
+  }
+}
+
 TEST_F(LiveMapServerTest, HandlesOnlyTheNewestQueuedGridOfAMap) {
   SendGrid("lab", ExampleGrid("two_rooms.png"), 1);
   const proto::GridMap newer = ExampleGrid("corridor_rooms.png");
