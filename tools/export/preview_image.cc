@@ -37,8 +37,8 @@ cv::Point Scaled(double x_px, double y_px, int scale) {
 
 cv::Mat AreaGraphPreview(const proto::AreaGraph& graph) {
   const cv::Mat labels = AreaLabelImage(graph);
-  const int scale =
-      std::clamp(kMinLongSidePx / std::max(1, std::max(labels.cols, labels.rows)), 1, kMaxScale);
+  const int long_side = std::max(1, std::max(labels.cols, labels.rows));
+  const int scale = std::clamp((kMinLongSidePx + long_side - 1) / long_side, 1, kMaxScale);
   std::vector<cv::Vec3b> colours(graph.areas_size());
   cv::Mat small(labels.size(), CV_8UC3, cv::Scalar(255, 255, 255));
   std::vector<int> index_of_label(65536, -1);

@@ -19,6 +19,7 @@
 #include "store/artifact_store.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"
+#include "tools/export/geo_anchor.h"
 
 namespace areagraph {
 namespace {
@@ -125,6 +126,36 @@ TEST_F(AgExportCli, GeoJsonParsesWithClosedOrientedRings) {
   EXPECT_DOUBLE_EQ(Number(passage_properties.at("width_m")), 0.3);
   EXPECT_EQ(Number(passage_properties.at("from")), 0);
   EXPECT_EQ(Number(passage_properties.at("to")), 1);
+}
+
+TEST_F(AgExportCli, GeoJsonWithAnAnchorIsWgs84) {
+  const auto run =
+      RunTool("ag-export", {"--store", store_path_, "--map", "house", "--format", "geojson",
+                            "--out", dir_.File("map.geojson"), "--anchor-lat", "48.1",
+                            "--anchor-lon", "11.5", "--features", "passages"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  Struct collection;
+  ASSERT_TRUE(
+      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.geojson")), &collection)
+          .ok());
+  EXPECT_EQ(collection.fields().at("units").string_value(), "degrees");
+  EXPECT_EQ(collection.fields().count("crs"), 0u);
+  const auto& features = collection.fields().at("features").list_value();
+  ASSERT_EQ(features.values_size(), 1);  // the passage only
+  const auto& first = features.values(0)
+                          .struct_value()
+                          .fields()
+                          .at("geometry")
+                          .struct_value()
+                          .fields()
+                          .at("coordinates")
+                          .list_value()
+                          .values(0)
+                          .list_value();
+  // Border point (12, 4) px is world (1.6, 2.8) m: [lon, lat] as RFC 7946 orders them.
+  const LatLon expected = MetresToLatLon({48.1, 11.5}, 1.6, 2.8);
+  EXPECT_NEAR(Number(first.values(0)), expected.lon_deg, 1e-12);
+  EXPECT_NEAR(Number(first.values(1)), expected.lat_deg, 1e-12);
 }
 
 // The <way> blocks of an OSM file, in order.

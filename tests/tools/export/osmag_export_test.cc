@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <set>
@@ -79,6 +80,29 @@ TEST(OsmAgExport, WritesLevelAndHeightWhenGiven) {
   const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), settings);
   EXPECT_EQ(AllMatches(xml, "<tag k=\"level\" v=\"(-1)\"").size(), 4u);
   EXPECT_EQ(AllMatches(xml, "<tag k=\"height\" v=\"(3.250)\"").size(), 2u);
+}
+
+// Older graphs have no border_m: the passage runs along segment_m, whose ends
+// become nodes of both outlines.
+TEST(OsmAgExport, PassageWithoutBorderPutsItsEndsIntoBothOutlines) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  graph.mutable_passages(0)->clear_border_m();
+  const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  std::vector<std::vector<std::string>> ways;
+  const std::regex way("<way [^>]*>([\\s\\S]*?)</way>");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), way); it != std::sregex_iterator();
+       ++it) {
+    const std::string body = (*it)[1];
+    ways.push_back(AllMatches(body, "<nd ref=\"(-?\\d+)\"/>"));
+  }
+  ASSERT_EQ(ways.size(), 4u);     // structure, two areas, passage
+  EXPECT_EQ(ways[1].size(), 7u);  // 4 corners + 2 passage ends + the closing repeat
+  EXPECT_EQ(ways[2].size(), 7u);
+  ASSERT_EQ(ways[3].size(), 2u);
+  for (const std::string& end : ways[3]) {
+    EXPECT_EQ(std::count(ways[1].begin(), ways[1].end(), end), 1);
+    EXPECT_EQ(std::count(ways[2].begin(), ways[2].end(), end), 1);
+  }
 }
 
 TEST(OsmAgExport, EscapesTheMapName) {
