@@ -41,9 +41,12 @@ class AgExportCli : public ::testing::Test {
                    [] { return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph()); });
   }
 
-  testing::CommandResult Export(const std::string& format, const std::string& out) {
-    return RunTool("ag-export",
-                   {"--store", store_path_, "--map", "house", "--format", format, "--out", out});
+  testing::CommandResult Export(const std::string& format, const std::string& out,
+                                std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"--store",  store_path_, "--map", "house",
+                                     "--format", format,      "--out", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunTool("ag-export", args);
   }
 
   TempDir dir_;
@@ -63,6 +66,13 @@ TEST_F(AgExportCli, LabelImageHasTheMapSizeAndOneLabelPerArea) {
 
 double Number(const Value& value) { return value.number_value(); }
 
+// The JSON file at `path` as a Struct; a failure when it does not parse.
+Struct ReadJson(const std::string& path) {
+  Struct parsed;
+  EXPECT_TRUE(google::protobuf::util::JsonStringToMessage(ReadFile(path), &parsed).ok()) << path;
+  return parsed;
+}
+
 // Twice the signed area of a closed GeoJSON ring.
 double TwiceSignedArea(const google::protobuf::ListValue& ring) {
   double sum = 0;
@@ -77,10 +87,7 @@ double TwiceSignedArea(const google::protobuf::ListValue& ring) {
 TEST_F(AgExportCli, GeoJsonParsesWithClosedOrientedRings) {
   const auto run = Export("geojson", dir_.File("map.geojson"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  Struct collection;
-  ASSERT_TRUE(
-      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.geojson")), &collection)
-          .ok());
+  const Struct collection = ReadJson(dir_.File("map.geojson"));
   EXPECT_EQ(collection.fields().at("type").string_value(), "FeatureCollection");
   EXPECT_EQ(collection.fields().at("name").string_value(), "house");
   EXPECT_EQ(collection.fields().at("units").string_value(), "metres");
@@ -130,14 +137,10 @@ TEST_F(AgExportCli, GeoJsonParsesWithClosedOrientedRings) {
 
 TEST_F(AgExportCli, GeoJsonWithAnAnchorIsWgs84) {
   const auto run =
-      RunTool("ag-export", {"--store", store_path_, "--map", "house", "--format", "geojson",
-                            "--out", dir_.File("map.geojson"), "--anchor-lat", "48.1",
-                            "--anchor-lon", "11.5", "--features", "passages"});
+      Export("geojson", dir_.File("map.geojson"),
+             {"--anchor-lat", "48.1", "--anchor-lon", "11.5", "--features", "passages"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  Struct collection;
-  ASSERT_TRUE(
-      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.geojson")), &collection)
-          .ok());
+  const Struct collection = ReadJson(dir_.File("map.geojson"));
   EXPECT_EQ(collection.fields().at("units").string_value(), "degrees");
   EXPECT_EQ(collection.fields().count("crs"), 0u);
   const auto& features = collection.fields().at("features").list_value();
@@ -246,9 +249,7 @@ TEST_F(AgExportCli, ProtoJsonReadsBackAsTheSameAreaGraph) {
 TEST_F(AgExportCli, JsonIsNodeLinkWithKindNamesAsInGeoJson) {
   const auto run = Export("json", dir_.File("graph.json"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  Struct graph;
-  ASSERT_TRUE(
-      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("graph.json")), &graph).ok());
+  const Struct graph = ReadJson(dir_.File("graph.json"));
   EXPECT_FALSE(graph.fields().at("directed").bool_value());
   EXPECT_TRUE(graph.fields().at("multigraph").bool_value());
   EXPECT_EQ(graph.fields().at("graph").struct_value().fields().at("name").string_value(), "house");
