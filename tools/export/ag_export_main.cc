@@ -2,8 +2,10 @@
 // label image, a colour preview, GeoJSON, osmAG XML or JSON, or the whole run
 // as an HTML viewer.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "common/error.h"
 #include "proto/artifacts.pb.h"
@@ -15,12 +17,16 @@
 
 namespace {
 
-// Throws OptionsError when one of `options` was given but the format is not `format`.
+// Throws OptionsError when one of `options` was given but the format is none of `formats`.
 void RequireFormatFor(const CLI::App& app, const std::string& format_name,
-                      const std::string& format, std::initializer_list<const char*> options) {
+                      const std::vector<std::string>& formats,
+                      std::initializer_list<const char*> options) {
+  if (std::find(formats.begin(), formats.end(), format_name) != formats.end()) return;
   for (const char* option : options) {
-    if (app.count(option) > 0 && format_name != format) {
-      throw areagraph::OptionsError(std::string(option) + " goes with --format " + format);
+    if (app.count(option) > 0) {
+      std::string names;
+      for (const std::string& format : formats) names += (names.empty() ? "" : " or ") + format;
+      throw areagraph::OptionsError(std::string(option) + " goes with --format " + names);
     }
   }
 }
@@ -74,8 +80,9 @@ int main(int argc, char** argv) {
     if (!key.empty() || !compare_key.empty()) {
       throw areagraph::OptionsError("--key and --compare go with --format html");
     }
-    RequireFormatFor(app, format_name, "osmag", {"--level", "--height"});
-    RequireFormatFor(app, format_name, "geojson", {"--features"});
+    RequireFormatFor(app, format_name, {"osmag"}, {"--level", "--height"});
+    RequireFormatFor(app, format_name, {"geojson"}, {"--features"});
+    RequireFormatFor(app, format_name, {"geojson", "osmag"}, {"--anchor-lat", "--anchor-lon"});
     settings.format = areagraph::ParseExportFormat(format_name);
     settings.map_name = map_name;
     settings.features = areagraph::ParseGeoJsonFeatures(features);

@@ -275,6 +275,7 @@ TEST_F(AgExportCli, OptionsOfAnotherFormatAreOneLineErrors) {
        {std::vector<std::string>{"--format", "osmag", "--features", "areas"},
         {"--format", "geojson", "--level", "1"},
         {"--format", "geojson", "--anchor-lat", "40"},
+        {"--format", "json", "--anchor-lat", "40", "--anchor-lon", "8"},
         {"--format", "geojson", "--features", "doors"}}) {
     std::vector<std::string> args = {"--store", store_path_, "--map",
                                      "house",   "--out",     dir_.File("x")};
