@@ -45,10 +45,12 @@ def open_socket(url):
 
 
 class Reassembler:
-    """Turns datagrams into (channel, payload) messages."""
+    """Turns datagrams into (channel, payload) messages. Keeps one message in
+    progress per sender: a new one replaces an incomplete one, whose lost
+    fragments would never come."""
 
     def __init__(self):
-        self.partial = {}  # (sender, sequence number) -> [channel, buffer, bytes left]
+        self.partial = {}  # sender -> [sequence number, channel, buffer, bytes left]
 
     def add(self, datagram, sender):
         magic, sequence = struct.unpack_from(">II", datagram)
@@ -57,23 +59,22 @@ class Reassembler:
             return datagram[8:end].decode(), datagram[end + 1:]
         if magic != FRAGMENT_MAGIC:
             return None
-        size, offset, number, count = struct.unpack_from(">IIHH", datagram, 8)
+        size, offset, number, _ = struct.unpack_from(">IIHH", datagram, 8)
         data_start = 20
-        key = (sender, sequence)
         if number == 0:
             end = datagram.index(b"\0", 20)
-            self.partial[key] = [datagram[20:end].decode(), bytearray(size), size]
+            self.partial[sender] = [sequence, datagram[20:end].decode(), bytearray(size), size]
             data_start = end + 1
-        if key not in self.partial:
-            return None  # the first fragment was lost
-        entry = self.partial[key]
+        entry = self.partial.get(sender)
+        if entry is None or entry[0] != sequence:
+            return None  # the first fragment of this message was lost
         data = datagram[data_start:]
-        entry[1][offset:offset + len(data)] = data
-        entry[2] -= len(data)
-        if entry[2] > 0:
+        entry[2][offset:offset + len(data)] = data
+        entry[3] -= len(data)
+        if entry[3] > 0:
             return None
-        del self.partial[key]
-        return entry[0], bytes(entry[1])
+        del self.partial[sender]
+        return entry[1], bytes(entry[2])
 
 
 def print_graph(channel, graph):
