@@ -92,14 +92,23 @@ TEST_F(HistoryCliTest, DiffSaysTheWallIsGoneAndWhichIdSurvived) {
   EXPECT_NE(json.out.find("\"merged_from\": [\n    1\n   ]"), std::string::npos) << json.out;
   EXPECT_NE(json.out.find("\"map_name\": \"house\""), std::string::npos) << json.out;
 
-  // The newest graph carries its stable ids into the exports.
-  const std::string exported = dir_.File("house.json");
-  ASSERT_EQ(RunTool("ag-export",
-                    {"--store", store_, "--map", "house", "--format", "json", "--out", exported})
+  // The newest graph carries its stable ids and version into the exports:
+  // the protobuf JSON as fields, the node-link JSON as attributes.
+  const std::string message = dir_.File("house.pb.json"), node_link = dir_.File("house.json");
+  ASSERT_EQ(RunTool("ag-export", {"--store", store_, "--map", "house", "--format", "protojson",
+                                  "--out", message})
                 .exit_code,
             0);
-  EXPECT_NE(ReadFile(exported).find("\"stable_id\""), std::string::npos);
-  EXPECT_NE(ReadFile(exported).find("\"number\": \"2\""), std::string::npos);
+  EXPECT_NE(ReadFile(message).find("\"stable_id\""), std::string::npos);
+  EXPECT_NE(ReadFile(message).find("\"number\": \"2\""), std::string::npos);
+  ASSERT_EQ(RunTool("ag-export",
+                    {"--store", store_, "--map", "house", "--format", "json", "--out", node_link})
+                .exit_code,
+            0);
+  const std::string nodes = ReadFile(node_link);
+  EXPECT_NE(nodes.find("\"graph\":{\"name\":\"house\",\"version\":2,"), std::string::npos) << nodes;
+  EXPECT_NE(nodes.find("{\"id\":0,\"stable_id\":0,\"name\":\"area_0\""), std::string::npos)
+      << nodes;
 }
 
 TEST_F(HistoryCliTest, GcKeepsTheHistoryButNotTheOldGraph) {
