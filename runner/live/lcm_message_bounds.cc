@@ -5,6 +5,9 @@
 namespace areagraph {
 namespace {
 
+// LCM's type fingerprint in front of every message.
+constexpr int kFingerprintBytes = 8;
+
 // A cursor over LCM's big-endian encoding that fails (ok() == false) instead
 // of reading past the end.
 class EncodedBytes {
@@ -61,6 +64,16 @@ class EncodedBytes {
     Skip(int64_t{Count(4)} * 4);
   }
 
+  // What area_graph_t and area_graph_diff_t start with: the fingerprint,
+  // map_name, artifact_key, version and predecessor_key.
+  void SkipGraphIdentity() {
+    Skip(kFingerprintBytes);
+    SkipString();  // map_name
+    SkipString();  // artifact_key
+    Skip(8);       // version
+    SkipString();  // predecessor_key
+  }
+
   // A count and that many passage_t: three int32 ids, seven doubles, and the
   // border (num_border_points, border_x[], border_y[]).
   void SkipPassages() {
@@ -79,7 +92,6 @@ class EncodedBytes {
   bool ok_ = true;
 };
 
-constexpr int kFingerprintBytes = 8;
 // area_t without its arrays' elements: id, kind, outer ring count, num_holes,
 // area and centroid, num_passages.
 constexpr int kAreaMinBytes = 4 + 1 + 4 + 4 + 3 * 8 + 4;
@@ -97,11 +109,7 @@ int GridMapEncodedSize(const void* data, int size) {
 
 int AreaGraphEncodedSize(const void* data, int size) {
   EncodedBytes bytes(data, size);
-  bytes.Skip(kFingerprintBytes);
-  bytes.SkipString();         // map_name
-  bytes.SkipString();         // artifact_key
-  bytes.Skip(8);              // version
-  bytes.SkipString();         // predecessor_key
+  bytes.SkipGraphIdentity();
   bytes.Skip(3 * 8);          // utime, sequence, map_utime
   bytes.Skip(4 * 8 + 2 * 4);  // resolution, origin, width_px, height_px
   const int32_t areas = bytes.Count(kAreaMinBytes);
@@ -112,12 +120,8 @@ int AreaGraphEncodedSize(const void* data, int size) {
 
 int AreaGraphDiffEncodedSize(const void* data, int size) {
   EncodedBytes bytes(data, size);
-  bytes.Skip(kFingerprintBytes);
-  bytes.SkipString();  // map_name
-  bytes.SkipString();  // artifact_key
-  bytes.Skip(8);       // version
-  bytes.SkipString();  // predecessor_key
-  bytes.Skip(4 * 8);   // predecessor_version, utime, sequence, map_utime
+  bytes.SkipGraphIdentity();
+  bytes.Skip(4 * 8);  // predecessor_version, utime, sequence, map_utime
   const int32_t added = bytes.Count(kAreaMinBytes);
   for (int32_t i = 0; bytes.ok() && i < added; ++i) bytes.SkipArea();
   bytes.Skip(int64_t{bytes.Count(4)} * 4);  // removed_area_ids

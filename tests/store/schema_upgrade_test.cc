@@ -33,6 +33,14 @@ void ExpectVersion1DataIntact(ArtifactStore& store) {
   EXPECT_EQ(store.ReadHeadKey("old_map", "import"), "v1-import");
 }
 
+// The store at `path` has this build's schema version and every table.
+void ExpectCurrentSchema(const std::string& path) {
+  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
+            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
+  EXPECT_EQ(Tables(path),
+            (std::vector<std::string>{"artifacts", "failures", "heads", "maps", "versions"}));
+}
+
 TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   testing::TempDir dir;
   const std::string path = dir.File("v1.db");
@@ -40,10 +48,7 @@ TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   ASSERT_EQ(Tables(path), (std::vector<std::string>{"artifacts", "heads", "maps"}));
 
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
-  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
-            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
-  EXPECT_EQ(Tables(path),
-            (std::vector<std::string>{"artifacts", "failures", "heads", "maps", "versions"}));
+  ExpectCurrentSchema(path);
   ExpectVersion1DataIntact(*store);
   EXPECT_TRUE(store->ReadFailures().empty());
   FailureRecord failure;
@@ -96,10 +101,7 @@ TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion2KeepingItsFailures) {
   const std::string path = dir.File("v2.db");
   CreateVersion2Store(path);
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
-  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
-            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
-  EXPECT_EQ(Tables(path),
-            (std::vector<std::string>{"artifacts", "failures", "heads", "maps", "versions"}));
+  ExpectCurrentSchema(path);
   ExpectVersion1DataIntact(*store);
   const std::vector<FailureRecord> failures = store->ReadFailures();
   ASSERT_EQ(failures.size(), 1u);
