@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "store/artifact_store.h"
 #include "tests/runner/run/runner_test_support.h"
 
 namespace areagraph::testing {
@@ -102,6 +103,15 @@ TEST_F(AgRunTest, ChangedInputFileRerunsThatMapOnly) {
     EXPECT_EQ(CountOf(summary, stage).misses, 1) << stage;
     EXPECT_EQ(CountOf(summary, stage).hits, 2) << stage;
   }
+  // The changed map's graph is its second version, after the first; the
+  // others still have one.
+  const auto store = OpenArtifactStore(store_, StoreMode::kReadOnly);
+  const std::vector<VersionRecord> history = store->ReadVersions("map_12");
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_EQ(history[1].number, 2);
+  EXPECT_EQ(history[1].predecessor_key, history[0].cache_key);
+  EXPECT_TRUE(history[1].is_head);
+  EXPECT_EQ(store->ReadVersions("map_11").size(), 1u);
 }
 
 TEST_F(AgRunTest, OnlyFromAndForceRestrictTheStages) {
