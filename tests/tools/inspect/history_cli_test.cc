@@ -109,6 +109,14 @@ TEST_F(HistoryCliTest, DiffSaysTheWallIsGoneAndWhichIdSurvived) {
   EXPECT_NE(nodes.find("\"graph\":{\"name\":\"house\",\"version\":2,"), std::string::npos) << nodes;
   EXPECT_NE(nodes.find("{\"id\":0,\"stable_id\":0,\"name\":\"area_0\""), std::string::npos)
       << nodes;
+  const std::string geojson = dir_.File("house.geojson");
+  ASSERT_EQ(RunTool("ag-export",
+                    {"--store", store_, "--map", "house", "--format", "geojson", "--out", geojson})
+                .exit_code,
+            0);
+  EXPECT_NE(ReadFile(geojson).find("\"layer\":\"area\",\"area_id\":0,\"stable_id\":0,"),
+            std::string::npos)
+      << ReadFile(geojson);
 }
 
 TEST_F(HistoryCliTest, GcKeepsTheHistoryButNotTheOldGraph) {
