@@ -295,6 +295,7 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(const std::string& pa
   run(store_sql::kMergeMapSources, "updating map sources");
   run(store_sql::kMergeHeads, "copying heads");
   run(store_sql::kDropWinningHeads, "comparing heads");
+  MergeVersions(source_version);
   if (source_version >= 2) counts.failures = run(store_sql::kMergeFailures, "copying failures");
   run(store_sql::kDropOutdatedFailures, "dropping outdated failures");
   transaction.Commit();
