@@ -71,6 +71,8 @@ class SqliteArtifactStore : public ArtifactStore {
   bool HasSummaryLines() const { return schema_version_ >= 3; }
   // The versions statements need schema 4; older read-only stores have none.
   bool HasVersionsTable() const { return schema_version_ >= 4; }
+  // Schema 5 keeps a codec per payload; older read-only stores are raw.
+  bool HasPayloadCodecs() const { return schema_version_ >= 5; }
 
   std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
   SqliteTransaction BeginTransaction();

@@ -12,6 +12,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "store/digest.h"
+#include "store/payload_codec.h"
 #include "store/protobuf_wire.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
@@ -93,7 +94,10 @@ std::vector<VerifyProblem> SqliteArtifactStore::Verify(
     count.Step();
     total = count.ColumnInt64(0, "count(*)");
   }
-  SqliteStatement rows(db_, path_, store_sql::kVerifyArtifacts, "verifying the artifacts");
+  SqliteStatement rows(
+      db_, path_,
+      HasPayloadCodecs() ? store_sql::kVerifyArtifacts : store_sql::kVerifyArtifactsBeforeSchema5,
+      "verifying the artifacts");
   StatementUse use(rows);
   int64_t done = 0;
   while (rows.Step()) {  // one payload in memory at a time
@@ -122,10 +126,16 @@ void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
     if (row.ColumnInt64(2, "maps.id") == 0) {
       return report("artifact row " + std::to_string(id) + " belongs to no map");
     }
-    const std::string_view payload = row.ColumnBlobView(8, "artifacts.payload");
+    const std::string recompute = " (corrupt); recompute it with ag-" + found.stage + " --force";
+    std::string payload;
+    try {
+      payload = DecodePayload(row.ColumnBlobView(8, "artifacts.payload"),
+                              row.ColumnInt64(9, "artifacts.payload_codec"));
+    } catch (const StoreError& error) {
+      return report(error.what() + recompute);
+    }
     if (Sha256Hex(payload) != row.ColumnText(7, "artifacts.payload_digest")) {
-      return report("payload digest mismatch (corrupt); recompute it with ag-" + found.stage +
-                    " --force");
+      return report("payload digest mismatch" + recompute);
     }
     if (!IsWellFormedProtobuf(payload)) return report("payload is not protobuf wire format");
     if (std::find(file_input_stages.begin(), file_input_stages.end(), found.stage) !=
@@ -202,7 +212,7 @@ MaintenanceCounts SqliteArtifactStore::CollectGarbage() {
       const int64_t id = sizes.ColumnInt64(0, "artifacts.id");
       if (kept.count(id) > 0) continue;
       garbage.push_back(id);
-      counts.payload_bytes += sizes.ColumnInt64(1, "length(artifacts.payload)");
+      counts.payload_bytes += sizes.ColumnInt64(1, "artifacts.payload_size");
     }
   }
   SqliteStatement erase(db_, path_, store_sql::kDeleteArtifact, "deleting an artifact");
@@ -261,14 +271,18 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(int source_version) {
   };
   counts.maps = run(store_sql::kMergeMaps, "copying maps");
   {
-    SqliteStatement count(db_, path_, store_sql::kCountNewArtifacts, "merging: counting");
+    SqliteStatement count(db_, path_,
+                          source_version >= 5 ? store_sql::kCountNewArtifacts
+                                              : store_sql::kCountNewArtifactsBeforeSchema5,
+                          "merging: counting");
     StatementUse use(count);
     count.Step();
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
-  counts.artifacts = run(
-      source_version >= 3 ? store_sql::kMergeArtifacts : store_sql::kMergeArtifactsBeforeSchema3,
-      "copying artifacts");
+  counts.artifacts = run(source_version >= 5   ? store_sql::kMergeArtifacts
+                         : source_version >= 3 ? store_sql::kMergeArtifactsBeforeSchema5
+                                               : store_sql::kMergeArtifactsBeforeSchema3,
+                         "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");
   run(store_sql::kMergeMapSources, "updating map sources");
