@@ -36,9 +36,9 @@ std::string SummaryOfStored(ArtifactStore& store, const std::string& map_name,
 StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const google::protobuf::Message& options,
                          const StageInputs& inputs, const std::function<MessagePtr()>& compute,
-                         StageRun run) {
+                         StageRun run, ArtifactMemo* memo) {
   const auto start = std::chrono::steady_clock::now();
-  const MessagePtr result = compute();
+  MessagePtr result = compute();
   run.elapsed_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   run.summary = stage.summarize(*result);
@@ -59,6 +59,7 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.source_path = inputs.source_path;
   artifact.source_digest = inputs.source_digest;
   store.WriteArtifact(artifact);
+  if (memo != nullptr) memo->Keep(stage.info.name, run.cache_key, std::move(result));
   return run;
 }
 
@@ -67,7 +68,7 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
 StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
                         const StageDefinition& stage, const proto::PipelineOptions& options,
                         const StageInputs& inputs, const std::function<MessagePtr()>& compute,
-                        bool force) {
+                        bool force, ArtifactMemo* memo) {
   const google::protobuf::Message& stage_options = stage.options_of(options);
   StageRun run;
   run.cache_key = StageCacheKey(stage.info, stage_options, inputs.digests);
@@ -83,7 +84,7 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
         return run;
       }
     }
-    return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run);
+    return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run, memo);
   } catch (const MapStepError&) {
     throw;
   } catch (const std::bad_alloc&) {
@@ -95,7 +96,7 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
 
 StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const proto::PipelineOptions& options,
-                         bool force) {
+                         bool force, ArtifactMemo* memo) {
   const StageInputs inputs = HeadInputs(store, map_name, stage);
   return RunCachedStage(
       store, map_name, stage, options, inputs,
@@ -103,13 +104,19 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
         std::vector<MessagePtr> artifacts;
         std::vector<const google::protobuf::Message*> views;
         for (size_t i = 0; i < stage.inputs.size(); ++i) {
+          const google::protobuf::Message* kept =
+              memo != nullptr ? memo->Find(stage.inputs[i].name, inputs.digests[i]) : nullptr;
+          if (kept != nullptr) {
+            views.push_back(kept);
+            continue;
+          }
           artifacts.emplace_back(StageOf(stage.inputs[i]).prototype->New());
           ParseArtifact(store, map_name, inputs.digests[i], artifacts.back().get());
           views.push_back(artifacts.back().get());
         }
         return stage.compute(views, options);
       },
-      force);
+      force, memo);
 }
 
 StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name,
