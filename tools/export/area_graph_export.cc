@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/image_codecs.h"
 #include "tools/export/area_label_image.h"
 #include "tools/export/geojson_export.h"
 
@@ -38,7 +38,7 @@ namespace {
 
 std::string EncodePng(const cv::Mat& image) {
   std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode the label image as PNG");
+  if (!EncodeImage(".png", image, &bytes)) throw Error("cannot encode the label image as PNG");
   return std::string(bytes.begin(), bytes.end());
 }
 
