@@ -56,7 +56,8 @@ class AreagraphStore:
 
 def to_networkx(graph):
     """The Area Graph as an undirected networkx MultiGraph: a node per area, an edge per passage
-    (two areas may share several passages, so parallel edges are kept)."""
+    (two areas may share several passages, so parallel edges are kept). Attribute names are those
+    of `ag-export --format json` (rings here as stored, there oriented counter-clockwise)."""
     import networkx
 
     kinds = graph.DESCRIPTOR.fields_by_name["areas"].message_type.fields_by_name["kind"].enum_type
@@ -64,13 +65,20 @@ def to_networkx(graph):
     for area in graph.areas:
         result.add_node(
             area.id,
+            name="area_%d" % area.id,
             kind=KIND_NAMES.get(kinds.values_by_number[area.kind].name, "unknown"),
             area_m2=area.area_m2,
             centroid=(area.centroid_m.x, area.centroid_m.y),
-            outline=[(p.x, p.y) for p in area.polygon_m.outer.points])
+            polygon=[(p.x, p.y) for p in area.polygon_m.outer.points],
+            holes=[[(p.x, p.y) for p in hole.points] for hole in area.polygon_m.holes])
     for passage in graph.passages:
         result.add_edge(
             passage.area_a, passage.area_b, key=passage.id,
+            id=passage.id,
+            name="passage_%d" % passage.id,
             width_m=passage.width_m,
-            point=(passage.point_m.x, passage.point_m.y))
+            point=(passage.point_m.x, passage.point_m.y),
+            border=[(p.x, p.y) for p in passage.border_m] or
+            [(passage.segment_m.a.x, passage.segment_m.a.y),
+             (passage.segment_m.b.x, passage.segment_m.b.y)])
     return result
