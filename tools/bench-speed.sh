@@ -16,14 +16,15 @@
 #              and writes included,
 #   total/floor, and the peak resident memory of any process of the run.
 # The floor is the median of --floor-repeat runs inside one process.
-# Three more tables grow one map (tools/bench-speed-series.sh), each against
-# the floor of the same maps in the same run, with ag-run --jobs 1 from a new
-# store (start-up included): "scale", lab_a tiled N x N into one connected
-# map (--tiles, default 1 2 4 6 8); "clutter", rooms of N x N px with 1 %
-# random obstacle cells (--clutter-sizes, default 500 1000 2000); "render",
+# More tables (tools/bench-speed-series.sh), each against the floor of the
+# same maps in the same run, with ag-run --jobs 1 from a new store (start-up
+# included, wall and CPU time): "runs", the 16 maps one by one; "scale",
+# lab_a tiled N x N into one connected map (--tiles, default 1 2 4 6 8);
+# "clutter", rooms of N x N px with 1 % random obstacle cells
+# (--clutter-sizes, default 500 1000 2000); "render",
 # ag-render of every stage of lab_a and of lab_a tiled 2 x 2 against that
 # stage's compute time. --tables picks which tables run (default all:
-# maps scale clutter render).
+# maps runs scale clutter render).
 #
 # Usage: tools/bench-speed.sh [--runs N] [--floor-repeat R] [--build-dir DIR]
 #                             [--no-build] [--data DIR] [--tables "LIST"]
@@ -36,7 +37,7 @@ floor_repeat=5
 build_dir=build
 build=1
 data=../shared/data/areagraph/input
-tables="maps scale clutter render"
+tables="maps runs scale clutter render"
 tiles="1 2 4 6 8"
 clutter_sizes="500 1000 2000"
 while [ $# -gt 0 ]; do
@@ -48,13 +49,13 @@ while [ $# -gt 0 ]; do
     --data) data="$2"; shift 2 ;;
     --tables) tables="$2"; shift 2
       for table in $tables; do
-        case "$table" in maps|scale|clutter|render) ;; *)
-          echo "bench-speed: unknown table '$table' (maps, scale, clutter, render)" >&2; exit 2 ;;
+        case "$table" in maps|runs|scale|clutter|render) ;; *)
+          echo "bench-speed: unknown table '$table' (maps, runs, scale, clutter, render)" >&2; exit 2 ;;
         esac
       done ;;
     --tiles) tiles="$2"; shift 2 ;;
     --clutter-sizes) clutter_sizes="$2"; shift 2 ;;
-    -h|--help) sed -n '2,34p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-speed: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -247,10 +248,11 @@ series_load=$(cut -d' ' -f1-3 /proc/loadavg)
 for table in $tables; do
   case "$table" in
     maps) maps_table ;;
+    runs) runs_table ;;
     scale) scale_table ;;
     clutter) clutter_table ;;
     render) render_table ;;
-    *) echo "bench-speed: unknown table '$table' (maps, scale, clutter, render)" >&2; exit 2 ;;
+    *) echo "bench-speed: unknown table '$table'" >&2; exit 2 ;;
   esac
 done
 echo "Run of $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores; load average at the start /"

@@ -7,6 +7,7 @@
 
 #include "common/error.h"
 #include "stages/common/image_codecs.h"
+#include "stages/import/png_grey_decoder.h"
 #include "stages/import/png_header.h"
 #include "stages/import/stderr_capture.h"
 
@@ -66,7 +67,8 @@ cv::Mat DecodeGreyImage(const std::string& bytes, const std::string& path, int64
     throw InputError("'" + path + "' is not an image that OpenCV can read (PNG, PGM, BMP, ...)");
   }
 
-  cv::Mat image = DecodeQuietly(bytes, path);
+  cv::Mat image;
+  if (!DecodeCommonPngToGrey(bytes, &image)) image = DecodeQuietly(bytes, path);
   CheckPixelCount(image.cols, image.rows, max_pixels, path);
   switch (image.depth()) {
     case CV_8U:
