@@ -54,8 +54,8 @@ TEST_F(AreaToolsTest, StagesNameTheStageToRunFirst) {
 TEST_F(AreaToolsTest, PipelineRunsEveryStageOnceThenHitsTheCache) {
   const CommandResult first = Run("ag-pipeline");
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  EXPECT_EQ(CountLines(first.out), 6) << first.out;
-  for (const char* stage : {"clean", "voronoi", "prune", "cut", "merge"}) {
+  EXPECT_EQ(CountLines(first.out), 7) << first.out;
+  for (const char* stage : {"clean", "voronoi", "prune", "cut", "merge", "match"}) {
     EXPECT_NE(first.out.find(std::string(stage) + " "), std::string::npos) << stage;
   }
   EXPECT_EQ(first.out.find("cached"), std::string::npos) << first.out;
@@ -66,7 +66,7 @@ TEST_F(AreaToolsTest, PipelineRunsEveryStageOnceThenHitsTheCache) {
   EXPECT_EQ(second.out.find("computed"), std::string::npos) << second.out;
 
   // The stage tools share the pipeline's cache.
-  for (const char* tool : {"ag-prune", "ag-cut", "ag-merge"}) {
+  for (const char* tool : {"ag-prune", "ag-cut", "ag-merge", "ag-match"}) {
     const CommandResult stage = Run(tool);
     ASSERT_EQ(stage.exit_code, 0) << stage.err;
     EXPECT_EQ(CountLines(stage.out), 1) << stage.out;
@@ -81,7 +81,7 @@ TEST_F(AreaToolsTest, ChangingCutOptionsRerunsCutAndMergeOnly) {
   for (const char* cached : {"clean   cached", "voronoi cached", "prune   cached"}) {
     EXPECT_NE(rerun.out.find(cached), std::string::npos) << rerun.out;
   }
-  for (const char* computed : {"cut     computed", "merge   computed"}) {
+  for (const char* computed : {"cut     computed", "merge   computed", "match   computed"}) {
     EXPECT_NE(rerun.out.find(computed), std::string::npos) << rerun.out;
   }
   const CommandResult cut = Run("ag-cut", {"--set", "cut.room_width_m=1.0"});
@@ -95,13 +95,15 @@ TEST_F(AreaToolsTest, ChangingCutOptionsRerunsCutAndMergeOnly) {
 TEST_F(AreaToolsTest, PipelineInOneProcessWritesWhatTheStageToolsWrite) {
   const std::string one_by_one = dir_.File("one_by_one.db");
   ASSERT_EQ(RunTool("ag-import", {"--store", one_by_one, dir_.File("two_rooms.png")}).exit_code, 0);
-  for (const char* tool : {"ag-clean", "ag-voronoi", "ag-prune", "ag-cut", "ag-merge"}) {
+  const std::vector<std::string> tools = {"ag-clean", "ag-voronoi", "ag-prune",
+                                          "ag-cut",   "ag-merge",   "ag-match"};
+  for (const std::string& tool : tools) {
     const CommandResult stage = RunTool(tool, {"--store", one_by_one, "--map", "two_rooms"});
     ASSERT_EQ(stage.exit_code, 0) << tool << ": " << stage.err;
   }
   ASSERT_EQ(Run("ag-pipeline").exit_code, 0);
   const std::vector<std::string> digests = HeadDigests(store_);
-  EXPECT_EQ(digests.size(), 6u);
+  EXPECT_EQ(digests.size(), tools.size() + 1);  // and the import
   EXPECT_EQ(digests, HeadDigests(one_by_one));
 }
 
