@@ -5,10 +5,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <opencv2/imgcodecs.hpp>
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/image_codecs.h"
 #include "tools/export/area_label_image.h"
 #include "tools/export/node_link_json.h"
 #include "tools/export/osmag_export.h"
@@ -42,7 +42,7 @@ namespace {
 
 std::string EncodePng(const cv::Mat& image) {
   std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode the image as PNG");
+  if (!EncodeImage(".png", image, &bytes)) throw Error("cannot encode the image as PNG");
   return std::string(bytes.begin(), bytes.end());
 }
 

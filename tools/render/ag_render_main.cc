@@ -1,12 +1,14 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the IMWRITE_ flags
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
+#include "stages/common/image_codecs.h"
 #include "stages/common/stage.h"
 #include "tools/render/artifact_drawing.h"
 
@@ -63,10 +65,18 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     const double factor = static_cast<double>(width) / picture.cols;
     cv::resize(picture.clone(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
   }
+  std::vector<uchar> png;
   bool written = false;
   try {
-    written = cv::imwrite(out, picture, {cv::IMWRITE_PNG_COMPRESSION, 9});
+    written = EncodeImage(".png", picture, &png, {cv::IMWRITE_PNG_COMPRESSION, 9});
   } catch (const cv::Exception&) {
+  }
+  if (written) {
+    std::ofstream file(out, std::ios::binary | std::ios::trunc);
+    written = static_cast<bool>(file.write(reinterpret_cast<const char*>(png.data()),
+                                           static_cast<std::streamsize>(png.size())));
+    file.close();
+    written = written && !file.fail();
   }
   if (!written) throw InputError("cannot write PNG '" + out + "'");
 }
