@@ -13,6 +13,7 @@
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/region_outline.h"
+#include "stages/merge/room_joining.h"
 #include "store/error.h"
 
 namespace areagraph {
@@ -157,6 +158,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
 
   AreaPlan plan = AssignAreas(graph);
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
+  if (options.join_rooms_without_doors()) JoinRoomsWithoutDoors(graph, grid.resolution_m(), &plan);
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
   std::vector<std::vector<PointList>> paths(plan.areas.size());
