@@ -32,6 +32,9 @@ struct ArtifactRecord {
   std::string payload_digest;
   std::string created_at;  // UTC, ISO 8601
   double elapsed_ms = 0;
+  // One line about the artifact's content, written by its stage; empty for
+  // artifacts stored before schema 3.
+  std::string summary_line;
   bool is_head = false;
 };
 
@@ -47,6 +50,7 @@ struct NewArtifact {
   std::string proto_type;
   std::string payload;
   double elapsed_ms = 0;
+  std::string summary_line;
   // Only ag-import sets these; they update the map row.
   std::optional<std::string> source_path;
   std::optional<std::string> source_digest;
@@ -97,6 +101,9 @@ class ArtifactStore {
                                                  const std::string& stage) = 0;
   // All artifacts of a map without payloads, oldest first.
   virtual std::vector<ArtifactRecord> ReadArtifactSummaries(const std::string& map_name) = 0;
+  // One artifact without its payload; nullopt when absent.
+  virtual std::optional<ArtifactRecord> ReadArtifactSummary(const std::string& map_name,
+                                                            const std::string& cache_key) = 0;
 
   // Inserts the artifact (creating the map row if needed) and makes it the
   // head of its (map, stage), all in one transaction. Writing a key that the
@@ -119,9 +126,11 @@ class ArtifactStore {
   // checks its digest and that it is well-formed protobuf wire format (the
   // store does not know the message types); it also checks that every head
   // points at an artifact of its own map and stage, and that every input key
-  // of a non-import artifact names an artifact of the same map (an import's
-  // input is a file digest). `progress` hears (done, total) after each artifact.
+  // names an artifact of the same map, except for artifacts of
+  // `file_input_stages`, whose input is the digest of a file. `progress` hears
+  // (done, total) after each artifact.
   virtual std::vector<VerifyProblem> Verify(
+      const std::vector<std::string>& file_input_stages,
       const std::function<void(int64_t, int64_t)>& progress = nullptr) = 0;
   // Deletes artifacts that no head reaches, directly or through input keys
   // (followed within the map), and then maps left without any artifact, in
@@ -148,8 +157,9 @@ std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path,
                                                  StoreMode mode = StoreMode::kReadWrite);
 
 // The schema version this build writes and the newest it reads. 2 added the
-// failures table; a version-1 store is upgraded when opened read-write, and
-// read as it is (without failures) when opened read-only.
-constexpr int kStoreSchemaVersion = 2;
+// failures table, 3 the artifacts' summary line. An older store is upgraded
+// when opened read-write, and read as it is (without failures or summary
+// lines) when opened read-only.
+constexpr int kStoreSchemaVersion = 3;
 
 }  // namespace areagraph

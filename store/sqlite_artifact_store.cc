@@ -10,13 +10,13 @@
 #include <thread>
 #include <utility>
 
+#include "common/error.h"
+#include "common/text.h"
 #include "store/digest.h"
-#include "store/error.h"
 #include "store/sqlite_store_sql.h"
 
 namespace areagraph {
 
-using store_internal::ShortKey;
 using store_internal::SplitLines;
 
 namespace store_internal {
@@ -161,6 +161,9 @@ void SqliteArtifactStore::CreateOrUpgradeSchema() {
     CreateHeadsTable();
   }
   if (version < 2) Exec(store_sql::kCreateFailuresTable, "creating the failures table");
+  if (version >= 1 && version < 3) {
+    Exec(store_sql::kAddArtifactSummaryColumn, "adding the artifacts' summary column");
+  }
   if (version < kStoreSchemaVersion) {
     Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
          "setting the schema version");
@@ -186,14 +189,26 @@ void SqliteArtifactStore::CreateHeadsTable() {
 void SqliteArtifactStore::PrepareStatements() {
   sql_stmt_read_all_maps_ = Prepare(store_sql::kReadAllMaps, "reading the maps");
   sql_stmt_read_map_ = Prepare(store_sql::kReadMap, "reading a map");
-  sql_stmt_read_artifact_ = Prepare(store_sql::kReadArtifact, "reading an artifact");
-  sql_stmt_read_head_ = Prepare(store_sql::kReadHead, "reading a head artifact");
+  const bool summaries = HasSummaryLines();
+  sql_stmt_read_artifact_ =
+      Prepare(summaries ? store_sql::kReadArtifact : store_sql::kReadArtifactBeforeSchema3,
+              "reading an artifact");
+  sql_stmt_read_head_ =
+      Prepare(summaries ? store_sql::kReadHead : store_sql::kReadHeadBeforeSchema3,
+              "reading a head artifact");
   sql_stmt_read_artifact_summaries_ =
-      Prepare(store_sql::kReadArtifactSummaries, "listing the artifacts of a map");
+      Prepare(summaries ? store_sql::kReadArtifactSummaries
+                        : store_sql::kReadArtifactSummariesBeforeSchema3,
+              "listing the artifacts of a map");
+  sql_stmt_read_artifact_summary_ = Prepare(
+      summaries ? store_sql::kReadArtifactSummary : store_sql::kReadArtifactSummaryBeforeSchema3,
+      "reading an artifact");
   sql_stmt_read_artifact_ref_ = Prepare(store_sql::kReadArtifactRef, "finding an artifact");
   sql_stmt_read_artifact_id_ = Prepare(store_sql::kReadArtifactId, "finding an artifact");
   sql_stmt_upsert_map_ = Prepare(store_sql::kUpsertMap, "writing a map");
-  sql_stmt_upsert_artifact_ = Prepare(store_sql::kUpsertArtifact, "writing an artifact");
+  if (HasSummaryLines()) {  // an older store is only ever read
+    sql_stmt_upsert_artifact_ = Prepare(store_sql::kUpsertArtifact, "writing an artifact");
+  }
   sql_stmt_write_head_ = Prepare(store_sql::kWriteHead, "writing a head");
   sql_stmt_has_artifact_ = Prepare(store_sql::kHasArtifact, "looking up an artifact");
   sql_stmt_read_head_key_ = Prepare(store_sql::kReadHeadKey, "looking up a head");
@@ -237,11 +252,12 @@ ArtifactRecord SqliteArtifactStore::ReadArtifactRow(const SqliteStatement& state
   artifact.created_at = statement.ColumnText(7, "artifacts.created_at");
   artifact.elapsed_ms = statement.ColumnDouble(8, "artifacts.elapsed_ms");
   artifact.is_head = statement.ColumnInt64(9, "heads.artifact_id") != 0;
+  artifact.summary_line = statement.ColumnText(10, "artifacts.summary");
   if (!with_payload) {
-    artifact.payload_bytes = statement.ColumnInt64(10, "length(artifacts.payload)");
+    artifact.payload_bytes = statement.ColumnInt64(11, "length(artifacts.payload)");
     return artifact;
   }
-  artifact.payload = statement.ColumnBlob(10, "artifacts.payload");
+  artifact.payload = statement.ColumnBlob(11, "artifacts.payload");
   artifact.payload_bytes = static_cast<int64_t>(artifact.payload.size());
   if (Sha256Hex(artifact.payload) != artifact.payload_digest) {
     throw StoreError("artifact " + ShortKey(artifact.cache_key) + " of map '" + map_name +
@@ -296,7 +312,21 @@ std::vector<ArtifactRecord> SqliteArtifactStore::ReadArtifactSummaries(
   return summaries;
 }
 
+std::optional<ArtifactRecord> SqliteArtifactStore::ReadArtifactSummary(
+    const std::string& map_name, const std::string& cache_key) {
+  SqliteStatement& statement = *sql_stmt_read_artifact_summary_;
+  StatementUse use(statement);
+  statement.BindText(1, map_name);
+  statement.BindText(2, cache_key);
+  if (!statement.Step()) return std::nullopt;
+  return ReadArtifactRow(statement, map_name, /*with_payload=*/false);
+}
+
 void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
+  if (!sql_stmt_upsert_artifact_) {
+    throw StoreError("store '" + path_ + "' has schema version " + std::to_string(schema_version_) +
+                     "; open it for writing to upgrade it");
+  }
   for (const std::string& key : artifact.input_keys) {
     if (key.find('\n') != std::string::npos) {
       throw StoreError("input key of a " + artifact.stage + " artifact contains a line break");
@@ -333,6 +363,7 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     insert.BindBlob(8, artifact.payload);
     insert.BindText(9, payload_digest);
     insert.BindDouble(10, artifact.elapsed_ms);
+    insert.BindText(11, artifact.summary_line);
     insert.Step();
   }
   int64_t artifact_id = 0;

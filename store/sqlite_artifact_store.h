@@ -27,6 +27,8 @@ class SqliteArtifactStore : public ArtifactStore {
   std::optional<ArtifactRecord> ReadHead(const std::string& map_name,
                                          const std::string& stage) override;
   std::vector<ArtifactRecord> ReadArtifactSummaries(const std::string& map_name) override;
+  std::optional<ArtifactRecord> ReadArtifactSummary(const std::string& map_name,
+                                                    const std::string& cache_key) override;
   void WriteArtifact(const NewArtifact& artifact) override;
   void UpdateHead(const std::string& map_name, const std::string& cache_key) override;
 
@@ -38,7 +40,8 @@ class SqliteArtifactStore : public ArtifactStore {
   void ClearFailure(const std::string& map_name) override;
   std::vector<FailureRecord> ReadFailures() override;
 
-  std::vector<VerifyProblem> Verify(const std::function<void(int64_t, int64_t)>& progress) override;
+  std::vector<VerifyProblem> Verify(const std::vector<std::string>& file_input_stages,
+                                    const std::function<void(int64_t, int64_t)>& progress) override;
   MaintenanceCounts CollectGarbage() override;
   MaintenanceCounts MergeFrom(const std::string& path) override;
 
@@ -60,6 +63,7 @@ class SqliteArtifactStore : public ArtifactStore {
   void PrepareStatements();
   // The failures statements need schema 2; a read-only version-1 store has none.
   bool HasFailuresTable() const { return schema_version_ >= 2; }
+  bool HasSummaryLines() const { return schema_version_ >= 3; }
 
   std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
   SqliteTransaction BeginTransaction();
@@ -71,7 +75,8 @@ class SqliteArtifactStore : public ArtifactStore {
   void WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id);
 
   // Maintenance helpers (sqlite_store_maintenance.cc).
-  void CheckArtifactRow(SqliteStatement& row, std::vector<VerifyProblem>& problems);
+  void CheckArtifactRow(SqliteStatement& row, const std::vector<std::string>& file_input_stages,
+                        std::vector<VerifyProblem>& problems);
   void FindBrokenHeads(std::vector<VerifyProblem>& problems);
   void CheckCanMergeFrom(const std::string& path);
   MaintenanceCounts CopyFromMergeSource(int source_version);
@@ -89,6 +94,8 @@ class SqliteArtifactStore : public ArtifactStore {
   std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_;
   std::unique_ptr<SqliteStatement> sql_stmt_read_head_;
   std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summaries_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summary_;
+  // Null for a store older than schema 3, which is opened read-only.
   std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_ref_;
   std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_id_;
   std::unique_ptr<SqliteStatement> sql_stmt_upsert_map_;
@@ -103,9 +110,6 @@ class SqliteArtifactStore : public ArtifactStore {
 };
 
 namespace store_internal {
-
-// The first characters of a cache key, enough to tell artifacts apart in messages.
-inline std::string ShortKey(const std::string& cache_key) { return cache_key.substr(0, 12); }
 
 // Input keys are stored newline-joined.
 std::vector<std::string> SplitLines(const std::string& joined);

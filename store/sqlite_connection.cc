@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {
@@ -80,8 +80,6 @@ void SqliteStatement::BindInt64(int index, int64_t value) {
 void SqliteStatement::BindDouble(int index, double value) {
   Check(sqlite3_bind_double(stmt_, index, value));
 }
-
-void SqliteStatement::BindNull(int index) { Check(sqlite3_bind_null(stmt_, index)); }
 
 bool SqliteStatement::Step() {
   const int rc = sqlite3_step(stmt_);

@@ -31,7 +31,6 @@ class SqliteStatement {
   void BindBlob(int index, std::string_view bytes);
   void BindInt64(int index, int64_t value);
   void BindDouble(int index, double value);
-  void BindNull(int index);
 
   // Runs the statement one step: true when a row is ready, false when done.
   bool Step();

@@ -9,8 +9,9 @@
 #include <filesystem>
 #include <unordered_set>
 
+#include "common/error.h"
+#include "common/text.h"
 #include "store/digest.h"
-#include "store/error.h"
 #include "store/protobuf_wire.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
@@ -18,7 +19,6 @@
 
 namespace areagraph {
 
-using store_internal::ShortKey;
 using store_internal::SplitLines;
 
 namespace {
@@ -82,6 +82,7 @@ int64_t Run(sqlite3* db, const std::string& store_path, const char* sql,
 }  // namespace
 
 std::vector<VerifyProblem> SqliteArtifactStore::Verify(
+    const std::vector<std::string>& file_input_stages,
     const std::function<void(int64_t, int64_t)>& progress) {
   std::vector<VerifyProblem> problems;
   ReadSnapshot snapshot(db_, path_);
@@ -96,7 +97,7 @@ std::vector<VerifyProblem> SqliteArtifactStore::Verify(
   StatementUse use(rows);
   int64_t done = 0;
   while (rows.Step()) {  // one payload in memory at a time
-    CheckArtifactRow(rows, problems);
+    CheckArtifactRow(rows, file_input_stages, problems);
     ++done;
     if (progress) progress(done, std::max(total, done));
   }
@@ -105,6 +106,7 @@ std::vector<VerifyProblem> SqliteArtifactStore::Verify(
 }
 
 void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
+                                           const std::vector<std::string>& file_input_stages,
                                            std::vector<VerifyProblem>& problems) {
   VerifyProblem found;
   const auto report = [&](const std::string& problem) {
@@ -126,7 +128,10 @@ void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
                     " --force");
     }
     if (!IsWellFormedProtobuf(payload)) return report("payload is not protobuf wire format");
-    if (found.stage == "import") return;  // its input is the digest of a file, not an artifact
+    if (std::find(file_input_stages.begin(), file_input_stages.end(), found.stage) !=
+        file_input_stages.end()) {
+      return;  // its input is the digest of a file, not an artifact
+    }
     for (const std::string& key : SplitLines(row.ColumnText(6, "artifacts.input_keys"))) {
       StatementUse use_lookup(*sql_stmt_read_artifact_id_);
       sql_stmt_read_artifact_id_->BindInt64(1, map_id);
@@ -261,7 +266,9 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(int source_version) {
     count.Step();
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
-  counts.artifacts = run(store_sql::kMergeArtifacts, "copying artifacts");
+  counts.artifacts = run(
+      source_version >= 3 ? store_sql::kMergeArtifacts : store_sql::kMergeArtifactsBeforeSchema3,
+      "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");
   run(store_sql::kMergeMapSources, "updating map sources");

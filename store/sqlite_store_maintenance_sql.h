@@ -63,17 +63,21 @@ JOIN main.maps mm ON mm.name = sm.name
 WHERE NOT EXISTS (
   SELECT 1 FROM main.artifacts ma WHERE ma.map_id = mm.id AND ma.cache_key = sa.cache_key))sql";
 
-// Copies rows verbatim, creation time included; an existing key is kept.
-inline constexpr char kMergeArtifacts[] = R"sql(
-INSERT INTO main.artifacts (map_id, stage, cache_key, input_keys, options, stage_version,
-                            proto_type, payload, payload_digest, created_at, elapsed_ms)
-SELECT mm.id, sa.stage, sa.cache_key, sa.input_keys, sa.options, sa.stage_version,
-       sa.proto_type, sa.payload, sa.payload_digest, sa.created_at, sa.elapsed_ms
-FROM merge_source.artifacts sa
-JOIN merge_source.maps sm ON sm.id = sa.map_id
-JOIN main.maps mm ON mm.name = sm.name
-WHERE true
-ON CONFLICT (map_id, cache_key) DO NOTHING)sql";
+// Copies rows verbatim, creation time included; an existing key is kept. A
+// source older than schema 3 has no summary lines.
+#define AG_MERGE_ARTIFACTS(summary)                                                           \
+  "INSERT INTO main.artifacts (map_id, stage, cache_key, input_keys, options, stage_version," \
+  " proto_type, payload, payload_digest, created_at, elapsed_ms, summary)"                    \
+  " SELECT mm.id, sa.stage, sa.cache_key, sa.input_keys, sa.options, sa.stage_version,"       \
+  " sa.proto_type, sa.payload, sa.payload_digest, sa.created_at, sa.elapsed_ms, " summary     \
+  " FROM merge_source.artifacts sa"                                                           \
+  " JOIN merge_source.maps sm ON sm.id = sa.map_id"                                           \
+  " JOIN main.maps mm ON mm.name = sm.name"                                                   \
+  " WHERE true"                                                                               \
+  " ON CONFLICT (map_id, cache_key) DO NOTHING"
+inline constexpr char kMergeArtifacts[] = AG_MERGE_ARTIFACTS("sa.summary");
+inline constexpr char kMergeArtifactsBeforeSchema3[] = AG_MERGE_ARTIFACTS("''");
+#undef AG_MERGE_ARTIFACTS
 
 // The source's heads that win, as ids of this store: where this store has no
 // head for (map, stage), or its head artifact was created earlier than the

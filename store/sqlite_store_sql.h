@@ -30,8 +30,14 @@ CREATE TABLE IF NOT EXISTS artifacts (
   payload_digest TEXT NOT NULL,
   created_at TEXT NOT NULL,
   elapsed_ms REAL NOT NULL,
+  summary TEXT NOT NULL DEFAULT '',
   UNIQUE (map_id, cache_key))
 )sql";
+
+// Schema 3: the stage's one-line summary of each artifact, so that a cache hit
+// can print it without reading the payload.
+inline constexpr char kAddArtifactSummaryColumn[] =
+    "ALTER TABLE artifacts ADD COLUMN summary TEXT NOT NULL DEFAULT ''";
 
 // Listing a map's artifacts oldest first reads this index in order.
 inline constexpr char kCreateArtifactsByTimeIndex[] = R"sql(
@@ -71,31 +77,51 @@ inline constexpr char kReadAllMaps[] =
 inline constexpr char kReadMap[] =
     "SELECT id, name, source_path, source_digest FROM maps WHERE name = ?1";
 
-// Artifact reads share their first columns; see ReadArtifactRow.
-#define AG_ARTIFACT_COLUMNS                                                        \
+// Artifact reads share their first columns; see ReadArtifactRow. Each comes
+// in two forms: for schema 3 and later, and for older stores opened read-only,
+// whose artifacts have no summary column.
+#define AG_ARTIFACT_COLUMNS(summary)                                               \
   "a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type, " \
-  "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL"
+  "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL, " summary
 #define AG_JOIN_HEAD_OF_ARTIFACT \
   " LEFT JOIN heads h ON h.map_id = a.map_id AND h.stage = a.stage AND h.artifact_id = a.id"
-
-inline constexpr char kReadArtifact[] =
-    "SELECT " AG_ARTIFACT_COLUMNS
-    ", a.payload FROM maps m JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT
-    " WHERE m.name = ?1 AND a.cache_key = ?2";
-inline constexpr char kReadHead[] =
-    "SELECT " AG_ARTIFACT_COLUMNS
-    ", a.payload FROM maps m"
-    " JOIN heads h ON h.map_id = m.id JOIN artifacts a ON a.id = h.artifact_id"
-    " WHERE m.name = ?1 AND h.stage = ?2";
+#define AG_READ_ARTIFACT(summary) \
+  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", a.payload FROM maps m"                         \
+                                         " JOIN artifacts a ON a.map_id = m.id"            \
+                                         AG_JOIN_HEAD_OF_ARTIFACT                          \
+                                         " WHERE m.name = ?1 AND a.cache_key = ?2"
+#define AG_READ_HEAD(summary) \
+  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", a.payload FROM maps m"                         \
+                                         " JOIN heads h ON h.map_id = m.id"                \
+                                         " JOIN artifacts a ON a.id = h.artifact_id"       \
+                                         " WHERE m.name = ?1 AND h.stage = ?2"
 // length() reads the BLOB's size from its header without loading the payload.
-inline constexpr char kReadArtifactSummaries[] =
-    "SELECT " AG_ARTIFACT_COLUMNS
-    ", length(a.payload) FROM maps m"
-    " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT
-    " WHERE m.name = ?1 ORDER BY a.created_at, a.id";
+#define AG_READ_ARTIFACT_SUMMARIES(summary) \
+  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", length(a.payload) FROM maps m"                 \
+                                         " JOIN artifacts a ON a.map_id = m.id"            \
+                                         AG_JOIN_HEAD_OF_ARTIFACT                          \
+                                         " WHERE m.name = ?1 ORDER BY a.created_at, a.id"
+#define AG_READ_ARTIFACT_SUMMARY(summary) \
+  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", length(a.payload) FROM maps m"                 \
+                                         " JOIN artifacts a ON a.map_id = m.id"            \
+                                         AG_JOIN_HEAD_OF_ARTIFACT                          \
+                                         " WHERE m.name = ?1 AND a.cache_key = ?2"
+
+inline constexpr char kReadArtifact[] = AG_READ_ARTIFACT("a.summary");
+inline constexpr char kReadHead[] = AG_READ_HEAD("a.summary");
+inline constexpr char kReadArtifactSummaries[] = AG_READ_ARTIFACT_SUMMARIES("a.summary");
+inline constexpr char kReadArtifactSummary[] = AG_READ_ARTIFACT_SUMMARY("a.summary");
+inline constexpr char kReadArtifactBeforeSchema3[] = AG_READ_ARTIFACT("''");
+inline constexpr char kReadHeadBeforeSchema3[] = AG_READ_HEAD("''");
+inline constexpr char kReadArtifactSummariesBeforeSchema3[] = AG_READ_ARTIFACT_SUMMARIES("''");
+inline constexpr char kReadArtifactSummaryBeforeSchema3[] = AG_READ_ARTIFACT_SUMMARY("''");
 
 #undef AG_ARTIFACT_COLUMNS
 #undef AG_JOIN_HEAD_OF_ARTIFACT
+#undef AG_READ_ARTIFACT
+#undef AG_READ_HEAD
+#undef AG_READ_ARTIFACT_SUMMARIES
+#undef AG_READ_ARTIFACT_SUMMARY
 
 // The parts of an artifact that UpdateHead needs.
 inline constexpr char kReadArtifactRef[] =
@@ -112,13 +138,14 @@ ON CONFLICT (name) DO UPDATE SET
 // pointing at it stay valid.
 inline constexpr char kUpsertArtifact[] = R"sql(
 INSERT INTO artifacts (map_id, stage, cache_key, input_keys, options, stage_version, proto_type,
-                       payload, payload_digest, created_at, elapsed_ms)
-VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?10)
+                       payload, payload_digest, created_at, elapsed_ms, summary)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?10, ?11)
 ON CONFLICT (map_id, cache_key) DO UPDATE SET
   stage = excluded.stage, input_keys = excluded.input_keys, options = excluded.options,
   stage_version = excluded.stage_version, proto_type = excluded.proto_type,
   payload = excluded.payload, payload_digest = excluded.payload_digest,
-  created_at = excluded.created_at, elapsed_ms = excluded.elapsed_ms)sql";
+  created_at = excluded.created_at, elapsed_ms = excluded.elapsed_ms,
+  summary = excluded.summary)sql";
 
 inline constexpr char kReadArtifactId[] =
     "SELECT id FROM artifacts WHERE map_id = ?1 AND cache_key = ?2";

@@ -18,36 +18,22 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+bench_name=bench-collection
+bench_help_lines=2,18
+source tools/bench-common.sh
 maps=1000
 cold_runs=2
 warm_runs=3
-build_dir=build
-build=1
-work=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --maps) maps="$2"; shift 2 ;;
     --cold-runs) cold_runs="$2"; shift 2 ;;
     --warm-runs) warm_runs="$2"; shift 2 ;;
-    --build-dir) build_dir="$2"; shift 2 ;;
-    --work) work="$2"; shift 2 ;;
-    --no-build) build=0; shift ;;
-    -h|--help) sed -n '2,18p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
-    *) echo "bench-collection: unknown argument '$1' (see --help)" >&2; exit 2 ;;
+    *) bench_option "$@"; shift "$bench_shift" ;;
   esac
 done
-if [ "$build" = 1 ]; then
-  tools/install-deps.sh >&2
-  cmake -S . -B "$build_dir" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build_dir" -j "$(nproc)" --target ag-run ag-make-collection >&2
-fi
-bin="$build_dir/bin"
-if [ -z "$work" ]; then
-  work="$(mktemp -d)"
-  trap 'rm -rf "$work"' EXIT
-fi
+bench_prepare ag-run ag-make-collection
 
-say() { echo "bench-collection: $*" >&2; }
 now() { date +%s.%N; }
 # Seconds taken by one ag-run (stdout and stderr dropped; a failure stops the bench).
 timed_run() {
@@ -58,7 +44,6 @@ timed_run() {
   end=$(now)
   awk -v a="$start" -v b="$end" 'BEGIN {printf "%.3f\n", b - a}'
 }
-median() { sort -g | awk '{v[NR]=$1} END {print (NR%2) ? v[(NR+1)/2] : (v[NR/2]+v[NR/2+1])/2}'; }
 store_mb() { du -cm "$1" "$1"-wal 2>/dev/null | tail -1 | cut -f1; }
 
 say "writing $maps maps to $work/maps"

@@ -8,12 +8,20 @@ PACKAGES=(
   libcgal-dev libeigen3-dev
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libprotobuf-dev protobuf-compiler
-  libsqlite3-dev sqlite3
+  libsqlite3-dev sqlite3 libzstd-dev
   libssl-dev libyaml-cpp-dev libcli11-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
+  python3-protobuf python3-networkx  # examples/python and its test
+  # Test dependencies: ag-export's files opened with the users' own tools
+  # (tests/tools/export/ecosystem_test.cc): GDAL's ogr2ogr/ogrinfo, shapely.
+  gdal-bin python3-shapely
+  chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
+  # Test dependencies: the one-node Slurm cluster of tools/slurm-local.sh, on
+  # which tests/examples/cluster runs examples/cluster's Slurm scripts.
+  slurm-wlm munge
 )
 
 missing=()
@@ -30,6 +38,6 @@ fi
 
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
-echo "install-deps: installing ${missing[*]}"
+echo "install-deps: installing ${#missing[@]} Debian packages (on a fresh machine about 5 minutes): ${missing[*]}"
 $SUDO apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -21,7 +21,7 @@ const char* KindName(int8_t kind) {
     case areagraph_lcm::area_t::CORRIDOR:
       return "corridor";
     case areagraph_lcm::area_t::DEAD_END:
-      return "dead end";
+      return "dead_end";
     default:
       return "unknown";
   }

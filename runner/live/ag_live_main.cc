@@ -4,19 +4,19 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/live_map_server.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
 
 struct LiveFlags {
-  std::string url = kDefaultLcmUrl;
+  std::string url;
   StageCommandLine stage;
   ServeLimits limits;
 };
@@ -57,8 +57,7 @@ int main(int argc, char** argv) {
       "(area_graph_t) on AREA_GRAPH. Malformed messages and failing maps are reported on stderr "
       "and skipped. Stops on SIGINT or SIGTERM after the map in hand."};
   LiveFlags flags;
-  app.add_option("--url", flags.url, "LCM URL; udpm must keep ttl=0 (traffic stays on the host)")
-      ->capture_default_str();
+  AddLcmUrlFlag(app, flags.url);
   app.add_option("--store", flags.stage.store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--options", flags.stage.options_file,
                  "PipelineOptions in protobuf text format (see examples/options/)");

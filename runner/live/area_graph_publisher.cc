@@ -1,8 +1,8 @@
 #include "runner/live/area_graph_publisher.h"
 
+#include "common/error.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
-#include "store/error.h"
 
 namespace areagraph {
 

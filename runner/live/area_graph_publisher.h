@@ -5,11 +5,10 @@
 #include <string>
 
 #include "proto/artifacts.pb.h"
+#include "runner/live/lcm_connection.h"
 
 namespace areagraph {
 
-// The default LCM URL: UDP multicast with ttl=0, so nothing leaves the host.
-inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:7667?ttl=0";
 // Channel of finished Area Graphs (area_graph_t).
 inline constexpr char kAreaGraphChannel[] = "AREA_GRAPH";
 // Channel of live occupancy grids for ag-live (grid_map_t).

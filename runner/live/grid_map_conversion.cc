@@ -4,9 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "common/error.h"
 #include "runner/live/lcm_conversion.h"
 #include "stages/import/import_stage.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {
@@ -93,6 +93,12 @@ bool HandleOneMessage(lcm::LCM& lcm, int timeout_ms, const std::string& url) {
     throw Error(message);
   }
   return status > 0;
+}
+
+void AddLcmUrlFlag(CLI::App& app, std::string& url) {
+  url = kDefaultLcmUrl;
+  app.add_option("--url", url, "LCM URL; udpm must keep ttl=0 (traffic stays on the host)")
+      ->capture_default_str();
 }
 
 }  // namespace areagraph

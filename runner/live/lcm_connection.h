@@ -1,10 +1,14 @@
 #pragma once
 
+#include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 #include <memory>
 #include <string>
 
 namespace areagraph {
+
+// The default LCM URL: UDP multicast with ttl=0, so nothing leaves the host.
+inline constexpr char kDefaultLcmUrl[] = "udpm://239.255.76.67:7667?ttl=0";
 
 // `url` made safe for areagraph: traffic never leaves this host. A udpm URL
 // without ttl gets ttl=0; one with any other ttl is refused. memq:// (in
@@ -39,5 +43,9 @@ bool HandleOneMessage(lcm::LCM& lcm, int timeout_ms, const std::string& url);
 
 // How to give this host a multicast route on loopback, for error messages.
 std::string MulticastRouteHint();
+
+// The LCM URL every executable takes the same way: --url URL, defaulting to
+// kDefaultLcmUrl.
+void AddLcmUrlFlag(CLI::App& app, std::string& url);
 
 }  // namespace areagraph

@@ -6,15 +6,13 @@
 #include <set>
 #include <sstream>
 
+#include "common/error.h"
 #include "runner/live/lcm_message_bounds.h"
 #include "stages/common/map_frame.h"
-#include "store/error.h"
+#include "stages/common/stage_info.h"
 
 namespace areagraph {
 namespace {
-
-// AreaGraph.format_version of ag-merge's output, which received graphs copy.
-constexpr uint32_t kReceivedAreaGraphFormatVersion = 1;
 
 areagraph_lcm::ring_t ToLcmRing(const proto::Ring& ring) {
   areagraph_lcm::ring_t out;
@@ -115,6 +113,11 @@ areagraph_lcm::area_graph_t ToLcmAreaGraph(const std::string& map_name,
     lcm_passage.bx = passage.segment_m().b().x();
     lcm_passage.by = passage.segment_m().b().y();
     lcm_passage.width_m = passage.width_m();
+    for (const proto::Point2& point : passage.border_m()) {
+      lcm_passage.border_x.push_back(point.x());
+      lcm_passage.border_y.push_back(point.y());
+    }
+    lcm_passage.num_border_points = static_cast<int32_t>(lcm_passage.border_x.size());
     out.passages.push_back(lcm_passage);
   }
   out.num_passages = static_cast<int32_t>(out.passages.size());
@@ -134,7 +137,7 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
     Reject(name, "the grid size is not positive");
 
   proto::AreaGraph graph;
-  graph.set_format_version(kReceivedAreaGraphFormatVersion);
+  graph.set_format_version(kAreaGraphFormatVersion);
   proto::MapFrame* frame = graph.mutable_frame();
   frame->set_resolution_m(message.resolution_m);
   frame->set_origin_x_m(message.origin_x_m);
@@ -191,6 +194,11 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
     *passage->mutable_segment_m()->mutable_a() = Point(lcm_passage.ax, lcm_passage.ay);
     *passage->mutable_segment_m()->mutable_b() = Point(lcm_passage.bx, lcm_passage.by);
     passage->set_width_m(lcm_passage.width_m);
+    for (int i = 0; i < lcm_passage.num_border_points; ++i) {
+      CheckFinite(name, lcm_passage.border_x[i], what + " border x");
+      CheckFinite(name, lcm_passage.border_y[i], what + " border y");
+      *passage->add_border_m() = Point(lcm_passage.border_x[i], lcm_passage.border_y[i]);
+    }
   }
   for (const proto::Area& area : graph.areas()) {
     for (int32_t id : area.passage_ids()) {

@@ -48,7 +48,7 @@ class EncodedBytes {
     Skip(length);
   }
 
-  // ring_t: num_points, x[num_points], y[num_points].
+  // ring_t (num_points, x[num_points], y[num_points]), or any such point list.
   void SkipRing() { Skip(int64_t{Count(16)} * 16); }
 
  private:
@@ -63,8 +63,10 @@ constexpr int kRingMinBytes = 4;
 // area_t without its arrays' elements: id, kind, outer ring count, num_holes,
 // area and centroid, num_passages.
 constexpr int kAreaMinBytes = 4 + 1 + 4 + 4 + 3 * 8 + 4;
-// passage_t: three int32 ids and seven doubles.
-constexpr int kPassageBytes = 3 * 4 + 7 * 8;
+// passage_t without its border's points: three int32 ids, seven doubles and
+// num_border_points.
+constexpr int kPassageFixedBytes = 3 * 4 + 7 * 8;
+constexpr int kPassageMinBytes = kPassageFixedBytes + 4;
 
 }  // namespace
 
@@ -92,7 +94,11 @@ int AreaGraphEncodedSize(const void* data, int size) {
     bytes.Skip(3 * 8);                        // area_m2, centroid
     bytes.Skip(int64_t{bytes.Count(4)} * 4);  // passage_ids
   }
-  bytes.Skip(int64_t{bytes.Count(kPassageBytes)} * kPassageBytes);
+  const int32_t passages = bytes.Count(kPassageMinBytes);
+  for (int32_t i = 0; bytes.ok() && i < passages; ++i) {
+    bytes.Skip(kPassageFixedBytes);
+    bytes.SkipRing();  // border: num_border_points, border_x[], border_y[]
+  }
   return bytes.ok() ? bytes.position() : -1;
 }
 

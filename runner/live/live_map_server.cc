@@ -6,26 +6,18 @@
 #include <sstream>
 #include <utility>
 
+#include "common/error.h"
+#include "common/text.h"
+#include "runner/common/map_run.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
-#include "stages/common/stage.h"
-#include "stages/pipeline/map_pipeline.h"
 #include "store/digest.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
 
 // Bounds one Serve call's intake when grids arrive faster than it reads them.
 constexpr int kMaxMessagesPerServe = 1000;
-
-// The stage that runs after `stage`, for naming where a map failed.
-std::string StageAfter(const std::string& stage) {
-  for (size_t i = 0; i + 1 < std::size(kAllStages); ++i) {
-    if (stage == kAllStages[i].name) return kAllStages[i + 1].name;
-  }
-  return "publish";
-}
 
 std::string LiveSourcePath() { return std::string("LCM channel ") + kGridMapChannel; }
 
@@ -41,7 +33,12 @@ std::string LiveGridDigest(const proto::GridMap& grid) {
 
 LiveMapServer::LiveMapServer(ArtifactStore& store, AreaGraphPublisher& publisher,
                              proto::PipelineOptions options, std::ostream& out, std::ostream& log)
-    : store_(store), publisher_(publisher), options_(std::move(options)), out_(out), log_(log) {
+    : store_(store),
+      failures_(store),
+      publisher_(publisher),
+      options_(std::move(options)),
+      out_(out),
+      log_(log) {
   subscription_ =
       publisher_.connection().subscribe(kGridMapChannel, &LiveMapServer::OnGridMessage, this);
   StartReceiving(publisher_.connection(), publisher_.url());
@@ -90,50 +87,43 @@ void LiveMapServer::HandleMap(const std::string& map_name, proto::GridMap grid) 
   const std::string digest = LiveGridDigest(grid);
   grid.set_source_path(LiveSourcePath());
   grid.set_source_digest(digest);
-  StageInputs inputs;
+  MapImport import;
+  import.read_inputs = [&] { StageInputs inputs;
   inputs.digests = {digest};
   inputs.source_path = grid.source_path();
   inputs.source_digest = digest;
-
-  std::string failing_stage = kImportStage.name;
-  int stages = 0, hits = 0;
-  double compute_ms = 0;
-  const auto count = [&](const StageInfo& stage, const StageRun& run) {
-    failing_stage = StageAfter(stage.name);
-    ++stages;
-    hits += run.cache_hit ? 1 : 0;
-    compute_ms += run.elapsed_ms;
-  };
-  try {
-    count(kImportStage, RunCachedStage(store_, map_name, kImportStage, options_.import(), inputs,
-                                       [&grid] { return std::make_unique<proto::GridMap>(grid); }));
-    RunMapPipeline(store_, map_name, options_, /*force=*/false, count);
-    std::string key;
-    const auto graph = ReadHeadArtifact<proto::AreaGraph>(store_, map_name, kMergeStage, &key);
-    publisher_.Publish(map_name, key, graph);
-    store_.ClearFailure(map_name);
-
-    std::ostringstream line;
-    line << map_name << ": " << graph.areas_size() << " areas, " << graph.passages_size()
-         << " passages, key " << key.substr(0, 12) << ", ";
-    if (hits == stages) {
-      line << "cached";
-    } else {
-      line << "computed " << (stages - hits) << " of " << stages << " stages in "
-           << std::lround(compute_ms) << " ms";
-    }
-    out_ << line.str() << std::endl;
-  } catch (const std::exception& error) {
-    ++maps_failed_;
-    log_ << "ag-live: map '" << map_name << "' failed in " << failing_stage << ": " << error.what()
-         << "; still serving" << std::endl;
-    try {
-      store_.RecordFailure({map_name, failing_stage, error.what(), LiveSourcePath(), ""});
-    } catch (const std::exception& store_error) {
-      log_ << "ag-live: cannot record the failure: " << store_error.what() << std::endl;
-    }
-  }
-  ++maps_handled_;
+  return inputs;
+};
+import.decode = [&grid] { return std::make_unique<proto::GridMap>(grid);
+};  // namespace areagraph
+MapRunSettings settings;
+settings.publish_unchanged = true;  // every grid received gets its graph
+std::string key;
+const MapOutcome outcome = RunOneMap(
+    store_, failures_, map_name, LiveSourcePath(), import, options_, settings, PipelineObserver{},
+    [&](const std::string& name, const std::string& graph_key, const proto::AreaGraph& graph) {
+      key = graph_key;
+      publisher_.Publish(name, graph_key, graph);
+    });
+++maps_handled_;
+if (!outcome.ok) {
+  ++maps_failed_;
+  log_ << "ag-live: map '" << map_name << "' failed"
+       << (outcome.failed_step.empty() ? "" : " in " + outcome.failed_step) << ": " << outcome.error
+       << "; still serving" << std::endl;
+  if (!outcome.failure_recorded) log_ << "ag-live: cannot record the failure" << std::endl;
+  return;
+}
+std::ostringstream line;
+line << map_name << ": " << outcome.areas << " areas, " << outcome.passages << " passages, key "
+     << ShortKey(key) << ", ";
+if (outcome.fully_cached) {
+  line << "cached";
+} else {
+  line << "computed " << (outcome.stages_run - outcome.cache_hits) << " of " << outcome.stages_run
+       << " stages in " << std::lround(outcome.compute_ms) << " ms";
+}
+out_ << line.str() << std::endl;
 }
 
 }  // namespace areagraph

@@ -8,6 +8,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
+#include "runner/common/map_run.h"
 #include "runner/live/area_graph_publisher.h"
 #include "store/artifact_store.h"
 
@@ -45,6 +46,7 @@ class LiveMapServer {
   void HandleMap(const std::string& map_name, proto::GridMap grid);
 
   ArtifactStore& store_;
+  FailureLog failures_;
   AreaGraphPublisher& publisher_;
   proto::PipelineOptions options_;
   std::ostream& out_;

@@ -5,7 +5,7 @@
 #include <csignal>
 #include <string>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <set>
 
+#include "common/error.h"
 #include "runner/run/manifest_reader.h"
 #include "stages/common/pipeline_options.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

@@ -10,12 +10,15 @@
 #include <cstring>
 #include <exception>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 
-// A task end marker: a line holding only this field.
-constexpr char kTaskDone[] = ".";
+// Frames from a worker: a kind byte, a 4-byte length, then the payload.
+constexpr char kEventFrame = 'E';      // a message from Work
+constexpr char kTaskDoneFrame = 'D';   // the task ended normally
+constexpr char kTaskThrewFrame = 'X';  // Work threw; the payload is what()
+constexpr size_t kFrameHeader = 5;
 
 struct ProcessPool::Worker {
   pid_t pid = -1;
@@ -49,17 +52,6 @@ bool ReadAll(int fd, char* data, size_t size) {
   return true;
 }
 
-std::vector<std::string> SplitFields(const std::string& line) {
-  std::vector<std::string> fields;
-  size_t start = 0;
-  while (true) {
-    const size_t tab = line.find('\t', start);
-    fields.push_back(line.substr(start, tab - start));
-    if (tab == std::string::npos) return fields;
-    start = tab + 1;
-  }
-}
-
 std::string DescribeExit(int status) {
   if (WIFSIGNALED(status)) {
     const int signal = WTERMSIG(status);
@@ -71,14 +63,14 @@ std::string DescribeExit(int status) {
 
 }  // namespace
 
-void EventWriter::Write(const std::vector<std::string>& fields) {
-  std::string line;
-  for (size_t i = 0; i < fields.size(); ++i) {
-    if (i > 0) line += '\t';
-    for (char c : fields[i]) line += (c == '\t' || c == '\n' || c == '\r') ? ' ' : c;
-  }
-  line += '\n';
-  if (!WriteAll(fd_, line.data(), line.size())) _exit(3);  // the parent is gone
+void EventWriter::Write(const std::string& message) { WriteFrame(kEventFrame, message); }
+
+void EventWriter::WriteFrame(char kind, const std::string& payload) {
+  const uint32_t size = static_cast<uint32_t>(payload.size());
+  std::string frame(1, kind);
+  frame.append(reinterpret_cast<const char*>(&size), sizeof(size));
+  frame += payload;
+  if (!WriteAll(fd_, frame.data(), frame.size())) _exit(3);  // the parent is gone
 }
 
 ProcessPool::ProcessPool(int jobs, Work work, OnEvent on_event, OnTaskEnd on_task_end,
@@ -95,10 +87,14 @@ void ProcessPool::WorkerLoop(int task_fd, int event_fd) {
   while (ReadAll(task_fd, reinterpret_cast<char*>(&task), sizeof(task)) && task >= 0) {
     try {
       work_(task, events);
+      events.WriteFrame(kTaskDoneFrame, "");
     } catch (const std::exception& error) {
-      events.Write({"!", error.what()});
+      events.WriteFrame(kTaskThrewFrame, error.what());
+    } catch (...) {
+      // Anything else must not unwind into the code that forked this worker.
+      events.WriteFrame(kTaskThrewFrame,
+                        "the task threw an exception that is not a std::exception");
     }
-    events.Write({kTaskDone});
   }
   std::fflush(nullptr);
   _exit(0);  // no destructors or atexit handlers of the parent's objects
@@ -152,16 +148,19 @@ bool ProcessPool::ReadEvents(Worker& worker) {
   if (got < 0 && errno == EINTR) return true;
   if (got <= 0) return false;
   worker.buffer.append(chunk, static_cast<size_t>(got));
-  size_t end;
-  while ((end = worker.buffer.find('\n')) != std::string::npos) {
-    const std::vector<std::string> fields = SplitFields(worker.buffer.substr(0, end));
-    worker.buffer.erase(0, end + 1);
+  while (worker.buffer.size() >= kFrameHeader) {
+    uint32_t size = 0;
+    std::memcpy(&size, worker.buffer.data() + 1, sizeof(size));
+    if (worker.buffer.size() < kFrameHeader + size) break;
+    const char kind = worker.buffer[0];
+    const std::string payload = worker.buffer.substr(kFrameHeader, size);
+    worker.buffer.erase(0, kFrameHeader + size);
     if (worker.task < 0) continue;
-    if (fields.size() == 1 && fields[0] == kTaskDone) {
-      on_task_end_(worker.task, "");
-      Assign(worker);
+    if (kind == kEventFrame) {
+      on_event_(worker.task, payload);
     } else {
-      on_event_(worker.task, fields);
+      on_task_end_(worker.task, kind == kTaskThrewFrame ? payload : "");
+      Assign(worker);
     }
   }
   return true;

@@ -6,14 +6,17 @@
 
 namespace areagraph {
 
-// How a worker reports on its task: one line of tab-separated fields per call.
+// How a worker reports on its task: each Write is one message of any bytes
+// (the runner's are serialized WorkerEvent protos), framed by its length.
 class EventWriter {
  public:
   explicit EventWriter(int fd) : fd_(fd) {}
-  // Tabs and line breaks inside a field become spaces.
-  void Write(const std::vector<std::string>& fields);
+  void Write(const std::string& message);
 
  private:
+  friend class ProcessPool;
+  // A frame of `kind` (see process_pool.cc) with `payload`.
+  void WriteFrame(char kind, const std::string& payload);
   int fd_;
 };
 
@@ -28,10 +31,10 @@ class ProcessPool {
  public:
   // Runs in a worker for each task it is given.
   using Work = std::function<void(int task, EventWriter& events)>;
-  // Runs in the parent for each line a worker writes about `task`.
-  using OnEvent = std::function<void(int task, const std::vector<std::string>& fields)>;
+  // Runs in the parent for each message a worker writes about `task`.
+  using OnEvent = std::function<void(int task, const std::string& message)>;
   // Runs in the parent when `task` has ended: `crash` is empty when the
-  // worker finished it, else what killed the worker.
+  // worker finished it, else what killed the worker or what Work threw.
   using OnTaskEnd = std::function<void(int task, const std::string& crash)>;
 
   ProcessPool(int jobs, Work work, OnEvent on_event, OnTaskEnd on_task_end,

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <iomanip>
 
-#include "stages/common/stage.h"
+#include "stages/common/stage_table.h"
 
 namespace areagraph {
 
@@ -11,7 +11,7 @@ RunReport::RunReport(const std::vector<MapTask>& tasks, ProgressDisplay& progres
     : tasks_(tasks),
       progress_(progress),
       start_(std::chrono::steady_clock::now()),
-      last_stage_(tasks.size(), "store"),
+      last_stage_(tasks.size()),
       compute_ms_(tasks.size(), 0),
       ended_(tasks.size(), false) {
   summary_.set_maps(static_cast<int64_t>(tasks.size()));
@@ -26,12 +26,12 @@ void RunReport::StageDone(int task, const std::string& stage, bool hit, double e
   compute_ms_[task] += elapsed_ms;
 }
 
-void RunReport::MapEnded(int task, const MapResult& result) {
+void RunReport::MapEnded(int task, const MapOutcome& result) {
   if (ended_[task]) return;
   ended_[task] = true;
   const std::string& name = tasks_[task].entry.name;
   if (!result.ok) {
-    Fail(task, result.failed_stage, result.error, result.failure_recorded);
+    Fail(task, result.failed_step, result.error, result.failure_recorded);
     return;
   }
   summary_.set_succeeded(summary_.succeeded() + 1);
@@ -66,7 +66,8 @@ void RunReport::Fail(int task, const std::string& stage, const std::string& mess
   failure->set_message(message);
   failure->set_path(map.entry.path);
   if (!recorded) unrecorded_.push_back({map.entry.name, stage, message, map.entry.path, ""});
-  progress_.MapDone(true, map.entry.name + ": FAILED in " + stage + ": " + message);
+  progress_.MapDone(
+      true, map.entry.name + ": FAILED" + (stage.empty() ? "" : " in " + stage) + ": " + message);
 }
 
 proto::RunSummary RunReport::Summary(int jobs, const std::string& shard) const {
@@ -79,11 +80,11 @@ proto::RunSummary RunReport::Summary(int jobs, const std::string& shard) const {
   summary.set_jobs(jobs);
   summary.set_shard(shard);
   int64_t hits = 0, misses = 0;
-  for (const StageInfo& stage : kAllStages) {
-    const auto it = stages_.find(stage.name);
+  for (const StageDefinition& stage : StageTable()) {
+    const auto it = stages_.find(stage.info.name);
     if (it == stages_.end()) continue;
     proto::RunSummary::StageSummary* out = summary.add_stages();
-    out->set_stage(stage.name);
+    out->set_stage(stage.info.name);
     out->set_hits(it->second.hits);
     out->set_misses(it->second.misses);
     out->set_compute_s(it->second.compute_ms / 1000);
@@ -113,8 +114,9 @@ void PrintSummary(const proto::RunSummary& summary, std::ostream& out) {
         << stage.compute_s() << "\n";
   }
   for (const auto& failure : summary.failures()) {
-    out << "  FAILED " << failure.map() << " (" << failure.stage() << "): " << failure.message()
-        << "\n";
+    out << "  FAILED " << failure.map()
+        << (failure.stage().empty() ? "" : " (" + failure.stage() + ")") << ": "
+        << failure.message() << "\n";
   }
 }
 

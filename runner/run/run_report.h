@@ -20,7 +20,7 @@ class RunReport {
 
   void StageStarted(int task, const std::string& stage);
   void StageDone(int task, const std::string& stage, bool hit, double elapsed_ms);
-  void MapEnded(int task, const MapResult& result);
+  void MapEnded(int task, const MapOutcome& result);
   // The worker died while on `task`: a failure in the last stage it started.
   void MapCrashed(int task, const std::string& what);
 
@@ -41,7 +41,7 @@ class RunReport {
   const std::vector<MapTask>& tasks_;
   ProgressDisplay& progress_;
   std::chrono::steady_clock::time_point start_;
-  std::vector<std::string> last_stage_;  // per task
+  std::vector<std::string> last_stage_;  // per task; empty before its first stage
   std::vector<double> compute_ms_;       // per task
   std::vector<bool> ended_;              // per task: counted once only
   std::map<std::string, StageCounts> stages_;

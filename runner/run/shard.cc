@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <regex>
 
+#include "common/error.h"
 #include "store/digest.h"
-#include "store/error.h"
 
 namespace areagraph {
 

@@ -5,7 +5,7 @@
 
 namespace areagraph {
 
-// CleanOptions checked against one map and converted to pixels.
+// CleanOptions converted to pixels for one map.
 struct CleanParameters {
   // k of CGAL's remove_outliers (which averages over the point itself and k
   // more).
@@ -20,11 +20,10 @@ struct CleanParameters {
   double unknown_island_max_cells = 0;
 };
 
-// Throws OptionsError (one line naming the option) for values that are not
-// finite or make no sense: outlier_neighbors outside [2, 1000] (k = 1 would
-// see only the point itself), outlier_percent outside [0, 100), a robot width
-// that is not positive or wider than the map, a negative perimeter. Throws
-// InputError when the frame has no positive, finite resolution.
-CleanParameters CheckCleanOptions(const proto::CleanOptions& options, const proto::MapFrame& frame);
+// Checks `options` (CheckCleanOptions), then what depends on the map: throws
+// OptionsError for a robot width not smaller than the map, and InputError
+// when the frame has no positive, finite resolution.
+CleanParameters CleanParametersFor(const proto::CleanOptions& options,
+                                   const proto::MapFrame& frame);
 
 }  // namespace areagraph

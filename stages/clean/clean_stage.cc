@@ -2,26 +2,25 @@
 
 #include <algorithm>
 
+#include "common/error.h"
 #include "stages/clean/clean_parameters.h"
 #include "stages/clean/furniture_removal.h"
 #include "stages/clean/outlier_removal.h"
 #include "stages/clean/unknown_islands.h"
+#include "stages/common/stage_info.h"
 #include "stages/geometry/cell_states.h"
-#include "store/error.h"
 
 namespace areagraph {
 
-proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOptions& options,
-                               const std::string& map_name) {
-  const std::string what = "map '" + map_name + "'";
+proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOptions& options) {
   const int width = map.frame().width_px();
   const int height = map.frame().height_px();
-  CheckCellStates(map.cells(), width, height, what);
-  const CleanParameters parameters = CheckCleanOptions(options, map.frame());
+  CheckCellStates(map.cells(), width, height);
+  const CleanParameters parameters = CleanParametersFor(options, map.frame());
   const auto free_cells = std::count(map.cells().begin(), map.cells().end(), proto::CELL_FREE);
-  if (free_cells == 0) throw InputError(what + " has no free space");
+  if (free_cells == 0) throw InputError("the map has no free space");
   if (free_cells == static_cast<long>(map.cells().size())) {
-    throw InputError(what + " has no obstacle cells");
+    throw InputError("the map has no obstacle cells");
   }
 
   std::string cells = map.cells();
@@ -33,7 +32,7 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
       cells, width, height, parameters.alpha_radius_px, parameters.furniture_max_perimeter_px);
 
   proto::CleanedMap cleaned;
-  cleaned.set_format_version(1);
+  cleaned.set_format_version(kCleanedMapFormatVersion);
   *cleaned.mutable_frame() = map.frame();
   cleaned.set_cells(std::move(cells));
   cleaned.mutable_removed_outlier_cells()->Add(outliers.begin(), outliers.end());

@@ -3,8 +3,10 @@
 #include <iostream>
 #include <new>
 
+#include "common/error.h"
+#include "common/version.h"
 #include "stages/common/pipeline_options.h"
-#include "store/error.h"
+#include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
 
@@ -25,15 +27,20 @@ proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags) {
   proto::PipelineOptions options;
   if (!flags.options_file.empty()) options = ReadOptionsFile(flags.options_file);
   for (const std::string& assignment : flags.overrides) ApplyOverride(assignment, &options);
+  CheckPipelineOptions(options);
   return options;
 }
 
 int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
                const std::function<int()>& body) {
+  app.set_version_flag("--version", std::string(VersionText()));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
     std::cout << app.help();
+    return 0;
+  } catch (const CLI::CallForVersion& version) {
+    std::cout << tool << ": " << version.what() << "\n";
     return 0;
   } catch (const CLI::ParseError& e) {
     std::cerr << tool << ": " << e.what() << " (see --help)\n";

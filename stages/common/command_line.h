@@ -22,12 +22,14 @@ struct StageCommandLine {
 // is false for ag-import, whose map name defaults to the file's stem.
 void AddStageFlags(CLI::App& app, StageCommandLine& flags, bool map_required = true);
 
-// The options file (if any) with every --set applied in order.
+// The options file (if any) with every --set applied in order, checked
+// (CheckPipelineOptions): bad options fail before any tool opens a store.
 proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags);
 
 // Parses the command line and runs `body`, turning every error into one line
 // "<tool>: <message>" on stderr and a non-zero exit: 2 for bad usage, 1 for
-// everything else. --help prints the help and exits 0.
+// everything else. --help prints the help and --version the version
+// (VersionText), each exiting 0.
 int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
                const std::function<int()>& body);
 

@@ -9,7 +9,7 @@
 #include <regex>
 #include <sstream>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

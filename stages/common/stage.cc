@@ -1,61 +1,17 @@
 #include "stages/common/stage.h"
 
-#include <chrono>
+#include <google/protobuf/descriptor.h>
+#include <google/protobuf/reflection.h>
 
+#include <chrono>
+#include <exception>
+#include <new>
+
+#include "common/error.h"
+#include "common/text.h"
 #include "stages/common/pipeline_options.h"
-#include "store/cache_key.h"
-#include "store/error.h"
 
 namespace areagraph {
-
-std::string StageCacheKey(const StageInfo& stage, const google::protobuf::Message& options,
-                          const std::vector<std::string>& input_keys) {
-  return ComputeCacheKey(stage.name, stage.version, CanonicalBytes(options), input_keys);
-}
-
-StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
-                        const google::protobuf::Message& options, const StageInputs& inputs,
-                        const std::function<std::unique_ptr<google::protobuf::Message>()>& compute,
-                        bool force) {
-  StageRun run;
-  run.cache_key = StageCacheKey(stage, options, inputs.digests);
-  if (!force) {
-    // Key lookups only: a hit costs no payload read. A damaged payload shows
-    // when a later stage reads it (or with ag-store verify).
-    if (store.ReadHeadKey(map_name, stage.name) == run.cache_key) {
-      run.cache_hit = true;
-      return run;
-    }
-    if (store.HasArtifact(map_name, run.cache_key)) {
-      store.UpdateHead(map_name, run.cache_key);
-      run.cache_hit = true;
-      return run;
-    }
-  }
-
-  const auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<google::protobuf::Message> result = compute();
-  run.elapsed_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-
-  NewArtifact artifact;
-  artifact.map_name = map_name;
-  artifact.stage = stage.name;
-  artifact.cache_key = run.cache_key;
-  artifact.input_keys = inputs.digests;
-  artifact.options_text = CanonicalText(options);
-  artifact.stage_version = stage.version;
-  artifact.proto_type = result->GetTypeName();
-  if (!result->SerializeToString(&artifact.payload)) {
-    throw Error(std::string("stage '") + stage.name + "' produced an artifact too big to store");
-  }
-  artifact.elapsed_ms = run.elapsed_ms;
-  artifact.source_path = inputs.source_path;
-  artifact.source_digest = inputs.source_digest;
-  store.WriteArtifact(artifact);
-  return run;
-}
-
 namespace {
 
 InputError MissingInput(ArtifactStore& store, const std::string& map_name, const StageInfo& stage) {
@@ -66,31 +22,129 @@ InputError MissingInput(ArtifactStore& store, const std::string& map_name, const
                     stage.name + " first");
 }
 
-}  // namespace
-
-const std::vector<StageInfo>& InputStagesOf(const StageInfo& stage) {
-  static const std::vector<StageInfo> kNone;
-  static const std::vector<StageInfo> kClean = {kImportStage};
-  static const std::vector<StageInfo> kVoronoi = {kCleanStage};
-  static const std::vector<StageInfo> kPrune = {kVoronoiStage, kCleanStage};
-  static const std::vector<StageInfo> kCut = {kPruneStage, kCleanStage};
-  static const std::vector<StageInfo> kMerge = {kCutStage, kCleanStage};
-  if (SameStage(stage, kCleanStage)) return kClean;
-  if (SameStage(stage, kVoronoiStage)) return kVoronoi;
-  if (SameStage(stage, kPruneStage)) return kPrune;
-  if (SameStage(stage, kCutStage)) return kCut;
-  if (SameStage(stage, kMergeStage)) return kMerge;
-  return kNone;
+// A cache hit's summary: from the row, or (for an artifact stored before the
+// store kept summary lines) from the parsed payload.
+std::string SummaryOfStored(ArtifactStore& store, const std::string& map_name,
+                            const StageDefinition& stage, const std::string& cache_key) {
+  const std::optional<ArtifactRecord> row = store.ReadArtifactSummary(map_name, cache_key);
+  if (row && !row->summary_line.empty()) return row->summary_line;
+  MessagePtr artifact(stage.prototype->New());
+  ParseArtifact(store, map_name, cache_key, artifact.get());
+  return stage.summarize(*artifact);
 }
 
-StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name, const StageInfo& stage) {
+StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
+                         const StageDefinition& stage, const google::protobuf::Message& options,
+                         const StageInputs& inputs, const std::function<MessagePtr()>& compute,
+                         StageRun run) {
+  const auto start = std::chrono::steady_clock::now();
+  const MessagePtr result = compute();
+  run.elapsed_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  run.summary = stage.summarize(*result);
+
+  NewArtifact artifact;
+  artifact.map_name = map_name;
+  artifact.stage = stage.info.name;
+  artifact.cache_key = run.cache_key;
+  artifact.input_keys = inputs.digests;
+  artifact.options_text = CanonicalText(options);
+  artifact.stage_version = stage.info.version;
+  artifact.proto_type = result->GetTypeName();
+  if (!result->SerializeToString(&artifact.payload)) {
+    throw Error("the artifact is too big to store");
+  }
+  artifact.elapsed_ms = run.elapsed_ms;
+  artifact.summary_line = run.summary;
+  artifact.source_path = inputs.source_path;
+  artifact.source_digest = inputs.source_digest;
+  store.WriteArtifact(artifact);
+  return run;
+}
+
+}  // namespace
+
+StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
+                        const StageDefinition& stage, const proto::PipelineOptions& options,
+                        const StageInputs& inputs, const std::function<MessagePtr()>& compute,
+                        bool force) {
+  const google::protobuf::Message& stage_options = stage.options_of(options);
+  StageRun run;
+  run.cache_key = StageCacheKey(stage.info, stage_options, inputs.digests);
+  try {
+    if (!force) {
+      // Key lookups only: a hit costs no payload read. A damaged payload
+      // shows when a later stage reads it (or with ag-store verify).
+      const bool is_head = store.ReadHeadKey(map_name, stage.info.name) == run.cache_key;
+      if (is_head || store.HasArtifact(map_name, run.cache_key)) {
+        if (!is_head) store.UpdateHead(map_name, run.cache_key);
+        run.cache_hit = true;
+        run.summary = SummaryOfStored(store, map_name, stage, run.cache_key);
+        return run;
+      }
+    }
+    return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run);
+  } catch (const MapStepError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw MapStepError(map_name, stage.info.name, "out of memory");
+  } catch (const std::exception& error) {
+    throw MapStepError(map_name, stage.info.name, error.what());
+  }
+}
+
+StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
+                         const StageDefinition& stage, const proto::PipelineOptions& options,
+                         bool force) {
+  const StageInputs inputs = HeadInputs(store, map_name, stage);
+  return RunCachedStage(
+      store, map_name, stage, options, inputs,
+      [&] {
+        std::vector<MessagePtr> artifacts;
+        std::vector<const google::protobuf::Message*> views;
+        for (size_t i = 0; i < stage.inputs.size(); ++i) {
+          artifacts.emplace_back(StageOf(stage.inputs[i]).prototype->New());
+          ParseArtifact(store, map_name, inputs.digests[i], artifacts.back().get());
+          views.push_back(artifacts.back().get());
+        }
+        return stage.compute(views, options);
+      },
+      force);
+}
+
+StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name,
+                       const StageDefinition& stage) {
   StageInputs inputs;
-  for (const StageInfo& input : InputStagesOf(stage)) {
+  for (const StageInfo& input : stage.inputs) {
     std::optional<std::string> key = store.ReadHeadKey(map_name, input.name);
-    if (!key) throw MissingInput(store, map_name, input);
+    if (!key) {
+      throw MapStepError(
+          map_name, stage.info.name,
+          store.ReadMap(map_name)
+              ? "no " + std::string(input.name) + " artifact; run ag-" + input.name + " first"
+              : "the map is not in the store; run ag-import first");
+    }
     inputs.digests.push_back(*key);
   }
   return inputs;
+}
+
+void CheckFormatVersion(const google::protobuf::Message& artifact, const std::string& what) {
+  const google::protobuf::FieldDescriptor* field =
+      artifact.GetDescriptor()->FindFieldByName("format_version");
+  if (field == nullptr || field->cpp_type() != google::protobuf::FieldDescriptor::CPPTYPE_UINT32) {
+    return;
+  }
+  const uint32_t version = artifact.GetReflection()->GetUInt32(artifact, field);
+  for (const StageDefinition& stage : StageTable()) {
+    if (stage.prototype->GetDescriptor() != artifact.GetDescriptor()) continue;
+    if (version > stage.format_version) {
+      throw StoreError(what + " has format version " + std::to_string(version) +
+                       ", newer than this build's " + std::to_string(stage.format_version) +
+                       "; upgrade areagraph");
+    }
+    return;
+  }
 }
 
 void ParseArtifact(ArtifactStore& store, const std::string& map_name, const std::string& cache_key,
@@ -98,9 +152,10 @@ void ParseArtifact(ArtifactStore& store, const std::string& map_name, const std:
   const std::optional<ArtifactRecord> record = store.ReadArtifact(map_name, cache_key);
   if (!record || record->proto_type != message->GetTypeName() ||
       !message->ParseFromString(record->payload)) {
-    throw StoreError("artifact " + cache_key.substr(0, 12) + " of map '" + map_name +
+    throw StoreError("artifact " + ShortKey(cache_key) + " of map '" + map_name +
                      "' is missing or not a valid " + message->GetTypeName());
   }
+  CheckFormatVersion(*message, "artifact " + ShortKey(cache_key) + " of map '" + map_name + "'");
 }
 
 void ParseHeadArtifact(ArtifactStore& store, const std::string& map_name, const StageInfo& stage,
@@ -111,6 +166,8 @@ void ParseHeadArtifact(ArtifactStore& store, const std::string& map_name, const 
     throw StoreError("the " + std::string(stage.name) + " artifact of map '" + map_name +
                      "' is not a valid " + message->GetTypeName());
   }
+  CheckFormatVersion(*message,
+                     "the " + std::string(stage.name) + " artifact of map '" + map_name + "'");
   if (cache_key != nullptr) *cache_key = head->cache_key;
 }
 

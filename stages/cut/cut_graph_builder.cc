@@ -4,6 +4,8 @@
 #include <limits>
 #include <map>
 
+#include "common/error.h"
+#include "stages/common/stage_info.h"
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/edge_track.h"
 #include "stages/cut/room_width.h"
@@ -11,7 +13,6 @@
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/site_alpha_shape.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
@@ -33,17 +34,17 @@ size_t NearestPiece(const std::vector<proto::GraphEdge>& pieces, const proto::Ri
   return nearest;
 }
 
-void CheckTopology(const proto::TopologyGraph& topology, const std::string& what) {
+void CheckTopology(const proto::TopologyGraph& topology) {
   const int vertex_count = topology.vertices_size();
   for (const proto::GraphEdge& edge : topology.edges()) {
     if (edge.source() < 0 || edge.source() >= vertex_count || edge.target() < 0 ||
         edge.target() >= vertex_count) {
-      throw InputError(what + ": the Topology Graph artifact is corrupt: edge " +
-                       std::to_string(edge.id()) + " names a vertex that does not exist");
+      throw InputError("the Topology Graph artifact is corrupt: edge " + std::to_string(edge.id()) +
+                       " names a vertex that does not exist");
     }
   }
   if (topology.edges_size() == 0) {
-    throw InputError(what + ": the Topology Graph has no edges; run ag-prune again");
+    throw InputError("the Topology Graph has no edges; run ag-prune again");
   }
 }
 
@@ -64,10 +65,9 @@ void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count
 }  // namespace
 
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                              const proto::CutOptions& options, const std::string& map_name) {
-  const std::string what = "map '" + map_name + "'";
-  const CellGrid grid(map, what);
-  CheckTopology(topology, what);
+                              const proto::CutOptions& options) {
+  const CellGrid grid(map);
+  CheckTopology(topology);
   const proto::RoomWidthEstimate room_width = ChooseRoomWidth(options, map.frame(), topology);
   const double room_width_px = room_width.room_width_m() / grid.resolution_m();
 
@@ -84,7 +84,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };
 
   proto::CutGraph out;
-  out.set_format_version(1);
+  out.set_format_version(kCutGraphFormatVersion);
   *out.mutable_frame() = map.frame();
   *out.mutable_boundary() = topology.boundary();
   *out.mutable_vertices() = topology.vertices();

@@ -15,9 +15,9 @@ namespace areagraph {
 // each cut adds a VERTEX_PASSAGE vertex and a PassagePoint. Rooms smaller
 // than the disk of diameter W are slivers of a corridor about W wide and
 // count as no room; of the others, only those that some edge runs through
-// are kept, renumbered from 0. Throws OptionsError for
-// a bad W and InputError naming `map_name` for a corrupt input.
+// are kept, renumbered from 0. Throws OptionsError for a bad W and
+// InputError for a corrupt input.
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                              const proto::CutOptions& options, const std::string& map_name);
+                              const proto::CutOptions& options);
 
 }  // namespace areagraph

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

@@ -1,59 +1,33 @@
 #include "stages/cut/room_width.h"
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/pipeline_options_check.h"
 #include "stages/cut/width_estimate.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
-
-std::string Text(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
-void CheckWidth(double value, const char* name) {
-  if (!std::isfinite(value) || value < 0) {
-    throw OptionsError(std::string(name) + " must be a positive number of metres, got " +
-                       Text(value));
-  }
-}
 
 void CheckFitsMap(double width, const proto::MapFrame& frame) {
   const double map_width_m = frame.width_px() * frame.resolution_m();
   const double map_height_m = frame.height_px() * frame.resolution_m();
   if (width > std::max(map_width_m, map_height_m)) {
-    throw OptionsError("the room width W = " + Text(width) + " m is wider than the map (" +
-                       Text(map_width_m) + " x " + Text(map_height_m) + " m)");
+    throw OptionsError("the room width W = " + FormatNumber(width) + " m is wider than the map (" +
+                       FormatNumber(map_width_m) + " x " + FormatNumber(map_height_m) + " m)");
   }
 }
 
 }  // namespace
 
 double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame) {
+  CheckCutOptions(options);
   const double door = options.door_width_m();
   const double corridor = options.corridor_width_m();
-  CheckWidth(door, "cut.door_width_m");
-  CheckWidth(corridor, "cut.corridor_width_m");
   double width = options.room_width_m();
-  if (door > 0 && corridor > 0) {
-    width = door < corridor ? door + 0.1 : corridor - 0.1;
-    if (!(width > 0)) {
-      throw OptionsError("cut.corridor_width_m = " + Text(corridor) +
-                         " m gives no room width (W = corridor - 0.1 m)");
-    }
-  } else if (door > 0 || corridor > 0) {
-    throw OptionsError(
-        "cut.door_width_m and cut.corridor_width_m work together: set both or "
-        "neither");
-  }
-  if (!std::isfinite(width) || !(width > 0)) {
-    throw OptionsError("cut.room_width_m must be a positive number of metres, got " + Text(width));
-  }
+  if (door > 0 && corridor > 0) width = door < corridor ? door + 0.1 : corridor - 0.1;
   CheckFitsMap(width, frame);
   return width;
 }

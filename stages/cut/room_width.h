@@ -9,9 +9,8 @@ namespace areagraph {
 // paper's strategy W = door + 0.1 m when the widest door is narrower than the
 // narrowest corridor, else corridor - 0.1 m, when both widths are given
 // (a width of 0 counts as not given, as in the stored canonical options);
-// cut.room_width_m otherwise. Throws OptionsError for a non-positive or
-// non-finite result, for one width without the other, and for a W wider
-// than the whole map.
+// cut.room_width_m otherwise. Throws OptionsError for bad options
+// (CheckCutOptions) and for a W wider than the whole map.
 // Ignores cut.room_width_auto.
 double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame);
 

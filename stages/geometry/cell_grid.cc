@@ -2,19 +2,19 @@
 
 #include <cmath>
 
+#include "common/error.h"
 #include "stages/geometry/cell_states.h"
-#include "store/error.h"
 
 namespace areagraph {
 
-CellGrid::CellGrid(const proto::CleanedMap& map, const std::string& what)
+CellGrid::CellGrid(const proto::CleanedMap& map)
     : width_(map.frame().width_px()),
       height_(map.frame().height_px()),
       resolution_m_(map.frame().resolution_m()),
       cells_(&map.cells()) {
-  CheckCellStates(map.cells(), width_, height_, what);
+  CheckCellStates(map.cells(), width_, height_);
   if (!(resolution_m_ > 0) || !std::isfinite(resolution_m_)) {
-    throw InputError(what + " has no valid resolution (" + std::to_string(resolution_m_) +
+    throw InputError("the map has no valid resolution (" + std::to_string(resolution_m_) +
                      " m per pixel)");
   }
 }

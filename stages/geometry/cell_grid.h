@@ -12,9 +12,9 @@ namespace areagraph {
 // ag-merge). CellStates is the plain view of any cell string.
 class CellGrid {
  public:
-  // Throws InputError starting with `what` when the frame's size or
+  // Throws InputError when the frame's size or
   // resolution does not fit the cells (a corrupt artifact).
-  CellGrid(const proto::CleanedMap& map, const std::string& what);
+  explicit CellGrid(const proto::CleanedMap& map);
 
   int width() const { return width_; }
   int height() const { return height_; }

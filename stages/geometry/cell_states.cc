@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 
@@ -15,13 +15,13 @@ bool CellStates::TouchesFree(int col, int row) const {
   return false;
 }
 
-void CheckCellStates(const std::string& cells, int width, int height, const std::string& what) {
+void CheckCellStates(const std::string& cells, int width, int height) {
   if (width <= 0 || height <= 0) {
-    throw InputError(what + " has an empty frame (" + std::to_string(width) + "x" +
+    throw InputError("the map has an empty frame (" + std::to_string(width) + "x" +
                      std::to_string(height) + " pixels)");
   }
   if (cells.size() != static_cast<size_t>(width) * static_cast<size_t>(height)) {
-    throw InputError(what + " has " + std::to_string(cells.size()) + " cells but its frame is " +
+    throw InputError("the map has " + std::to_string(cells.size()) + " cells but its frame is " +
                      std::to_string(width) + "x" + std::to_string(height));
   }
   // While the valid states are 0..CellState_MAX, one pass for the largest
@@ -37,7 +37,7 @@ void CheckCellStates(const std::string& cells, int width, int height, const std:
   if (!contiguous || largest > proto::CellState_MAX) {
     for (const char cell : cells) {
       if (!proto::CellState_IsValid(static_cast<uint8_t>(cell))) {
-        throw InputError(what + " has an invalid cell value " +
+        throw InputError("the map has an invalid cell value " +
                          std::to_string(static_cast<uint8_t>(cell)));
       }
     }

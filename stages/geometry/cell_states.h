@@ -42,7 +42,7 @@ class CellStates {
 inline Eigen::Vector2d CellCentre(int col, int row) { return {col + 0.5, row + 0.5}; }
 
 // Throws InputError unless the frame has a positive size and `cells` holds
-// width * height valid CellState bytes. `what` names the map in the message.
-void CheckCellStates(const std::string& cells, int width, int height, const std::string& what);
+// width * height valid CellState bytes.
+void CheckCellStates(const std::string& cells, int width, int height);
 
 }  // namespace areagraph

@@ -167,10 +167,6 @@ SiteAlphaShape::SiteAlphaShape(const PointList& sites, double alpha_radius_px) {
 
 SiteAlphaShape::~SiteAlphaShape() = default;
 
-int SiteAlphaShape::FaceCount() const {
-  return impl_->HasFaces() ? static_cast<int>(impl_->shape.number_of_faces()) : 0;
-}
-
 proto::Polygon SiteAlphaShape::BiggestShapeOutline() {
   Impl& impl = *impl_;
   impl.biggest_region = -1;

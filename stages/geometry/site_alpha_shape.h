@@ -49,9 +49,6 @@ class SiteAlphaShape {
   // Outline (outer ring and holes) of every room, indexed by room id.
   std::vector<proto::Polygon> RoomOutlines();
 
-  // Number of finite triangles, for reports.
-  int FaceCount() const;
-
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

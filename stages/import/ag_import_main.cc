@@ -6,28 +6,18 @@
 #include <iostream>
 #include <sstream>
 
+#include "common/error.h"
+#include "common/text.h"
 #include "stages/common/command_line.h"
 #include "stages/common/grid_cells.h"
+#include "stages/common/pipeline_options_check.h"
 #include "stages/common/stage.h"
 #include "stages/import/grid_map_decoder.h"
 #include "stages/import/import_stage.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
-
-// The one-line summary printed on success.
-std::string Summary(const std::string& map_name, const proto::GridMap& grid, const StageRun& run) {
-  const CellCounts counts = CountCells(grid.cells());
-  std::ostringstream line;
-  line << "imported " << map_name << ": " << grid.frame().width_px() << "x"
-       << grid.frame().height_px() << " px, " << grid.frame().resolution_m() << " m/px, "
-       << counts.occupied << " occupied, " << counts.free << " free, " << counts.unknown
-       << " unknown (key " << run.cache_key.substr(0, 8) << ", "
-       << (run.cache_hit ? "cached" : "stored") << ")";
-  return line.str();
-}
 
 int Import(StageCommandLine& flags, const std::string& image, const CLI::Option& resolution_flag,
            double resolution_m) {
@@ -36,6 +26,7 @@ int Import(StageCommandLine& flags, const std::string& image, const CLI::Option&
     CheckResolution(resolution_m, "--resolution", /*is_option=*/true);
     options.mutable_import()->set_resolution_m(resolution_m);
   }
+  CheckPipelineOptions(options);
   const ImportSource source = ReadImportSource(image);
   if (resolution_flag.count() > 0 && source.yaml && source.yaml->resolution_m != resolution_m) {
     std::ostringstream message;
@@ -52,10 +43,11 @@ int Import(StageCommandLine& flags, const std::string& image, const CLI::Option&
 
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
   const StageRun run = RunCachedStage(
-      *store, map_name, kImportStage, options.import(), ImportInputs(source),
+      *store, map_name, StageOf(kImportStage), options, ImportInputs(source),
       [&grid] { return std::make_unique<proto::GridMap>(grid); }, flags.force);
 
-  std::cout << Summary(map_name, grid, run) << "\n";
+  std::cout << "imported " << map_name << ": " << run.summary << " (key " << ShortKey(run.cache_key)
+            << ", " << (run.cache_hit ? "cached" : "stored") << ")\n";
   if (CountCells(grid.cells()).occupied == 0) {
     std::cerr << "ag-import: warning: map '" << map_name
               << "' has no occupied cells; if its walls are lighter than grey "

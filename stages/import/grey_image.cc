@@ -5,9 +5,9 @@
 #include <sstream>
 #include <vector>
 
+#include "common/error.h"
 #include "stages/import/png_header.h"
 #include "stages/import/stderr_capture.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

@@ -1,17 +1,14 @@
 #include "stages/import/grid_map_decoder.h"
 
-#include "store/error.h"
+#include "common/error.h"
+#include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
 
 GreyToCell GreyThresholdRule(const proto::ImportOptions& options) {
+  CheckImportOptions(options);
   const int occupied_max = options.occupied_max_grey();
   const int free_min = options.free_min_grey();
-  if (occupied_max < 0 || free_min > 255 || occupied_max >= free_min) {
-    throw OptionsError("import.occupied_max_grey (" + std::to_string(occupied_max) +
-                       ") and import.free_min_grey (" + std::to_string(free_min) +
-                       ") must satisfy 0 <= occupied_max_grey < free_min_grey <= 255");
-  }
   GreyToCell rule;
   for (int grey = 0; grey < 256; ++grey) {
     rule[grey] = grey >= free_min       ? proto::CELL_FREE

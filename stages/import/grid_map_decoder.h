@@ -23,7 +23,8 @@ using GreyToCell = std::array<proto::CellState, 256>;
 //   anything in between       -> unknown   (unknown/outside 103..230 and
 //                                           light furniture 211 in the
 //                                           Bormann, Area Graph and MAORIS maps)
-// Throws OptionsError unless 0 <= occupied_max_grey < free_min_grey <= 255.
+// Throws OptionsError for bad import options (CheckImportOptions), e.g.
+// unless 0 <= occupied_max_grey < free_min_grey <= 255.
 GreyToCell GreyThresholdRule(const proto::ImportOptions& options);
 
 // ROS map_server's rule for the thresholds and mode in `yaml`: with v the grey

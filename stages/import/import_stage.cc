@@ -6,10 +6,11 @@
 #include <memory>
 #include <system_error>
 
+#include "common/error.h"
+#include "stages/common/pipeline_options_check.h"
 #include "stages/import/grey_image.h"
 #include "stages/import/grid_map_decoder.h"
 #include "store/digest.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
@@ -69,15 +70,6 @@ ImportSource ReadImportSource(const std::string& path) {
 
 std::string DefaultMapName(const std::string& path) { return fs::path(path).stem().string(); }
 
-void CheckImportOptions(const proto::ImportOptions& options) {
-  CheckResolution(options.resolution_m(), "import.resolution_m", /*is_option=*/true);
-  if (options.max_pixels() <= 0) {
-    throw OptionsError("import.max_pixels must be positive, got " +
-                       std::to_string(options.max_pixels()));
-  }
-  GreyThresholdRule(options);
-}
-
 proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOptions& options) {
   CheckImportOptions(options);
   const GreyToCell rule = source.yaml ? MapServerRule(*source.yaml) : GreyThresholdRule(options);
@@ -108,14 +100,6 @@ StageInputs ImportInputs(const ImportSource& source) {
 
 std::string ImportCacheKey(const ImportSource& source, const proto::ImportOptions& options) {
   return StageCacheKey(kImportStage, options, ImportInputs(source).digests);
-}
-
-StageRun RunImportStage(ArtifactStore& store, const std::string& map_name,
-                        const ImportSource& source, const proto::ImportOptions& options,
-                        bool force) {
-  return RunCachedStage(
-      store, map_name, kImportStage, options, ImportInputs(source),
-      [&] { return std::make_unique<proto::GridMap>(ImportGridMap(source, options)); }, force);
 }
 
 }  // namespace areagraph

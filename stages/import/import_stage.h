@@ -5,14 +5,10 @@
 
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
+#include "stages/common/stage_info.h"
 #include "stages/import/map_yaml.h"
-#include "store/artifact_store.h"
 
 namespace areagraph {
-
-// GridMap.format_version written by this build.
-inline constexpr uint32_t kGridMapFormatVersion = 1;
 
 // The files of one map, read once: the bytes that are decoded are exactly the
 // bytes that are digested.
@@ -39,10 +35,6 @@ ImportSource ReadImportSource(const std::string& path);
 // The map name used when none is given: the file name without extension.
 std::string DefaultMapName(const std::string& path);
 
-// Checks the import options that do not depend on the map: resolution,
-// thresholds and pixel limit. Throws OptionsError.
-void CheckImportOptions(const proto::ImportOptions& options);
-
 // Decodes and classifies the image. With a YAML, its resolution, origin and
 // thresholds apply; without, options.resolution_m, a zero origin and the
 // grey thresholds of GreyThresholdRule. Throws InputError or OptionsError.
@@ -51,14 +43,7 @@ proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOpti
 // What enters the import's cache key and map row for `source`.
 StageInputs ImportInputs(const ImportSource& source);
 
-// The cache key RunImportStage gives `source` with `options`, without decoding.
+// The cache key of importing `source` with `options`, known without decoding.
 std::string ImportCacheKey(const ImportSource& source, const proto::ImportOptions& options);
-
-// Stores `source` as the map's GridMap through the cache, decoding it only on
-// a miss (ag-run's path; ag-import decodes first so that bad input never opens
-// the store).
-StageRun RunImportStage(ArtifactStore& store, const std::string& map_name,
-                        const ImportSource& source, const proto::ImportOptions& options,
-                        bool force);
 
 }  // namespace areagraph

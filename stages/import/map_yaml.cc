@@ -6,16 +6,12 @@
 #include <filesystem>
 #include <sstream>
 
-#include "store/error.h"
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
 namespace {
-
-std::string FormatNumber(double value) {
-  std::ostringstream text;
-  text << value;
-  return text.str();
-}
 
 // Wraps yaml-cpp's conversions so that every failure names file and key.
 class YamlReader {
@@ -80,15 +76,6 @@ YAML::Node LoadYaml(const std::string& yaml_text, const std::string& yaml_path) 
 }
 
 }  // namespace
-
-void CheckResolution(double resolution_m, const std::string& what, bool is_option) {
-  if (std::isfinite(resolution_m) && resolution_m > 0 && resolution_m <= kMaxResolutionM) return;
-  const std::string message = what + " must be a resolution in (0, " +
-                              FormatNumber(kMaxResolutionM) + "] metres per pixel, got " +
-                              FormatNumber(resolution_m);
-  if (is_option) throw OptionsError(message);
-  throw InputError(message);
-}
 
 MapYaml ParseMapYaml(const std::string& yaml_text, const std::string& yaml_path,
                      bool image_required) {

@@ -4,14 +4,6 @@
 
 namespace areagraph {
 
-// Largest accepted resolution. Anything coarser than a kilometre per pixel is
-// a typo (or a unit mix-up), not a map.
-inline constexpr double kMaxResolutionM = 1000.0;
-
-// Throws `Exception` (InputError or OptionsError) unless `resolution_m` is
-// finite, positive and at most kMaxResolutionM. `what` names its source.
-void CheckResolution(double resolution_m, const std::string& what, bool is_option);
-
 // A ROS map_server map description (the YAML beside the image).
 struct MapYaml {
   enum class Mode { kTrinary, kScale, kRaw };

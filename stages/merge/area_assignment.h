@@ -28,7 +28,8 @@ struct AreaPlan {
 // end, else a corridor), except a stub: a room-less edge from a junction to a
 // passage point that is no longer than the clearances at its two ends (it
 // lies inside their free disks, like the bit of corridor in front of a door)
-// joins the longest other room-less edge at its junction.
+// joins the longest other room-less edge at its junction (or, when there is
+// none, the longest edge there, so that it becomes part of that room).
 AreaPlan AssignAreas(const proto::CutGraph& graph);
 
 }  // namespace areagraph

@@ -4,28 +4,25 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <utility>
 
-#include "stages/common/map_frame.h"
+#include "common/error.h"
+#include "stages/common/pipeline_options_check.h"
+#include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
-#include "stages/merge/passage_finder.h"
-#include "stages/merge/region_outline.h"
 #include "stages/merge/room_joining.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
 
-// Douglas-Peucker tolerance for area outlines (px). Below half a cell, so
-// no cell centre changes sides: polygons and raster agree cell by cell.
-constexpr double kOutlineTolerancePx = 0.45;
-
-void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
+void CheckCutGraph(const proto::CutGraph& graph) {
   if (graph.edges_size() == 0) {
-    throw InputError(what + ": no Area Graph: the cut graph has no edges");
+    throw InputError("no Area Graph: the cut graph has no edges");
   }
   for (const proto::GraphEdge& edge : graph.edges()) {
     const bool ok = edge.source() >= 0 && edge.source() < graph.vertices_size() &&
@@ -33,8 +30,7 @@ void CheckCutGraph(const proto::CutGraph& graph, const std::string& what) {
                     edge.path_size() >= 2 && edge.left_sites_size() == edge.path_size() - 1 &&
                     edge.right_sites_size() == edge.path_size() - 1;
     if (!ok) {
-      throw InputError(what + ": the CutGraph artifact is corrupt (edge " +
-                       std::to_string(edge.id()) + ")");
+      throw InputError("the CutGraph artifact is corrupt (edge " + std::to_string(edge.id()) + ")");
     }
   }
 }
@@ -126,34 +122,13 @@ std::vector<std::pair<PointList, int>> ThroughPaths(const proto::CutGraph& graph
   return paths;
 }
 
-proto::Ring ToRing(const PointList& points, const MapTransform* transform) {
-  proto::Ring ring;
-  for (const Eigen::Vector2d& p : points) {
-    *ring.add_points() = ToProtoPoint(transform ? transform->PixelToWorld(p) : p);
-  }
-  return ring;
-}
-
 }  // namespace
 
-void CheckMergeOptions(const proto::MergeOptions& options) {
-  if (!std::isfinite(options.min_area_m2()) || options.min_area_m2() < 0) {
-    throw OptionsError("merge.min_area_m2 must be zero or more square metres, got " +
-                       std::to_string(options.min_area_m2()));
-  }
-  if (!std::isfinite(options.grow_min_gap_m()) || options.grow_min_gap_m() < 0) {
-    throw OptionsError("merge.grow_min_gap_m must be zero or more metres, got " +
-                       std::to_string(options.grow_min_gap_m()));
-  }
-}
-
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
-                                const proto::MergeOptions& options, const std::string& map_name,
-                                AreaRaster* raster_out) {
+                                const proto::MergeOptions& options, AreaRaster* raster_out) {
   CheckMergeOptions(options);
-  const std::string what = "map '" + map_name + "'";
-  const CellGrid grid(map, what);
-  CheckCutGraph(graph, what);
+  const CellGrid grid(map);
+  CheckCutGraph(graph);
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);
@@ -188,65 +163,13 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   FoldSmallAreas(graph, min_cells, &plan, &raster);
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
-    throw InputError(what + ": no Area Graph: no free cell lies inside the map's boundary");
+    throw InputError("no Area Graph: no free cell lies inside the map's boundary");
   }
 
-  // Bounding box and centroid of every area, in one pass.
-  const int area_count = static_cast<int>(plan.areas.size());
-  std::vector<cv::Rect> box(area_count);
-  std::vector<Eigen::Vector2d> centre_sum(area_count, Eigen::Vector2d::Zero());
-  for (int r = 0; r < raster.labels.rows; ++r) {
-    const int* row = raster.labels.ptr<int>(r);
-    for (int c = 0; c < raster.labels.cols; ++c) {
-      if (row[c] == 0) continue;
-      const int k = row[c] - 1;
-      box[k] = box[k].area() == 0 ? cv::Rect(c, r, 1, 1) : (box[k] | cv::Rect(c, r, 1, 1));
-      centre_sum[k] += Eigen::Vector2d(c + 0.5, r + 0.5);
-    }
-  }
-
-  const MapTransform transform(map.frame());
   proto::AreaGraph out;
-  out.set_format_version(1);
+  out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  std::vector<int> area_id(area_count, -1);
-  for (int k = 0; k < area_count; ++k) {
-    if (raster.cell_count[k] == 0) continue;  // left out: nothing to draw
-    area_id[k] = out.areas_size();
-    proto::Area* area = out.add_areas();
-    area->set_id(area_id[k]);
-    const RegionOutline outline =
-        SimplifyOutline(TraceRegionOutline(raster.labels, k + 1, box[k]), kOutlineTolerancePx);
-    *area->mutable_polygon_px()->mutable_outer() = ToRing(outline.outer, nullptr);
-    *area->mutable_polygon_m()->mutable_outer() = ToRing(outline.outer, &transform);
-    for (const PointList& hole : outline.holes) {
-      *area->mutable_polygon_px()->add_holes() = ToRing(hole, nullptr);
-      *area->mutable_polygon_m()->add_holes() = ToRing(hole, &transform);
-    }
-    area->set_area_m2(raster.cell_count[k] * cell_m2);
-    *area->mutable_centroid_m() = ToProtoPoint(
-        transform.PixelToWorld(centre_sum[k] / static_cast<double>(raster.cell_count[k])));
-    area->set_kind(plan.areas[k].kind);
-    for (int e : plan.areas[k].edges) area->add_topology_edge_ids(graph.edges(e).id());
-  }
-
-  std::vector<int> final_area_of_edge(graph.edges_size(), -1);
-  for (int e = 0; e < graph.edges_size(); ++e)
-    final_area_of_edge[e] = area_id[plan.area_of_edge[e]];
-  for (const PassagePlan& plan_passage : FindPassages(graph, final_area_of_edge)) {
-    proto::Passage* passage = out.add_passages();
-    passage->set_id(out.passages_size() - 1);
-    passage->set_area_a(plan_passage.area_a);
-    passage->set_area_b(plan_passage.area_b);
-    *passage->mutable_point_m() = ToProtoPoint(transform.PixelToWorld(plan_passage.point));
-    *passage->mutable_segment_m()->mutable_a() =
-        ToProtoPoint(transform.PixelToWorld(plan_passage.side_a));
-    *passage->mutable_segment_m()->mutable_b() =
-        ToProtoPoint(transform.PixelToWorld(plan_passage.side_b));
-    passage->set_width_m(plan_passage.width_px * grid.resolution_m());
-    out.mutable_areas(plan_passage.area_a)->add_passage_ids(passage->id());
-    out.mutable_areas(plan_passage.area_b)->add_passage_ids(passage->id());
-  }
+  AddAreasAndPassages(graph, plan, raster, options, &out);
   if (raster_out != nullptr) *raster_out = std::move(raster);
   return out;
 }

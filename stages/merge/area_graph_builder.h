@@ -8,10 +8,6 @@
 
 namespace areagraph {
 
-// Throws OptionsError when merge.min_area_m2 or merge.grow_min_gap_m is
-// negative or not finite.
-void CheckMergeOptions(const proto::MergeOptions& options);
-
 // ag-merge: the Area Graph. The CutGraph's edges are grouped into areas
 // (AssignAreas); the areas split the map's free cells inside the boundary
 // among themselves (PartitionFreeSpace), so they never overlap and each is
@@ -19,13 +15,13 @@ void CheckMergeOptions(const proto::MergeOptions& options);
 // merge.cover_removed_obstacles, and free space behind gaps narrower than
 // merge.grow_min_gap_m that no edge reaches stays unlabelled; areas smaller
 // than merge.min_area_m2 (and areas left without cells) fold into the
-// neighbour they share the longest border with. Every
-// area's polygon is traced along cell edges and lightly simplified; the
-// passages are where areas meet at graph vertices (FindPassages). When
-// `raster` is given it receives the final label image. Throws InputError
-// naming `map_name` for an unusable CutGraph.
+// neighbour they share the longest border with. The areas' polygons are
+// a planar partition of that raster, simplified without changing its
+// topology, and the passages (where areas meet at graph vertices) lie on the
+// borders they open (AddAreasAndPassages). When
+// `raster` is given it receives the final label image. Throws InputError for
+// an unusable CutGraph.
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
-                                const proto::MergeOptions& options, const std::string& map_name,
-                                AreaRaster* raster = nullptr);
+                                const proto::MergeOptions& options, AreaRaster* raster = nullptr);
 
 }  // namespace areagraph

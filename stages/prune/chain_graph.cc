@@ -68,11 +68,6 @@ std::vector<std::vector<Incidence>> ChainGraph::Incidences() const {
   return incidences;
 }
 
-int ChainGraph::LiveEdgeCount() const {
-  return static_cast<int>(
-      std::count_if(edges.begin(), edges.end(), [](const ChainEdge& e) { return !e.removed; }));
-}
-
 void ChainGraph::CompactEdges() {
   edges.erase(
       std::remove_if(edges.begin(), edges.end(), [](const ChainEdge& e) { return e.removed; }),

@@ -67,8 +67,6 @@ class ChainGraph {
 
   // Drops removed edges (edge indices change; vertex indices do not).
   void CompactEdges();
-
-  int LiveEdgeCount() const;
 };
 
 // Direction in which the edge end `incidence` leaves its vertex, as an angle

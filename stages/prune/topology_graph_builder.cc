@@ -1,14 +1,16 @@
 #include "stages/prune/topology_graph_builder.h"
 
 #include <cmath>
-#include <sstream>
 
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/pipeline_options_check.h"
+#include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/site_alpha_shape.h"
 #include "stages/prune/chain_graph.h"
 #include "stages/prune/chain_pruning.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {
@@ -17,26 +19,21 @@ namespace {
 // many co-circular sites, whose Voronoi vertices coincide.
 constexpr double kSamePointPx = 1e-6;
 
-std::string Metres(double value) {
-  std::ostringstream out;
-  out << value << " m";
-  return out.str();
-}
+std::string Metres(double value) { return FormatNumber(value) + " m"; }
 
 // Throws when a Voronoi edge names a vertex or site that does not exist.
-void CheckIndex(int index, int size, const char* element, int edge, const std::string& what) {
+void CheckIndex(int index, int size, const char* element, int edge) {
   if (index < 0 || index >= size) {
-    throw InputError(what + ": the Voronoi diagram artifact is corrupt: edge " +
-                     std::to_string(edge) + " names " + element + " " + std::to_string(index) +
-                     " of " + std::to_string(size));
+    throw InputError("the Voronoi diagram artifact is corrupt: edge " + std::to_string(edge) +
+                     " names " + element + " " + std::to_string(index) + " of " +
+                     std::to_string(size));
   }
 }
 
 // The Voronoi edges that survive the boundary, free-cell and clearance
 // filters, as one-segment chains.
 ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const CellGrid& grid,
-                                SiteAlphaShape& boundary_shape, double min_clearance_px,
-                                const std::string& what) {
+                                SiteAlphaShape& boundary_shape, double min_clearance_px) {
   const int vertex_count = diagram.vertices_size();
   const int site_count = diagram.sites_size();
   std::vector<char> keep(vertex_count, 0);
@@ -49,11 +46,11 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
   std::vector<int> kept_edges;
   for (int e = 0; e < diagram.edges_size(); ++e) {
     const proto::VoronoiEdge& edge = diagram.edges(e);
-    CheckIndex(edge.source(), vertex_count, "vertex", e, what);
+    CheckIndex(edge.source(), vertex_count, "vertex", e);
     if (edge.target() < 0) continue;  // a ray
-    CheckIndex(edge.target(), vertex_count, "vertex", e, what);
-    CheckIndex(edge.left_site(), site_count, "site", e, what);
-    CheckIndex(edge.right_site(), site_count, "site", e, what);
+    CheckIndex(edge.target(), vertex_count, "vertex", e);
+    CheckIndex(edge.left_site(), site_count, "site", e);
+    CheckIndex(edge.right_site(), site_count, "site", e);
     if (!keep[edge.source()] || !keep[edge.target()]) continue;
     if (!(edge.clearance_px() >= min_clearance_px)) continue;
     const Eigen::Vector2d a = FromProtoPoint(diagram.vertices(edge.source()).position());
@@ -97,7 +94,7 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
 proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& frame,
                              proto::Polygon boundary) {
   proto::TopologyGraph out;
-  out.set_format_version(1);
+  out.set_format_version(kTopologyGraphFormatVersion);
   *out.mutable_frame() = frame;
   *out.mutable_boundary() = std::move(boundary);
 
@@ -132,33 +129,11 @@ proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& fra
 
 }  // namespace
 
-void CheckPruneOptions(const proto::PruneOptions& options) {
-  auto require = [](bool ok, const std::string& message) {
-    if (!ok) throw OptionsError(message);
-  };
-  const double radius = options.boundary_alpha_radius_m();
-  require(std::isfinite(radius) && radius > 0,
-          "prune.boundary_alpha_radius_m must be a positive number of metres, got " +
-              std::to_string(radius));
-  const double clearance = options.min_clearance_m();
-  require(std::isfinite(clearance) && clearance >= 0,
-          "prune.min_clearance_m must be zero or more metres, got " + std::to_string(clearance));
-  const double dead_end = options.dead_end_max_length_m();
-  require(
-      std::isfinite(dead_end) && dead_end >= 0,
-      "prune.dead_end_max_length_m must be zero or more metres, got " + std::to_string(dead_end));
-  require(options.dead_end_passes() >= 0 && options.dead_end_passes() <= 1000,
-          "prune.dead_end_passes must be between 0 and 1000, got " +
-              std::to_string(options.dead_end_passes()));
-}
-
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
-                                        const proto::PruneOptions& options,
-                                        const std::string& map_name) {
+                                        const proto::PruneOptions& options) {
   CheckPruneOptions(options);
-  const std::string what = "map '" + map_name + "'";
-  const CellGrid grid(map, what);
+  const CellGrid grid(map);
   const double resolution = grid.resolution_m();
   const double map_size_px = std::hypot(grid.width(), grid.height());
   if (options.min_clearance_m() / resolution > map_size_px) {
@@ -168,22 +143,21 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
 
   const PointList sites = ToPointList(diagram.sites());
   if (sites.size() < 3) {
-    throw InputError(what + ": no Topology Graph: the map has " + std::to_string(sites.size()) +
+    throw InputError("no Topology Graph: the map has " + std::to_string(sites.size()) +
                      " obstacle cells next to free space, too few to enclose any");
   }
   SiteAlphaShape boundary_shape(sites, options.boundary_alpha_radius_m() / resolution);
   proto::Polygon boundary = boundary_shape.BiggestShapeOutline();
   if (boundary.outer().points_size() < 3) {
-    throw InputError(what +
-                     ": no Topology Graph: the obstacles enclose no space (no alpha shape with " +
+    throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +
                      Metres(options.boundary_alpha_radius_m()) + " radius)");
   }
 
   const double min_clearance_px = options.min_clearance_m() / resolution;
-  ChainGraph graph = FilteredVoronoiGraph(diagram, grid, boundary_shape, min_clearance_px, what);
+  ChainGraph graph = FilteredVoronoiGraph(diagram, grid, boundary_shape, min_clearance_px);
   graph.JoinDegreeTwoChains();
   if (graph.edges.empty()) {
-    throw InputError(what + ": no Topology Graph: no Voronoi edge inside the boundary keeps " +
+    throw InputError("no Topology Graph: no Voronoi edge inside the boundary keeps " +
                      Metres(options.min_clearance_m()) + " away from obstacles");
   }
   const double dead_end_px = options.dead_end_max_length_m() / resolution;

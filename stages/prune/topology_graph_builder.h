@@ -7,20 +7,16 @@
 
 namespace areagraph {
 
-// Throws OptionsError naming the first prune option that is out of range.
-void CheckPruneOptions(const proto::PruneOptions& options);
-
 // ag-prune: the Topology Graph with a polygon on every edge (the paper's
 // G_A^0). Voronoi vertices outside the boundary alpha shape or not on a free
 // cell go, as do rays and edges closer to an obstacle than
 // min_clearance_m; chains of degree-2 vertices become edges; short dead ends
 // are removed with their polygons absorbed (Alg. 2); close junctions merge;
 // the connected group with the most edge length stays. Throws InputError
-// ("map '<map_name>': no Topology Graph: ...") when nothing is left, and
-// OptionsError on bad options.
+// ("no Topology Graph: ...") when nothing is left, and OptionsError on bad
+// options.
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
-                                        const proto::PruneOptions& options,
-                                        const std::string& map_name);
+                                        const proto::PruneOptions& options);
 
 }  // namespace areagraph

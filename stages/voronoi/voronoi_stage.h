@@ -9,10 +9,9 @@ namespace areagraph {
 
 // The ag-voronoi computation: the Voronoi diagram (see BuildVoronoiDiagram)
 // of the cleaned map's ObstacleSites, with format_version and frame set.
-// Throws InputError naming `map_name` when the grid is malformed, has no free
-// space, or has too few obstacle sites for a diagram.
+// Throws InputError when the grid is malformed, has no free space, or has too
+// few obstacle sites for a diagram.
 proto::VoronoiDiagram ComputeVoronoiStage(const proto::CleanedMap& map,
-                                          const proto::VoronoiOptions& options,
-                                          const std::string& map_name);
+                                          const proto::VoronoiOptions& options);
 
 }  // namespace areagraph

@@ -4,8 +4,8 @@
 #include <regex>
 #include <string>
 
+#include "common/error.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tests/store/maintenance_helpers.h"
 #include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"

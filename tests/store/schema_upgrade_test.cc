@@ -1,10 +1,11 @@
 // Opening a store written by schema version 1 (before failures existed).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
+#include "common/error.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tests/store/maintenance_helpers.h"
 #include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
@@ -37,7 +38,8 @@ TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   ASSERT_EQ(Tables(path), (std::vector<std::string>{"artifacts", "heads", "maps"}));
 
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
-  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"), std::vector<std::string>{"2"});
+  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
+            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
   EXPECT_EQ(Tables(path), (std::vector<std::string>{"artifacts", "failures", "heads", "maps"}));
   ExpectVersion1DataIntact(*store);
   EXPECT_TRUE(store->ReadFailures().empty());
@@ -47,11 +49,31 @@ TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   failure.message = "boom";
   store->RecordFailure(failure);
   EXPECT_EQ(store->ReadFailures().size(), 1u);
-  EXPECT_TRUE(store->Verify().empty());
+  EXPECT_TRUE(store->Verify({"import"}).empty());
   store.reset();
   // Opening again changes nothing.
   OpenArtifactStore(path);
-  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"), std::vector<std::string>{"2"});
+  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
+            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
+}
+
+// Schema 3: summary lines. Rows written before it read back with an empty
+// one; new rows keep theirs, in full reads and in summaries.
+TEST(SchemaUpgradeTest, UpgradeAddsSummaryLines) {
+  testing::TempDir dir;
+  const std::string path = dir.File("v1.db");
+  testing::CreateVersion1Store(path);
+  std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
+  const std::vector<std::string> columns = QueryColumn(path, "PRAGMA table_info(artifacts)", 1);
+  EXPECT_NE(std::find(columns.begin(), columns.end(), "summary"), columns.end());
+  EXPECT_EQ(store->ReadHead("old_map", "clean")->summary_line, "");
+  NewArtifact artifact = testing::Artifact("old_map", "voronoi", "v3-voronoi", {"v1-clean"}, "d");
+  artifact.summary_line = "3 sites, 1 vertices, 0 edges";
+  store->WriteArtifact(artifact);
+  EXPECT_EQ(store->ReadHead("old_map", "voronoi")->summary_line, artifact.summary_line);
+  EXPECT_EQ(store->ReadArtifactSummary("old_map", "v3-voronoi")->summary_line,
+            artifact.summary_line);
+  EXPECT_FALSE(store->ReadArtifactSummary("old_map", "no-such-key"));
 }
 
 TEST(SchemaUpgradeTest, ReadOnlyOpenReadsVersion1AsItIs) {
@@ -61,7 +83,7 @@ TEST(SchemaUpgradeTest, ReadOnlyOpenReadsVersion1AsItIs) {
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path, StoreMode::kReadOnly);
   ExpectVersion1DataIntact(*store);
   EXPECT_TRUE(store->ReadFailures().empty());
-  EXPECT_TRUE(store->Verify().empty());
+  EXPECT_TRUE(store->Verify({"import"}).empty());
   store->ClearFailure("old_map");  // nothing to clear
   EXPECT_THROW(store->RecordFailure(FailureRecord{"old_map", "cut", "x", "", ""}), StoreError);
   store.reset();

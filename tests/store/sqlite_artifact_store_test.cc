@@ -3,9 +3,9 @@
 #include <regex>
 #include <string>
 
+#include "common/error.h"
 #include "store/artifact_store.h"
 #include "store/digest.h"
-#include "store/error.h"
 #include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 

@@ -6,8 +6,8 @@
 #include <set>
 #include <string>
 
+#include "common/error.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 

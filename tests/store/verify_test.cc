@@ -22,7 +22,7 @@ void WriteChain(ArtifactStore& store, const std::string& map_name, const std::st
 }
 
 std::vector<VerifyProblem> VerifyFile(const std::string& path) {
-  return OpenArtifactStore(path, StoreMode::kReadOnly)->Verify();
+  return OpenArtifactStore(path, StoreMode::kReadOnly)->Verify({"import"});
 }
 
 TEST(VerifyTest, CleanStoreHasNoProblemsAndReportsProgress) {
@@ -30,13 +30,15 @@ TEST(VerifyTest, CleanStoreHasNoProblemsAndReportsProgress) {
   WriteChain(*store, "a", "a");
   WriteChain(*store, "b", "b");
   std::vector<std::pair<int64_t, int64_t>> calls;
-  EXPECT_TRUE(
-      store->Verify([&](int64_t done, int64_t total) { calls.emplace_back(done, total); }).empty());
+  EXPECT_TRUE(store
+                  ->Verify({"import"},
+                           [&](int64_t done, int64_t total) { calls.emplace_back(done, total); })
+                  .empty());
   ASSERT_EQ(calls.size(), 6u);
   for (size_t i = 0; i < calls.size(); ++i) {
     EXPECT_EQ(calls[i], std::make_pair(static_cast<int64_t>(i + 1), int64_t{6}));
   }
-  EXPECT_TRUE(OpenArtifactStore(":memory:")->Verify().empty());  // empty store
+  EXPECT_TRUE(OpenArtifactStore(":memory:")->Verify({"import"}).empty());  // empty store
 }
 
 TEST(VerifyTest, CorruptedPayloadIsReported) {
@@ -57,7 +59,7 @@ TEST(VerifyTest, PayloadThatIsNotProtobufIsReported) {
   NewArtifact artifact = Artifact("m", "import", "k", {"file"});
   artifact.payload = "\x0a\x7f short";  // a length beyond the end
   store->WriteArtifact(artifact);
-  const std::vector<VerifyProblem> problems = store->Verify();
+  const std::vector<VerifyProblem> problems = store->Verify({"import"});
   ASSERT_EQ(problems.size(), 1u);
   EXPECT_EQ(problems[0].cache_key, "k");
   EXPECT_EQ(problems[0].problem, "payload is not protobuf wire format");
@@ -70,7 +72,7 @@ TEST(VerifyTest, MissingInputIsReportedExceptForImport) {
   store->WriteArtifact(Artifact("m", "prune", "k-p", {"k-c", "gone-key-12345"}));
   // An artifact of another map does not count as this map's input.
   store->WriteArtifact(Artifact("other", "clean", "k-o", {"k-i"}));
-  const std::vector<VerifyProblem> problems = store->Verify();
+  const std::vector<VerifyProblem> problems = store->Verify({"import"});
   ASSERT_EQ(problems.size(), 2u);
   EXPECT_EQ(problems[0].cache_key, "k-p");
   EXPECT_EQ(problems[0].problem, "input gone-key-123 is not an artifact of the map");

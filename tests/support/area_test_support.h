@@ -6,6 +6,7 @@
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
 #include "stages/merge/area_raster.h"
+#include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
 
@@ -30,26 +31,39 @@ struct AreaStages {
 };
 
 // Runs ag-voronoi, ag-prune, ag-cut and ag-merge in process.
-AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options = {},
-                         const std::string& map_name = "test");
+AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options = {});
 
 // Checks what every Area Graph must satisfy (gtest failures, not exceptions):
 // - every area polygon is simple (CGAL is_simple_2 per ring, and no ring
 //   touches another), with positive area;
-// - no cell centre lies inside two area polygons, and the raster labels one
-//   area per cell;
+// - no cell centre lies inside two area polygons, no two polygons' interiors
+//   overlap (exact), and a cell that a polygon other than its raster area's
+//   holds lies within merge.outline_tolerance_m (plus a cell) of that area;
 // - the areas cover at least `min_coverage` of the free cells inside the
 //   boundary, in the raster and in the polygons, and at least 99 % of those
 //   that are reachable (4-connected through free cells inside the boundary)
 //   from some area: real maps have closed-off pockets, such as courtyards,
 //   and rooms behind gaps narrower than merge.grow_min_gap_m that no area
 //   reached do not count;
-// - every passage joins two different existing areas, and both have cells
-//   next to the passage point;
+// - every passage joins two different existing areas, both have cells next
+//   to the passage point, and its end points are vertices of both areas'
+//   outlines (a piece of their shared border);
 // - the areas are connected through the passages;
 // - every CutGraph edge belongs to exactly one area.
 void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap& map,
                                double min_coverage = 0.95);
+
+// Drawn maps that several merge tests share.
+// Two rooms (4 and 4.5 m wide, 4 m deep) joined by a 0.9 m door centred at
+// (4.5, 2.5) m in the wall between them.
+floorplan::FloorPlan TwoRoomsWithADoor();
+// An L-shaped corridor, 1.0 m free between its walls.
+floorplan::FloorPlan LCorridor();
+// A 5 x 5 maze of 1.15 m cells with 0.15 m walls: corridors 1.0 m wide.
+floorplan::FloorPlan FiveByFiveMaze();
+// The paper's areas on the maze: a fixed W of 2 m (no room shapes), every
+// area kept however small, one area per Topology Graph edge.
+proto::PipelineOptions PaperMazeOptions();
 
 // Id of the area whose polygon holds the point given in plan metres (x
 // right, y down from the top-left corner, like floorplan::RectM), or -1.

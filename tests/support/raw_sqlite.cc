@@ -48,6 +48,13 @@ std::vector<std::string> QueryColumn(const std::string& path, const std::string&
   return values;
 }
 
+std::vector<std::string> HeadDigests(const std::string& path) {
+  return QueryColumn(path,
+                     "SELECT m.name || ' ' || h.stage || ' ' || a.payload_digest FROM heads h"
+                     " JOIN maps m ON m.id = h.map_id JOIN artifacts a ON a.id = h.artifact_id"
+                     " ORDER BY 1");
+}
+
 void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset) {
   const std::vector<std::string> ids =
       QueryColumn(path, "SELECT id FROM artifacts WHERE cache_key = '" + cache_key + "'");

@@ -17,6 +17,10 @@ void ExecSql(const std::string& path, const std::string& sql);
 std::vector<std::string> QueryColumn(const std::string& path, const std::string& sql,
                                      int column = 0);
 
+// "map stage payload-digest" of every head, sorted: two stores that hold the
+// same results give the same list.
+std::vector<std::string> HeadDigests(const std::string& path);
+
 // Overwrites one byte of artifacts.payload in place (the BLOB API, no SQL
 // rewrite), keeping the stored digest.
 void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset);

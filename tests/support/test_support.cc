@@ -98,4 +98,12 @@ int CountLines(const std::string& text) {
   return lines;
 }
 
+int CountOccurrences(const std::string& text, const std::string& needle) {
+  int count = 0;
+  for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) {
+    ++count;
+  }
+  return count;
+}
+
 }  // namespace areagraph::testing

@@ -61,4 +61,7 @@ std::string ErrorOf(F run) {
 // Number of lines in `text` that are not empty.
 int CountLines(const std::string& text);
 
+// How many times `needle` occurs in `text` (overlaps included).
+int CountOccurrences(const std::string& text, const std::string& needle);
+
 }  // namespace areagraph::testing

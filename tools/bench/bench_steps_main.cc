@@ -32,8 +32,9 @@ enum Step {
   kSerialize,
   kStepCount
 };
-const char* const kStepNames[kStepCount] = {"import", "outliers", "furniture", "clean",
-                                            "sites",  "diagram",  "voronoi",   "serialize"};
+const char* const kStepNames[kStepCount] = {kImportStage.name,  "outliers", "furniture",
+                                            kCleanStage.name,   "sites",    "diagram",
+                                            kVoronoiStage.name, "serialize"};
 
 std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOptions& options,
                               int repeat) {
@@ -45,7 +46,7 @@ std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOpti
         ElapsedMs([&] { grid = ImportGridMap(ReadImportSource(path), options.import()); }));
     const int width = grid.frame().width_px();
     const int height = grid.frame().height_px();
-    const CleanParameters parameters = CheckCleanOptions(options.clean(), grid.frame());
+    const CleanParameters parameters = CleanParametersFor(options.clean(), grid.frame());
 
     // The two halves of the clean stage, on a copy of the cells.
     std::string cells = grid.cells();
@@ -58,8 +59,7 @@ std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOpti
                       parameters.furniture_max_perimeter_px);
     }));
     proto::CleanedMap cleaned;
-    samples[kClean].push_back(
-        ElapsedMs([&] { cleaned = CleanGridMap(grid, options.clean(), name); }));
+    samples[kClean].push_back(ElapsedMs([&] { cleaned = CleanGridMap(grid, options.clean()); }));
 
     std::vector<Eigen::Vector2d> sites;
     samples[kSites].push_back(
@@ -69,7 +69,7 @@ std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOpti
     samples[kDiagram].push_back(ElapsedMs([&] { BuildVoronoiDiagram(sites, build_options); }));
     proto::VoronoiDiagram diagram;
     samples[kVoronoi].push_back(
-        ElapsedMs([&] { diagram = ComputeVoronoiStage(cleaned, options.voronoi(), name); }));
+        ElapsedMs([&] { diagram = ComputeVoronoiStage(cleaned, options.voronoi()); }));
 
     // What the store adds on top of the computing: the artifacts' bytes.
     samples[kSerialize].push_back(ElapsedMs([&] {

@@ -5,8 +5,8 @@
 #include <iostream>
 #include <string>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
-#include "store/error.h"
 #include "tools/eval/dataset_evaluation.h"
 #include "tools/eval/evaluation_report.h"
 #include "tools/eval/gt_picture.h"

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <set>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 

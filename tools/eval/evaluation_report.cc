@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/eval/evaluation_report.pb.h"
 
 namespace areagraph {

@@ -3,7 +3,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/eval/label_image.h"
 
 namespace areagraph {

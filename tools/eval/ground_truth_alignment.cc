@@ -3,7 +3,7 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 

@@ -4,7 +4,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/eval/map_evaluation.h"
 
 namespace areagraph {

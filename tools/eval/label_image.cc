@@ -6,7 +6,7 @@
 #include <set>
 #include <unordered_map>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 

@@ -5,7 +5,7 @@
 #include <map>
 #include <set>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 

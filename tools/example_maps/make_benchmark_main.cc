@@ -7,6 +7,7 @@
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 
+#include "stages/common/command_line.h"
 #include "tools/example_maps/benchmark_floor.h"
 
 namespace areagraph::floorplan {
@@ -51,22 +52,19 @@ int main(int argc, char** argv) {
   app.add_option("--count", count, "only the first COUNT floors of the part")
       ->check(CLI::Range(1, 100000));
   app.add_option("OUT", out_dir, "folder to write to")->required();
-  CLI11_PARSE(app, argc, argv);
-  const BenchmarkPart part = part_name == kTuningPart.name ? kTuningPart : kHeldOutPart;
-  if (count < 0 || count > part.count) count = part.count;
-  try {
+  return areagraph::RunCommand("ag-make-benchmark", app, argc, argv, [&] {
+    const BenchmarkPart part = part_name == kTuningPart.name ? kTuningPart : kHeldOutPart;
+    if (count < 0 || count > part.count) count = part.count;
     const std::filesystem::path out(out_dir);
     std::filesystem::create_directories(out / "maps");
     std::filesystem::create_directories(out / "gt");
     std::ofstream index(out / "index.tsv");
-    index << "name\tseed\tlayout\tresolution_m\tcorridor_m\tnarrowest_door_m\twidest_door_m\tzones\n";
+    index
+        << "name\tseed\tlayout\tresolution_m\tcorridor_m\tnarrowest_door_m\twidest_door_m\tzones\n";
     for (int i = 0; i < count; ++i) WriteFloor(part.first_seed + i, out, index);
     if (!index) throw std::runtime_error("cannot write " + (out / "index.tsv").string());
-  } catch (const std::exception& e) {
-    std::cerr << "ag-make-benchmark: " << e.what() << "\n";
-    return 1;
-  }
-  std::cout << "wrote " << count << " floors of the " << part.name << " part to " << out_dir
-            << "\n";
-  return 0;
+    std::cout << "wrote " << count << " floors of the " << part.name << " part to " << out_dir
+              << "\n";
+    return 0;
+  });
 }

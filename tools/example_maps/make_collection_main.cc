@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <iostream>
 
+#include "stages/common/command_line.h"
 #include "tools/example_maps/random_floor_plan.h"
 
 int main(int argc, char** argv) {
@@ -22,8 +23,7 @@ int main(int argc, char** argv) {
   app.add_option("--seed", seed, "seed of the first map; map i uses seed + i")
       ->capture_default_str();
   app.add_option("OUT", out_dir, "folder to write to")->required();
-  CLI11_PARSE(app, argc, argv);
-  try {
+  return areagraph::RunCommand("ag-make-collection", app, argc, argv, [&] {
     for (int i = 0; i < count; ++i) {
       char folder[16], name[32];
       std::snprintf(folder, sizeof(folder), "%03d", i / 100);
@@ -32,10 +32,7 @@ int main(int argc, char** argv) {
       std::filesystem::create_directories(dir);
       WritePlanPng(RandomOfficePlan(seed + static_cast<unsigned>(i)), (dir / name).string());
     }
-  } catch (const std::exception& e) {
-    std::cerr << "ag-make-collection: " << e.what() << "\n";
-    return 1;
-  }
-  std::cout << "wrote " << count << " maps to " << out_dir << "\n";
-  return 0;
+    std::cout << "wrote " << count << " maps to " << out_dir << "\n";
+    return 0;
+  });
 }

@@ -5,6 +5,7 @@
 #include <iostream>
 #include <string>
 
+#include "stages/common/command_line.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::floorplan {
@@ -89,19 +90,15 @@ int main(int argc, char** argv) {
       "drawings are deterministic, so re-running reproduces the files in examples/."};
   std::string out_dir = ".";
   app.add_option("--out", out_dir, "folder to write to (e.g. examples)")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
-  try {
+  return areagraph::RunCommand("ag-make-example-maps", app, argc, argv, [&] {
     WritePlanPng(TwoRooms(), out_dir + "/two_rooms.png");
     WritePlanPng(CorridorRooms(), out_dir + "/corridor_rooms.png");
     const FloorPlan office = OfficeSmall();
     WritePlanPng(office, out_dir + "/office_small.png");
     WriteText(out_dir + "/office_small.yaml",
               MapServerYaml(office, "office_small.png", -2.0, -1.5));
-  } catch (const std::exception& e) {
-    std::cerr << "ag-make-example-maps: " << e.what() << "\n";
-    return 1;
-  }
-  std::cout << "wrote two_rooms.png, corridor_rooms.png, office_small.png, office_small.yaml to "
-            << out_dir << "\n";
-  return 0;
+    std::cout << "wrote two_rooms.png, corridor_rooms.png, office_small.png, office_small.yaml to "
+              << out_dir << "\n";
+    return 0;
+  });
 }

@@ -1,44 +1,101 @@
 // ag-export: writes a map's Area Graph (the head ag-merge artifact) as a
-// label image, GeoJSON, osmAG XML or JSON.
+// label image, a colour preview, GeoJSON, osmAG XML or JSON, or the whole run
+// as an HTML viewer.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <string>
+#include <vector>
 
+#include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/export/area_graph_export.h"
+#include "tools/export/html_viewer.h"
+
+namespace {
+
+// Throws OptionsError when one of `options` was given but the format is none of `formats`.
+void RequireFormatFor(const CLI::App& app, const std::string& format_name,
+                      const std::vector<std::string>& formats,
+                      std::initializer_list<const char*> options) {
+  if (std::find(formats.begin(), formats.end(), format_name) != formats.end()) return;
+  for (const char* option : options) {
+    if (app.count(option) > 0) {
+      std::string names;
+      for (const std::string& format : formats) names += (names.empty() ? "" : " or ") + format;
+      throw areagraph::OptionsError(std::string(option) + " goes with --format " + names);
+    }
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
       "Writes the Area Graph of one map in another format.\n"
-      "  labels   16-bit PNG the size of the map: 0 = no area, area id + 1 inside each area\n"
-      "  geojson  FeatureCollection in map metres: areas as Polygons, passages as LineStrings\n"
-      "  osmag    osmAG XML for JOSM: areas as closed ways, passages as two-node ways\n"
-      "  json     the AreaGraph message as JSON"};
-  std::string store_path = "areagraph.db", map_name, format_name, out_path;
+      "  labels     16-bit PNG the size of the map: 0 = no area, area id + 1 inside each area\n"
+      "  preview    colour PNG to look at: areas filled, passages red\n"
+      "  geojson    FeatureCollection (ids area/<id>, passage/<id>): WGS 84 with --anchor-lat/\n"
+      "             --anchor-lon, else local map metres (the file says which); QGIS, GDAL\n"
+      "  osmag      osmAG XML (the Area Graph authors' OSM format) for JOSM: areas as closed\n"
+      "             ways under a structure area, passages as ways over nodes of both areas\n"
+      "  json       networkx node-link JSON: nx.node_link_graph(json.load(f)) is a MultiGraph\n"
+      "  protojson  the AreaGraph message as protobuf JSON\n"
+      "  html       one self-contained page to inspect every stage in a browser (layers, hover,\n"
+      "             zoom, options, times); --compare KEY shows a second run beside it"};
+  std::string store_path = "areagraph.db", map_name, format_name, out_path, key, compare_key;
+  std::string features = "all";
   areagraph::GeoAnchor anchor;
+  areagraph::ExportSettings settings;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map_name, "name of the map in the store")->required();
-  app.add_option("--format", format_name, "labels, geojson, osmag or json")->required();
+  app.add_option("--format", format_name,
+                 "labels, preview, geojson, osmag, json, protojson or html")
+      ->required();
   app.add_option("--out", out_path, "file to write")->required();
   app.add_option("--anchor-lat", anchor.lat_deg,
-                 "osmag: latitude of the map's world origin in degrees (default 31.17947)");
+                 "geojson, osmag: latitude of the map's world origin in degrees (osmag without "
+                 "it: 31.17947)");
   app.add_option("--anchor-lon", anchor.lon_deg,
-                 "osmag: longitude of the map's world origin in degrees (default 121.59042)");
+                 "geojson, osmag: longitude of the map's world origin in degrees (osmag without "
+                 "it: 121.59042)");
+  app.add_option("--level", settings.level, "osmag: the floor, tagged level")
+      ->capture_default_str();
+  app.add_option("--height", settings.height_m,
+                 "osmag: the floor's height in metres, tagged height on every area (default: "
+                 "unknown, not written)");
+  app.add_option("--features", features,
+                 "geojson: all, areas or passages (one geometry type per file, as Shapefile "
+                 "needs)")
+      ->capture_default_str();
+  app.add_option("--key", key,
+                 "html: show the run behind this artifact key (prefix; default: heads)");
+  app.add_option("--compare", compare_key, "html: a second key of the map to compare with");
   return areagraph::RunCommand("ag-export", app, argc, argv, [&] {
-    areagraph::ExportSettings settings;
+    if (format_name == "html")
+      return areagraph::ExportViewerPage(store_path, map_name, key, compare_key, out_path);
+    if (!key.empty() || !compare_key.empty()) {
+      throw areagraph::OptionsError("--key and --compare go with --format html");
+    }
+    RequireFormatFor(app, format_name, {"osmag"}, {"--level", "--height"});
+    RequireFormatFor(app, format_name, {"geojson"}, {"--features"});
+    RequireFormatFor(app, format_name, {"geojson", "osmag"}, {"--anchor-lat", "--anchor-lon"});
     settings.format = areagraph::ParseExportFormat(format_name);
     settings.map_name = map_name;
-    settings.anchor = anchor;
+    settings.features = areagraph::ParseGeoJsonFeatures(features);
+    if (app.count("--anchor-lat") != app.count("--anchor-lon")) {
+      throw areagraph::OptionsError("give both --anchor-lat and --anchor-lon, or neither");
+    }
+    if (app.count("--anchor-lat") > 0) settings.anchor = anchor;
     if (anchor.lat_deg < -89 || anchor.lat_deg > 89 || anchor.lon_deg < -180 ||
         anchor.lon_deg > 180) {
       throw areagraph::OptionsError(
-          "--anchor-lat must be in [-89, 89] and --anchor-lon in "
-          "[-180, 180]");
+          "--anchor-lat must be in [-89, 89] and --anchor-lon in [-180, 180]");
     }
+    if (!(settings.height_m >= 0)) throw areagraph::OptionsError("--height must be >= 0 metres");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     const auto graph = areagraph::ReadHeadArtifact<areagraph::proto::AreaGraph>(
         *store, map_name, areagraph::kMergeStage);

@@ -8,18 +8,23 @@
 #include <opencv2/imgcodecs.hpp>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_label_image.h"
-#include "tools/export/geojson_export.h"
+#include "tools/export/node_link_json.h"
+#include "tools/export/osmag_export.h"
+#include "tools/export/preview_image.h"
 
 namespace areagraph {
 
 ExportFormat ParseExportFormat(const std::string& name) {
   if (name == "labels") return ExportFormat::kLabels;
+  if (name == "preview") return ExportFormat::kPreview;
   if (name == "geojson") return ExportFormat::kGeoJson;
   if (name == "osmag") return ExportFormat::kOsmAg;
   if (name == "json") return ExportFormat::kJson;
-  throw OptionsError("unknown export format '" + name + "'; use labels, geojson, osmag or json");
+  if (name == "protojson") return ExportFormat::kProtoJson;
+  throw OptionsError("unknown export format '" + name +
+                     "'; use labels, preview, geojson, osmag, json, protojson or html");
 }
 
 std::string AreaGraphToJson(const proto::AreaGraph& graph) {
@@ -37,7 +42,7 @@ namespace {
 
 std::string EncodePng(const cv::Mat& image) {
   std::vector<uchar> bytes;
-  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode the label image as PNG");
+  if (!cv::imencode(".png", image, bytes)) throw Error("cannot encode the image as PNG");
   return std::string(bytes.begin(), bytes.end());
 }
 
@@ -47,11 +52,16 @@ std::string ExportAreaGraph(const proto::AreaGraph& graph, const ExportSettings&
   switch (settings.format) {
     case ExportFormat::kLabels:
       return EncodePng(AreaLabelImage(graph));
+    case ExportFormat::kPreview:
+      return EncodePng(AreaGraphPreview(graph));
     case ExportFormat::kGeoJson:
-      return AreaGraphToGeoJson(graph);
+      return AreaGraphToGeoJson(graph, {settings.map_name, settings.anchor, settings.features});
     case ExportFormat::kOsmAg:
-      return AreaGraphToOsmAg(graph, settings.map_name, settings.anchor);
+      return AreaGraphToOsmAg(graph, {settings.map_name, settings.anchor.value_or(GeoAnchor()),
+                                      settings.level, settings.height_m});
     case ExportFormat::kJson:
+      return AreaGraphToNodeLinkJson(graph, settings.map_name);
+    case ExportFormat::kProtoJson:
       return AreaGraphToJson(graph);
   }
   throw OptionsError("unknown export format");

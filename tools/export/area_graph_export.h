@@ -1,31 +1,44 @@
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "proto/artifacts.pb.h"
-#include "tools/export/osmag_export.h"
+#include "tools/export/geo_anchor.h"
+#include "tools/export/geojson_export.h"
 
 namespace areagraph {
 
 enum class ExportFormat {
   // 16-bit PNG label image (see area_label_image.h).
   kLabels,
-  // GeoJSON in world metres (see geojson_export.h).
+  // Colour PNG for people (see preview_image.h).
+  kPreview,
+  // GeoJSON (see geojson_export.h).
   kGeoJson,
   // osmAG XML (see osmag_export.h).
   kOsmAg,
-  // The AreaGraph message as protobuf JSON.
+  // networkx node-link JSON (see node_link_json.h).
   kJson,
+  // The AreaGraph message as protobuf JSON, which reads back losslessly.
+  kProtoJson,
 };
 
-// "labels", "geojson", "osmag" or "json"; throws OptionsError otherwise.
+// "labels", "preview", "geojson", "osmag", "json" or "protojson"; throws
+// OptionsError otherwise.
 ExportFormat ParseExportFormat(const std::string& name);
 
 struct ExportSettings {
   ExportFormat format = ExportFormat::kJson;
-  // Used by osmAG only.
   std::string map_name;
-  GeoAnchor anchor;
+  // Where the map's origin lies on the globe: GeoJSON is WGS 84 with it and
+  // metres without; osmAG uses GeoAnchor's default without.
+  std::optional<GeoAnchor> anchor;
+  // osmAG only: the floor and its height (0 = unknown).
+  int level = 0;
+  double height_m = 0;
+  // GeoJSON only: which features to write.
+  GeoJsonFeatures features = GeoJsonFeatures::kAll;
 };
 
 // The bytes of the export file.

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_polygons.h"
 
 namespace areagraph {

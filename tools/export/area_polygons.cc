@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/error.h"
 #include "stages/common/map_frame.h"
-#include "store/error.h"
 
 namespace areagraph {
 
@@ -89,5 +89,18 @@ std::string AreaKindName(proto::AreaKind kind) {
 }
 
 std::string AreaName(int id) { return "area_" + std::to_string(id); }
+
+std::vector<proto::Point2> PassageLine(const proto::Passage& passage) {
+  std::vector<proto::Point2> line(passage.border_m().begin(), passage.border_m().end());
+  if (line.size() < 2) line = {passage.segment_m().a(), passage.segment_m().b()};
+  for (const proto::Point2& point : line) {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y()) ||
+        !std::isfinite(passage.width_m())) {
+      throw InputError("passage " + std::to_string(passage.id()) +
+                       " has a coordinate that is not a finite number");
+    }
+  }
+  return line;
+}
 
 }  // namespace areagraph

@@ -28,6 +28,12 @@ void RequireFiniteVertices(const proto::Polygon& polygon, const std::string& wha
 // "room", "corridor" or "dead_end", the names used in every export.
 std::string AreaKindName(proto::AreaKind kind);
 
+// The passage as a line in world metres: border_m, the border its areas share
+// (whose points are vertices of both polygons), or segment_m's two ends when
+// it has none. Throws InputError naming the passage for a coordinate that is
+// not finite.
+std::vector<proto::Point2> PassageLine(const proto::Passage& passage);
+
 // "area_<id>", how exports name an area.
 std::string AreaName(int id);
 

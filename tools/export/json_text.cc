@@ -1,7 +1,11 @@
 #include "tools/export/json_text.h"
 
+#include <google/protobuf/util/json_util.h>
+
 #include <charconv>
 #include <cstdio>
+
+#include "common/error.h"
 
 namespace areagraph {
 
@@ -38,6 +42,24 @@ std::string JsonNumber(double value) {
   char text[32];
   const auto result = std::to_chars(text, text + sizeof(text), value);
   return std::string(text, result.ptr);
+}
+
+std::string MessageJson(const google::protobuf::Message& message) {
+  google::protobuf::util::JsonPrintOptions options;
+  options.preserve_proto_field_names = true;
+  std::string json;
+  if (!google::protobuf::util::MessageToJsonString(message, &json, options).ok()) {
+    throw Error("cannot print " + message.GetTypeName() + " as JSON");
+  }
+  return json;
+}
+
+std::string JsonLines(const std::vector<std::string>& items) {
+  std::string text = "[\n";
+  for (size_t i = 0; i < items.size(); ++i) {
+    text += items[i] + (i + 1 < items.size() ? ",\n" : "\n");
+  }
+  return text + "]";
 }
 
 }  // namespace areagraph

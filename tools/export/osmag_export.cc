@@ -1,51 +1,21 @@
 #include "tools/export/osmag_export.h"
 
+#include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
 #include <map>
-#include <utility>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/export/area_polygons.h"
+#include "tools/export/osm_xml.h"
 
 namespace areagraph {
 
 namespace {
 
-constexpr double kEarthRadiusM = 6378137.0;
-constexpr double kDegreesPerRadian = 180.0 / 3.14159265358979323846;
-
-std::string XmlEscaped(const std::string& text) {
-  std::string escaped;
-  for (const char c : text) {
-    switch (c) {
-      case '&':
-        escaped += "&amp;";
-        break;
-      case '<':
-        escaped += "&lt;";
-        break;
-      case '>':
-        escaped += "&gt;";
-        break;
-      case '"':
-        escaped += "&quot;";
-        break;
-      case '\'':
-        escaped += "&apos;";
-        break;
-      default:
-        escaped += c;
-    }
-  }
-  return escaped;
-}
-
-std::string Tag(const std::string& key, const std::string& value) {
-  return "    <tag k=\"" + XmlEscaped(key) + "\" v=\"" + XmlEscaped(value) + "\"/>\n";
-}
+// How far the structure area lies outside the areas' bounding box.
+constexpr double kStructureMarginM = 0.1;
 
 std::string Metres(double value) {
   char text[32];
@@ -53,106 +23,114 @@ std::string Metres(double value) {
   return text;
 }
 
-// Hands out negative ids and one node per distinct position (to the micrometre).
-class OsmNodeTable {
- public:
-  explicit OsmNodeTable(const GeoAnchor& anchor) : anchor_(anchor) {}
-
-  int64_t NextId() { return next_id_--; }
-
-  int64_t NodeAt(double x_m, double y_m) {
-    if (!std::isfinite(x_m) || !std::isfinite(y_m)) {
-      throw InputError("the Area Graph has a vertex that is not a finite number");
-    }
-    const std::pair<int64_t, int64_t> key{std::llround(x_m * 1e6), std::llround(y_m * 1e6)};
-    auto [it, inserted] = ids_.emplace(key, 0);
-    if (inserted) {
-      it->second = NextId();
-      xml_ += NodeXml(it->second, MetresToLatLon(anchor_, x_m, y_m), "");
-    }
-    return it->second;
-  }
-
-  void AddRoot(const std::string& map_name) {
-    xml_ += NodeXml(NextId(), {anchor_.lat_deg, anchor_.lon_deg},
-                    Tag("name", "root") + Tag("osmAG:type", "root") + Tag("osmAG:map", map_name));
-  }
-
-  const std::string& xml() const { return xml_; }
-
- private:
-  static std::string NodeXml(int64_t id, const LatLon& position, const std::string& tags) {
-    char head[160];
-    std::snprintf(head, sizeof(head),
-                  "  <node id=\"%lld\" visible=\"true\" lat=\"%.10f\" lon=\"%.10f\"",
-                  static_cast<long long>(id), position.lat_deg, position.lon_deg);
-    return tags.empty() ? std::string(head) + "/>\n"
-                        : std::string(head) + ">\n" + tags + "  </node>\n";
-  }
-
-  GeoAnchor anchor_;
-  int64_t next_id_ = -1;
-  std::map<std::pair<int64_t, int64_t>, int64_t> ids_;
-  std::string xml_;
-};
-
-std::string WayXml(int64_t id, const std::vector<int64_t>& nodes, const std::string& tags) {
-  std::string xml = "  <way id=\"" + std::to_string(id) + "\" visible=\"true\">\n";
-  for (const int64_t node : nodes) xml += "    <nd ref=\"" + std::to_string(node) + "\"/>\n";
-  return xml + tags + "  </way>\n";
+double SquaredDistanceToSegment(const proto::Point2& p, const proto::Point2& a,
+                                const proto::Point2& b) {
+  const double dx = b.x() - a.x(), dy = b.y() - a.y(), length2 = dx * dx + dy * dy;
+  const double t =
+      length2 > 0 ? std::clamp(((p.x() - a.x()) * dx + (p.y() - a.y()) * dy) / length2, 0.0, 1.0)
+                  : 0.0;
+  const double ex = a.x() + t * dx - p.x(), ey = a.y() + t * dy - p.y();
+  return ex * ex + ey * ey;
 }
 
-}  // namespace
-
-LatLon MetresToLatLon(const GeoAnchor& anchor, double x_m, double y_m) {
-  const double lat0_rad = anchor.lat_deg / kDegreesPerRadian;
-  return {anchor.lat_deg + y_m / kEarthRadiusM * kDegreesPerRadian,
-          anchor.lon_deg + x_m / (kEarthRadiusM * std::cos(lat0_rad)) * kDegreesPerRadian};
+// Puts `point` into the closed ring `ring` (first point not repeated) on its
+// nearest edge, unless it already is a vertex (to the micrometre, as nodes).
+void InsertIntoRing(const proto::Point2& point, std::vector<proto::Point2>* ring) {
+  size_t best = 0;
+  double best_distance = INFINITY;
+  for (size_t i = 0; i < ring->size(); ++i) {
+    const proto::Point2& a = (*ring)[i];
+    if (std::abs(a.x() - point.x()) < 1e-6 && std::abs(a.y() - point.y()) < 1e-6) return;
+    const double distance = SquaredDistanceToSegment(point, a, (*ring)[(i + 1) % ring->size()]);
+    if (distance < best_distance) best_distance = distance, best = i;
+  }
+  ring->insert(ring->begin() + static_cast<std::ptrdiff_t>(best) + 1, point);
 }
 
-std::string AreaGraphToOsmAg(const proto::AreaGraph& graph, const std::string& map_name,
-                             const GeoAnchor& anchor) {
-  OsmNodeTable nodes(anchor);
-  nodes.AddRoot(map_name);
-  std::vector<std::vector<int64_t>> area_nodes;
+// Every area's outer ring in metres, counter-clockwise, with every point of
+// its passages' lines made a vertex (they already are when the graph keeps
+// the partition contract of border_m).
+std::vector<std::vector<proto::Point2>> AreaRings(const proto::AreaGraph& graph) {
+  std::vector<std::vector<proto::Point2>> rings;
+  std::map<int, size_t> index_of_id;
   for (const proto::Area& area : graph.areas()) {
     const proto::Polygon polygon = AreaPolygonMetres(graph, area);
     if (polygon.outer().points_size() < 3) {
       throw InputError(AreaName(area.id()) +
                        " has fewer than 3 vertices; cannot write it to osmAG");
     }
-    std::vector<int64_t> ring;
-    for (const proto::Point2& point : OrientedRing(polygon.outer(), true)) {
-      ring.push_back(nodes.NodeAt(point.x(), point.y()));
-    }
-    ring.push_back(ring.front());
-    area_nodes.push_back(std::move(ring));
+    index_of_id[area.id()] = rings.size();
+    rings.push_back(OrientedRing(polygon.outer(), true));
   }
-  std::vector<std::vector<int64_t>> passage_nodes;
   for (const proto::Passage& passage : graph.passages()) {
-    const proto::Segment& segment = passage.segment_m();
-    passage_nodes.push_back({nodes.NodeAt(segment.a().x(), segment.a().y()),
-                             nodes.NodeAt(segment.b().x(), segment.b().y())});
+    for (const int id : {passage.area_a(), passage.area_b()}) {
+      const auto found = index_of_id.find(id);
+      if (found == index_of_id.end()) continue;
+      for (const proto::Point2& end : PassageLine(passage))
+        InsertIntoRing(end, &rings[found->second]);
+    }
   }
+  return rings;
+}
 
-  std::string ways;
+// A closed way around all rings, kStructureMarginM outside their bounding box.
+std::vector<int64_t> StructureOutline(const std::vector<std::vector<proto::Point2>>& rings,
+                                      OsmNodeTable* nodes) {
+  double min_x = INFINITY, min_y = INFINITY, max_x = -INFINITY, max_y = -INFINITY;
+  for (const auto& ring : rings) {
+    for (const proto::Point2& p : ring) {
+      min_x = std::min(min_x, p.x()), max_x = std::max(max_x, p.x());
+      min_y = std::min(min_y, p.y()), max_y = std::max(max_y, p.y());
+    }
+  }
+  if (rings.empty()) min_x = min_y = max_x = max_y = 0;
+  min_x -= kStructureMarginM, min_y -= kStructureMarginM;
+  max_x += kStructureMarginM, max_y += kStructureMarginM;
+  std::vector<int64_t> outline = {nodes->NodeAt(min_x, min_y), nodes->NodeAt(max_x, min_y),
+                                  nodes->NodeAt(max_x, max_y), nodes->NodeAt(min_x, max_y)};
+  outline.push_back(outline.front());
+  return outline;
+}
+
+}  // namespace
+
+std::string AreaGraphToOsmAg(const proto::AreaGraph& graph, const OsmAgSettings& settings) {
+  OsmNodeTable nodes(settings.anchor);
+  nodes.AddAnchorNode(OsmTag("name", "root") + OsmTag("osmAG:type", "root") +
+                      OsmTag("osmAG:map", settings.map_name));
+  const std::vector<std::vector<proto::Point2>> rings = AreaRings(graph);
+  const std::string level = OsmTag("level", std::to_string(settings.level));
+  const std::vector<int64_t> structure = StructureOutline(rings, &nodes);
+  std::string ways =
+      OsmWayXml(nodes.NextId(), structure,
+                OsmTag("indoor", "level") + level + OsmTag("name", settings.map_name) +
+                    OsmTag("osmAG:areaType", "structure") + OsmTag("osmAG:type", "area"));
+  const std::string height =
+      settings.height_m > 0 ? OsmTag("height", Metres(settings.height_m)) : std::string();
   for (int i = 0; i < graph.areas_size(); ++i) {
     const proto::Area& area = graph.areas(i);
-    ways +=
-        WayXml(nodes.NextId(), area_nodes[i],
-               Tag("indoor", "room") + Tag("name", AreaName(area.id())) +
-                   Tag("osmAG:areaType", AreaKindName(area.kind())) + Tag("osmAG:type", "area"));
+    std::vector<int64_t> outline;
+    for (const proto::Point2& p : rings[i]) outline.push_back(nodes.NodeAt(p.x(), p.y()));
+    outline.push_back(outline.front());
+    ways += OsmWayXml(nodes.NextId(), outline,
+                      OsmTag("areagraph:kind", AreaKindName(area.kind())) + height +
+                          OsmTag("indoor", "room") + level + OsmTag("name", AreaName(area.id())) +
+                          OsmTag("osmAG:areaType", "room") +
+                          OsmTag("osmAG:parent", settings.map_name) + OsmTag("osmAG:type", "area"));
   }
-  for (int i = 0; i < graph.passages_size(); ++i) {
-    const proto::Passage& passage = graph.passages(i);
-    ways += WayXml(nodes.NextId(), passage_nodes[i],
-                   Tag("name", "passage_" + std::to_string(passage.id())) +
-                       Tag("osmAG:from", AreaName(passage.area_a())) +
-                       Tag("osmAG:to", AreaName(passage.area_b())) + Tag("osmAG:type", "passage") +
-                       Tag("width", Metres(passage.width_m())));
+  for (const proto::Passage& passage : graph.passages()) {
+    std::vector<int64_t> line;
+    for (const proto::Point2& p : PassageLine(passage)) line.push_back(nodes.NodeAt(p.x(), p.y()));
+    ways +=
+        OsmWayXml(nodes.NextId(), line,
+                  OsmTag("door", "yes") + OsmTag("indoor", "door") + level +
+                      OsmTag("name", "passage_" + std::to_string(passage.id())) +
+                      OsmTag("osmAG:from", AreaName(passage.area_a())) +
+                      OsmTag("osmAG:to", AreaName(passage.area_b())) +
+                      OsmTag("osmAG:type", "passage") + OsmTag("width", Metres(passage.width_m())));
   }
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-         "<osm version=\"0.6\" generator=\"areagraph\">\n" +
+         "<osm version=\"0.6\" generator=\"areagraph\" upload=\"never\">\n" +
          nodes.xml() + ways + "</osm>\n";
 }
 

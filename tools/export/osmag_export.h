@@ -3,42 +3,43 @@
 #include <string>
 
 #include "proto/artifacts.pb.h"
+#include "tools/export/geo_anchor.h"
 
 namespace areagraph {
 
-// Where the map's world origin (0, 0) is placed on the globe. The default is
-// ShanghaiTech University, where osmAG comes from.
-struct GeoAnchor {
-  double lat_deg = 31.17947;
-  double lon_deg = 121.59042;
+struct OsmAgSettings {
+  // Written as osmAG:map on the root node and as the structure area's name.
+  std::string map_name;
+  GeoAnchor anchor;
+  // The floor, tagged `level` on every way (osmAG's multi-floor key).
+  int level = 0;
+  // The floor's height in metres, tagged `height` on every area when > 0; a
+  // 2D map does not know it.
+  double height_m = 0;
 };
 
-struct LatLon {
-  double lat_deg = 0;
-  double lon_deg = 0;
-};
-
-// World metres (x east, y north) to latitude and longitude on the local
-// tangent plane at `anchor`: lat = lat0 + y / R, lon = lon0 + x / (R cos lat0),
-// with R = 6378137 m (WGS 84 equatorial radius). Good to millimetres over a
-// building.
-LatLon MetresToLatLon(const GeoAnchor& anchor, double x_m, double y_m);
-
-// The Area Graph as osmAG XML (OSM 0.6) that JOSM opens:
-// - a root node at the anchor tagged name=root (the osmAG marker),
-//   osmAG:type=root and osmAG:map=<map_name>;
-// - one node per distinct polygon vertex (vertices shared by areas, and
-//   passage ends on a vertex, share the node);
-// - each area a closed way (first node repeated) of its outer ring,
-//   counter-clockwise, tagged osmAG:type=area, osmAG:areaType=room|corridor|
-//   dead_end, name=area_<id>, indoor=room. Holes are not written (osmAG areas
-//   are simple closed ways);
-// - each passage a two-node way along segment_m tagged osmAG:type=passage,
-//   osmAG:from=area_<a>, osmAG:to=area_<b>, name=passage_<id>, width=<m>.
-// Nodes come first, then area ways, then passage ways. New objects have
-// negative ids, unique across nodes and ways. Throws InputError for an area
-// with fewer than three vertices or coordinates that are not finite.
-std::string AreaGraphToOsmAg(const proto::AreaGraph& graph, const std::string& map_name,
-                             const GeoAnchor& anchor);
+// The Area Graph as osmAG XML (OSM 0.6, <osm upload="never"> so that JOSM
+// never sends it to openstreetmap.org), following the osmAG standard of the
+// Area Graph authors:
+// - a root node at the anchor: name=root, osmAG:type=root, osmAG:map;
+// - one node per distinct vertex; outlines through the same vertex share it;
+// - a structure area (closed way around every area, 0.1 m outside their
+//   bounding box): osmAG:type=area, osmAG:areaType=structure, indoor=level,
+//   name=<map_name>, level;
+// - each area a closed counter-clockwise way of its outer ring (holes are not
+//   written): osmAG:type=area, osmAG:areaType=room (the spec's value for every
+//   inner area that is not stairs or an elevator), areagraph:kind=room|
+//   corridor|dead_end (our finer kind), osmAG:parent=<map_name>,
+//   indoor=room, name=area_<id>, level, height;
+// - each passage a way over the border its areas share (PassageLine), every
+//   node of which is a node of both area ways: osmAG:type=passage,
+//   osmAG:from=area_<a>, osmAG:to=area_<b>, indoor=door, door=yes,
+//   name=passage_<id>, level, width=<m>. A point of the line that is not yet
+//   a vertex of an area's outline (segment_m of older graphs) is inserted
+//   into that outline on its nearest edge.
+// Nodes come first, then the structure, the areas and the passages. Throws
+// InputError for an area with fewer than three vertices or coordinates that
+// are not finite.
+std::string AreaGraphToOsmAg(const proto::AreaGraph& graph, const OsmAgSettings& settings);
 
 }  // namespace areagraph

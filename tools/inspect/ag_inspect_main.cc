@@ -2,9 +2,9 @@
 #include <CLI/CLI.hpp>
 #include <iostream>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/inspect/failure_report.h"
 #include "tools/inspect/store_report.h"
 

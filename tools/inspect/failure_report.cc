@@ -1,13 +1,13 @@
 #include "tools/inspect/failure_report.h"
 
 #include <google/protobuf/struct.pb.h>
-#include <google/protobuf/util/json_util.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <string>
 
-#include "store/error.h"
+#include "common/error.h"
+#include "common/json.h"
 
 namespace areagraph {
 namespace {
@@ -47,12 +47,7 @@ void PrintFailuresJson(const std::vector<FailureRecord>& failures, std::ostream&
     fields["message"].set_string_value(failure.message);
     fields["source_path"].set_string_value(failure.source_path);
   }
-  google::protobuf::util::JsonPrintOptions options;
-  options.add_whitespace = true;
-  std::string json;
-  const auto status = google::protobuf::util::MessageToJsonString(list, &json, options);
-  if (!status.ok()) throw StoreError("cannot print the failures as JSON: " + status.ToString());
-  out << json;
+  out << MessageToJson(list);
 }
 
 void PrintFailedMapsNote(const std::vector<FailureRecord>& failures, std::ostream& out) {

@@ -1,22 +1,20 @@
 #include "tools/inspect/store_report.h"
 
-#include <google/protobuf/util/json_util.h>
-
 #include <cstdio>
 #include <memory>
 #include <optional>
 #include <utility>
 
+#include "common/error.h"
+#include "common/json.h"
+#include "common/text.h"
 #include "proto/artifacts.pb.h"
-#include "stages/common/artifact_types.h"
-#include "stages/common/grid_cells.h"
-#include "store/error.h"
+#include "stages/common/stage.h"
+#include "stages/common/stage_table.h"
 #include "tools/inspect/failure_report.h"
 
 namespace areagraph {
 namespace {
-
-std::string ShortKey(const std::string& key) { return key.substr(0, 12); }
 
 std::unique_ptr<google::protobuf::Message> ParseArtifact(const ArtifactRecord& artifact) {
   std::unique_ptr<google::protobuf::Message> message = NewArtifactMessage(artifact.proto_type);
@@ -28,7 +26,17 @@ std::unique_ptr<google::protobuf::Message> ParseArtifact(const ArtifactRecord& a
     throw StoreError("artifact " + ShortKey(artifact.cache_key) + " does not parse as " +
                      artifact.proto_type);
   }
+  CheckFormatVersion(*message, "artifact " + ShortKey(artifact.cache_key));
   return message;
+}
+
+// The frame that every artifact message carries in its `frame` field.
+const proto::MapFrame* FrameOf(const google::protobuf::Message& artifact) {
+  const google::protobuf::FieldDescriptor* field =
+      artifact.GetDescriptor()->FindFieldByName("frame");
+  if (field == nullptr || field->message_type() != proto::MapFrame::descriptor()) return nullptr;
+  return static_cast<const proto::MapFrame*>(
+      &artifact.GetReflection()->GetMessage(artifact, field));
 }
 
 void PrintFrame(const proto::MapFrame& frame, std::ostream& out) {
@@ -37,12 +45,6 @@ void PrintFrame(const proto::MapFrame& frame, std::ostream& out) {
                 frame.width_px(), frame.height_px(), frame.resolution_m(), frame.origin_x_m(),
                 frame.origin_y_m(), frame.origin_yaw_rad());
   out << line;
-}
-
-void PrintCells(const std::string& cells, std::ostream& out) {
-  const CellCounts counts = CountCells(cells);
-  out << "cells: " << counts.occupied << " occupied, " << counts.free << " free, " << counts.unknown
-      << " unknown\n";
 }
 
 }  // namespace
@@ -142,41 +144,19 @@ void PrintArtifactSummary(const ArtifactRecord& artifact, std::ostream& out) {
       << "\ntype: " << artifact.proto_type << "\nbytes: " << artifact.payload_bytes
       << "\ncreated: " << artifact.created_at << "\nelapsed: " << artifact.elapsed_ms << " ms\n";
   const std::unique_ptr<google::protobuf::Message> message = ParseArtifact(artifact);
+  out << "summary: " << SummarizeArtifact(*message) << "\n";
+  if (const proto::MapFrame* frame = FrameOf(*message)) PrintFrame(*frame, out);
+  // What only one type has, beyond its summary.
   if (const auto* grid = dynamic_cast<const proto::GridMap*>(message.get())) {
-    PrintFrame(grid->frame(), out);
-    PrintCells(grid->cells(), out);
     out << "source: " << grid->source_path() << " (sha256 " << grid->source_digest() << ")\n";
-  } else if (const auto* cleaned = dynamic_cast<const proto::CleanedMap*>(message.get())) {
-    PrintFrame(cleaned->frame(), out);
-    PrintCells(cleaned->cells(), out);
-    out << "removed: " << cleaned->removed_outlier_cells_size() << " outlier cells, "
-        << cleaned->removed_furniture_cells_size() << " furniture cells\n";
-  } else if (const auto* voronoi = dynamic_cast<const proto::VoronoiDiagram*>(message.get())) {
-    out << "voronoi: " << voronoi->sites_size() << " sites, " << voronoi->vertices_size()
-        << " vertices, " << voronoi->edges_size() << " edges\n";
-  } else if (const auto* topology = dynamic_cast<const proto::TopologyGraph*>(message.get())) {
-    out << "topology graph: " << topology->vertices_size() << " vertices, "
-        << topology->edges_size() << " edges\n";
   } else if (const auto* cut = dynamic_cast<const proto::CutGraph*>(message.get())) {
-    out << "cut graph: " << cut->room_shapes_size() << " rooms, " << cut->edges_size() << " edges, "
-        << cut->passage_points_size() << " passage points\n";
     PrintRoomWidth(cut->room_width(), out);
-  } else if (const auto* areas = dynamic_cast<const proto::AreaGraph*>(message.get())) {
-    out << "area graph: " << areas->areas_size() << " areas, " << areas->passages_size()
-        << " passages\n";
   }
   out << "options:\n" << artifact.options_text;
 }
 
 void PrintArtifactJson(const ArtifactRecord& artifact, std::ostream& out) {
-  const std::unique_ptr<google::protobuf::Message> message = ParseArtifact(artifact);
-  google::protobuf::util::JsonPrintOptions options;
-  options.add_whitespace = true;
-  options.preserve_proto_field_names = true;
-  std::string json;
-  const auto status = google::protobuf::util::MessageToJsonString(*message, &json, options);
-  if (!status.ok()) throw StoreError("cannot print artifact as JSON: " + status.ToString());
-  out << json;
+  out << MessageToJson(*ParseArtifact(artifact));
 }
 
 }  // namespace areagraph

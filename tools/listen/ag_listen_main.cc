@@ -4,19 +4,19 @@
 #include <iostream>
 #include <memory>
 
+#include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "tools/listen/area_graph_listener.h"
 
 namespace areagraph {
 namespace {
 
 struct ListenFlags {
-  std::string url = kDefaultLcmUrl;
+  std::string url;
   std::string store_path;
   ServeLimits limits;
 };
@@ -49,8 +49,7 @@ int main(int argc, char** argv) {
       "from the publisher's (so the same graph is stored once). Malformed messages are reported "
       "on stderr and skipped."};
   ListenFlags flags;
-  app.add_option("--url", flags.url, "LCM URL; udpm must keep ttl=0 (traffic stays on the host)")
-      ->capture_default_str();
+  AddLcmUrlFlag(app, flags.url);
   app.add_option("--store", flags.store_path, "save received graphs in this SQLite store");
   app.add_option("--count", flags.limits.count, "exit after this many graphs (0: no limit)")
       ->capture_default_str();

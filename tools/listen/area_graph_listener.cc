@@ -3,19 +3,20 @@
 #include <climits>
 #include <sstream>
 
+#include "common/error.h"
+#include "common/text.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
 #include "stages/common/stage.h"
 #include "store/cache_key.h"
-#include "store/error.h"
 
 namespace areagraph {
 
 std::string DescribeAreaGraph(const areagraph_lcm::area_graph_t& message) {
   std::ostringstream line;
   line << "map " << message.map_name << ": " << message.num_areas << " areas, "
-       << message.num_passages << " passages, key " << message.artifact_key.substr(0, 12);
+       << message.num_passages << " passages, key " << ShortKey(message.artifact_key);
   return line.str();
 }
 

@@ -1,12 +1,13 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <iostream>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "common/error.h"
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
-#include "store/error.h"
 #include "tools/render/artifact_drawing.h"
 
 namespace areagraph {
@@ -14,11 +15,10 @@ namespace {
 
 // The cells to draw under a stage's artifact: the raw map for import and
 // clean (so removed obstacles show), the cleaned map after that.
-Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const std::string& stage,
-                  int scale) {
+Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const StageInfo& stage, int scale) {
   proto::MapFrame frame;
   std::string cells;
-  if (stage == kImportStage.name || stage == kCleanStage.name) {
+  if (SameStage(stage, kImportStage) || SameStage(stage, kCleanStage)) {
     const auto grid = ReadHeadArtifact<proto::GridMap>(store, map, kImportStage);
     frame = grid.frame();
     cells = grid.cells();
@@ -31,31 +31,37 @@ Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const std::strin
   return Canvas(cells, frame.width_px(), frame.height_px(), scale);
 }
 
-void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
-            bool doors, int width, const std::string& out) {
-  Canvas canvas = BaseCanvas(store, map, stage, scale);
-  if (stage == kCleanStage.name) {
-    DrawCleanedMap(ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage), canvas);
-  } else if (stage == kVoronoiStage.name) {
-    DrawVoronoiDiagram(ReadHeadArtifact<proto::VoronoiDiagram>(store, map, kVoronoiStage), canvas);
-  } else if (stage == kPruneStage.name) {
-    DrawTopologyGraph(ReadHeadArtifact<proto::TopologyGraph>(store, map, kPruneStage), canvas);
-  } else if (stage == kCutStage.name) {
-    DrawCutGraph(ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage), canvas);
-  } else if (stage == kMergeStage.name) {
-    DrawAreaGraph(ReadHeadArtifact<proto::AreaGraph>(store, map, kMergeStage), canvas);
-  } else if (stage != kImportStage.name) {
-    throw InputError("unknown stage '" + stage +
-                     "'; use import, clean, voronoi, prune, cut or merge");
+// The canvas pixels of a window "X,Y,W,H" given in map cells.
+cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
+  int x = 0, y = 0, w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &x, &y, &w, &h, &tail) != 4 || x < 0 || y < 0 ||
+      w <= 0 || h <= 0) {
+    throw InputError("--crop must be X,Y,W,H in map cells (W and H positive), got '" + text + "'");
   }
+  const int s = scale;
+  const cv::Rect window =
+      cv::Rect(x * s, y * s, w * s, h * s) & cv::Rect(0, 0, size.width, size.height);
+  if (window.area() == 0) throw InputError("--crop '" + text + "' lies outside the map");
+  return window;
+}
+
+void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
+            bool doors, int width, const std::string& crop, const std::string& out) {
+  const StageDefinition& definition = FindStage(stage, "--stage");
+  Canvas canvas = BaseCanvas(store, map, definition.info, scale);
+  const MessagePtr artifact(definition.prototype->New());
+  ParseHeadArtifact(store, map, definition.info, artifact.get(), nullptr);
+  DrawArtifact(*artifact, canvas);
   if (doors) {
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
   }
   cv::Mat picture = canvas.image();
+  if (!crop.empty()) picture = picture(CropWindow(crop, canvas.scale(), picture.size())).clone();
   if (width > 0 && picture.cols > width) {
     const double factor = static_cast<double>(width) / picture.cols;
-    cv::resize(canvas.image(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
+    cv::resize(picture.clone(), picture, cv::Size(), factor, factor, cv::INTER_AREA);
   }
   bool written = false;
   try {
@@ -70,25 +76,26 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
 
 int main(int argc, char** argv) {
   CLI::App app{"Draws the head artifact of one stage over its map as a PNG."};
-  std::string store_path = "areagraph.db", map, stage = "merge", out;
+  std::string store_path = "areagraph.db", map, stage = areagraph::kMergeStage.name, out;
   int scale = 0;
   bool doors = false;
   int width = 0;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map, "map name")->required();
-  app.add_option("--stage", stage, "import, clean, voronoi, prune, cut or merge")
-      ->capture_default_str();
+  app.add_option("--stage", stage, areagraph::StageNameList())->capture_default_str();
   app.add_option("--out", out, "PNG file to write")->required();
   app.add_flag("--doors", doors,
                "also draw the doors (rings) and corridors (dots) that ag-cut found for "
                "cut.room_width_m=auto");
   app.add_option("--width", width, "shrink the picture to at most this many pixels wide");
   app.add_option("--scale", scale, "output pixels per map cell (default: about 1600 px wide)");
+  std::string crop;
+  app.add_option("--crop", crop, "draw only the window X,Y,W,H (map cells; with --scale to zoom)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
     if (scale < 0 || scale > 16) throw areagraph::InputError("--scale must be between 1 and 16");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     if (width < 0) throw areagraph::InputError("--width must be positive");
-    areagraph::Render(*store, map, stage, scale, doors, width, out);
+    areagraph::Render(*store, map, stage, scale, doors, width, crop, out);
     std::cout << "wrote " << out << "\n";
     return 0;
   });

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <string>
+#include <vector>
 
 #include "stages/common/map_frame.h"
 
@@ -105,8 +106,12 @@ void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas) {
     canvas.Outline(area.polygon_px().outer(), DistinctColour(area.id()) * 0.55, 1);
   }
   for (const proto::Passage& passage : graph.passages()) {
-    canvas.Line(ToPixel(transform, passage.segment_m().a()),
-                ToPixel(transform, passage.segment_m().b()), kPassage, 3);
+    // The shared border the passage opens, or the segment across it.
+    std::vector<proto::Point2> line(passage.border_m().begin(), passage.border_m().end());
+    if (line.size() < 2) line = {passage.segment_m().a(), passage.segment_m().b()};
+    for (size_t i = 1; i < line.size(); ++i) {
+      canvas.Line(ToPixel(transform, line[i - 1]), ToPixel(transform, line[i]), kPassage, 3);
+    }
     canvas.Dot(ToPixel(transform, passage.point_m()), kPassage, std::max(3, canvas.scale() + 1));
   }
   for (const proto::Area& area : graph.areas()) {
@@ -124,6 +129,20 @@ void DrawDetectedWidths(const proto::RoomWidthEstimate& estimate, double resolut
     const int radius_px = static_cast<int>(door.width_m() / resolution_m / 2 * canvas.scale());
     cv::circle(canvas.image(), canvas.ToCanvas(door.position()), std::max(3, radius_px),
                door_colour, 2, cv::LINE_AA);
+  }
+}
+
+void DrawArtifact(const google::protobuf::Message& artifact, Canvas& canvas) {
+  if (const auto* cleaned = dynamic_cast<const proto::CleanedMap*>(&artifact)) {
+    DrawCleanedMap(*cleaned, canvas);
+  } else if (const auto* voronoi = dynamic_cast<const proto::VoronoiDiagram*>(&artifact)) {
+    DrawVoronoiDiagram(*voronoi, canvas);
+  } else if (const auto* topology = dynamic_cast<const proto::TopologyGraph*>(&artifact)) {
+    DrawTopologyGraph(*topology, canvas);
+  } else if (const auto* cut = dynamic_cast<const proto::CutGraph*>(&artifact)) {
+    DrawCutGraph(*cut, canvas);
+  } else if (const auto* areas = dynamic_cast<const proto::AreaGraph*>(&artifact)) {
+    DrawAreaGraph(*areas, canvas);
   }
 }
 

@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <memory>
 
+#include "common/error.h"
+#include "common/text.h"
+#include "stages/common/stage_table.h"
 #include "store/artifact_store.h"
-#include "store/error.h"
 #include "store/store_maintenance.h"
 #include "tools/inspect/failure_report.h"
 
@@ -114,14 +116,14 @@ int VerifyStore(const std::string& store_path, bool progress, std::ostream& out)
   std::vector<VerifyProblem> problems;
   {
     ProgressLine line;
-    problems = store->Verify([&](int64_t done, int64_t total) {
+    problems = store->Verify(FileInputStageNames(), [&](int64_t done, int64_t total) {
       checked = done;
       if (progress) line.Update(done, total);
     });
   }
   for (const VerifyProblem& problem : problems) {
     out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "
-        << OrDash(problem.cache_key.substr(0, 12)) << ": " << problem.problem << "\n";
+        << OrDash(ShortKey(problem.cache_key)) << ": " << problem.problem << "\n";
   }
   out << "checked " << Plural(checked, "artifact") << ": "
       << (problems.empty() ? "no problems"

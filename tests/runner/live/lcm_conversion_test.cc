@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/error.h"
 #include "stages/common/map_frame.h"
-#include "store/error.h"
 #include "tests/runner/live/lcm_test_maps.h"
 
 namespace areagraph {
@@ -116,6 +116,8 @@ TEST(AreaGraphConversion, CarriesAreasAndPassagesInMetres) {
   EXPECT_EQ(message.passages[0].area_b, 1);
   EXPECT_DOUBLE_EQ(message.passages[0].ax, 2.0);
   EXPECT_DOUBLE_EQ(message.passages[0].width_m, 0.9);
+  ASSERT_EQ(message.passages[0].num_border_points, 3);
+  EXPECT_DOUBLE_EQ(message.passages[0].border_y[1], 0.45);
 }
 
 TEST(AreaGraphConversion, RoundTripKeepsEverythingTheTypeCarries) {
@@ -171,6 +173,9 @@ TEST(AreaGraphConversion, RejectsInconsistentGraphs) {
         }));
       },
       "area 1 outline has fewer than 3 points"));
+  EXPECT_TRUE(ThrowsMessage(
+      [&] { AreaGraphFromLcm(with([](G& g) { g.passages[0].border_x[1] = INFINITY; })); },
+      "passage 7 border x is not finite"));
   EXPECT_TRUE(ThrowsMessage([&] { AreaGraphFromLcm(with([](G& g) { g.resolution_m = -1; })); },
                             "resolution_m must be positive and finite"));
   EXPECT_TRUE(

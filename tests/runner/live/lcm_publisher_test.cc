@@ -4,11 +4,11 @@
 
 #include <sstream>
 
+#include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
 #include "stages/common/stage.h"
-#include "store/error.h"
 #include "tests/runner/live/lcm_test_maps.h"
 #include "tools/listen/area_graph_listener.h"
 

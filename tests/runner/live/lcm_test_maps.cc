@@ -3,7 +3,7 @@
 #include <initializer_list>
 #include <utility>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph::testing {
 namespace {
@@ -74,6 +74,11 @@ proto::AreaGraph MakeAreaGraph() {
   door->mutable_segment_m()->mutable_b()->set_x(2.0);
   door->mutable_segment_m()->mutable_b()->set_y(0.9);
   door->set_width_m(0.9);
+  for (const double y : {0.0, 0.45, 0.9}) {
+    proto::Point2* point = door->add_border_m();
+    point->set_x(2.0);
+    point->set_y(y);
+  }
   return graph;
 }
 

@@ -5,12 +5,12 @@
 #include <iostream>
 #include <string>
 
+#include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
 #include "stages/common/command_line.h"
 #include "stages/import/import_stage.h"
-#include "store/error.h"
 
 namespace areagraph {
 namespace {

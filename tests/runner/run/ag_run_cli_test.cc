@@ -195,6 +195,26 @@ TEST_F(AgRunTest, ManifestColumnThatIsNoOptionFailsBeforeAnyWork) {
   EXPECT_FALSE(std::filesystem::exists(store_));
 }
 
+// Every stage's options are checked before the store exists, from the
+// command line and from a manifest row alike.
+TEST_F(AgRunTest, BadOptionsOfAnyStageFailBeforeTheStore) {
+  for (const char* bad :
+       {"import.max_pixels=0", "clean.outlier_percent=100", "prune.dead_end_passes=-1",
+        "cut.room_width_m=-1", "merge.grow_min_gap_m=nan"}) {
+    const CommandResult run = RunTool("ag-run", Args({"--set", bad}));
+    EXPECT_EQ(run.exit_code, 1) << bad;
+    EXPECT_EQ(CountLines(run.err), 1) << run.err;
+    const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
+    EXPECT_NE(run.err.find(key), std::string::npos) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(store_)) << bad;
+  }
+  WriteFile(dir_.File("list.csv"), "path,cut.corridor_width_m\nmaps/map_11.png,1.5\n");
+  const CommandResult run = RunTool("ag-run", {"--store", store_, dir_.File("list.csv")});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("set both or neither"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(store_));
+}
+
 TEST_F(AgRunTest, UnreadableManifestRowFailsBeforeAnyWork) {
   WriteFile(dir_.File("list.csv"), "path,name\nmaps/map_11.png,a\n\"maps/map_12.png,b\n");
   const CommandResult run = RunTool("ag-run", {"--store", store_, dir_.File("list.csv")});

@@ -22,7 +22,7 @@ class AgRunFaultTest : public ::testing::Test {
 
 // Verify's problems in a store (none means every payload is intact).
 size_t StoreProblems(const std::string& store_path) {
-  return OpenArtifactStore(store_path, StoreMode::kReadOnly)->Verify().size();
+  return OpenArtifactStore(store_path, StoreMode::kReadOnly)->Verify({"import"}).size();
 }
 
 TEST_F(AgRunFaultTest, BadFileFailsAloneAndIsRecorded) {

@@ -47,12 +47,27 @@ TEST(AgRunPublishTest, NewGraphsArePublishedAndUnchangedOnesAreNot) {
 TEST(AgRunPublishTest, UrlThatWouldLeaveTheHostIsRefusedBeforeAnyWork) {
   TempDir dir;
   const CommandResult run =
-      RunTool("ag-run", {"--store", dir.File("s.db"), "--publish",
+      RunTool("ag-run", {"--store", dir.File("s.db"), "--publish", "--url",
                          "udpm://239.255.76.67:7667?ttl=1", SourcePath("examples/two_rooms.png")});
   EXPECT_NE(run.exit_code, 0);
   EXPECT_EQ(CountLines(run.err), 1) << run.err;
   EXPECT_NE(run.err.find("ttl"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(dir.File("s.db")));
+}
+
+// --publish takes no value: the maps after it stay maps.
+TEST(AgRunPublishTest, PublishIsAFlagAndUrlNeedsIt) {
+  TempDir dir;
+  CommandResult run = RunTool(
+      "ag-run", {"--store", dir.File("s.db"), "--publish", "--url", "memq://", "--jobs", "1",
+                 SourcePath("examples/two_rooms.png"), SourcePath("examples/corridor_rooms.png")});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("ag-run: 2 maps"), std::string::npos) << run.out;
+  run = RunTool("ag-run", {"--store", dir.File("t.db"), "--url", "memq://",
+                           SourcePath("examples/two_rooms.png")});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("add --publish"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.File("t.db")));
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 
 #include <filesystem>
 
+#include "common/error.h"
 #include "runner/run/manifest_reader.h"
-#include "store/error.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {

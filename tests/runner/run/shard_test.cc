@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "store/error.h"
+#include "common/error.h"
 
 namespace areagraph {
 namespace {

@@ -6,10 +6,10 @@
 #include <deque>
 #include <limits>
 
+#include "common/error.h"
 #include "stages/clean/clean_stage.h"
 #include "stages/clean/furniture_removal.h"
 #include "stages/clean/outlier_removal.h"
-#include "store/error.h"
 #include "tests/support/test_grids.h"
 
 namespace areagraph {
@@ -65,7 +65,7 @@ int FloodFree(const std::string& cells, int width, int height, int col, int row)
 
 TEST(Clean, KeepsTheWallsOfAnEmptyRoom) {
   const TestGrid room = Room();
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions(), "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions());
   EXPECT_EQ(cleaned.format_version(), 1u);
   EXPECT_EQ(cleaned.frame().width_px(), 120);
   EXPECT_EQ(cleaned.cells(), room.cells());
@@ -77,7 +77,7 @@ TEST(Clean, RemovesAnIsolatedSpeck) {
   TestGrid room = Room();
   const int walls = CountOccupied(room.cells());
   room.Fill(60, 50, 60, 50, proto::CELL_OCCUPIED);
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions(), "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions());
   EXPECT_EQ(At(cleaned, 60, 50), proto::CELL_FREE);
   EXPECT_TRUE(Recorded(cleaned, room.Index(60, 50)));
   EXPECT_EQ(cleaned.removed_outlier_cells_size() + cleaned.removed_furniture_cells_size(), 1);
@@ -88,7 +88,7 @@ TEST(Clean, RemovesAOneMetreFurnitureBlock) {
   TestGrid room = Room();
   const int walls = CountOccupied(room.cells());
   room.Fill(40, 30, 59, 49, proto::CELL_OCCUPIED);  // 20 x 20 cells = 1 m x 1 m
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions(), "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions());
   EXPECT_EQ(CountOccupied(cleaned.cells()), walls);
   ASSERT_EQ(cleaned.removed_furniture_cells_size(), 400);
   EXPECT_EQ(cleaned.removed_furniture_cells(0), room.Index(40, 30));
@@ -105,7 +105,7 @@ TEST(Clean, RemovesAOneMetreFurnitureBlock) {
 TEST(Clean, KeepsFurnitureThatIsTooBig) {
   TestGrid room = Room();
   room.Fill(30, 30, 69, 59, proto::CELL_OCCUPIED);  // 2 m x 1.5 m: perimeter 7 m
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions(), "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions());
   EXPECT_EQ(cleaned.removed_furniture_cells_size(), 0);
   EXPECT_EQ(At(cleaned, 50, 45), proto::CELL_OCCUPIED);
 }
@@ -114,13 +114,13 @@ TEST(Clean, KeepsFurnitureWithinARobotWidthOfAWall) {
   TestGrid room = Room();
   // 0.3 m from the inner face of the top wall: closer than the 0.5 m robot.
   room.Fill(40, 18, 49, 27, proto::CELL_OCCUPIED);
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions(), "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions());
   EXPECT_EQ(cleaned.removed_furniture_cells_size(), 0);
   EXPECT_EQ(At(cleaned, 45, 22), proto::CELL_OCCUPIED);
   // With a narrower robot the gap is passable and the block is furniture.
   proto::CleanOptions narrow;
   narrow.set_robot_width_m(0.2);
-  const proto::CleanedMap narrow_cleaned = CleanGridMap(room.ToGridMap(), narrow, "room");
+  const proto::CleanedMap narrow_cleaned = CleanGridMap(room.ToGridMap(), narrow);
   EXPECT_EQ(narrow_cleaned.removed_furniture_cells_size(), 100);
 }
 
@@ -134,7 +134,7 @@ TEST(Clean, RemovesSmallUnknownIslandsButNeverTheOutline) {
   grid.Fill(24, 50, 24, 50, proto::CELL_OCCUPIED);  // with a dark edge
   proto::CleanOptions options;
   options.set_outlier_percent(0);  // furniture only
-  const proto::CleanedMap cleaned = CleanGridMap(grid.ToGridMap(), options, "g");
+  const proto::CleanedMap cleaned = CleanGridMap(grid.ToGridMap(), options);
   EXPECT_EQ(At(cleaned, 5, 0), proto::CELL_OCCUPIED);
   EXPECT_EQ(At(cleaned, 51, 2), proto::CELL_UNKNOWN);
   EXPECT_EQ(At(cleaned, 60, 55), proto::CELL_UNKNOWN);
@@ -157,7 +157,7 @@ TEST(Clean, KeepsAClosedRoomStandingInFreeSpace) {
   // Maps whose outside was painted free: the walls are one big piece.
   TestGrid grid(140, 120);
   grid.Walls(10, 10, 129, 109, 1);
-  const proto::CleanedMap cleaned = CleanGridMap(grid.ToGridMap(), proto::CleanOptions(), "g");
+  const proto::CleanedMap cleaned = CleanGridMap(grid.ToGridMap(), proto::CleanOptions());
   EXPECT_EQ(CountOccupied(cleaned.cells()), CountOccupied(grid.cells()));
 }
 
@@ -179,7 +179,7 @@ TEST(Clean, OutliersNeverOpenAWallOrEatThickWalls) {
   proto::CleanOptions options;
   options.set_outlier_percent(50);
   options.set_furniture_max_perimeter_m(0);  // outliers only
-  const proto::CleanedMap cleaned = CleanGridMap(grid.ToGridMap(), options, "g");
+  const proto::CleanedMap cleaned = CleanGridMap(grid.ToGridMap(), options);
   const int inside = FloodFree(cleaned.cells(), 140, 120, 70, 70);
   const int outside = FloodFree(cleaned.cells(), 140, 120, 0, 0);
   EXPECT_EQ(inside + outside + CountOccupied(cleaned.cells()), 140 * 120);
@@ -199,7 +199,7 @@ TEST(Clean, ZeroPercentRemovesNoOutliers) {
   room.Fill(60, 50, 60, 50, proto::CELL_OCCUPIED);
   proto::CleanOptions options;
   options.set_outlier_percent(0);
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), options, "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), options);
   EXPECT_EQ(cleaned.removed_outlier_cells_size(), 0);
   EXPECT_EQ(cleaned.removed_furniture_cells_size(), 1);  // the speck is still furniture
 }
@@ -212,7 +212,7 @@ TEST(Clean, StraightWallScoreMatchesCgalsDefinition) {
 
 void ExpectOptionsError(const proto::CleanOptions& options, const std::string& needle) {
   try {
-    CleanGridMap(Room().ToGridMap(), options, "room");
+    CleanGridMap(Room().ToGridMap(), options);
     ADD_FAILURE() << "no error for " << options.ShortDebugString();
   } catch (const OptionsError& e) {
     const std::string message = e.what();
@@ -246,7 +246,7 @@ TEST(Clean, RejectsBadOptions) {
 
 void ExpectInputError(const proto::GridMap& map, const std::string& needle) {
   try {
-    CleanGridMap(map, proto::CleanOptions(), "x");
+    CleanGridMap(map, proto::CleanOptions());
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
@@ -254,11 +254,11 @@ void ExpectInputError(const proto::GridMap& map, const std::string& needle) {
 }
 
 TEST(Clean, RejectsMapsWithoutFreeSpaceOrObstacles) {
-  ExpectInputError(TestGrid(40, 40, proto::CELL_UNKNOWN).ToGridMap(), "map 'x' has no free space");
-  ExpectInputError(TestGrid(40, 40, proto::CELL_FREE).ToGridMap(), "map 'x' has no obstacle");
+  ExpectInputError(TestGrid(40, 40, proto::CELL_UNKNOWN).ToGridMap(), "the map has no free space");
+  ExpectInputError(TestGrid(40, 40, proto::CELL_FREE).ToGridMap(), "the map has no obstacle");
   proto::GridMap broken = Room().ToGridMap();
   broken.mutable_cells()->pop_back();
-  ExpectInputError(broken, "map 'x' has 11999 cells");
+  ExpectInputError(broken, "the map has 11999 cells");
   ExpectInputError(Room().ToGridMap(0), "resolution");
 }
 

@@ -31,7 +31,7 @@ TEST(UnknownIslands, ChairsDrawnInGreyBecomeFree) {
   const TestGrid room = RoomWithChairs();
   proto::CleanOptions options;
   options.set_outlier_percent(0);
-  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), options, "room");
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), options);
   for (int i = 0; i < 6; ++i) {
     EXPECT_EQ(cleaned.cells()[room.Index(31 + 7 * i, 31)], char(proto::CELL_FREE));
   }
@@ -42,7 +42,7 @@ TEST(UnknownIslands, ChairsDrawnInGreyBecomeFree) {
 
   // Without it (the paper) the chairs are one big obstacle piece and stay.
   options.set_unknown_island_max_m2(0);
-  const proto::CleanedMap kept = CleanGridMap(room.ToGridMap(), options, "room");
+  const proto::CleanedMap kept = CleanGridMap(room.ToGridMap(), options);
   EXPECT_EQ(kept.cells()[room.Index(31, 31)], char(proto::CELL_UNKNOWN));
   EXPECT_EQ(kept.removed_furniture_cells_size(), 0);
 }

@@ -4,8 +4,8 @@
 
 #include <regex>
 
+#include "common/error.h"
 #include "stages/common/pipeline_options.h"
-#include "store/error.h"
 #include "tests/support/test_support.h"
 #include "tools/example_maps/floor_plan.h"
 

@@ -51,6 +51,11 @@ TEST(CliTest, EveryExecutableHasHelp) {
     const CommandResult help = RunTool(tool, {"--help"});
     EXPECT_EQ(help.exit_code, 0) << tool << ": " << help.err;
     EXPECT_NE(help.out.find("--help"), std::string::npos) << tool;
+    EXPECT_NE(help.out.find("--version"), std::string::npos) << tool;
+    const CommandResult version = RunTool(tool, {"--version"});
+    EXPECT_EQ(version.exit_code, 0) << tool << ": " << version.err;
+    EXPECT_EQ(version.out.rfind(tool + ": areagraph ", 0), 0u) << version.out;
+    EXPECT_EQ(CountLines(version.out), 1) << version.out;
   }
 }
 

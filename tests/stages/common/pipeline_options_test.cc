@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {

@@ -47,7 +47,7 @@ TEST_F(AgImportTest, PrintsOneSummaryLineAndStoresTheGridMap) {
   EXPECT_EQ(run.err, "");
   EXPECT_TRUE(std::regex_match(
       run.out, std::regex("imported two_rooms: 240x140 px, 0\\.05 m/px, [0-9]+ occupied, [0-9]+ "
-                          "free, [0-9]+ unknown \\(key [0-9a-f]{8}, stored\\)\n")))
+                          "free, [0-9]+ unknown \\(key [0-9a-f]{12}, stored\\)\n")))
       << run.out;
 
   std::string key;
@@ -58,7 +58,7 @@ TEST_F(AgImportTest, PrintsOneSummaryLineAndStoresTheGridMap) {
   EXPECT_EQ(stored.format_version(), 1u);
   EXPECT_EQ(stored.source_path(), image_);
   EXPECT_EQ(stored.source_digest(), Sha256Hex(ReadFile(image_)));
-  EXPECT_NE(run.out.find("(key " + key.substr(0, 8) + ","), std::string::npos);
+  EXPECT_NE(run.out.find("(key " + key.substr(0, 12) + ","), std::string::npos);
 
   const std::optional<MapRecord> map = OpenArtifactStore(store_)->ReadMap("two_rooms");
   ASSERT_TRUE(map);

@@ -7,9 +7,9 @@
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
+#include "common/error.h"
 #include "stages/import/grid_map_decoder.h"
 #include "stages/import/import_stage.h"
-#include "store/error.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {

@@ -9,8 +9,6 @@ namespace areagraph::testing {
 namespace {
 
 using floorplan::DrawDoor;
-using floorplan::DrawMaze;
-using floorplan::DrawRegion;
 using floorplan::DrawRoom;
 using floorplan::FloorPlan;
 using floorplan::RectM;
@@ -52,10 +50,7 @@ TEST(AreaStagesTest, OneRoomIsOneArea) {
 }
 
 TEST(AreaStagesTest, TwoRoomsJoinedByADoorAreTwoAreasWithOnePassage) {
-  FloorPlan plan(9.5, 5);
-  DrawRoom(plan, {0.5, 0.5, 4, 4});
-  DrawRoom(plan, {4.5, 0.5, 4.5, 4});
-  DrawDoor(plan, 4.5, 2.5, 0.9, WallDirection::kVertical);
+  const FloorPlan plan = TwoRoomsWithADoor();
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   const AreaStages stages = RunAreaStages(map);
   ExpectAreaGraphInvariants(stages, map);
@@ -92,18 +87,8 @@ TEST(AreaStagesTest, CorridorWithThreeRoomsIsFourAreasWithThreePassages) {
 }
 
 TEST(AreaStagesTest, MazeHasOneAreaPerTopologyGraphEdge) {
-  FloorPlan plan(6.75, 6.75);
-  // 1.15 m cells with 0.15 m walls: corridors 1.0 m wide.
-  DrawMaze(plan, {0.5, 0.5, 5.75, 5.75}, 5, 5, 7);
-  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
-  proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_m(2.0);
-  options.mutable_cut()->set_room_width_auto(false);  // a fixed W (auto is the default)
-  // The paper's areas: every one kept, however small (the default folds
-  // areas below merge.min_area_m2, and these dead ends hold about 1-3 m2).
-  options.mutable_merge()->set_min_area_m2(0);
-  options.mutable_merge()->set_join_corridor_pieces(false);  // the paper: one area per edge
-  const AreaStages stages = RunAreaStages(map, options);
+  const proto::CleanedMap map = CleanedMapFromImage(FiveByFiveMaze().image());
+  const AreaStages stages = RunAreaStages(map, PaperMazeOptions());
   ExpectAreaGraphInvariants(stages, map);
   EXPECT_EQ(stages.cut.room_shapes_size(), 0);
   EXPECT_EQ(stages.cut.edges_size(), stages.topology.edges_size());
@@ -125,10 +110,8 @@ TEST(AreaStagesTest, MazeHasOneAreaPerTopologyGraphEdge) {
 }
 
 TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
-  FloorPlan plan(7.5, 7.5);
   // 1.0 m free between the walls, W = 1.25 m.
-  DrawRegion(plan, {{0.5, 0.5, 1.15, 6.5}, {0.5, 5.85, 6.5, 1.15}});
-  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  const proto::CleanedMap map = CleanedMapFromImage(LCorridor().image());
   // A fixed W (auto, the default, takes corridor - 0.1 m here: one room).
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_auto(false);

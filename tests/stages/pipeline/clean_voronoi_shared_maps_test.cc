@@ -23,7 +23,7 @@ TEST_P(SharedMaps, CleanAndVoronoiGiveSaneResults) {
   const long obstacles =
       long(before.size()) - std::count(before.begin(), before.end(), char(proto::CELL_FREE));
 
-  const proto::CleanedMap cleaned = CleanGridMap(map, proto::CleanOptions(), GetParam());
+  const proto::CleanedMap cleaned = CleanGridMap(map, proto::CleanOptions());
   const std::string& after = cleaned.cells();
   ASSERT_EQ(after.size(), before.size());
   std::vector<int> removed(cleaned.removed_outlier_cells().begin(),
@@ -47,7 +47,7 @@ TEST_P(SharedMaps, CleanAndVoronoiGiveSaneResults) {
   }
   EXPECT_LT(double(removed.size()), 0.2 * obstacles) << "removed " << removed.size();
 
-  const proto::VoronoiDiagram d = ComputeVoronoiStage(cleaned, proto::VoronoiOptions(), GetParam());
+  const proto::VoronoiDiagram d = ComputeVoronoiStage(cleaned, proto::VoronoiOptions());
   EXPECT_GT(d.sites_size(), 1000);
   EXPECT_GT(d.vertices_size(), d.sites_size() / 4);
   EXPECT_GT(d.edges_size(), d.vertices_size());

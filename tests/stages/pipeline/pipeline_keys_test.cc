@@ -13,7 +13,9 @@ TEST(PipelineKeysTest, PlannedKeysAreTheStoredKeys) {
   const auto store = OpenArtifactStore(":memory:");
   const ImportSource source = ReadImportSource(testing::SourcePath("examples/two_rooms.png"));
   proto::PipelineOptions options;
-  const StageRun import = RunImportStage(*store, "m", source, options.import(), false);
+  const StageRun import = RunCachedStage(
+      *store, "m", StageOf(kImportStage), options, ImportInputs(source),
+      [&] { return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import())); });
   EXPECT_EQ(import.cache_key, ImportCacheKey(source, options.import()));
   std::vector<std::string> stored;
   RunMapPipeline(*store, "m", options, false,

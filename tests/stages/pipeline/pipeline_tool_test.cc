@@ -46,7 +46,8 @@ TEST_F(AreaToolsTest, StagesNameTheStageToRunFirst) {
   ExpectOneLineError(Run("ag-cut"), "run ag-prune first");
   ExpectOneLineError(Run("ag-merge"), "run ag-cut first");
   const CommandResult unknown = RunTool("ag-pipeline", {"--store", store_, "--map", "nowhere"});
-  ExpectOneLineError(unknown, "map 'nowhere' is not in the store; run ag-import first");
+  ExpectOneLineError(unknown,
+                     "map 'nowhere', clean: the map is not in the store; run ag-import first");
 }
 
 TEST_F(AreaToolsTest, PipelineRunsEveryStageOnceThenHitsTheCache) {
@@ -91,6 +92,9 @@ TEST_F(AreaToolsTest, ChangingCutOptionsRerunsCutAndMergeOnly) {
 TEST_F(AreaToolsTest, BadOptionsGiveOneLine) {
   ASSERT_EQ(Run("ag-pipeline").exit_code, 0);
   ExpectOneLineError(Run("ag-merge", {"--set", "merge.min_area_m2=-1"}), "merge.min_area_m2");
+  ExpectOneLineError(Run("ag-merge", {"--set", "merge.outline_tolerance_m=-0.1"}),
+                     "merge.outline_tolerance_m must be zero or more metres");
+  ExpectOneLineError(Run("ag-merge", {"--set", "merge.min_hole_m2=nan"}), "merge.min_hole_m2");
   ExpectOneLineError(Run("ag-cut", {"--set", "cut.door_width_m=0.9"}), "set both or neither");
   ExpectOneLineError(Run("ag-prune", {"--set", "prune.min_clearance_m=-0.5"}),
                      "prune.min_clearance_m");

@@ -17,8 +17,8 @@ TEST_P(SharedMapAreasTest, AreaGraphInvariantsHold) {
   const std::string path = SharedDataPath(std::string("areagraph/input/") + GetParam());
   const proto::PipelineOptions options;
   const proto::GridMap grid = ImportGridMap(ReadImportSource(path), options.import());
-  const proto::CleanedMap map = CleanGridMap(grid, options.clean(), GetParam());
-  const AreaStages stages = RunAreaStages(map, options, GetParam());
+  const proto::CleanedMap map = CleanGridMap(grid, options.clean());
+  const AreaStages stages = RunAreaStages(map, options);
   // Courtyards and hollow furniture are free but closed off: no coverage floor.
   ExpectAreaGraphInvariants(stages, map, /*min_coverage=*/0.5);
   EXPECT_GE(stages.areas.areas_size(), 5);

@@ -1,6 +1,7 @@
 // ag-clean and ag-voronoi as executables, on an example map.
 #include <gtest/gtest.h>
 
+#include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph::testing {
@@ -62,7 +63,27 @@ TEST_F(StageTools, BadOptionsAndMissingInputsFailWithOneLine) {
 
   result = RunTool("ag-clean", {"--store", store_, "--map", "nosuch"});
   EXPECT_EQ(result.exit_code, 1);
-  EXPECT_NE(result.err.find("map 'nosuch' is not in the store"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("map 'nosuch', clean: the map is not in the store"), std::string::npos)
+      << result.err;
+}
+
+TEST_F(StageTools, CacheHitPrintsTheStoredSummaryWithoutReadingThePayload) {
+  ASSERT_EQ(Run("ag-clean").exit_code, 0);
+  const CommandResult computed = Run("ag-voronoi");
+  ASSERT_EQ(computed.exit_code, 0) << computed.err;
+  const std::string summary = computed.out.substr(computed.out.find("': ") + 3);
+  ASSERT_NE(summary.find(" sites, "), std::string::npos) << computed.out;
+  const std::string key = QueryColumn(store_,
+                                      "SELECT cache_key FROM artifacts WHERE stage = "
+                                      "'voronoi'")
+                              .at(0);
+  // A damaged payload would fail any parse; the hit must not need one.
+  FlipPayloadByte(store_, key, 3);
+  const CommandResult cached = Run("ag-voronoi");
+  ASSERT_EQ(cached.exit_code, 0) << cached.err;
+  EXPECT_NE(cached.out.find("(cached)"), std::string::npos) << cached.out;
+  const std::string sites = summary.substr(0, summary.find(" sites, "));
+  EXPECT_NE(cached.out.find(sites + " sites, "), std::string::npos) << cached.out;
 }
 
 TEST_F(StageTools, HelpExitsZero) {

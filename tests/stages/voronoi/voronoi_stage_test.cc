@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "common/error.h"
 #include "stages/geometry/obstacle_sites.h"
-#include "store/error.h"
 #include "tests/support/test_grids.h"
 
 namespace areagraph {
@@ -17,7 +17,7 @@ TEST(VoronoiStage, DiagramOfARoomUsesTheObstacleSites) {
   TestGrid grid(60, 40, proto::CELL_UNKNOWN);
   grid.Fill(5, 5, 54, 34, proto::CELL_FREE).Walls(5, 5, 54, 34, 2);
   const proto::CleanedMap map = grid.ToCleanedMap(0.1);
-  const proto::VoronoiDiagram d = ComputeVoronoiStage(map, proto::VoronoiOptions(), "room");
+  const proto::VoronoiDiagram d = ComputeVoronoiStage(map, proto::VoronoiOptions());
   EXPECT_EQ(d.format_version(), 1u);
   EXPECT_EQ(d.frame().SerializeAsString(), map.frame().SerializeAsString());
   const std::vector<Eigen::Vector2d> sites = ObstacleSites(grid.cells(), 60, 40);
@@ -44,23 +44,22 @@ TEST(VoronoiStage, DiagramOfARoomUsesTheObstacleSites) {
 
 TEST(VoronoiStage, RejectsMapsWithoutFreeSpaceOrSites) {
   EXPECT_THROW(ComputeVoronoiStage(TestGrid(10, 10, proto::CELL_OCCUPIED).ToCleanedMap(),
-                                   proto::VoronoiOptions(), "x"),
+                                   proto::VoronoiOptions()),
                InputError);
   try {
-    ComputeVoronoiStage(TestGrid(10, 10).ToCleanedMap(), proto::VoronoiOptions(), "x");
+    ComputeVoronoiStage(TestGrid(10, 10).ToCleanedMap(), proto::VoronoiOptions());
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "map 'x' has no obstacle cells next to free space");
+    EXPECT_EQ(std::string(e.what()), "the map has no obstacle cells next to free space");
   }
   TestGrid line(10, 10);
   line.Fill(2, 5, 8, 5, proto::CELL_OCCUPIED);  // sites all on one line
-  EXPECT_THROW(ComputeVoronoiStage(line.ToCleanedMap(), proto::VoronoiOptions(), "x"), InputError);
+  EXPECT_THROW(ComputeVoronoiStage(line.ToCleanedMap(), proto::VoronoiOptions()), InputError);
   line.Fill(2, 6, 8, 6, proto::CELL_OCCUPIED);  // two rows: a proper diagram
-  EXPECT_GT(ComputeVoronoiStage(line.ToCleanedMap(), proto::VoronoiOptions(), "x").vertices_size(),
-            0);
+  EXPECT_GT(ComputeVoronoiStage(line.ToCleanedMap(), proto::VoronoiOptions()).vertices_size(), 0);
   TestGrid dot(10, 10);
   dot.Fill(4, 4, 4, 4, proto::CELL_OCCUPIED);
-  EXPECT_THROW(ComputeVoronoiStage(dot.ToCleanedMap(), proto::VoronoiOptions(), "x"), InputError);
+  EXPECT_THROW(ComputeVoronoiStage(dot.ToCleanedMap(), proto::VoronoiOptions()), InputError);
 }
 
 }  // namespace

@@ -6,7 +6,7 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tools/eval/ground_truth_alignment.h"
 #include "tools/eval/label_image.h"
 

@@ -19,6 +19,7 @@
 #include "store/artifact_store.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"
+#include "tools/export/geo_anchor.h"
 
 namespace areagraph {
 namespace {
@@ -36,13 +37,16 @@ class AgExportCli : public ::testing::Test {
     std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
     StageInputs inputs;
     inputs.digests = {"cut-artifact-digest"};
-    RunCachedStage(*store, "house", kMergeStage, proto::MergeOptions(), inputs,
+    RunCachedStage(*store, "house", StageOf(kMergeStage), {}, inputs,
                    [] { return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph()); });
   }
 
-  testing::CommandResult Export(const std::string& format, const std::string& out) {
-    return RunTool("ag-export",
-                   {"--store", store_path_, "--map", "house", "--format", format, "--out", out});
+  testing::CommandResult Export(const std::string& format, const std::string& out,
+                                std::vector<std::string> extra = {}) {
+    std::vector<std::string> args = {"--store",  store_path_, "--map", "house",
+                                     "--format", format,      "--out", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunTool("ag-export", args);
   }
 
   TempDir dir_;
@@ -62,6 +66,13 @@ TEST_F(AgExportCli, LabelImageHasTheMapSizeAndOneLabelPerArea) {
 
 double Number(const Value& value) { return value.number_value(); }
 
+// The JSON file at `path` as a Struct; a failure when it does not parse.
+Struct ReadJson(const std::string& path) {
+  Struct parsed;
+  EXPECT_TRUE(google::protobuf::util::JsonStringToMessage(ReadFile(path), &parsed).ok()) << path;
+  return parsed;
+}
+
 // Twice the signed area of a closed GeoJSON ring.
 double TwiceSignedArea(const google::protobuf::ListValue& ring) {
   double sum = 0;
@@ -76,15 +87,16 @@ double TwiceSignedArea(const google::protobuf::ListValue& ring) {
 TEST_F(AgExportCli, GeoJsonParsesWithClosedOrientedRings) {
   const auto run = Export("geojson", dir_.File("map.geojson"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  Struct collection;
-  ASSERT_TRUE(
-      google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.geojson")), &collection)
-          .ok());
+  const Struct collection = ReadJson(dir_.File("map.geojson"));
   EXPECT_EQ(collection.fields().at("type").string_value(), "FeatureCollection");
+  EXPECT_EQ(collection.fields().at("name").string_value(), "house");
+  EXPECT_EQ(collection.fields().at("units").string_value(), "metres");
+  EXPECT_EQ(Number(collection.fields().at("frame").struct_value().fields().at("width_px")), 40);
   const auto& features = collection.fields().at("features").list_value();
   ASSERT_EQ(features.values_size(), 3);
 
   const Struct& corridor = features.values(1).struct_value();
+  EXPECT_EQ(corridor.fields().at("id").string_value(), "area/1");
   const Struct& geometry = corridor.fields().at("geometry").struct_value();
   EXPECT_EQ(geometry.fields().at("type").string_value(), "Polygon");
   const auto& rings = geometry.fields().at("coordinates").list_value();
@@ -104,19 +116,49 @@ TEST_F(AgExportCli, GeoJsonParsesWithClosedOrientedRings) {
   }
   EXPECT_TRUE(found_corner);
   const auto& area_properties = corridor.fields().at("properties").struct_value().fields();
-  EXPECT_EQ(Number(area_properties.at("id")), 1);
+  EXPECT_EQ(Number(area_properties.at("area_id")), 1);
   EXPECT_EQ(area_properties.at("kind").string_value(), "corridor");
   EXPECT_DOUBLE_EQ(Number(area_properties.at("area_m2")), 0.24);
 
   const Struct& passage = features.values(2).struct_value();
+  EXPECT_EQ(passage.fields().at("id").string_value(), "passage/0");
   const Struct& line = passage.fields().at("geometry").struct_value();
   EXPECT_EQ(line.fields().at("type").string_value(), "LineString");
-  EXPECT_EQ(line.fields().at("coordinates").list_value().values_size(), 2);
+  // The passage is the border the two areas share, all three of its points.
+  const auto& coordinates = line.fields().at("coordinates").list_value();
+  ASSERT_EQ(coordinates.values_size(), 3);
+  EXPECT_NEAR(Number(coordinates.values(1).list_value().values(1)), 2.0 + (20 - 7) * 0.05, 1e-9);
   const auto& passage_properties = passage.fields().at("properties").struct_value().fields();
   EXPECT_EQ(passage_properties.at("kind").string_value(), "passage");
   EXPECT_DOUBLE_EQ(Number(passage_properties.at("width_m")), 0.3);
   EXPECT_EQ(Number(passage_properties.at("from")), 0);
   EXPECT_EQ(Number(passage_properties.at("to")), 1);
+}
+
+TEST_F(AgExportCli, GeoJsonWithAnAnchorIsWgs84) {
+  const auto run =
+      Export("geojson", dir_.File("map.geojson"),
+             {"--anchor-lat", "48.1", "--anchor-lon", "11.5", "--features", "passages"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Struct collection = ReadJson(dir_.File("map.geojson"));
+  EXPECT_EQ(collection.fields().at("units").string_value(), "degrees");
+  EXPECT_EQ(collection.fields().count("crs"), 0u);
+  const auto& features = collection.fields().at("features").list_value();
+  ASSERT_EQ(features.values_size(), 1);  // the passage only
+  const auto& first = features.values(0)
+                          .struct_value()
+                          .fields()
+                          .at("geometry")
+                          .struct_value()
+                          .fields()
+                          .at("coordinates")
+                          .list_value()
+                          .values(0)
+                          .list_value();
+  // Border point (12, 4) px is world (1.6, 2.8) m: [lon, lat] as RFC 7946 orders them.
+  const LatLon expected = MetresToLatLon({48.1, 11.5}, 1.6, 2.8);
+  EXPECT_NEAR(Number(first.values(0)), expected.lon_deg, 1e-12);
+  EXPECT_NEAR(Number(first.values(1)), expected.lat_deg, 1e-12);
 }
 
 // The <way> blocks of an OSM file, in order.
@@ -150,45 +192,98 @@ TEST_F(AgExportCli, OsmAgHasAreasThenPassagesWithTheirTags) {
                             dir_.File("map.osm"), "--anchor-lat", "48.1", "--anchor-lon", "11.5"});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string xml = ReadFile(dir_.File("map.osm"));
-  EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\">"), std::string::npos);
+  EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\" upload=\"never\">"),
+            std::string::npos);
   EXPECT_NE(xml.find("lat=\"48.1000000000\" lon=\"11.5000000000\">"), std::string::npos);
   EXPECT_NE(xml.find("<tag k=\"osmAG:map\" v=\"house\"/>"), std::string::npos);
   EXPECT_LT(xml.rfind("<node "), xml.find("<way "));
 
   const std::vector<std::string> ways = WayBlocks(xml);
-  ASSERT_EQ(ways.size(), 3u);
-  for (int i = 0; i < 2; ++i) {
+  ASSERT_EQ(ways.size(), 4u);
+  EXPECT_TRUE(HasTag(ways[0], "osmAG:areaType", "structure"));
+  EXPECT_TRUE(HasTag(ways[0], "name", "house"));
+  for (int i = 1; i < 3; ++i) {
     const std::vector<std::string> refs = NodeRefs(ways[i]);
-    ASSERT_EQ(refs.size(), 5u);
+    ASSERT_EQ(refs.size(), 8u);            // 4 corners, 3 border points, the closing repeat
     EXPECT_EQ(refs.front(), refs.back());  // closed
     EXPECT_TRUE(HasTag(ways[i], "osmAG:type", "area"));
-    EXPECT_TRUE(HasTag(ways[i], "name", "area_" + std::to_string(i)));
+    EXPECT_TRUE(HasTag(ways[i], "osmAG:areaType", "room"));
+    EXPECT_TRUE(HasTag(ways[i], "osmAG:parent", "house"));
+    EXPECT_TRUE(HasTag(ways[i], "name", "area_" + std::to_string(i - 1)));
   }
-  EXPECT_TRUE(HasTag(ways[0], "osmAG:areaType", "room"));
-  EXPECT_TRUE(HasTag(ways[1], "osmAG:areaType", "corridor"));
-  EXPECT_EQ(NodeRefs(ways[2]).size(), 2u);
-  EXPECT_TRUE(HasTag(ways[2], "osmAG:type", "passage"));
-  EXPECT_TRUE(HasTag(ways[2], "osmAG:from", "area_0"));
-  EXPECT_TRUE(HasTag(ways[2], "osmAG:to", "area_1"));
-  // The two squares share their common edge's two nodes.
-  std::vector<std::string> room = NodeRefs(ways[0]), corridor = NodeRefs(ways[1]);
+  EXPECT_TRUE(HasTag(ways[1], "areagraph:kind", "room"));
+  EXPECT_TRUE(HasTag(ways[2], "areagraph:kind", "corridor"));
+  const std::vector<std::string> passage = NodeRefs(ways[3]);
+  EXPECT_EQ(passage.size(), 3u);
+  EXPECT_TRUE(HasTag(ways[3], "osmAG:type", "passage"));
+  EXPECT_TRUE(HasTag(ways[3], "indoor", "door"));
+  EXPECT_TRUE(HasTag(ways[3], "door", "yes"));
+  EXPECT_TRUE(HasTag(ways[3], "osmAG:from", "area_0"));
+  EXPECT_TRUE(HasTag(ways[3], "osmAG:to", "area_1"));
+  // The two squares share their common edge's two corners and the passage's
+  // three nodes.
+  std::vector<std::string> room = NodeRefs(ways[1]), corridor = NodeRefs(ways[2]);
   room.pop_back();  // the closing repeat
   corridor.pop_back();
   int shared = 0;
   for (const std::string& ref : room) {
     shared += static_cast<int>(std::count(corridor.begin(), corridor.end(), ref));
   }
-  EXPECT_EQ(shared, 2);
+  EXPECT_EQ(shared, 5);
+  for (const std::string& ref : passage) {
+    EXPECT_EQ(std::count(room.begin(), room.end(), ref), 1);
+    EXPECT_EQ(std::count(corridor.begin(), corridor.end(), ref), 1);
+  }
 }
 
-TEST_F(AgExportCli, JsonReadsBackAsTheSameAreaGraph) {
-  const auto run = Export("json", dir_.File("map.json"));
+TEST_F(AgExportCli, ProtoJsonReadsBackAsTheSameAreaGraph) {
+  const auto run = Export("protojson", dir_.File("map.json"));
   ASSERT_EQ(run.exit_code, 0) << run.err;
   proto::AreaGraph parsed;
   ASSERT_TRUE(
       google::protobuf::util::JsonStringToMessage(ReadFile(dir_.File("map.json")), &parsed).ok());
   EXPECT_TRUE(
       google::protobuf::util::MessageDifferencer::Equals(parsed, testing::TwoRoomAreaGraph()));
+}
+
+TEST_F(AgExportCli, JsonIsNodeLinkWithKindNamesAsInGeoJson) {
+  const auto run = Export("json", dir_.File("graph.json"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const Struct graph = ReadJson(dir_.File("graph.json"));
+  EXPECT_FALSE(graph.fields().at("directed").bool_value());
+  EXPECT_TRUE(graph.fields().at("multigraph").bool_value());
+  EXPECT_EQ(graph.fields().at("graph").struct_value().fields().at("name").string_value(), "house");
+  const auto& nodes = graph.fields().at("nodes").list_value();
+  ASSERT_EQ(nodes.values_size(), 2);
+  EXPECT_EQ(nodes.values(1).struct_value().fields().at("kind").string_value(), "corridor");
+  const auto& polygon = nodes.values(0).struct_value().fields().at("polygon").list_value();
+  ASSERT_EQ(polygon.values_size(), 4);
+  EXPECT_NEAR(Number(polygon.values(0).list_value().values(0)), 1.1, 1e-9);
+  for (const char* links : {"links", "edges"}) {
+    const auto& list = graph.fields().at(links).list_value();
+    ASSERT_EQ(list.values_size(), 1);
+    const auto& link = list.values(0).struct_value().fields();
+    EXPECT_EQ(Number(link.at("source")), 0);
+    EXPECT_EQ(Number(link.at("target")), 1);
+    EXPECT_EQ(Number(link.at("key")), 0);
+    EXPECT_EQ(link.at("border").list_value().values_size(), 3);
+  }
+}
+
+TEST_F(AgExportCli, OptionsOfAnotherFormatAreOneLineErrors) {
+  for (const std::vector<std::string>& extra :
+       {std::vector<std::string>{"--format", "osmag", "--features", "areas"},
+        {"--format", "geojson", "--level", "1"},
+        {"--format", "geojson", "--anchor-lat", "40"},
+        {"--format", "json", "--anchor-lat", "40", "--anchor-lon", "8"},
+        {"--format", "geojson", "--features", "doors"}}) {
+    std::vector<std::string> args = {"--store", store_path_, "--map",
+                                     "house",   "--out",     dir_.File("x")};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const auto run = RunTool("ag-export", args);
+    EXPECT_EQ(run.exit_code, 1) << extra[2];
+    EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  }
 }
 
 TEST_F(AgExportCli, UnknownFormatIsOneLineAndNonZero) {
@@ -211,7 +306,7 @@ TEST_F(AgExportCli, MissingMergeArtifactNamesTheStageToRun) {
     std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
     StageInputs inputs;
     inputs.digests = {"source"};
-    RunCachedStage(*store, "other", kImportStage, proto::ImportOptions(), inputs,
+    RunCachedStage(*store, "other", StageOf(kImportStage), {}, inputs,
                    [] { return std::make_unique<proto::GridMap>(); });
   }
   auto run = RunTool("ag-export", {"--store", store_path_, "--map", "other", "--format", "json",

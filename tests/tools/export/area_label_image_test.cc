@@ -5,7 +5,7 @@
 
 #include <opencv2/core.hpp>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tests/tools/export/test_area_graph.h"
 
 namespace areagraph {

@@ -3,12 +3,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
-#include "store/error.h"
+#include "common/error.h"
 #include "tests/tools/export/test_area_graph.h"
 
 namespace areagraph {
@@ -42,27 +44,69 @@ std::vector<std::string> AllMatches(const std::string& text, const std::string& 
 }
 
 TEST(OsmAgExport, SharesNodesAndOrdersWays) {
-  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), "house", GeoAnchor());
+  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), {"house", GeoAnchor()});
   EXPECT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", 0), 0u);
-  EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\">"), std::string::npos);
-  // Root + 6 distinct square corners (2 shared) + 2 passage ends.
+  EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\" upload=\"never\">"),
+            std::string::npos);
+  // Root + 6 distinct square corners (2 shared) + 3 border points + 4
+  // structure corners.
   const std::vector<std::string> node_ids = AllMatches(xml, "<node id=\"(-?\\d+)\"");
-  EXPECT_EQ(node_ids.size(), 9u);
+  EXPECT_EQ(node_ids.size(), 14u);
   EXPECT_EQ(node_ids.front(), "-1");
   EXPECT_NE(xml.find("lat=\"31.1794700000\" lon=\"121.5904200000\">\n"
                      "    <tag k=\"name\" v=\"root\"/>"),
             std::string::npos)
       << xml;
   const std::vector<std::string> names = AllMatches(xml, "<tag k=\"name\" v=\"([^\"]+)\"");
-  EXPECT_EQ(names, (std::vector<std::string>{"root", "area_0", "area_1", "passage_0"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"root", "house", "area_0", "area_1", "passage_0"}));
   const std::vector<std::string> way_ids = AllMatches(xml, "<way id=\"(-?\\d+)\"");
-  EXPECT_EQ(way_ids, (std::vector<std::string>{"-10", "-11", "-12"}));
-  // The holes of area 1 are not written: 5 + 5 + 2 node references.
-  EXPECT_EQ(AllMatches(xml, "<nd ref=\"(-?\\d+)\"").size(), 12u);
+  ASSERT_EQ(way_ids.size(), 4u);
+  std::set<std::string> ids(node_ids.begin(), node_ids.end());
+  ids.insert(way_ids.begin(), way_ids.end());
+  EXPECT_EQ(ids.size(), 18u);  // unique across nodes and ways
+  for (const std::string& id : ids) EXPECT_LT(std::stoi(id), 0);
+  // The holes of area 1 are not written; the passage's 3 border points join
+  // both squares: structure 5, squares 5 + 3 each, passage 3.
+  EXPECT_EQ(AllMatches(xml, "<nd ref=\"(-?\\d+)\"").size(), 24u);
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"osmAG:parent\" v=\"(house)\"").size(), 2u);
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"level\" v=\"(0)\"").size(), 4u);
+  EXPECT_EQ(xml.find("\"height\""), std::string::npos);
+}
+
+TEST(OsmAgExport, WritesLevelAndHeightWhenGiven) {
+  OsmAgSettings settings{"house", GeoAnchor()};
+  settings.level = -1;
+  settings.height_m = 3.25;
+  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), settings);
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"level\" v=\"(-1)\"").size(), 4u);
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"height\" v=\"(3.250)\"").size(), 2u);
+}
+
+// Older graphs have no border_m: the passage runs along segment_m, whose ends
+// become nodes of both outlines.
+TEST(OsmAgExport, PassageWithoutBorderPutsItsEndsIntoBothOutlines) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  graph.mutable_passages(0)->clear_border_m();
+  const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  std::vector<std::vector<std::string>> ways;
+  const std::regex way("<way [^>]*>([\\s\\S]*?)</way>");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), way); it != std::sregex_iterator();
+       ++it) {
+    const std::string body = (*it)[1];
+    ways.push_back(AllMatches(body, "<nd ref=\"(-?\\d+)\"/>"));
+  }
+  ASSERT_EQ(ways.size(), 4u);     // structure, two areas, passage
+  EXPECT_EQ(ways[1].size(), 7u);  // 4 corners + 2 passage ends + the closing repeat
+  EXPECT_EQ(ways[2].size(), 7u);
+  ASSERT_EQ(ways[3].size(), 2u);
+  for (const std::string& end : ways[3]) {
+    EXPECT_EQ(std::count(ways[1].begin(), ways[1].end(), end), 1);
+    EXPECT_EQ(std::count(ways[2].begin(), ways[2].end(), end), 1);
+  }
 }
 
 TEST(OsmAgExport, EscapesTheMapName) {
-  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), "a<b&\"c\"", GeoAnchor());
+  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), {"a<b&\"c\"", GeoAnchor()});
   EXPECT_NE(xml.find("v=\"a&lt;b&amp;&quot;c&quot;\""), std::string::npos);
 }
 
@@ -70,7 +114,7 @@ TEST(OsmAgExport, RejectsDegenerateAreas) {
   proto::AreaGraph graph = testing::TwoRoomAreaGraph();
   graph.mutable_areas(0)->mutable_polygon_m()->mutable_outer()->mutable_points()->RemoveLast();
   graph.mutable_areas(0)->mutable_polygon_m()->mutable_outer()->mutable_points()->RemoveLast();
-  EXPECT_THROW(AreaGraphToOsmAg(graph, "house", GeoAnchor()), InputError);
+  EXPECT_THROW(AreaGraphToOsmAg(graph, {"house", GeoAnchor()}), InputError);
 }
 
 }  // namespace

@@ -71,6 +71,13 @@ proto::AreaGraph TwoRoomAreaGraph() {
   passage->mutable_segment_m()->mutable_b()->set_x(b.x());
   passage->mutable_segment_m()->mutable_b()->set_y(b.y());
   passage->set_width_m(0.3);
+  // The shared border x = 12 from y = 4 to 10, through a vertex at y = 7.
+  for (const double y : {4.0, 7.0, 10.0}) {
+    const Eigen::Vector2d point = transform.PixelToWorld({12, y});
+    proto::Point2* border = passage->add_border_m();
+    border->set_x(point.x());
+    border->set_y(point.y());
+  }
   return graph;
 }
 

@@ -1,0 +1,12 @@
+#include "common/error.h"
+
+namespace areagraph {
+
+MapStepError::MapStepError(const std::string& map_name, const std::string& step,
+                           const std::string& cause)
+    : Error("map '" + map_name + "', " + step + ": " + cause),
+      map_name_(map_name),
+      step_(step),
+      cause_(cause) {}
+
+}  // namespace areagraph

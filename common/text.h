@@ -1,0 +1,14 @@
+#pragma once
+
+#include <string>
+
+namespace areagraph {
+
+// `value` as the shortest text that a user would type: 0.05, 1.25, 1e+308,
+// nan. For numbers in messages.
+std::string FormatNumber(double value);
+
+// The first 12 hex digits of a cache key: how keys are shown to users.
+std::string ShortKey(const std::string& cache_key);
+
+}  // namespace areagraph

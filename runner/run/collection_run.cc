@@ -1,0 +1,98 @@
+#include "runner/run/collection_run.h"
+
+#include <unistd.h>
+
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "common/json.h"
+#include "runner/live/area_graph_publisher.h"
+#include "runner/run/fault_injection.h"
+#include "runner/run/process_pool.h"
+#include "runner/run/run_report.h"
+#include "runner/run/shard.h"
+#include "runner/run/worker_events.h"
+#include "stages/common/pipeline_options_check.h"
+
+namespace areagraph {
+namespace {
+
+std::vector<MapTask> TasksFrom(const RunFlags& flags, const proto::PipelineOptions& options) {
+  std::optional<Shard> shard;
+  if (!flags.shard.empty()) shard = ParseShard(flags.shard);
+  std::vector<MapTask> tasks;
+  for (MapEntry& entry : CollectMaps(flags.maps)) {
+    if (shard && !InShard(entry.name, *shard)) continue;
+    proto::PipelineOptions map_options = OptionsForMap(options, entry);
+    CheckPipelineOptions(map_options);
+    tasks.push_back({std::move(entry), std::move(map_options)});
+  }
+  return tasks;
+}
+
+GraphPublisher MakePublisher(const std::string& url) {
+  if (url.empty()) return nullptr;
+  AreaGraphPublisher probe(url);  // a bad URL fails here, before any map runs
+  auto publisher = std::make_shared<std::unique_ptr<AreaGraphPublisher>>();
+  // Each worker process makes its own LCM instance on first use.
+  return [publisher, url](const std::string& name, const std::string& key,
+                          const proto::AreaGraph& graph) {
+    if (!*publisher) *publisher = std::make_unique<AreaGraphPublisher>(url);
+    (*publisher)->Publish(name, key, graph);
+  };
+}
+
+void RecordLeftoverFailures(const std::string& store_path, const RunReport& report) {
+  if (report.UnrecordedFailures().empty()) return;
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path);
+  for (const FailureRecord& failure : report.UnrecordedFailures()) store->RecordFailure(failure);
+}
+
+}  // namespace
+
+int RunCollection(const RunFlags& flags) {
+  const RunSettings settings = SettingsFrom(flags);
+  const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
+  const std::vector<MapTask> tasks = TasksFrom(flags, options);
+  const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
+  // Fails early on a store that is unwritable, locked, foreign or too new;
+  // closed again because SQLite connections must not cross fork().
+  OpenArtifactStore(settings.store_path).reset();
+
+  ProgressDisplay progress(static_cast<int>(tasks.size()), isatty(STDERR_FILENO) == 1);
+  RunReport report(tasks, progress);
+  std::unique_ptr<MapWorker> worker;  // made in each worker process
+  ProcessPool pool(
+      flags.jobs,
+      [&](int task, EventWriter& events) {
+        if (!worker) worker = std::make_unique<MapWorker>(settings, publish);
+        PipelineObserver observer;
+        observer.on_start = [&](const StageInfo& stage) {
+          events.Write(StageStartedEvent(stage));
+          MaybeInjectCrash(tasks[task].entry.name, stage);
+        };
+        observer.on_done = [&](const StageInfo& stage, const StageRun& run) {
+          events.Write(StageDoneEvent(stage, run));
+        };
+        events.Write(MapEndedEvent(worker->Run(tasks[task], observer)));
+      },
+      [&](int task, const std::string& event) { ApplyWorkerEvent(event, task, report); },
+      [&](int task, const std::string& crash) {
+        if (!crash.empty()) report.MapCrashed(task, crash);
+      },
+      [&] { progress.Tick(); });
+  pool.Run(static_cast<int>(tasks.size()));
+  progress.Finish();
+
+  const proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
+  RecordLeftoverFailures(settings.store_path, report);
+  if (flags.json) {
+    std::cout << MessageToJson(summary, /*with_defaults=*/true);
+  } else {
+    PrintSummary(summary, std::cout);
+  }
+  return summary.failed() > 0 ? 1 : 0;
+}
+
+}  // namespace areagraph

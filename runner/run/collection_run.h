@@ -1,0 +1,13 @@
+#pragma once
+
+#include "runner/run/run_command_line.h"
+
+namespace areagraph {
+
+// ag-run's work: the maps of the collection (options checked for every map
+// before the store is touched), run in worker processes, with progress and
+// the summary printed at the end. Returns the exit status: 1 when any map
+// failed. Throws Error for what stops the whole run.
+int RunCollection(const RunFlags& flags);
+
+}  // namespace areagraph

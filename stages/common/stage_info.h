@@ -1,0 +1,70 @@
+#pragma once
+
+#include <google/protobuf/message.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace areagraph {
+
+// A stage's identity in cache keys. Bump `version` whenever the stage's
+// output changes for the same input, so that cached results are recomputed.
+struct StageInfo {
+  const char* name;
+  int version;
+};
+
+inline constexpr StageInfo kImportStage{"import", 1};
+// clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
+inline constexpr StageInfo kCleanStage{"clean", 3};
+inline constexpr StageInfo kVoronoiStage{"voronoi", 2};  // 2: edges in face order
+inline constexpr StageInfo kPruneStage{"prune", 1};
+// cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
+// cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
+inline constexpr StageInfo kCutStage{"cut", 3};
+// merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
+// merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
+// merge 4: open bays fold into their room (merge.fold_open_bays).
+// merge 5: polygons are a simplified planar partition, passages lie on shared borders.
+// merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
+inline constexpr StageInfo kMergeStage{"merge", 6};
+
+// Whether two StageInfos name the same stage.
+inline bool SameStage(const StageInfo& a, const StageInfo& b) {
+  return std::string(a.name) == b.name;
+}
+
+// The format_version that this build writes into each artifact message.
+// Bump one when the meaning of its fields changes, so that older builds
+// refuse the artifact (ParseArtifact) instead of misreading it.
+inline constexpr uint32_t kGridMapFormatVersion = 1;
+inline constexpr uint32_t kCleanedMapFormatVersion = 1;
+inline constexpr uint32_t kVoronoiDiagramFormatVersion = 1;
+inline constexpr uint32_t kTopologyGraphFormatVersion = 1;
+inline constexpr uint32_t kCutGraphFormatVersion = 1;
+inline constexpr uint32_t kAreaGraphFormatVersion = 1;
+
+// What one stage run did.
+struct StageRun {
+  std::string cache_key;
+  bool cache_hit = false;
+  // Time spent computing, or 0 on a hit.
+  double elapsed_ms = 0;
+  // The artifact's one-line summary (StageDefinition::summarize).
+  std::string summary;
+};
+
+// Where a stage's inputs came from: the digests that enter its cache key.
+struct StageInputs {
+  std::vector<std::string> digests;
+  // Set by ag-import only: recorded on the map row.
+  std::optional<std::string> source_path;
+  std::optional<std::string> source_digest;
+};
+
+// The cache key of a stage run: what RunCachedStage looks up and stores.
+std::string StageCacheKey(const StageInfo& stage, const google::protobuf::Message& options,
+                          const std::vector<std::string>& input_keys);
+
+}  // namespace areagraph

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <google/protobuf/message.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "proto/pipeline_options.pb.h"
+#include "stages/common/stage_info.h"
+
+namespace areagraph {
+
+using MessagePtr = std::unique_ptr<google::protobuf::Message>;
+
+// Everything the executables, the runner and the tools know about one stage.
+// Each stage is one row of StageTable(); nothing else lists the stages.
+struct StageDefinition {
+  StageInfo info;
+  // The stages whose artifacts it reads, in the order their keys enter its
+  // cache key. Empty for import, which reads a file.
+  std::vector<StageInfo> inputs;
+  // Its options within PipelineOptions.
+  const google::protobuf::Message& (*options_of)(const proto::PipelineOptions& options);
+  // An empty message of the artifact type it writes.
+  const google::protobuf::Message* prototype;
+  // The format_version it writes (stage_info.h).
+  uint32_t format_version;
+  // Computes its artifact from its input artifacts (in `inputs` order, each of
+  // its stage's artifact type). Null for import. Throws what the stage throws.
+  MessagePtr (*compute)(const std::vector<const google::protobuf::Message*>& inputs,
+                        const proto::PipelineOptions& options);
+  // One line about an artifact of this stage, e.g. "12 areas, 11 passages";
+  // stored beside the artifact, so that a cache hit prints it unparsed.
+  std::string (*summarize)(const google::protobuf::Message& artifact);
+  // What the stage does: the --help text of its executable.
+  const char* description;
+};
+
+// Every stage, in pipeline order: import first, merge last.
+const std::vector<StageDefinition>& StageTable();
+
+// The row of `stage`.
+const StageDefinition& StageOf(const StageInfo& stage);
+
+// The row of the stage called `name`; throws OptionsError listing the stages
+// when there is none. `what` names where the name came from, e.g. "--from".
+const StageDefinition& FindStage(const std::string& name, const std::string& what = "stage");
+
+// "import, clean, voronoi, prune, cut, merge": for help texts and errors.
+std::string StageNameList();
+
+// The stages that read artifacts (all but import), in pipeline order.
+std::vector<StageInfo> PipelineStages();
+
+// The names of the stages that read a file instead (import): what
+// ArtifactStore::Verify must not look up as artifacts.
+std::vector<std::string> FileInputStageNames();
+
+// A new, empty message of the artifact type named `proto_type` (as stored in
+// the artifacts table), or nullptr for a type this build does not know.
+MessagePtr NewArtifactMessage(const std::string& proto_type);
+
+// The summary of an artifact of any stage, chosen by its type.
+std::string SummarizeArtifact(const google::protobuf::Message& artifact);
+
+}  // namespace areagraph

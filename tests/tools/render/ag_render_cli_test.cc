@@ -1,0 +1,57 @@
+// ag-render on a drawn map: whole pictures and zoomed windows.
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "tests/support/test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+class AgRenderCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    floorplan::FloorPlan plan(6, 5);
+    floorplan::DrawRoom(plan, {0.5, 0.5, 5, 4});
+    const std::string image = dir_.File("room.png");
+    floorplan::WritePlanPng(plan, image);
+    ASSERT_EQ(RunTool("ag-import", {"--store", store_, image}).exit_code, 0);
+    ASSERT_EQ(RunTool("ag-pipeline", {"--store", store_, "--map", "room"}).exit_code, 0);
+  }
+
+  CommandResult Render(std::vector<std::string> extra) {
+    std::vector<std::string> args{"--store", store_, "--map", "room", "--out", out_};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return RunTool("ag-render", args);
+  }
+
+  TempDir dir_;
+  const std::string store_ = dir_.File("store.db");
+  const std::string out_ = dir_.File("picture.png");
+};
+
+TEST_F(AgRenderCli, CropDrawsTheWindowAtTheScale) {
+  const CommandResult whole = Render({"--scale", "2"});
+  ASSERT_EQ(whole.exit_code, 0) << whole.err;
+  const cv::Mat full = cv::imread(out_);
+  EXPECT_EQ(full.cols, 2 * 120);
+  EXPECT_EQ(full.rows, 2 * 100);
+  const CommandResult zoomed = Render({"--scale", "8", "--crop", "10,5,30,20"});
+  ASSERT_EQ(zoomed.exit_code, 0) << zoomed.err;
+  const cv::Mat window = cv::imread(out_);
+  EXPECT_EQ(window.cols, 8 * 30);
+  EXPECT_EQ(window.rows, 8 * 20);
+}
+
+TEST_F(AgRenderCli, BadCropIsOneLineAndNonZero) {
+  for (const char* crop : {"10,5,30", "1,2,-3,4", "500,500,10,10"}) {
+    const CommandResult result = Render({"--scale", "2", "--crop", crop});
+    EXPECT_EQ(result.exit_code, 1) << crop;
+    EXPECT_EQ(CountLines(result.err), 1) << result.err;
+    EXPECT_NE(result.err.find("ag-render: --crop"), std::string::npos) << result.err;
+  }
+}
+
+}  // namespace
+}  // namespace areagraph::testing

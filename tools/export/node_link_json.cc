@@ -1,0 +1,62 @@
+#include "tools/export/node_link_json.h"
+
+#include <cmath>
+#include <vector>
+
+#include "common/error.h"
+#include "tools/export/area_polygons.h"
+#include "tools/export/json_text.h"
+
+namespace areagraph {
+
+namespace {
+
+std::string Position(const proto::Point2& point) {
+  if (!std::isfinite(point.x()) || !std::isfinite(point.y())) {
+    throw InputError("the Area Graph has a coordinate that is not a finite number");
+  }
+  return "[" + JsonNumber(point.x()) + "," + JsonNumber(point.y()) + "]";
+}
+
+std::string Positions(const std::vector<proto::Point2>& points) {
+  std::string text;
+  for (const proto::Point2& point : points) text += (text.empty() ? "" : ",") + Position(point);
+  return "[" + text + "]";
+}
+
+std::string Node(const proto::AreaGraph& graph, const proto::Area& area) {
+  const proto::Polygon polygon = AreaPolygonMetres(graph, area);
+  std::string holes;
+  for (const proto::Ring& hole : polygon.holes()) {
+    holes += (holes.empty() ? "" : ",") + Positions(OrientedRing(hole, false));
+  }
+  return "{\"id\":" + std::to_string(area.id()) + ",\"name\":" + JsonString(AreaName(area.id())) +
+         ",\"kind\":" + JsonString(AreaKindName(area.kind())) +
+         ",\"area_m2\":" + JsonNumber(area.area_m2()) +
+         ",\"centroid\":" + Position(area.centroid_m()) +
+         ",\"polygon\":" + Positions(OrientedRing(polygon.outer(), true)) + ",\"holes\":[" + holes +
+         "]}";
+}
+
+std::string Link(const proto::Passage& passage) {
+  const std::string id = std::to_string(passage.id());
+  return "{\"source\":" + std::to_string(passage.area_a()) +
+         ",\"target\":" + std::to_string(passage.area_b()) + ",\"key\":" + id + ",\"id\":" + id +
+         ",\"name\":\"passage_" + id + "\",\"width_m\":" + JsonNumber(passage.width_m()) +
+         ",\"point\":" + Position(passage.point_m()) +
+         ",\"border\":" + Positions(PassageLine(passage)) + "}";
+}
+
+}  // namespace
+
+std::string AreaGraphToNodeLinkJson(const proto::AreaGraph& graph, const std::string& map_name) {
+  std::vector<std::string> nodes, links;
+  for (const proto::Area& area : graph.areas()) nodes.push_back(Node(graph, area));
+  for (const proto::Passage& passage : graph.passages()) links.push_back(Link(passage));
+  return "{\"directed\":false,\"multigraph\":true,\"graph\":{\"name\":" + JsonString(map_name) +
+         ",\"frame\":" + MessageJson(graph.frame()) +
+         ",\"units\":\"metres\"},\n\"nodes\":" + JsonLines(nodes) +
+         ",\n\"links\":" + JsonLines(links) + ",\n\"edges\":" + JsonLines(links) + "}\n";
+}
+
+}  // namespace areagraph
