@@ -15,8 +15,7 @@ RectM DoorKeepOut(const DoorM& door) {
     return {door.x - door.width / 2 - kSideM, door.y - kDepthM, door.width + 2 * kSideM,
             2 * kDepthM};
   }
-  return {door.x - kDepthM, door.y - door.width / 2 - kSideM, 2 * kDepthM,
-          door.width + 2 * kSideM};
+  return {door.x - kDepthM, door.y - door.width / 2 - kSideM, 2 * kDepthM, door.width + 2 * kSideM};
 }
 
 void Furnish(const FloorLayout& layout, double wall_m, PortableRandom& random, FloorPlan& plan) {

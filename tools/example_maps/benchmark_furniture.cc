@@ -138,9 +138,7 @@ void WallDesk(Furnisher& f) {
 
 }  // namespace
 
-RectM InnerRect(const RectM& part, double wall_m) {
-  return Inflated(part, -wall_m / 2);
-}
+RectM InnerRect(const RectM& part, double wall_m) { return Inflated(part, -wall_m / 2); }
 
 Furnishing RandomFurnishing(ZoneKind kind, PortableRandom& random) {
   if (kind == ZoneKind::kOpenPlan) return Furnishing::kDeskRows;

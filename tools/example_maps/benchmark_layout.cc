@@ -71,8 +71,8 @@ class LayoutBuilder {
     int previous = -1;
     double previous_depth = 0;
     while (length - s >= kMinRoomM) {
-      double width = random_.Chance(0.12) ? random_.Uniform(kMinRoomM, 2.6)
-                                          : random_.Uniform(2.6, 6.0);
+      double width =
+          random_.Chance(0.12) ? random_.Uniform(kMinRoomM, 2.6) : random_.Uniform(2.6, 6.0);
       double room_depth = depth;
       ZoneKind kind = ZoneKind::kRoom;
       if (random_.Chance(0.1)) {
