@@ -38,6 +38,28 @@ struct ArtifactRecord {
   bool is_head = false;
 };
 
+// An artifact's place in its map's history of versions: what a stage that
+// reads its previous version (match) records beside the artifact.
+struct VersionLink {
+  // Cache key of the previous version; empty for the first.
+  std::string predecessor_key;
+  // 1 for the first version, then one more than the predecessor's.
+  int64_t number = 1;
+};
+
+// One version in a map's history (the versions table).
+struct VersionRecord {
+  std::string cache_key;
+  std::string predecessor_key;
+  int64_t number = 0;
+  std::string stage;
+  std::string created_at;  // UTC, ISO 8601: when the version was made
+  // Whether the artifact is still stored (gc drops superseded versions that
+  // no head reaches; their rows stay) and whether it is its stage's head.
+  bool stored = false;
+  bool is_head = false;
+};
+
 // What a stage hands the store to persist. The store fills in the digest, the
 // creation time and the head flag.
 struct NewArtifact {
@@ -54,6 +76,9 @@ struct NewArtifact {
   // Only ag-import sets these; they update the map row.
   std::optional<std::string> source_path;
   std::optional<std::string> source_digest;
+  // Only stages that read their previous version set this: the artifact is
+  // then also recorded in the map's history, in the same transaction.
+  std::optional<VersionLink> version;
 };
 
 // A map that failed in a runner, with the stage it failed in. Keyed by map
@@ -117,6 +142,12 @@ class ArtifactStore {
   virtual std::optional<std::string> ReadHeadKey(const std::string& map_name,
                                                  const std::string& stage) = 0;
 
+  // A map's history of versions (see NewArtifact::version), oldest first,
+  // and one version by key; empty / nullopt for a store older than schema 4.
+  virtual std::vector<VersionRecord> ReadVersions(const std::string& map_name) = 0;
+  virtual std::optional<VersionRecord> ReadVersion(const std::string& map_name,
+                                                   const std::string& cache_key) = 0;
+
   // Failures recorded by runners; at most one per map, the latest.
   virtual void RecordFailure(const FailureRecord& failure) = 0;
   virtual void ClearFailure(const std::string& map_name) = 0;
@@ -134,7 +165,8 @@ class ArtifactStore {
       const std::function<void(int64_t, int64_t)>& progress = nullptr) = 0;
   // Deletes artifacts that no head reaches, directly or through input keys
   // (followed within the map), and then maps left without any artifact, in
-  // one transaction. Counts what was deleted; the file shrinks only after
+  // one transaction. The rows of a map's history stay (ReadVersions then
+  // says which versions are no longer stored). Counts what was deleted; the file shrinks only after
   // VacuumArtifactStore (store/store_maintenance.h).
   virtual MaintenanceCounts CollectGarbage() = 0;
   // Copies the maps, artifacts, heads and failures of the store at `path`
@@ -143,7 +175,8 @@ class ArtifactStore {
   // kept as it is here. A (map, stage) head both hold goes to the artifact
   // created later (a tie keeps this store's), and the map's source follows
   // its import head. A failure goes to the later one, and is dropped when the
-  // merged map has a head created after it. Throws StoreError when `path` is
+  // merged map has a head created after it. The history rows of both are
+  // kept (matched by map and key). Throws StoreError when `path` is
   // this store, or not an areagraph store of this build's schema or older.
   virtual MaintenanceCounts MergeFrom(const std::string& path) = 0;
 };
@@ -157,9 +190,10 @@ std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path,
                                                  StoreMode mode = StoreMode::kReadWrite);
 
 // The schema version this build writes and the newest it reads. 2 added the
-// failures table, 3 the artifacts' summary line. An older store is upgraded
-// when opened read-write, and read as it is (without failures or summary
-// lines) when opened read-only.
-constexpr int kStoreSchemaVersion = 3;
+// failures table, 3 the artifacts' summary line, 4 the versions table (each
+// map's history of Area Graphs). An older store is upgraded when opened
+// read-write, and read as it is (without failures, summary lines or
+// history) when opened read-only.
+constexpr int kStoreSchemaVersion = 4;
 
 }  // namespace areagraph

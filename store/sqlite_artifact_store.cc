@@ -14,6 +14,7 @@
 #include "common/text.h"
 #include "store/digest.h"
 #include "store/sqlite_store_sql.h"
+#include "store/sqlite_versions_sql.h"
 
 namespace areagraph {
 
@@ -164,6 +165,7 @@ void SqliteArtifactStore::CreateOrUpgradeSchema() {
   if (version >= 1 && version < 3) {
     Exec(store_sql::kAddArtifactSummaryColumn, "adding the artifacts' summary column");
   }
+  if (version < 4) Exec(store_sql::kCreateVersionsTable, "creating the versions table");
   if (version < kStoreSchemaVersion) {
     Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
          "setting the schema version");
@@ -217,6 +219,7 @@ void SqliteArtifactStore::PrepareStatements() {
     sql_stmt_clear_failure_ = Prepare(store_sql::kClearFailure, "clearing a failure");
     sql_stmt_read_failures_ = Prepare(store_sql::kReadFailures, "reading the failures");
   }
+  PrepareVersionStatements();
 }
 
 std::unique_ptr<SqliteStatement> SqliteArtifactStore::Prepare(const char* sql,
@@ -375,6 +378,7 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     artifact_id = sql_stmt_read_artifact_id_->ColumnInt64(0, "artifacts.id");
   }
   WriteHead(map_id, artifact.stage, artifact_id);
+  if (artifact.version) InsertVersion(map_id, artifact);
   transaction.Commit();
 }
 

@@ -2,7 +2,8 @@
 
 // The SQLite implementation of ArtifactStore, internal to store/: others get
 // it through OpenArtifactStore. Split over sqlite_artifact_store.cc (opening,
-// reads, writes, failures) and sqlite_store_maintenance.cc (verify, gc, merge).
+// reads, writes, failures), sqlite_store_versions.cc (each map's history) and
+// sqlite_store_maintenance.cc (verify, gc, merge).
 
 #include <sqlite3.h>
 
@@ -36,6 +37,10 @@ class SqliteArtifactStore : public ArtifactStore {
   std::optional<std::string> ReadHeadKey(const std::string& map_name,
                                          const std::string& stage) override;
 
+  std::vector<VersionRecord> ReadVersions(const std::string& map_name) override;
+  std::optional<VersionRecord> ReadVersion(const std::string& map_name,
+                                           const std::string& cache_key) override;
+
   void RecordFailure(const FailureRecord& failure) override;
   void ClearFailure(const std::string& map_name) override;
   std::vector<FailureRecord> ReadFailures() override;
@@ -64,6 +69,8 @@ class SqliteArtifactStore : public ArtifactStore {
   // The failures statements need schema 2; a read-only version-1 store has none.
   bool HasFailuresTable() const { return schema_version_ >= 2; }
   bool HasSummaryLines() const { return schema_version_ >= 3; }
+  // The versions statements need schema 4; older read-only stores have none.
+  bool HasVersionsTable() const { return schema_version_ >= 4; }
 
   std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
   SqliteTransaction BeginTransaction();
@@ -73,6 +80,15 @@ class SqliteArtifactStore : public ArtifactStore {
   ArtifactRecord ReadArtifactRow(const SqliteStatement& statement, const std::string& map_name,
                                  bool with_payload) const;
   void WriteHead(int64_t map_id, const std::string& stage, int64_t artifact_id);
+
+  // History helpers (sqlite_store_versions.cc).
+  void PrepareVersionStatements();
+  // Records `artifact` (which has a version) in its map's history; inside
+  // WriteArtifact's transaction.
+  void InsertVersion(int64_t map_id, const NewArtifact& artifact);
+  VersionRecord ReadVersionRow(const SqliteStatement& statement) const;
+  // Copies the history rows of the attached merge source (schema 4 and later).
+  void MergeVersions(int source_version);
 
   // Maintenance helpers (sqlite_store_maintenance.cc).
   void CheckArtifactRow(SqliteStatement& row, const std::vector<std::string>& file_input_stages,
@@ -107,6 +123,10 @@ class SqliteArtifactStore : public ArtifactStore {
   std::unique_ptr<SqliteStatement> sql_stmt_record_failure_;
   std::unique_ptr<SqliteStatement> sql_stmt_clear_failure_;
   std::unique_ptr<SqliteStatement> sql_stmt_read_failures_;
+  // Null when !HasVersionsTable().
+  std::unique_ptr<SqliteStatement> sql_stmt_insert_version_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_versions_;
+  std::unique_ptr<SqliteStatement> sql_stmt_read_version_;
 };
 
 namespace store_internal {

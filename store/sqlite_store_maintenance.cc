@@ -274,6 +274,7 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(int source_version) {
   run(store_sql::kMergeMapSources, "updating map sources");
   run(store_sql::kMergeHeads, "copying heads");
   run(store_sql::kDropWinningHeads, "comparing heads");
+  MergeVersions(source_version);
   if (source_version >= 2) counts.failures = run(store_sql::kMergeFailures, "copying failures");
   run(store_sql::kDropOutdatedFailures, "dropping outdated failures");
   transaction.Commit();

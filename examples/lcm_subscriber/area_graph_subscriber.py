@@ -78,8 +78,11 @@ class Reassembler:
 
 
 def print_graph(channel, graph):
-    print("%s: map '%s', %d areas, %d passages (key %s)" %
-          (channel, graph.map_name, graph.num_areas, graph.num_passages, graph.artifact_key[:12]))
+    # Ids are stable: area 7 of this graph is area 7 of the map's next graph while it is the
+    # same space. `version` counts the map's graphs.
+    print("%s: map '%s', %d areas, %d passages (key %s, version %d, message %d, sent at %d us)" %
+          (channel, graph.map_name, graph.num_areas, graph.num_passages, graph.artifact_key[:12],
+           graph.version, graph.sequence, graph.utime))
     for area in graph.areas:
         print("  area %d: %s, %g m2, centroid (%g, %g), %d outline points, %d holes" %
               (area.id, KIND_NAMES.get(area.kind, "unknown"), area.area_m2, area.centroid_x,

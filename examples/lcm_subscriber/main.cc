@@ -32,9 +32,12 @@ class AreaGraphPrinter {
   void OnAreaGraph(const lcm::ReceiveBuffer*, const std::string& channel,
                    const areagraph_lcm::area_graph_t* graph) {
     ++received_;
+    // Ids are stable: area 7 of this graph is area 7 of the map's next graph
+    // while it is the same space. `version` counts the map's graphs.
     std::cout << channel << ": map '" << graph->map_name << "', " << graph->num_areas << " areas, "
               << graph->num_passages << " passages (key " << graph->artifact_key.substr(0, 12)
-              << ")\n";
+              << ", version " << graph->version << ", message " << graph->sequence << ", sent at "
+              << graph->utime << " us)\n";
     for (const areagraph_lcm::area_t& area : graph->areas) {
       std::cout << "  area " << area.id << ": " << KindName(area.kind) << ", " << area.area_m2
                 << " m2, centroid (" << area.centroid_x << ", " << area.centroid_y << "), "

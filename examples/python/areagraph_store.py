@@ -50,7 +50,14 @@ class AreagraphStore:
         return message
 
     def area_graph(self, map_name):
-        """The map's Area Graph (the head of the merge stage)."""
+        """The map's newest Area Graph, as ag-export picks it: the match head (with stable ids)
+        when it was made from the merge head, else the merge head (match has not run since)."""
+        heads = {stage: (key, inputs.split("\n")) for stage, key, inputs in self._db.execute(
+            "SELECT h.stage, a.cache_key, a.input_keys FROM maps m"
+            " JOIN heads h ON h.map_id = m.id JOIN artifacts a ON a.id = h.artifact_id"
+            " WHERE m.name = ? AND h.stage IN ('match', 'merge')", (map_name,))}
+        if "match" in heads and ("merge" not in heads or heads["merge"][0] in heads["match"][1]):
+            return self.head(map_name, "match")
         return self.head(map_name, "merge")
 
 
@@ -62,9 +69,14 @@ def to_networkx(graph):
 
     kinds = graph.DESCRIPTOR.fields_by_name["areas"].message_type.fields_by_name["kind"].enum_type
     result = networkx.MultiGraph()
+    # A graph from ag-match also has stable ids (the same across the map's versions).
+    stable = graph.HasField("version")
+    if stable:
+        result.graph["version"] = graph.version.number
     for area in graph.areas:
         result.add_node(
             area.id,
+            **({"stable_id": area.stable_id} if stable else {}),
             name="area_%d" % area.id,
             kind=KIND_NAMES.get(kinds.values_by_number[area.kind].name, "unknown"),
             area_m2=area.area_m2,
@@ -75,6 +87,7 @@ def to_networkx(graph):
         result.add_edge(
             passage.area_a, passage.area_b, key=passage.id,
             id=passage.id,
+            **({"stable_id": passage.stable_id} if stable else {}),
             name="passage_%d" % passage.id,
             width_m=passage.width_m,
             point=(passage.point_m.x, passage.point_m.y),

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "stages/common/stage_versions.h"
 
 namespace areagraph {
 namespace {
@@ -32,7 +33,11 @@ bool SetHeadsIfFullyCached(ArtifactStore& store, const std::string& map_name,
   const StageDefinition& import = StageOf(kImportStage);
   std::vector<std::pair<StageInfo, std::string>> keys = {
       {kImportStage, StageCacheKey(kImportStage, import.options_of(options), inputs.digests)}};
-  const std::vector<std::string> planned = PlanPipelineKeys(keys[0].second, options);
+  const std::vector<std::string> planned =
+      PlanPipelineKeys(keys[0].second, options,
+                       [&](const StageDefinition& stage, const std::vector<std::string>& in) {
+                         return PreviousVersionOf(store, map_name, stage, options, in);
+                       });
   const std::vector<StageInfo> stages = PipelineStages();
   for (size_t i = 0; i < planned.size(); ++i) keys.emplace_back(stages[i], planned[i]);
   for (const auto& [stage, key] : keys) {
@@ -97,7 +102,7 @@ MapOutcome RunOneMap(ArtifactStore& store, FailureLog& failures, const std::stri
                      const PipelineObserver& observer, const GraphPublisher& publish) {
   MapOutcome outcome;
   try {
-    const StageInfo final_stage = PipelineStages().back();
+    const StageInfo final_stage = FinalStage();
     const bool makes_graph = SameStage(settings.last, final_stage);
     const std::optional<std::string> old_graph =
         makes_graph ? store.ReadHeadKey(map_name, final_stage.name) : std::nullopt;

@@ -25,7 +25,7 @@ struct MapImport {
 // Which part of the pipeline a map run covers, and how.
 struct MapRunSettings {
   StageInfo first = kImportStage;  // --from, --only
-  StageInfo last = kMergeStage;    // --only
+  StageInfo last = kMatchStage;    // --only
   bool force = false;
   // ag-live publishes every graph it makes; ag-run only new or changed ones.
   bool publish_unchanged = false;

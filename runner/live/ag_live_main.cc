@@ -19,6 +19,7 @@ struct LiveFlags {
   std::string url;
   StageCommandLine stage;
   ServeLimits limits;
+  bool diffs = false;
 };
 
 int Live(const LiveFlags& flags) {
@@ -32,9 +33,11 @@ int Live(const LiveFlags& flags) {
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.stage.store_path);
   AreaGraphPublisher publisher(url);
   LiveMapServer server(*store, publisher, options, std::cout, std::cerr);
+  server.set_publish_diffs(flags.diffs);
   std::cerr << "ag-live: serving on " << publisher.url() << ": grids on " << kGridMapChannel
-            << ", Area Graphs on " << kAreaGraphChannel << ", store '" << flags.stage.store_path
-            << "'" << std::endl;
+            << ", Area Graphs on " << kAreaGraphChannel
+            << (flags.diffs ? std::string(", diffs on ") + kAreaGraphDiffChannel : "")
+            << ", store '" << flags.stage.store_path << "'" << std::endl;
 
   const bool stopped = ServeUntilDone(
       flags.limits, "maps", [&] { return server.maps_handled(); },
@@ -54,8 +57,11 @@ int main(int argc, char** argv) {
       "Serves Area Graphs live: subscribes to occupancy grids (areagraph_lcm.grid_map_t, see "
       "proto/grid_map_t.lcm) on LCM channel MAP, runs import..merge on each with the store's "
       "cache (a grid sent again is a cache hit and costs nothing), and publishes the Area Graph "
-      "(area_graph_t) on AREA_GRAPH. Malformed messages and failing maps are reported on stderr "
-      "and skipped. Stops on SIGINT or SIGTERM after the map in hand."};
+      "(area_graph_t) on AREA_GRAPH, with ids that stay stable from one grid of a map to the "
+      "next (ag-match) and its version in the map's history. Prints one line per map: areas, "
+      "passages, key, version, work done and the time from receipt to publication. Malformed "
+      "messages and failing maps are reported on stderr and skipped. Stops on SIGINT or SIGTERM "
+      "after the map in hand."};
   LiveFlags flags;
   AddLcmUrlFlag(app, flags.url);
   app.add_option("--store", flags.stage.store_path, "SQLite artifact store")->capture_default_str();
@@ -65,6 +71,9 @@ int main(int argc, char** argv) {
                  "override one option, e.g. --set cut.room_width_m=1.1 (repeatable)")
       ->take_last()
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_flag("--diffs", flags.diffs,
+               "also publish what changed since each map's previous version (area_graph_diff_t) "
+               "on AREA_GRAPH_DIFF");
   app.add_option("--count", flags.limits.count, "exit after handling this many maps (0: no limit)")
       ->capture_default_str();
   app.add_option("--timeout", flags.limits.timeout_s,

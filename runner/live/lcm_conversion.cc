@@ -3,6 +3,7 @@
 #include "runner/live/lcm_conversion.h"
 
 #include <cmath>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -69,6 +70,74 @@ proto::Point2 Point(double x, double y) {
   return point;
 }
 
+// The ids a graph goes out with: its stable ids when it has them (a match
+// artifact), else its own (a graph made before stable ids existed).
+class LcmIds {
+ public:
+  explicit LcmIds(const proto::AreaGraph& graph) : stable_(graph.has_version()) {
+    for (const proto::Area& area : graph.areas()) {
+      area_ids_[area.id()] = stable_ ? area.stable_id() : area.id();
+    }
+    for (const proto::Passage& passage : graph.passages()) {
+      passage_ids_[passage.id()] = stable_ ? passage.stable_id() : passage.id();
+    }
+  }
+  int32_t area(int32_t id) const { return Find(area_ids_, id, "area"); }
+  int32_t passage_by_id(int32_t id) const { return Find(passage_ids_, id, "passage"); }
+  int32_t passage(const proto::Passage& passage) const { return passage_by_id(passage.id()); }
+
+ private:
+  static int32_t Find(const std::map<int32_t, int32_t>& ids, int32_t id, const char* what) {
+    const auto found = ids.find(id);
+    if (found == ids.end()) {
+      throw InputError(std::string("the Area Graph refers to ") + what + " " + std::to_string(id) +
+                       ", which it does not have");
+    }
+    return found->second;
+  }
+
+  bool stable_;
+  std::map<int32_t, int32_t> area_ids_;
+  std::map<int32_t, int32_t> passage_ids_;
+};
+
+areagraph_lcm::area_t ToLcmArea(const proto::Area& area, const LcmIds& ids) {
+  areagraph_lcm::area_t lcm_area;
+  lcm_area.id = ids.area(area.id());
+  lcm_area.kind = ToLcmKind(area.kind());
+  lcm_area.outer = ToLcmRing(area.polygon_m().outer());
+  for (const proto::Ring& hole : area.polygon_m().holes()) {
+    lcm_area.holes.push_back(ToLcmRing(hole));
+  }
+  lcm_area.num_holes = static_cast<int32_t>(lcm_area.holes.size());
+  lcm_area.area_m2 = area.area_m2();
+  lcm_area.centroid_x = area.centroid_m().x();
+  lcm_area.centroid_y = area.centroid_m().y();
+  for (int32_t id : area.passage_ids()) lcm_area.passage_ids.push_back(ids.passage_by_id(id));
+  lcm_area.num_passages = static_cast<int32_t>(lcm_area.passage_ids.size());
+  return lcm_area;
+}
+
+areagraph_lcm::passage_t ToLcmPassage(const proto::Passage& passage, const LcmIds& ids) {
+  areagraph_lcm::passage_t lcm_passage;
+  lcm_passage.id = ids.passage(passage);
+  lcm_passage.area_a = ids.area(passage.area_a());
+  lcm_passage.area_b = ids.area(passage.area_b());
+  lcm_passage.x = passage.point_m().x();
+  lcm_passage.y = passage.point_m().y();
+  lcm_passage.ax = passage.segment_m().a().x();
+  lcm_passage.ay = passage.segment_m().a().y();
+  lcm_passage.bx = passage.segment_m().b().x();
+  lcm_passage.by = passage.segment_m().b().y();
+  lcm_passage.width_m = passage.width_m();
+  for (const proto::Point2& point : passage.border_m()) {
+    lcm_passage.border_x.push_back(point.x());
+    lcm_passage.border_y.push_back(point.y());
+  }
+  lcm_passage.num_border_points = static_cast<int32_t>(lcm_passage.border_x.size());
+  return lcm_passage;
+}
+
 }  // namespace
 
 areagraph_lcm::area_graph_t ToLcmAreaGraph(const std::string& map_name,
@@ -77,6 +146,11 @@ areagraph_lcm::area_graph_t ToLcmAreaGraph(const std::string& map_name,
   areagraph_lcm::area_graph_t out;
   out.map_name = map_name;
   out.artifact_key = cache_key;
+  out.version = graph.version().number();
+  out.predecessor_key = graph.version().predecessor_key();
+  out.utime = 0;
+  out.sequence = 0;
+  out.map_utime = 0;
   const proto::MapFrame& frame = graph.frame();
   out.resolution_m = frame.resolution_m();
   out.origin_x_m = frame.origin_x_m();
@@ -84,43 +158,67 @@ areagraph_lcm::area_graph_t ToLcmAreaGraph(const std::string& map_name,
   out.origin_yaw_rad = frame.origin_yaw_rad();
   out.width_px = frame.width_px();
   out.height_px = frame.height_px();
-  for (const proto::Area& area : graph.areas()) {
-    areagraph_lcm::area_t lcm_area;
-    lcm_area.id = area.id();
-    lcm_area.kind = ToLcmKind(area.kind());
-    lcm_area.outer = ToLcmRing(area.polygon_m().outer());
-    for (const proto::Ring& hole : area.polygon_m().holes()) {
-      lcm_area.holes.push_back(ToLcmRing(hole));
-    }
-    lcm_area.num_holes = static_cast<int32_t>(lcm_area.holes.size());
-    lcm_area.area_m2 = area.area_m2();
-    lcm_area.centroid_x = area.centroid_m().x();
-    lcm_area.centroid_y = area.centroid_m().y();
-    lcm_area.passage_ids.assign(area.passage_ids().begin(), area.passage_ids().end());
-    lcm_area.num_passages = static_cast<int32_t>(lcm_area.passage_ids.size());
-    out.areas.push_back(std::move(lcm_area));
-  }
+  const LcmIds ids(graph);
+  for (const proto::Area& area : graph.areas()) out.areas.push_back(ToLcmArea(area, ids));
   out.num_areas = static_cast<int32_t>(out.areas.size());
   for (const proto::Passage& passage : graph.passages()) {
-    areagraph_lcm::passage_t lcm_passage;
-    lcm_passage.id = passage.id();
-    lcm_passage.area_a = passage.area_a();
-    lcm_passage.area_b = passage.area_b();
-    lcm_passage.x = passage.point_m().x();
-    lcm_passage.y = passage.point_m().y();
-    lcm_passage.ax = passage.segment_m().a().x();
-    lcm_passage.ay = passage.segment_m().a().y();
-    lcm_passage.bx = passage.segment_m().b().x();
-    lcm_passage.by = passage.segment_m().b().y();
-    lcm_passage.width_m = passage.width_m();
-    for (const proto::Point2& point : passage.border_m()) {
-      lcm_passage.border_x.push_back(point.x());
-      lcm_passage.border_y.push_back(point.y());
-    }
-    lcm_passage.num_border_points = static_cast<int32_t>(lcm_passage.border_x.size());
-    out.passages.push_back(lcm_passage);
+    out.passages.push_back(ToLcmPassage(passage, ids));
   }
   out.num_passages = static_cast<int32_t>(out.passages.size());
+  return out;
+}
+
+areagraph_lcm::area_graph_diff_t ToLcmAreaGraphDiff(const std::string& map_name,
+                                                    const std::string& cache_key,
+                                                    const proto::AreaGraphDiff& diff,
+                                                    const proto::AreaGraph& after) {
+  areagraph_lcm::area_graph_diff_t out;
+  out.map_name = map_name;
+  out.artifact_key = cache_key;
+  out.version = diff.to_version();
+  out.predecessor_key = after.version().predecessor_key();
+  out.predecessor_version = diff.from_version();
+  out.utime = 0;
+  out.sequence = 0;
+  out.map_utime = 0;
+  const LcmIds ids(after);
+  std::map<int32_t, const proto::Area*> areas;
+  for (const proto::Area& area : after.areas()) areas[ids.area(area.id())] = &area;
+  std::map<int32_t, const proto::Passage*> passages;
+  for (const proto::Passage& passage : after.passages()) passages[ids.passage(passage)] = &passage;
+  for (int32_t id : diff.added_areas()) out.added_areas.push_back(ToLcmArea(*areas.at(id), ids));
+  out.removed_area_ids.assign(diff.removed_areas().begin(), diff.removed_areas().end());
+  for (const proto::AreaChange& change : diff.changed_areas()) {
+    areagraph_lcm::area_change_t lcm_change;
+    lcm_change.changes = static_cast<int8_t>(
+        (change.grown() ? areagraph_lcm::area_change_t::GROWN : 0) |
+        (change.shrunk() ? areagraph_lcm::area_change_t::SHRUNK : 0) |
+        (change.split_into_size() > 0 ? areagraph_lcm::area_change_t::SPLIT : 0) |
+        (change.merged_from_size() > 0 ? areagraph_lcm::area_change_t::MERGED : 0) |
+        (change.kind_changed() ? areagraph_lcm::area_change_t::KIND : 0) |
+        (change.passages_changed() ? areagraph_lcm::area_change_t::PASSAGES : 0));
+    lcm_change.area = ToLcmArea(*areas.at(change.stable_id()), ids);
+    lcm_change.split_into.assign(change.split_into().begin(), change.split_into().end());
+    lcm_change.num_split_into = static_cast<int32_t>(lcm_change.split_into.size());
+    lcm_change.merged_from.assign(change.merged_from().begin(), change.merged_from().end());
+    lcm_change.num_merged_from = static_cast<int32_t>(lcm_change.merged_from.size());
+    out.changed_areas.push_back(std::move(lcm_change));
+  }
+  out.unchanged_areas = diff.unchanged_areas_size();
+  for (int32_t id : diff.added_passages()) {
+    out.added_passages.push_back(ToLcmPassage(*passages.at(id), ids));
+  }
+  out.removed_passage_ids.assign(diff.removed_passages().begin(), diff.removed_passages().end());
+  for (const proto::PassageChange& change : diff.changed_passages()) {
+    out.changed_passages.push_back(ToLcmPassage(*passages.at(change.stable_id()), ids));
+  }
+  out.unchanged_passages = diff.unchanged_passages_size();
+  out.num_added_areas = static_cast<int32_t>(out.added_areas.size());
+  out.num_removed_areas = static_cast<int32_t>(out.removed_area_ids.size());
+  out.num_changed_areas = static_cast<int32_t>(out.changed_areas.size());
+  out.num_added_passages = static_cast<int32_t>(out.added_passages.size());
+  out.num_removed_passages = static_cast<int32_t>(out.removed_passage_ids.size());
+  out.num_changed_passages = static_cast<int32_t>(out.changed_passages.size());
   return out;
 }
 
@@ -147,17 +245,25 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
   frame->set_height_px(message.height_px);
   const MapTransform transform(*frame);
 
-  std::set<int32_t> area_ids;
+  // The message's ids are stable ids; in the artifact, ids are indices (as
+  // ag-merge makes them) and the message's ids become the stable ids.
+  std::map<int32_t, int32_t> area_index, passage_index;
+  for (const areagraph_lcm::passage_t& lcm_passage : message.passages) {
+    if (!passage_index.emplace(lcm_passage.id, passage_index.size()).second) {
+      Reject(name, "two passages have id " + std::to_string(lcm_passage.id));
+    }
+  }
   for (const areagraph_lcm::area_t& lcm_area : message.areas) {
     const std::string what = "area " + std::to_string(lcm_area.id);
-    if (!area_ids.insert(lcm_area.id).second)
+    if (!area_index.emplace(lcm_area.id, area_index.size()).second)
       Reject(name, "two areas have id " + std::to_string(lcm_area.id));
     if (lcm_area.kind < areagraph_lcm::area_t::ROOM ||
         lcm_area.kind > areagraph_lcm::area_t::DEAD_END) {
       Reject(name, what + " has unknown kind " + std::to_string(lcm_area.kind));
     }
     proto::Area* area = graph.add_areas();
-    area->set_id(lcm_area.id);
+    area->set_id(graph.areas_size() - 1);
+    area->set_stable_id(lcm_area.id);
     area->set_kind(static_cast<proto::AreaKind>(lcm_area.kind));
     FromLcmRing(name, lcm_area.outer, transform, what + " outline",
                 area->mutable_polygon_m()->mutable_outer(),
@@ -171,15 +277,18 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
     CheckFinite(name, lcm_area.centroid_y, what + " centroid_y");
     area->set_area_m2(lcm_area.area_m2);
     *area->mutable_centroid_m() = Point(lcm_area.centroid_x, lcm_area.centroid_y);
-    for (int32_t id : lcm_area.passage_ids) area->add_passage_ids(id);
+    for (int32_t id : lcm_area.passage_ids) {
+      const auto passage = passage_index.find(id);
+      if (passage == passage_index.end()) {
+        Reject(name, what + " lists passage " + std::to_string(id) + ", which is not in the graph");
+      }
+      area->add_passage_ids(passage->second);
+    }
   }
 
-  std::set<int32_t> passage_ids;
   for (const areagraph_lcm::passage_t& lcm_passage : message.passages) {
     const std::string what = "passage " + std::to_string(lcm_passage.id);
-    if (!passage_ids.insert(lcm_passage.id).second)
-      Reject(name, "two passages have id " + std::to_string(lcm_passage.id));
-    if (area_ids.count(lcm_passage.area_a) == 0 || area_ids.count(lcm_passage.area_b) == 0) {
+    if (area_index.count(lcm_passage.area_a) == 0 || area_index.count(lcm_passage.area_b) == 0) {
       Reject(name, what + " joins an area that is not in the graph");
     }
     for (double value : {lcm_passage.x, lcm_passage.y, lcm_passage.ax, lcm_passage.ay,
@@ -187,9 +296,10 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
       CheckFinite(name, value, what + " geometry");
     }
     proto::Passage* passage = graph.add_passages();
-    passage->set_id(lcm_passage.id);
-    passage->set_area_a(lcm_passage.area_a);
-    passage->set_area_b(lcm_passage.area_b);
+    passage->set_id(graph.passages_size() - 1);
+    passage->set_stable_id(lcm_passage.id);
+    passage->set_area_a(area_index.at(lcm_passage.area_a));
+    passage->set_area_b(area_index.at(lcm_passage.area_b));
     *passage->mutable_point_m() = Point(lcm_passage.x, lcm_passage.y);
     *passage->mutable_segment_m()->mutable_a() = Point(lcm_passage.ax, lcm_passage.ay);
     *passage->mutable_segment_m()->mutable_b() = Point(lcm_passage.bx, lcm_passage.by);
@@ -200,13 +310,14 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
       *passage->add_border_m() = Point(lcm_passage.border_x[i], lcm_passage.border_y[i]);
     }
   }
-  for (const proto::Area& area : graph.areas()) {
-    for (int32_t id : area.passage_ids()) {
-      if (passage_ids.count(id) == 0) {
-        Reject(name, "area " + std::to_string(area.id()) + " lists passage " + std::to_string(id) +
-                         ", which is not in the graph");
-      }
-    }
+  if (message.version < 0) Reject(name, "version " + std::to_string(message.version) + " < 0");
+  if (message.version > 0) {
+    proto::AreaGraphVersion* version = graph.mutable_version();
+    version->set_number(message.version);
+    version->set_predecessor_key(message.predecessor_key);
+    // Ids above every one received: what the publisher gave out before is unknown.
+    version->set_next_area_id(area_index.empty() ? 0 : area_index.rbegin()->first + 1);
+    version->set_next_passage_id(passage_index.empty() ? 0 : passage_index.rbegin()->first + 1);
   }
   return graph;
 }
@@ -264,6 +375,10 @@ areagraph_lcm::grid_map_t DecodeGridMapMessage(const void* data, int size) {
 
 areagraph_lcm::area_graph_t DecodeAreaGraphMessage(const void* data, int size) {
   return DecodeChecked<areagraph_lcm::area_graph_t>(data, size, AreaGraphEncodedSize);
+}
+
+areagraph_lcm::area_graph_diff_t DecodeAreaGraphDiffMessage(const void* data, int size) {
+  return DecodeChecked<areagraph_lcm::area_graph_diff_t>(data, size, AreaGraphDiffEncodedSize);
 }
 
 }  // namespace areagraph

@@ -3,8 +3,10 @@
 #include <cstdint>
 #include <string>
 
+#include "areagraph_lcm/area_graph_diff_t.hpp"
 #include "areagraph_lcm/area_graph_t.hpp"
 #include "areagraph_lcm/grid_map_t.hpp"
+#include "proto/area_graph_diff.pb.h"
 #include "proto/artifacts.pb.h"
 
 namespace areagraph {
@@ -22,16 +24,31 @@ inline constexpr int8_t kLcmFreeMaxPercent = 25;
 inline constexpr int8_t kLcmOccupiedMinPercent = 65;
 
 // The Area Graph of `map_name` as sent on AREA_GRAPH; `cache_key` is its
-// merge artifact's key. Coordinates are the graph's metre fields.
+// artifact's key. Ids are the stable ids (the graph's own for a graph
+// without), version and predecessor_key come from graph.version();
+// coordinates are the graph's metre fields. utime, sequence and map_utime are
+// left 0 for the publisher to fill in.
 areagraph_lcm::area_graph_t ToLcmAreaGraph(const std::string& map_name,
                                            const std::string& cache_key,
                                            const proto::AreaGraph& graph);
 
-// A received Area Graph as an AreaGraph artifact: pixel polygons are
-// recomputed from the metre ones through the frame; topology edge ids, which
-// the LCM type does not carry, stay empty. Throws InputError when the message
-// is inconsistent (bad frame or name, non-finite numbers, unknown kind,
-// duplicate ids, passages joining unknown areas).
+// `diff` (DiffAreaGraphs from the previous version to `after`, the graph with
+// key `cache_key`) as sent on AREA_GRAPH_DIFF, with the added and changed
+// areas and passages as they are in `after`. utime, sequence and map_utime
+// are left 0. Throws InputError when the diff names ids `after` lacks.
+areagraph_lcm::area_graph_diff_t ToLcmAreaGraphDiff(const std::string& map_name,
+                                                    const std::string& cache_key,
+                                                    const proto::AreaGraphDiff& diff,
+                                                    const proto::AreaGraph& after);
+
+// A received Area Graph as an AreaGraph artifact: ids become indices in
+// message order and the message's (stable) ids the stable_id fields; version
+// and predecessor_key go to `version` (left unset for version 0). Pixel
+// polygons are recomputed from the metre ones through the frame; topology
+// edge ids, which the LCM type does not carry, stay empty. Throws InputError
+// when the message is inconsistent (bad frame or name, non-finite numbers,
+// unknown kind, duplicate ids, passages joining unknown areas, a negative
+// version).
 proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message);
 
 // `grid` as a grid_map_t (rows flipped to ROS order, cells to ROS values).
@@ -60,5 +77,8 @@ areagraph_lcm::grid_map_t DecodeGridMapMessage(const void* data, int size);
 
 // Decodes an area_graph_t from raw LCM bytes; throws InputError as above.
 areagraph_lcm::area_graph_t DecodeAreaGraphMessage(const void* data, int size);
+
+// Decodes an area_graph_diff_t from raw LCM bytes; throws InputError as above.
+areagraph_lcm::area_graph_diff_t DecodeAreaGraphDiffMessage(const void* data, int size);
 
 }  // namespace areagraph

@@ -5,6 +5,9 @@
 namespace areagraph {
 namespace {
 
+// LCM's type fingerprint in front of every message.
+constexpr int kFingerprintBytes = 8;
+
 // A cursor over LCM's big-endian encoding that fails (ok() == false) instead
 // of reading past the end.
 class EncodedBytes {
@@ -51,6 +54,37 @@ class EncodedBytes {
   // ring_t (num_points, x[num_points], y[num_points]), or any such point list.
   void SkipRing() { Skip(int64_t{Count(16)} * 16); }
 
+  // area_t: id, kind, outer, holes, area_m2, centroid, passage_ids.
+  void SkipArea() {
+    Skip(4 + 1);
+    SkipRing();
+    const int32_t holes = Count(4);
+    for (int32_t h = 0; ok_ && h < holes; ++h) SkipRing();
+    Skip(3 * 8);
+    Skip(int64_t{Count(4)} * 4);
+  }
+
+  // What area_graph_t and area_graph_diff_t start with: the fingerprint,
+  // map_name, artifact_key, version and predecessor_key.
+  void SkipGraphIdentity() {
+    Skip(kFingerprintBytes);
+    SkipString();  // map_name
+    SkipString();  // artifact_key
+    Skip(8);       // version
+    SkipString();  // predecessor_key
+  }
+
+  // A count and that many passage_t: three int32 ids, seven doubles, and the
+  // border (num_border_points, border_x[], border_y[]).
+  void SkipPassages() {
+    constexpr int kPassageFixedBytes = 3 * 4 + 7 * 8;
+    const int32_t passages = Count(kPassageFixedBytes + 4);
+    for (int32_t i = 0; ok_ && i < passages; ++i) {
+      Skip(kPassageFixedBytes);
+      SkipRing();
+    }
+  }
+
  private:
   const uint8_t* data_;
   int size_;
@@ -58,15 +92,9 @@ class EncodedBytes {
   bool ok_ = true;
 };
 
-constexpr int kFingerprintBytes = 8;
-constexpr int kRingMinBytes = 4;
 // area_t without its arrays' elements: id, kind, outer ring count, num_holes,
 // area and centroid, num_passages.
 constexpr int kAreaMinBytes = 4 + 1 + 4 + 4 + 3 * 8 + 4;
-// passage_t without its border's points: three int32 ids, seven doubles and
-// num_border_points.
-constexpr int kPassageFixedBytes = 3 * 4 + 7 * 8;
-constexpr int kPassageMinBytes = kPassageFixedBytes + 4;
 
 }  // namespace
 
@@ -81,24 +109,34 @@ int GridMapEncodedSize(const void* data, int size) {
 
 int AreaGraphEncodedSize(const void* data, int size) {
   EncodedBytes bytes(data, size);
-  bytes.Skip(kFingerprintBytes);
-  bytes.SkipString();         // map_name
-  bytes.SkipString();         // artifact_key
+  bytes.SkipGraphIdentity();
+  bytes.Skip(3 * 8);          // utime, sequence, map_utime
   bytes.Skip(4 * 8 + 2 * 4);  // resolution, origin, width_px, height_px
   const int32_t areas = bytes.Count(kAreaMinBytes);
-  for (int32_t i = 0; bytes.ok() && i < areas; ++i) {
-    bytes.Skip(4 + 1);  // id, kind
-    bytes.SkipRing();   // outer
-    const int32_t holes = bytes.Count(kRingMinBytes);
-    for (int32_t h = 0; bytes.ok() && h < holes; ++h) bytes.SkipRing();
-    bytes.Skip(3 * 8);                        // area_m2, centroid
-    bytes.Skip(int64_t{bytes.Count(4)} * 4);  // passage_ids
+  for (int32_t i = 0; bytes.ok() && i < areas; ++i) bytes.SkipArea();
+  bytes.SkipPassages();
+  return bytes.ok() ? bytes.position() : -1;
+}
+
+int AreaGraphDiffEncodedSize(const void* data, int size) {
+  EncodedBytes bytes(data, size);
+  bytes.SkipGraphIdentity();
+  bytes.Skip(4 * 8);  // predecessor_version, utime, sequence, map_utime
+  const int32_t added = bytes.Count(kAreaMinBytes);
+  for (int32_t i = 0; bytes.ok() && i < added; ++i) bytes.SkipArea();
+  bytes.Skip(int64_t{bytes.Count(4)} * 4);  // removed_area_ids
+  const int32_t changed = bytes.Count(1 + kAreaMinBytes + 2 * 4);
+  for (int32_t i = 0; bytes.ok() && i < changed; ++i) {
+    bytes.Skip(1);  // changes
+    bytes.SkipArea();
+    bytes.Skip(int64_t{bytes.Count(4)} * 4);  // split_into
+    bytes.Skip(int64_t{bytes.Count(4)} * 4);  // merged_from
   }
-  const int32_t passages = bytes.Count(kPassageMinBytes);
-  for (int32_t i = 0; bytes.ok() && i < passages; ++i) {
-    bytes.Skip(kPassageFixedBytes);
-    bytes.SkipRing();  // border: num_border_points, border_x[], border_y[]
-  }
+  bytes.Skip(4);  // unchanged_areas
+  bytes.SkipPassages();
+  bytes.Skip(int64_t{bytes.Count(4)} * 4);  // removed_passage_ids
+  bytes.SkipPassages();
+  bytes.Skip(4);  // unchanged_passages
   return bytes.ok() ? bytes.position() : -1;
 }
 

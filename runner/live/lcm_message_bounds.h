@@ -11,5 +11,6 @@ namespace areagraph {
 // against getEncodedSize().
 int GridMapEncodedSize(const void* data, int size);
 int AreaGraphEncodedSize(const void* data, int size);
+int AreaGraphDiffEncodedSize(const void* data, int size);
 
 }  // namespace areagraph

@@ -11,6 +11,7 @@
 #include "runner/common/map_run.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
+#include "stages/match/area_graph_diff.h"
 #include "store/digest.h"
 
 namespace areagraph {
@@ -56,7 +57,7 @@ int LiveMapServer::Serve(int timeout_ms) {
   while (!pending_.empty()) {
     auto next = pending_.begin();
     const std::string map_name = next->first;
-    proto::GridMap grid = std::move(next->second);
+    PendingGrid grid = std::move(next->second);
     pending_.erase(next);
     HandleMap(map_name, std::move(grid));
     ++handled;
@@ -65,6 +66,7 @@ int LiveMapServer::Serve(int timeout_ms) {
 }
 
 void LiveMapServer::OnGridMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) {
+  const auto received = std::chrono::steady_clock::now();
   try {
     if (buffer->data_size > static_cast<uint32_t>(INT_MAX)) throw InputError("message too big");
     const areagraph_lcm::grid_map_t message =
@@ -74,7 +76,7 @@ void LiveMapServer::OnGridMessage(const lcm::ReceiveBuffer* buffer, const std::s
       log_ << "ag-live: map '" << message.name
            << "': a newer grid arrived before this one was handled; skipping the older one\n";
     }
-    pending_[message.name] = std::move(grid);
+    pending_[message.name] = PendingGrid{std::move(grid), message.utime, received};
   } catch (const std::exception& error) {
     ++messages_rejected_;
     log_ << "ag-live: skipped a malformed message on " << channel << " (" << buffer->data_size
@@ -83,47 +85,74 @@ void LiveMapServer::OnGridMessage(const lcm::ReceiveBuffer* buffer, const std::s
   log_.flush();
 }
 
-void LiveMapServer::HandleMap(const std::string& map_name, proto::GridMap grid) {
+void LiveMapServer::PublishGraph(const std::string& map_name, const std::string& key,
+                                 const proto::AreaGraph& graph, int64_t map_utime) {
+  const auto last = last_published_.find(map_name);
+  const bool repeat = last != last_published_.end() && last->second == key;
+  const std::string& predecessor = graph.version().predecessor_key();
+  // The diff goes first, so that a subscriber that stops after the graph has it.
+  if (publish_diffs_ && !repeat && !predecessor.empty()) {
+    try {
+      const auto before = ReadArtifactAs<proto::AreaGraph>(store_, map_name, predecessor);
+      publisher_.PublishDiff(map_name, key, DiffAreaGraphs(before, graph), graph, map_utime);
+    } catch (const std::exception& error) {
+      // E.g. gc dropped the previous version: the whole graph still goes out.
+      log_ << "ag-live: map '" << map_name << "': no diff sent: " << error.what() << std::endl;
+    }
+  }
+  publisher_.Publish(map_name, key, graph, map_utime);
+  last_published_[map_name] = key;
+}
+
+void LiveMapServer::HandleMap(const std::string& map_name, PendingGrid pending) {
+  proto::GridMap& grid = pending.grid;
   const std::string digest = LiveGridDigest(grid);
   grid.set_source_path(LiveSourcePath());
   grid.set_source_digest(digest);
-  MapImport import;
-  import.read_inputs = [&] { StageInputs inputs;
-  inputs.digests = {digest};
-  inputs.source_path = grid.source_path();
-  inputs.source_digest = digest;
-  return inputs;
-};
-import.decode = [&grid] { return std::make_unique<proto::GridMap>(grid);
-};  // namespace areagraph
-MapRunSettings settings;
-settings.publish_unchanged = true;  // every grid received gets its graph
-std::string key;
-const MapOutcome outcome = RunOneMap(
-    store_, failures_, map_name, LiveSourcePath(), import, options_, settings, PipelineObserver{},
-    [&](const std::string& name, const std::string& graph_key, const proto::AreaGraph& graph) {
-      key = graph_key;
-      publisher_.Publish(name, graph_key, graph);
-    });
-++maps_handled_;
-if (!outcome.ok) {
-  ++maps_failed_;
-  log_ << "ag-live: map '" << map_name << "' failed"
-       << (outcome.failed_step.empty() ? "" : " in " + outcome.failed_step) << ": " << outcome.error
-       << "; still serving" << std::endl;
-  if (!outcome.failure_recorded) log_ << "ag-live: cannot record the failure" << std::endl;
-  return;
-}
-std::ostringstream line;
-line << map_name << ": " << outcome.areas << " areas, " << outcome.passages << " passages, key "
-     << ShortKey(key) << ", ";
-if (outcome.fully_cached) {
-  line << "cached";
-} else {
-  line << "computed " << (outcome.stages_run - outcome.cache_hits) << " of " << outcome.stages_run
-       << " stages in " << std::lround(outcome.compute_ms) << " ms";
-}
-out_ << line.str() << std::endl;
+  MapImport map_import;
+  map_import.read_inputs = [&] {
+    StageInputs inputs;
+    inputs.digests = {digest};
+    inputs.source_path = grid.source_path();
+    inputs.source_digest = digest;
+    return inputs;
+  };
+  map_import.decode = [&grid] { return std::make_unique<proto::GridMap>(grid); };
+  MapRunSettings settings;
+  settings.publish_unchanged = true;  // every grid received gets its graph
+  std::string key;
+  int64_t version = 0;
+  const MapOutcome outcome = RunOneMap(
+      store_, failures_, map_name, LiveSourcePath(), map_import, options_, settings,
+      PipelineObserver{},
+      [&](const std::string& name, const std::string& graph_key, const proto::AreaGraph& graph) {
+        key = graph_key;
+        version = graph.version().number();
+        PublishGraph(name, graph_key, graph, pending.utime);
+      });
+  const double latency_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pending.received)
+          .count();
+  ++maps_handled_;
+  if (!outcome.ok) {
+    ++maps_failed_;
+    log_ << "ag-live: map '" << map_name << "' failed"
+         << (outcome.failed_step.empty() ? "" : " in " + outcome.failed_step) << ": "
+         << outcome.error << "; still serving" << std::endl;
+    if (!outcome.failure_recorded) log_ << "ag-live: cannot record the failure" << std::endl;
+    return;
+  }
+  std::ostringstream line;
+  line << map_name << ": " << outcome.areas << " areas, " << outcome.passages << " passages, key "
+       << ShortKey(key) << ", version " << version << ", ";
+  if (outcome.fully_cached) {
+    line << "cached";
+  } else {
+    line << "computed " << (outcome.stages_run - outcome.cache_hits) << " of " << outcome.stages_run
+         << " stages in " << std::lround(outcome.compute_ms) << " ms";
+  }
+  line << ", published " << std::lround(latency_ms) << " ms after receipt";
+  out_ << line.str() << std::endl;
 }
 
 }  // namespace areagraph

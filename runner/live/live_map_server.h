@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <lcm/lcm-cpp.hpp>
 #include <map>
@@ -37,13 +38,27 @@ class LiveMapServer {
   // handles the newest grid of each map. Returns how many maps it handled.
   int Serve(int timeout_ms);
 
+  // Also publish on AREA_GRAPH_DIFF what changed from each map's previous
+  // version (off by default).
+  void set_publish_diffs(bool publish_diffs) { publish_diffs_ = publish_diffs; }
+
   int maps_handled() const { return maps_handled_; }
   int messages_rejected() const { return messages_rejected_; }
   int maps_failed() const { return maps_failed_; }
 
  private:
+  // A grid waiting to be handled, with when and with what utime it came.
+  struct PendingGrid {
+    proto::GridMap grid;
+    int64_t utime = 0;
+    std::chrono::steady_clock::time_point received;
+  };
+
   void OnGridMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
-  void HandleMap(const std::string& map_name, proto::GridMap grid);
+  void HandleMap(const std::string& map_name, PendingGrid pending);
+  // Publishes the graph, preceded by its diff when asked for and it is new.
+  void PublishGraph(const std::string& map_name, const std::string& key,
+                    const proto::AreaGraph& graph, int64_t map_utime);
 
   ArtifactStore& store_;
   FailureLog failures_;
@@ -53,7 +68,10 @@ class LiveMapServer {
   std::ostream& log_;
   lcm::Subscription* subscription_ = nullptr;
   // Grids received but not yet handled, newest per map name.
-  std::map<std::string, proto::GridMap> pending_;
+  std::map<std::string, PendingGrid> pending_;
+  bool publish_diffs_ = false;
+  // The key of the graph last published per map, so a repeat sends no diff.
+  std::map<std::string, std::string> last_published_;
   int maps_handled_ = 0;
   int messages_rejected_ = 0;
   int maps_failed_ = 0;

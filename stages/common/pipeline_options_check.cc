@@ -102,12 +102,20 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
 }
 
+void CheckMatchOptions(const proto::MatchOptions& options) {
+  Require(options.min_overlap() > 0 && options.min_overlap() <= 1,
+          "match.min_overlap = " + FormatNumber(options.min_overlap()) +
+              " must be above 0 and at most 1 (a fraction of the smaller area)");
+  RequireNotNegative(options.passage_max_shift_m(), "match.passage_max_shift_m", "metres");
+}
+
 void CheckPipelineOptions(const proto::PipelineOptions& options) {
   CheckImportOptions(options.import());
   CheckCleanOptions(options.clean());
   CheckPruneOptions(options.prune());
   CheckCutOptions(options.cut());
   CheckMergeOptions(options.merge());
+  CheckMatchOptions(options.match());
 }
 
 }  // namespace areagraph

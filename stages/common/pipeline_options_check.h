@@ -26,6 +26,7 @@ void CheckCleanOptions(const proto::CleanOptions& options);
 void CheckPruneOptions(const proto::PruneOptions& options);
 void CheckCutOptions(const proto::CutOptions& options);
 void CheckMergeOptions(const proto::MergeOptions& options);
+void CheckMatchOptions(const proto::MatchOptions& options);
 
 // All of the above: what every tool calls before it opens the store.
 void CheckPipelineOptions(const proto::PipelineOptions& options);

@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "stages/common/pipeline_options.h"
+#include "stages/common/stage_versions.h"
 
 namespace areagraph {
 namespace {
@@ -58,6 +59,7 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.summary_line = run.summary;
   artifact.source_path = inputs.source_path;
   artifact.source_digest = inputs.source_digest;
+  artifact.version = inputs.version;
   store.WriteArtifact(artifact);
   return run;
 }
@@ -70,7 +72,8 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
                         bool force) {
   const google::protobuf::Message& stage_options = stage.options_of(options);
   StageRun run;
-  run.cache_key = StageCacheKey(stage.info, stage_options, inputs.digests);
+  run.cache_key =
+      StageCacheKey(stage.info, stage_options, CacheKeyInputs(inputs.digests, inputs.version));
   try {
     if (!force) {
       // Key lookups only: a hit costs no payload read. A damaged payload
@@ -96,7 +99,10 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
 StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const proto::PipelineOptions& options,
                          bool force) {
-  const StageInputs inputs = HeadInputs(store, map_name, stage);
+  StageInputs inputs = HeadInputs(store, map_name, stage);
+  if (stage.reads_previous_version()) {
+    inputs.version = PreviousVersionOf(store, map_name, stage, options, inputs.digests);
+  }
   return RunCachedStage(
       store, map_name, stage, options, inputs,
       [&] {
@@ -107,7 +113,13 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
           ParseArtifact(store, map_name, inputs.digests[i], artifacts.back().get());
           views.push_back(artifacts.back().get());
         }
-        return stage.compute(views, options);
+        if (!stage.reads_previous_version()) return stage.compute(views, options);
+        MessagePtr previous;
+        if (!inputs.version->predecessor_key.empty()) {
+          previous.reset(stage.prototype->New());
+          ParseArtifact(store, map_name, inputs.version->predecessor_key, previous.get());
+        }
+        return stage.compute_next_version(views, previous.get(), *inputs.version, options);
       },
       force);
 }

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "store/artifact_store.h"
+
 namespace areagraph {
 
 // A stage's identity in cache keys. Bump `version` whenever the stage's
@@ -29,6 +31,7 @@ inline constexpr StageInfo kCutStage{"cut", 3};
 // merge 5: polygons are a simplified planar partition, passages lie on shared borders.
 // merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
 inline constexpr StageInfo kMergeStage{"merge", 6};
+inline constexpr StageInfo kMatchStage{"match", 1};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {
@@ -58,6 +61,10 @@ struct StageRun {
 // Where a stage's inputs came from: the digests that enter its cache key.
 struct StageInputs {
   std::vector<std::string> digests;
+  // Set for a stage that reads its previous version (match): that version's
+  // key (empty for the first), which enters the cache key after `digests`,
+  // and the number this run's version gets.
+  std::optional<VersionLink> version;
   // Set by ag-import only: recorded on the map row.
   std::optional<std::string> source_path;
   std::optional<std::string> source_digest;

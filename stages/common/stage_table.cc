@@ -8,6 +8,7 @@
 #include "stages/clean/clean_stage.h"
 #include "stages/common/grid_cells.h"
 #include "stages/cut/cut_graph_builder.h"
+#include "stages/match/area_graph_matching.h"
 #include "stages/merge/area_graph_builder.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "stages/voronoi/voronoi_stage.h"
@@ -164,6 +165,26 @@ std::vector<StageDefinition> MakeStageTable() {
       "one per room-less edge. Splits the free space among them, traces their polygons and "
       "finds the passages between them. Stores the AreaGraph.",
   });
+  table.push_back({
+      kMatchStage,
+      {kMergeStage},
+      [](const proto::PipelineOptions& o) -> const Message& { return o.match(); },
+      &proto::AreaGraph::default_instance(),
+      kAreaGraphFormatVersion,
+      nullptr,  // reads its previous version: compute_next_version
+      SummarizeAreaGraph,
+      "Gives the areas and passages of a map's head AreaGraph (run ag-merge first) ids that stay "
+      "stable across the map's versions: each area is matched by overlap to the previous "
+      "version (this stage's head before the run), a split keeping the id on its largest part "
+      "and a merge that of its largest parent; new areas get ids never used before. Stores the "
+      "AreaGraph with stable ids as the map's next version (ag-inspect --history).",
+      [](const Inputs& in, const Message* previous, const VersionLink& version,
+         const proto::PipelineOptions& o) {
+        return Wrap(MatchAreaGraph(Input<proto::AreaGraph>(in, 0),
+                                   static_cast<const proto::AreaGraph*>(previous), version,
+                                   o.match()));
+      },
+  });
   return table;
 }
 
@@ -198,6 +219,8 @@ std::vector<StageInfo> PipelineStages() {
   }
   return stages;
 }
+
+const StageInfo& FinalStage() { return StageTable().back().info; }
 
 std::vector<std::string> FileInputStageNames() {
   std::vector<std::string> names;

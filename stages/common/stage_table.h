@@ -35,9 +35,24 @@ struct StageDefinition {
   std::string (*summarize)(const google::protobuf::Message& artifact);
   // What the stage does: the --help text of its executable.
   const char* description;
+
+  // For a stage that also reads its own previous version (match, which keeps
+  // ids stable across a map's Area Graphs): computes the artifact from the
+  // inputs and `previous`, its head before the run (null for a map's first
+  // version), given `version` (the previous key and the new number). Such a
+  // stage has `compute` null; its previous version's key enters its cache key
+  // after the inputs' keys, and each artifact it writes is recorded in the
+  // map's history (see docs/architecture.md, "Stages that read their previous
+  // version"). Null for every other stage.
+  MessagePtr (*compute_next_version)(const std::vector<const google::protobuf::Message*>& inputs,
+                                     const google::protobuf::Message* previous,
+                                     const VersionLink& version,
+                                     const proto::PipelineOptions& options) = nullptr;
+
+  bool reads_previous_version() const { return compute_next_version != nullptr; }
 };
 
-// Every stage, in pipeline order: import first, merge last.
+// Every stage, in pipeline order: import first, match last.
 const std::vector<StageDefinition>& StageTable();
 
 // The row of `stage`.
@@ -47,11 +62,14 @@ const StageDefinition& StageOf(const StageInfo& stage);
 // when there is none. `what` names where the name came from, e.g. "--from".
 const StageDefinition& FindStage(const std::string& name, const std::string& what = "stage");
 
-// "import, clean, voronoi, prune, cut, merge": for help texts and errors.
+// "import, clean, voronoi, prune, cut, merge, match": for help texts and errors.
 std::string StageNameList();
 
 // The stages that read artifacts (all but import), in pipeline order.
 std::vector<StageInfo> PipelineStages();
+
+// The last stage: the one whose head is a map's Area Graph as published.
+const StageInfo& FinalStage();
 
 // The names of the stages that read a file instead (import): what
 // ArtifactStore::Verify must not look up as artifacts.

@@ -1,6 +1,7 @@
 #include "stages/pipeline/map_pipeline.h"
 
 #include "common/error.h"
+#include "stages/common/stage_versions.h"
 
 namespace areagraph {
 namespace {
@@ -16,7 +17,8 @@ size_t StepIndex(const std::vector<StageInfo>& stages, const StageInfo& stage) {
 }  // namespace
 
 std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
-                                          const proto::PipelineOptions& options) {
+                                          const proto::PipelineOptions& options,
+                                          const PreviousVersionLookup& previous) {
   const std::vector<StageInfo> stages = PipelineStages();
   std::vector<std::string> keys;
   for (const StageInfo& info : stages) {
@@ -26,7 +28,12 @@ std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
       input_keys.push_back(StageOf(input).inputs.empty() ? import_key
                                                          : keys[StepIndex(stages, input)]);
     }
-    keys.push_back(StageCacheKey(info, stage.options_of(options), input_keys));
+    std::optional<VersionLink> version;
+    if (stage.reads_previous_version()) {
+      version = previous ? previous(stage, input_keys) : VersionLink{};
+    }
+    keys.push_back(
+        StageCacheKey(info, stage.options_of(options), CacheKeyInputs(input_keys, version)));
   }
   return keys;
 }

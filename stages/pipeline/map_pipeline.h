@@ -10,11 +10,19 @@
 
 namespace areagraph {
 
+// Where a stage that reads its previous version stands when it runs on
+// `input_keys` (PreviousVersionOf on a store).
+using PreviousVersionLookup = std::function<VersionLink(
+    const StageDefinition& stage, const std::vector<std::string>& input_keys)>;
+
 // The cache keys that the stages after import get when every one runs on the
 // import artifact `import_key` with `options`, in PipelineStages() order.
 // Lets a runner see that a map is fully cached without reading any artifact.
+// A stage that reads its previous version takes its place in the history
+// from `previous`; without one it is planned as the map's first version.
 std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
-                                          const proto::PipelineOptions& options);
+                                          const proto::PipelineOptions& options,
+                                          const PreviousVersionLookup& previous = nullptr);
 
 // Hears about each stage as it starts and as it ends (either may be empty).
 struct PipelineObserver {

@@ -1,4 +1,6 @@
-// Opening a store written by schema version 1 (before failures existed).
+// Opening a store written by schema version 1 (before failures existed) or
+// 2 (failures, no summary column, no versions table). Schema 3 is in
+// versions_test.cc.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,6 +33,14 @@ void ExpectVersion1DataIntact(ArtifactStore& store) {
   EXPECT_EQ(store.ReadHeadKey("old_map", "import"), "v1-import");
 }
 
+// The store at `path` has this build's schema version and every table.
+void ExpectCurrentSchema(const std::string& path) {
+  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
+            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
+  EXPECT_EQ(Tables(path),
+            (std::vector<std::string>{"artifacts", "failures", "heads", "maps", "versions"}));
+}
+
 TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   testing::TempDir dir;
   const std::string path = dir.File("v1.db");
@@ -38,9 +48,7 @@ TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion1) {
   ASSERT_EQ(Tables(path), (std::vector<std::string>{"artifacts", "heads", "maps"}));
 
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
-  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version"),
-            std::vector<std::string>{std::to_string(kStoreSchemaVersion)});
-  EXPECT_EQ(Tables(path), (std::vector<std::string>{"artifacts", "failures", "heads", "maps"}));
+  ExpectCurrentSchema(path);
   ExpectVersion1DataIntact(*store);
   EXPECT_TRUE(store->ReadFailures().empty());
   FailureRecord failure;
@@ -74,6 +82,39 @@ TEST(SchemaUpgradeTest, UpgradeAddsSummaryLines) {
   EXPECT_EQ(store->ReadArtifactSummary("old_map", "v3-voronoi")->summary_line,
             artifact.summary_line);
   EXPECT_FALSE(store->ReadArtifactSummary("old_map", "no-such-key"));
+}
+
+// Schema 2 as it was written: version 1 plus the failures table.
+void CreateVersion2Store(const std::string& path) {
+  testing::CreateVersion1Store(path);
+  testing::ExecSql(path,
+                   "CREATE TABLE failures (map_name TEXT PRIMARY KEY, stage TEXT NOT NULL, "
+                   "message TEXT NOT NULL, source_path TEXT NOT NULL DEFAULT '', "
+                   "failed_at TEXT NOT NULL);"
+                   "INSERT INTO failures VALUES ('old_map', 'cut', 'boom', 'old.png', "
+                   "'2025-01-02T00:00:00.000Z');"
+                   "PRAGMA user_version = 2;");
+}
+
+TEST(SchemaUpgradeTest, ReadWriteOpenUpgradesVersion2KeepingItsFailures) {
+  testing::TempDir dir;
+  const std::string path = dir.File("v2.db");
+  CreateVersion2Store(path);
+  std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
+  ExpectCurrentSchema(path);
+  ExpectVersion1DataIntact(*store);
+  const std::vector<FailureRecord> failures = store->ReadFailures();
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].message, "boom");
+  EXPECT_EQ(store->ReadHead("old_map", "clean")->summary_line, "");
+  // The new tables work: a match artifact becomes the map's first version.
+  NewArtifact match = testing::Artifact("old_map", "match", "v4-match", {"v1-clean"}, "graph");
+  match.version = VersionLink{"", 1};
+  store->WriteArtifact(match);
+  const std::vector<VersionRecord> history = store->ReadVersions("old_map");
+  ASSERT_EQ(history.size(), 1u);
+  EXPECT_EQ(history[0].cache_key, "v4-match");
+  EXPECT_EQ(history[0].number, 1);
 }
 
 TEST(SchemaUpgradeTest, ReadOnlyOpenReadsVersion1AsItIs) {

@@ -1,6 +1,6 @@
-// ag-export: writes a map's Area Graph (the head ag-merge artifact) as a
-// label image, a colour preview, GeoJSON, osmAG XML or JSON, or the whole run
-// as an HTML viewer.
+// ag-export: writes a map's Area Graph (the newest: the ag-match head, with
+// stable ids, unless ag-merge ran after it) as a label image, a colour
+// preview, GeoJSON, osmAG XML or JSON, or the whole run as an HTML viewer.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <iostream>
@@ -11,6 +11,7 @@
 #include "proto/artifacts.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/stage.h"
+#include "stages/common/stage_versions.h"
 #include "store/artifact_store.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_viewer.h"
@@ -97,8 +98,14 @@ int main(int argc, char** argv) {
     }
     if (!(settings.height_m >= 0)) throw areagraph::OptionsError("--height must be >= 0 metres");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
-    const auto graph = areagraph::ReadHeadArtifact<areagraph::proto::AreaGraph>(
-        *store, map_name, areagraph::kMergeStage);
+    const std::optional<std::string> graph_key = areagraph::NewestGraphKey(*store, map_name);
+    if (!graph_key) {
+      throw areagraph::InputError(
+          store->ReadMap(map_name) ? "map '" + map_name + "' has no Area Graph; run ag-merge first"
+                                   : "map '" + map_name + "' is not in the store");
+    }
+    const auto graph =
+        areagraph::ReadArtifactAs<areagraph::proto::AreaGraph>(*store, map_name, *graph_key);
     areagraph::WriteExportFile(out_path, areagraph::ExportAreaGraph(graph, settings));
     return 0;
   });

@@ -50,6 +50,12 @@ std::string AreaGeometry(const proto::Polygon& polygon, const PositionWriter& po
   return "{\"type\":\"Polygon\",\"coordinates\":[" + rings + "]}";
 }
 
+// ',"stable_id":N' for a graph from ag-match (ids kept across the map's
+// versions), else nothing.
+std::string StableIdProperty(const proto::AreaGraph& graph, int32_t stable_id) {
+  return graph.has_version() ? ",\"stable_id\":" + std::to_string(stable_id) : "";
+}
+
 std::string AreaFeature(const proto::AreaGraph& graph, const proto::Area& area,
                         const PositionWriter& position) {
   const proto::Polygon polygon = AreaPolygonMetres(graph, area);
@@ -58,12 +64,14 @@ std::string AreaFeature(const proto::AreaGraph& graph, const proto::Area& area,
   return "{\"type\":\"Feature\",\"id\":\"area/" + id +
          "\",\"geometry\":" + AreaGeometry(polygon, position) +
          ",\"properties\":{\"layer\":\"area\",\"area_id\":" + id +
+         StableIdProperty(graph, area.stable_id()) +
          ",\"kind\":" + JsonString(AreaKindName(area.kind())) +
          ",\"area_m2\":" + JsonNumber(area.area_m2()) +
          ",\"name\":" + JsonString(AreaName(area.id())) + "}}";
 }
 
-std::string PassageFeature(const proto::Passage& passage, const PositionWriter& position) {
+std::string PassageFeature(const proto::AreaGraph& graph, const proto::Passage& passage,
+                           const PositionWriter& position) {
   const std::string id = std::to_string(passage.id());
   std::string coordinates;
   for (const proto::Point2& point : PassageLine(passage)) {
@@ -72,6 +80,7 @@ std::string PassageFeature(const proto::Passage& passage, const PositionWriter& 
   return "{\"type\":\"Feature\",\"id\":\"passage/" + id +
          "\",\"geometry\":{\"type\":\"LineString\",\"coordinates\":[" + coordinates +
          "]},\"properties\":{\"layer\":\"passage\",\"passage_id\":" + id +
+         StableIdProperty(graph, passage.stable_id()) +
          ",\"kind\":\"passage\",\"width_m\":" + JsonNumber(passage.width_m()) +
          ",\"from\":" + std::to_string(passage.area_a()) +
          ",\"to\":" + std::to_string(passage.area_b()) + "}}";
@@ -119,7 +128,7 @@ std::string AreaGraphToGeoJson(const proto::AreaGraph& graph, const GeoJsonSetti
   }
   if (settings.features != GeoJsonFeatures::kAreas) {
     for (const proto::Passage& passage : graph.passages()) {
-      features.push_back(PassageFeature(passage, position));
+      features.push_back(PassageFeature(graph, passage, position));
     }
   }
   return Header(graph, settings) + "\"features\":" + JsonLines(features) + "}\n";

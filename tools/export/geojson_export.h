@@ -33,11 +33,13 @@ struct GeoJsonSettings {
 // with an id unique in the file:
 // - each area "area/<id>", a Polygon: closed outer ring counter-clockwise,
 //   closed holes clockwise (RFC 7946 winding); properties layer ("area"),
-//   area_id, kind (room, corridor, dead_end), area_m2, name (area_<id>);
+//   area_id, stable_id (graphs from ag-match: the id kept across the map's
+//   versions), kind (room, corridor, dead_end), area_m2, name (area_<id>);
 // - each passage "passage/<id>", a LineString along border_m, the border its
 //   two areas share (whose points are vertices of both polygons), or along
 //   segment_m when it has none; properties layer ("passage"), passage_id,
-//   kind ("passage"), width_m, from and to (area ids).
+//   stable_id (as for areas), kind ("passage"), width_m, from and to (area
+//   ids).
 // Areas come first. Throws InputError for coordinates that are not finite.
 std::string AreaGraphToGeoJson(const proto::AreaGraph& graph, const GeoJsonSettings& settings);
 

@@ -24,13 +24,19 @@ std::string Positions(const std::vector<proto::Point2>& points) {
   return "[" + text + "]";
 }
 
+// ',"stable_id":N' for a graph with stable ids (ag-match's), else nothing.
+std::string StableId(const proto::AreaGraph& graph, int32_t stable_id) {
+  return graph.has_version() ? ",\"stable_id\":" + std::to_string(stable_id) : "";
+}
+
 std::string Node(const proto::AreaGraph& graph, const proto::Area& area) {
   const proto::Polygon polygon = AreaPolygonMetres(graph, area);
   std::string holes;
   for (const proto::Ring& hole : polygon.holes()) {
     holes += (holes.empty() ? "" : ",") + Positions(OrientedRing(hole, false));
   }
-  return "{\"id\":" + std::to_string(area.id()) + ",\"name\":" + JsonString(AreaName(area.id())) +
+  return "{\"id\":" + std::to_string(area.id()) + StableId(graph, area.stable_id()) +
+         ",\"name\":" + JsonString(AreaName(area.id())) +
          ",\"kind\":" + JsonString(AreaKindName(area.kind())) +
          ",\"area_m2\":" + JsonNumber(area.area_m2()) +
          ",\"centroid\":" + Position(area.centroid_m()) +
@@ -38,11 +44,12 @@ std::string Node(const proto::AreaGraph& graph, const proto::Area& area) {
          "]}";
 }
 
-std::string Link(const proto::Passage& passage) {
+std::string Link(const proto::AreaGraph& graph, const proto::Passage& passage) {
   const std::string id = std::to_string(passage.id());
   return "{\"source\":" + std::to_string(passage.area_a()) +
          ",\"target\":" + std::to_string(passage.area_b()) + ",\"key\":" + id + ",\"id\":" + id +
-         ",\"name\":\"passage_" + id + "\",\"width_m\":" + JsonNumber(passage.width_m()) +
+         StableId(graph, passage.stable_id()) + ",\"name\":\"passage_" + id +
+         "\",\"width_m\":" + JsonNumber(passage.width_m()) +
          ",\"point\":" + Position(passage.point_m()) +
          ",\"border\":" + Positions(PassageLine(passage)) + "}";
 }
@@ -52,8 +59,9 @@ std::string Link(const proto::Passage& passage) {
 std::string AreaGraphToNodeLinkJson(const proto::AreaGraph& graph, const std::string& map_name) {
   std::vector<std::string> nodes, links;
   for (const proto::Area& area : graph.areas()) nodes.push_back(Node(graph, area));
-  for (const proto::Passage& passage : graph.passages()) links.push_back(Link(passage));
+  for (const proto::Passage& passage : graph.passages()) links.push_back(Link(graph, passage));
   return "{\"directed\":false,\"multigraph\":true,\"graph\":{\"name\":" + JsonString(map_name) +
+         (graph.has_version() ? ",\"version\":" + std::to_string(graph.version().number()) : "") +
          ",\"frame\":" + MessageJson(graph.frame()) +
          ",\"units\":\"metres\"},\n\"nodes\":" + JsonLines(nodes) +
          ",\n\"links\":" + JsonLines(links) + ",\n\"edges\":" + JsonLines(links) + "}\n";

@@ -10,11 +10,14 @@ namespace areagraph {
 // `networkx.node_link_graph(json.load(f))` gives an undirected MultiGraph
 // that keeps parallel passages:
 // - directed false, multigraph true;
-// - graph: name (the map), frame (its MapFrame), units ("metres");
-// - nodes: id (area id), name (area_<id>), kind (room, corridor, dead_end),
+// - graph: name (the map), version (ag-match's graphs), frame (its
+//   MapFrame), units ("metres");
+// - nodes: id (area id), stable_id (ag-match's graphs: the id that stays
+//   across the map's versions), name (area_<id>), kind (room, corridor, dead_end),
 //   area_m2, centroid [x, y], polygon (outer ring counter-clockwise, first
 //   point not repeated) and holes (clockwise rings), all in world metres;
-// - links: source and target (area ids), key and id (the passage id), name
+// - links: source and target (area ids), key and id (the passage id),
+//   stable_id (as for nodes), name
 //   (passage_<id>), width_m, point [x, y] (where the graph edge crosses) and
 //   border (the line the two areas share, or segment_m's two ends);
 // - edges: the links again, since networkx >= 3.4 reads "edges" where

@@ -16,7 +16,19 @@ namespace areagraph {
 std::string DescribeAreaGraph(const areagraph_lcm::area_graph_t& message) {
   std::ostringstream line;
   line << "map " << message.map_name << ": " << message.num_areas << " areas, "
-       << message.num_passages << " passages, key " << ShortKey(message.artifact_key);
+       << message.num_passages << " passages, key " << ShortKey(message.artifact_key)
+       << ", version " << message.version;
+  return line.str();
+}
+
+std::string DescribeAreaGraphDiff(const areagraph_lcm::area_graph_diff_t& message) {
+  std::ostringstream line;
+  line << "diff " << message.map_name << ": version " << message.predecessor_version << " -> "
+       << message.version << ", areas +" << message.num_added_areas << " -"
+       << message.num_removed_areas << " ~" << message.num_changed_areas << " ="
+       << message.unchanged_areas << ", passages +" << message.num_added_passages << " -"
+       << message.num_removed_passages << " ~" << message.num_changed_passages << " ="
+       << message.unchanged_passages;
   return line.str();
 }
 
@@ -49,13 +61,35 @@ bool StoreReceivedAreaGraph(ArtifactStore& store, const areagraph_lcm::area_grap
 }
 
 AreaGraphListener::AreaGraphListener(lcm::LCM& lcm, std::string url, ArtifactStore* store,
-                                     std::ostream& out, std::ostream& log)
+                                     std::ostream& out, std::ostream& log, bool diffs)
     : lcm_(lcm), url_(std::move(url)), store_(store), out_(out), log_(log) {
   subscription_ = lcm_.subscribe(kAreaGraphChannel, &AreaGraphListener::OnMessage, this);
+  if (diffs) {
+    diff_subscription_ =
+        lcm_.subscribe(kAreaGraphDiffChannel, &AreaGraphListener::OnDiffMessage, this);
+  }
   StartReceiving(lcm_, url_);
 }
 
-AreaGraphListener::~AreaGraphListener() { lcm_.unsubscribe(subscription_); }
+AreaGraphListener::~AreaGraphListener() {
+  lcm_.unsubscribe(subscription_);
+  if (diff_subscription_ != nullptr) lcm_.unsubscribe(diff_subscription_);
+}
+
+void AreaGraphListener::OnDiffMessage(const lcm::ReceiveBuffer* buffer,
+                                      const std::string& channel) {
+  try {
+    if (buffer->data_size > static_cast<uint32_t>(INT_MAX)) throw InputError("message too big");
+    const areagraph_lcm::area_graph_diff_t message =
+        DecodeAreaGraphDiffMessage(buffer->data, static_cast<int>(buffer->data_size));
+    ++diffs_received_;
+    out_ << DescribeAreaGraphDiff(message) << std::endl;
+  } catch (const std::exception& error) {
+    ++messages_rejected_;
+    log_ << "ag-listen: skipped a malformed message on " << channel << " (" << buffer->data_size
+         << " bytes): " << error.what() << std::endl;
+  }
+}
 
 bool AreaGraphListener::Listen(int timeout_ms) { return HandleOneMessage(lcm_, timeout_ms, url_); }
 

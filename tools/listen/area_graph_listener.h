@@ -4,14 +4,19 @@
 #include <ostream>
 #include <string>
 
+#include "areagraph_lcm/area_graph_diff_t.hpp"
 #include "areagraph_lcm/area_graph_t.hpp"
 #include "store/artifact_store.h"
 
 namespace areagraph {
 
-// The line ag-listen prints for a graph: map, areas, passages and the first
-// 12 characters of its key (as ag-inspect shows keys).
+// The line ag-listen prints for a graph: map, areas, passages, the first 12
+// characters of its key (as ag-inspect shows keys) and its version.
 std::string DescribeAreaGraph(const areagraph_lcm::area_graph_t& message);
+
+// The line ag-listen --diffs prints for a diff: map, versions, and how many
+// areas and passages were added (+), removed (-), changed (~) and kept (=).
+std::string DescribeAreaGraphDiff(const areagraph_lcm::area_graph_diff_t& message);
 
 // The cache key under which a received graph is stored: derived from the
 // publisher's key, so receiving the same graph twice stores it once, but
@@ -33,10 +38,10 @@ bool StoreReceivedAreaGraph(ArtifactStore& store, const areagraph_lcm::area_grap
 // saves it when given a store. Malformed messages are reported and skipped.
 class AreaGraphListener {
  public:
-  // Subscribes on `lcm` (whose URL `url` names it in errors) and starts
-  // receiving; `store` may be null.
+  // Subscribes on `lcm` (whose URL `url` names it in errors), to
+  // AREA_GRAPH_DIFF too with `diffs`, and starts receiving; `store` may be null.
   AreaGraphListener(lcm::LCM& lcm, std::string url, ArtifactStore* store, std::ostream& out,
-                    std::ostream& log);
+                    std::ostream& log, bool diffs = false);
   ~AreaGraphListener();
   AreaGraphListener(const AreaGraphListener&) = delete;
   AreaGraphListener& operator=(const AreaGraphListener&) = delete;
@@ -45,10 +50,12 @@ class AreaGraphListener {
   bool Listen(int timeout_ms);
 
   int graphs_received() const { return graphs_received_; }
+  int diffs_received() const { return diffs_received_; }
   int messages_rejected() const { return messages_rejected_; }
 
  private:
   void OnMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void OnDiffMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
 
   lcm::LCM& lcm_;
   std::string url_;
@@ -56,7 +63,9 @@ class AreaGraphListener {
   std::ostream& out_;
   std::ostream& log_;
   lcm::Subscription* subscription_ = nullptr;
+  lcm::Subscription* diff_subscription_ = nullptr;
   int graphs_received_ = 0;
+  int diffs_received_ = 0;
   int messages_rejected_ = 0;
 };
 

@@ -51,6 +51,12 @@ proto::Point2 ToPixel(const MapTransform& transform, const proto::Point2& metres
   return point;
 }
 
+// The id an area is drawn with: its stable id in a graph from ag-match, so
+// that an area keeps its colour and label across its map's versions.
+int ShownId(const proto::AreaGraph& graph, const proto::Area& area) {
+  return graph.has_version() ? area.stable_id() : area.id();
+}
+
 }  // namespace
 
 void DrawCleanedMap(const proto::CleanedMap& cleaned, Canvas& canvas) {
@@ -102,8 +108,9 @@ void DrawCutGraph(const proto::CutGraph& graph, Canvas& canvas) {
 void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas) {
   const MapTransform transform(graph.frame());
   for (const proto::Area& area : graph.areas()) {
-    canvas.Fill(area.polygon_px(), DistinctColour(area.id()), 0.55);
-    canvas.Outline(area.polygon_px().outer(), DistinctColour(area.id()) * 0.55, 1);
+    const cv::Scalar colour = DistinctColour(ShownId(graph, area));
+    canvas.Fill(area.polygon_px(), colour, 0.55);
+    canvas.Outline(area.polygon_px().outer(), colour * 0.55, 1);
   }
   for (const proto::Passage& passage : graph.passages()) {
     // The shared border the passage opens, or the segment across it.
@@ -115,7 +122,8 @@ void DrawAreaGraph(const proto::AreaGraph& graph, Canvas& canvas) {
     canvas.Dot(ToPixel(transform, passage.point_m()), kPassage, std::max(3, canvas.scale() + 1));
   }
   for (const proto::Area& area : graph.areas()) {
-    canvas.Label(ToPixel(transform, area.centroid_m()), std::to_string(area.id()), kText);
+    canvas.Label(ToPixel(transform, area.centroid_m()), std::to_string(ShownId(graph, area)),
+                 kText);
   }
 }
 

@@ -24,7 +24,8 @@ int main(int argc, char** argv) {
 
   CLI::App* merge = app.add_subcommand(
       "merge",
-      "Copies the maps, artifacts, heads and failures of each IN into OUT (created if needed),\n"
+      "Copies the maps, artifacts, heads, failures and version histories of each IN into OUT\n"
+      "(created if needed),\n"
       "one transaction per IN. Artifacts match by map name and key; a head both stores have\n"
       "goes to the artifact created later, a failure to the later one (dropped if the map\n"
       "has a newer head). All INs are checked before OUT is opened.");
@@ -34,7 +35,8 @@ int main(int argc, char** argv) {
   CLI::App* gc = app.add_subcommand(
       "gc",
       "Deletes the artifacts that no head reaches (directly or through the input keys of\n"
-      "kept artifacts) and maps left empty, in one transaction.");
+      "kept artifacts) and maps left empty, in one transaction. Superseded Area Graph\n"
+      "versions go too; their rows in the map's history stay (ag-inspect --history).");
   gc->add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   gc->add_flag("--vacuum", vacuum, "then shrink the file (needs free space about its size)");
 

@@ -18,6 +18,9 @@
 namespace areagraph::testing {
 namespace {
 
+// Heads per map after a whole run: import, clean, voronoi, prune, cut, merge, match.
+constexpr int kStagesPerMap = 7;
+
 namespace fs = std::filesystem;
 
 constexpr int kShards = 4;
@@ -123,11 +126,15 @@ TEST_F(SlurmClusterTest, ShardArrayAndMergeGiveTheHeadsOfOneRun) {
     EXPECT_FALSE(HeadDigests(store).empty()) << store;
   }
   const std::string merge_log = ReadFile(stores + "/logs/merge-job" + jobs.merge + ".out");
-  EXPECT_NE(merge_log.find("checked 216 artifacts: no problems"), std::string::npos) << merge_log;
+  EXPECT_NE(
+      merge_log.find("checked " + std::to_string(36 * kStagesPerMap) + " artifacts: no problems"),
+      std::string::npos)
+      << merge_log;
 
   const std::string merged = stores + "/collection.db";
   const std::vector<std::string> expected = HeadDigests(reference());
-  ASSERT_EQ(expected.size(), 36u * 6u);  // six stages of 36 maps; broken.png has none
+  ASSERT_EQ(expected.size(),
+            static_cast<size_t>(36 * kStagesPerMap));  // 36 maps; broken.png has none
   EXPECT_EQ(HeadDigests(merged), expected);
   EXPECT_EQ(Failures(merged), std::vector<std::string>{"broken import"});
   EXPECT_EQ(Failures(merged), Failures(reference()));
@@ -140,7 +147,7 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   std::vector<std::vector<std::string>> names(kShards);
   for (const std::string& head : HeadDigests(reference())) {
     const std::string name = head.substr(0, head.find(' '));
-    if (head.find(" merge ") == std::string::npos) continue;
+    if (head.find(" match ") == std::string::npos) continue;
     for (int shard = 0; shard < kShards; ++shard) {
       if (InShard(name, Shard{shard, kShards})) names[shard].push_back(name);
     }
@@ -168,7 +175,7 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
     try {
       if (fs::exists(shard_store)) {
         done = static_cast<int>(
-            QueryColumn(shard_store, "SELECT map_id FROM heads WHERE stage = 'merge'").size());
+            QueryColumn(shard_store, "SELECT map_id FROM heads WHERE stage = 'match'").size());
       }
     } catch (const std::exception&) {  // the file is being created: try again
     }
@@ -181,7 +188,7 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   ASSERT_EQ(cancel.exit_code, 0) << cancel.err;
   ASSERT_TRUE(cluster_->WaitUntilEnded({first.shards}, kJobTimeoutS)) << Logs(stores);
   EXPECT_EQ(cluster_->States(task).at(task).substr(0, 9), "CANCELLED");
-  EXPECT_EQ(HeadDigests(shard_store).size(), static_cast<size_t>(others * 6 + 4))
+  EXPECT_EQ(HeadDigests(shard_store).size(), static_cast<size_t>(others * kStagesPerMap + 4))
       << "import to prune of " << stalled << " should be stored";
   // The merge waits for every task to succeed, which can no longer happen.
   const std::string never = "PENDING DependencyNeverSatisfied";
@@ -195,16 +202,19 @@ TEST_F(SlurmClusterTest, CancelledShardResumesFromItsStore) {
   ASSERT_TRUE(cluster_->WaitUntilEnded({again.shards, again.merge}, kJobTimeoutS)) << Logs(stores);
   EXPECT_EQ(cluster_->States(again.merge).at(again.merge), "COMPLETED None") << Logs(stores);
   const std::string merge_log = ReadFile(stores + "/logs/merge-job" + again.merge + ".out");
-  EXPECT_NE(merge_log.find("checked 216 artifacts: no problems"), std::string::npos) << merge_log;
+  EXPECT_NE(
+      merge_log.find("checked " + std::to_string(36 * kStagesPerMap) + " artifacts: no problems"),
+      std::string::npos)
+      << merge_log;
 
-  // It reused everything its store held: only cut and merge of the stalled map ran.
+  // It reused everything its store held: only cut, merge and match of the stalled map ran.
   const std::string log =
       ReadFile(stores + "/logs/shard-" + std::to_string(target) + "-job" + again.shards + ".out");
   std::smatch match;
   ASSERT_TRUE(std::regex_search(log, match, std::regex(R"(cache: (\d+) hits, (\d+) misses)")))
       << log;
-  EXPECT_EQ(std::stoi(match[1]), others * 6 + 4) << log;
-  EXPECT_EQ(std::stoi(match[2]), 2) << log;
+  EXPECT_EQ(std::stoi(match[1]), others * kStagesPerMap + 4) << log;
+  EXPECT_EQ(std::stoi(match[2]), 3) << log;
   EXPECT_NE(log.find("(" + std::to_string(others) + " fully cached)"), std::string::npos) << log;
 
   EXPECT_EQ(HeadDigests(stores + "/collection.db"), HeadDigests(reference()));

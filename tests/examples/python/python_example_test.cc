@@ -35,7 +35,7 @@ class PythonExampleTest : public ::testing::Test {
 
 TEST_F(PythonExampleTest, SummaryMatchesTheStoredAreaGraph) {
   const CommandResult inspect =
-      RunTool("ag-inspect", {"--store", store_, "--map", "office_small", "--stage", "merge"});
+      RunTool("ag-inspect", {"--store", store_, "--map", "office_small", "--stage", "match"});
   ASSERT_EQ(inspect.exit_code, 0) << inspect.err;
   std::smatch counts;
   ASSERT_TRUE(std::regex_search(inspect.out, counts, std::regex("(\\d+) areas, (\\d+) passages")))
@@ -59,6 +59,9 @@ TEST_F(PythonExampleTest, NodeLinkJsonIsAnUndirectedMultigraph) {
   EXPECT_NE(shown.out.find("\"multigraph\": true"), std::string::npos) << shown.out;
   EXPECT_NE(shown.out.find("\"kind\": \"room\""), std::string::npos) << shown.out;
   EXPECT_NE(shown.out.find("\"width_m\": "), std::string::npos) << shown.out;
+  // The newest graph is ag-match's: its stable ids and version come along.
+  EXPECT_NE(shown.out.find("\"stable_id\": "), std::string::npos) << shown.out;
+  EXPECT_NE(shown.out.find("\"version\": 1"), std::string::npos) << shown.out;
 }
 
 TEST_F(PythonExampleTest, UnknownMapIsOneLineError) {

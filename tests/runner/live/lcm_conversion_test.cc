@@ -9,6 +9,7 @@
 
 #include "common/error.h"
 #include "stages/common/map_frame.h"
+#include "stages/match/area_graph_diff.h"
 #include "tests/runner/live/lcm_test_maps.h"
 
 namespace areagraph {
@@ -127,7 +128,9 @@ TEST(AreaGraphConversion, RoundTripKeepsEverythingTheTypeCarries) {
   for (int i = 0; i < graph.areas_size(); ++i) {
     const proto::Area& want = graph.areas(i);
     const proto::Area& got = back.areas(i);
-    EXPECT_EQ(got.id(), want.id());
+    // Ids become indices; the message's ids are kept as stable ids.
+    EXPECT_EQ(got.id(), i);
+    EXPECT_EQ(got.stable_id(), want.id());
     EXPECT_EQ(got.kind(), want.kind());
     EXPECT_EQ(got.polygon_m().SerializeAsString(), want.polygon_m().SerializeAsString());
     EXPECT_EQ(got.area_m2(), want.area_m2());
@@ -143,8 +146,74 @@ TEST(AreaGraphConversion, RoundTripKeepsEverythingTheTypeCarries) {
   }
   EXPECT_EQ(back.areas(0).polygon_px().holes_size(), 1);
   ASSERT_EQ(back.passages_size(), 1);
-  EXPECT_EQ(back.passages(0).SerializeAsString(), graph.passages(0).SerializeAsString());
+  proto::Passage passage = back.passages(0);
+  EXPECT_EQ(passage.stable_id(), 7);
+  EXPECT_EQ(back.areas(0).passage_ids(0), 0);  // the index of passage 7
+  passage.clear_stable_id();
+  passage.set_id(7);
+  EXPECT_EQ(passage.SerializeAsString(), graph.passages(0).SerializeAsString());
   EXPECT_EQ(back.frame().SerializeAsString(), graph.frame().SerializeAsString());
+  EXPECT_FALSE(back.has_version());  // a graph without stable ids goes out as version 0
+}
+
+TEST(AreaGraphConversion, AVersionGoesOutWithItsStableIdsAndPlace) {
+  proto::AreaGraph first, second;
+  testing::MakeTwoVersions(first, second);
+  const areagraph_lcm::area_graph_t message = ToLcmAreaGraph("lab", "second-key", second);
+  EXPECT_EQ(message.version, 2);
+  EXPECT_EQ(message.predecessor_key, "first-key");
+  EXPECT_EQ(message.utime, 0);  // the publisher sets these
+  EXPECT_EQ(message.sequence, 0);
+  ASSERT_EQ(message.num_areas, 3);
+  std::vector<int32_t> area_ids;
+  for (const areagraph_lcm::area_t& area : message.areas) area_ids.push_back(area.id);
+  EXPECT_EQ(area_ids, (std::vector<int32_t>{0, 1, 2}));
+  ASSERT_EQ(message.num_passages, 2);
+  // Passage 7 of the merge artifact is stable passage 0; 8 is the new one.
+  EXPECT_EQ(message.passages[0].id, 0);
+  EXPECT_EQ(message.passages[1].id, 1);
+  EXPECT_EQ(message.passages[1].area_a, 1);
+  EXPECT_EQ(message.passages[1].area_b, 2);
+  EXPECT_EQ(message.areas[1].passage_ids, (std::vector<int32_t>{0, 1}));
+
+  // What a listener makes of it: ids as indices, the rest as sent.
+  const proto::AreaGraph back = AreaGraphFromLcm(message);
+  EXPECT_EQ(back.version().number(), 2);
+  EXPECT_EQ(back.version().predecessor_key(), "first-key");
+  EXPECT_EQ(back.version().next_area_id(), 3);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_EQ(back.areas(i).id(), i);
+    EXPECT_EQ(back.areas(i).stable_id(), second.areas(i).stable_id());
+  }
+  EXPECT_EQ(back.passages(1).stable_id(), 1);
+  EXPECT_EQ(back.passages(1).area_b(), 2);
+}
+
+TEST(AreaGraphConversion, ADiffCarriesWhatChangedAsItIsNow) {
+  proto::AreaGraph first, second;
+  testing::MakeTwoVersions(first, second);
+  const proto::AreaGraphDiff diff = DiffAreaGraphs(first, second);
+  const areagraph_lcm::area_graph_diff_t message =
+      ToLcmAreaGraphDiff("lab", "second-key", diff, second);
+  EXPECT_EQ(message.map_name, "lab");
+  EXPECT_EQ(message.artifact_key, "second-key");
+  EXPECT_EQ(message.version, 2);
+  EXPECT_EQ(message.predecessor_version, 1);
+  EXPECT_EQ(message.predecessor_key, "first-key");
+  ASSERT_EQ(message.num_added_areas, 1);
+  EXPECT_EQ(message.added_areas[0].id, 2);
+  EXPECT_EQ(message.added_areas[0].kind, areagraph_lcm::area_t::DEAD_END);
+  EXPECT_EQ(message.num_removed_areas, 0);
+  ASSERT_EQ(message.num_changed_areas, 1);  // the corridor; the room is the same
+  EXPECT_EQ(message.changed_areas[0].area.id, 1);
+  EXPECT_EQ(message.changed_areas[0].changes,
+            areagraph_lcm::area_change_t::GROWN | areagraph_lcm::area_change_t::PASSAGES);
+  EXPECT_DOUBLE_EQ(message.changed_areas[0].area.outer.y[2], 1.3);
+  EXPECT_EQ(message.unchanged_areas, 1);
+  ASSERT_EQ(message.num_added_passages, 1);
+  EXPECT_EQ(message.added_passages[0].id, 1);
+  EXPECT_EQ(message.num_changed_passages, 0);  // the door moved 0.1 m
+  EXPECT_EQ(message.unchanged_passages, 1);
 }
 
 TEST(AreaGraphConversion, RejectsInconsistentGraphs) {

@@ -2,13 +2,16 @@
 // through memq://, LCM's in-process provider.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <sstream>
+#include <vector>
 
 #include "common/error.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
 #include "stages/common/stage.h"
+#include "stages/match/area_graph_diff.h"
 #include "tests/runner/live/lcm_test_maps.h"
 #include "tools/listen/area_graph_listener.h"
 
@@ -52,11 +55,61 @@ TEST(AreaGraphPublisher, ListenerReceivesWhatIsPublished) {
   AreaGraphListener listener(publisher.connection(), publisher.url(), nullptr, out, log);
   publisher.Publish("lab", "0123456789abcdef", testing::MakeAreaGraph());
   EXPECT_TRUE(listener.Listen(1000));
-  EXPECT_EQ(out.str(), "map lab: 2 areas, 1 passages, key 0123456789ab\n");
+  EXPECT_EQ(out.str(), "map lab: 2 areas, 1 passages, key 0123456789ab, version 0\n");
   EXPECT_EQ(listener.graphs_received(), 1);
   EXPECT_EQ(log.str(), "");
   // Nothing else was sent.
   EXPECT_FALSE(listener.Listen(0));
+}
+
+// Records the utime, sequence and map_utime of each area_graph_t received.
+struct StampRecorder {
+  void OnGraph(const lcm::ReceiveBuffer*, const std::string&,
+               const areagraph_lcm::area_graph_t* graph) {
+    stamps.push_back({graph->utime, graph->sequence, graph->map_utime});
+  }
+  std::vector<std::vector<int64_t>> stamps;
+};
+
+TEST(AreaGraphPublisher, StampsEachGraphWithTimeAndSequence) {
+  AreaGraphPublisher publisher("memq://");
+  StampRecorder recorder;
+  publisher.connection().subscribe(kAreaGraphChannel, &StampRecorder::OnGraph, &recorder);
+  const int64_t before = std::chrono::duration_cast<std::chrono::microseconds>(
+                             std::chrono::system_clock::now().time_since_epoch())
+                             .count();
+  publisher.Publish("lab", "k1", testing::MakeAreaGraph(), 1234);
+  publisher.Publish("lab", "k2", testing::MakeAreaGraph());
+  while (publisher.connection().handleTimeout(0) > 0) {
+  }
+  ASSERT_EQ(recorder.stamps.size(), 2u);
+  EXPECT_GE(recorder.stamps[0][0], before);
+  EXPECT_LE(recorder.stamps[0][0], recorder.stamps[1][0]);
+  EXPECT_LT(recorder.stamps[1][0] - before, 60 * 1000 * 1000);  // microseconds, not seconds
+  EXPECT_EQ(recorder.stamps[0][1], 0);
+  EXPECT_EQ(recorder.stamps[1][1], 1);
+  EXPECT_EQ(recorder.stamps[0][2], 1234);
+  EXPECT_EQ(recorder.stamps[1][2], 0);
+}
+
+TEST(AreaGraphListener, PrintsDiffsWhenAskedTo) {
+  AreaGraphPublisher publisher("memq://");
+  std::ostringstream out, log, plain_out;
+  AreaGraphListener listener(publisher.connection(), publisher.url(), nullptr, out, log,
+                             /*diffs=*/true);
+  AreaGraphListener plain(publisher.connection(), publisher.url(), nullptr, plain_out, log);
+  proto::AreaGraph first, second;
+  testing::MakeTwoVersions(first, second);
+  publisher.PublishDiff("lab", "second-key", DiffAreaGraphs(first, second), second);
+  publisher.Publish("lab", "second-key", second);
+  while (listener.Listen(100)) {
+  }
+  EXPECT_EQ(out.str(),
+            "diff lab: version 1 -> 2, areas +1 -0 ~1 =1, passages +1 -0 ~0 =1\n"
+            "map lab: 3 areas, 2 passages, key second-key, version 2\n");
+  EXPECT_EQ(listener.diffs_received(), 1);
+  EXPECT_EQ(plain_out.str(), "map lab: 3 areas, 2 passages, key second-key, version 2\n");
+  EXPECT_EQ(log.str(), "");
 }
 
 TEST(AreaGraphListener, SkipsMalformedMessagesAndKeepsListening) {
@@ -79,7 +132,7 @@ TEST(AreaGraphListener, SkipsMalformedMessagesAndKeepsListening) {
             std::string::npos)
       << log.str();
   EXPECT_NE(log.str().find("passage 7 joins an area that is not in the graph"), std::string::npos);
-  EXPECT_EQ(out.str(), "map lab: 2 areas, 1 passages, key k2\n");
+  EXPECT_EQ(out.str(), "map lab: 2 areas, 1 passages, key k2, version 0\n");
 }
 
 TEST(AreaGraphListener, StoresReceivedGraphsOnceUnderADerivedKey) {
@@ -93,15 +146,16 @@ TEST(AreaGraphListener, StoresReceivedGraphsOnceUnderADerivedKey) {
   while (listener.Listen(100)) {
   }
   EXPECT_EQ(out.str(),
-            "map lab: 2 areas, 1 passages, key aaaaaaaaaaaa, stored\n"
-            "map lab: 2 areas, 1 passages, key aaaaaaaaaaaa, already stored\n");
+            "map lab: 2 areas, 1 passages, key aaaaaaaaaaaa, version 0, stored\n"
+            "map lab: 2 areas, 1 passages, key aaaaaaaaaaaa, version 0, already stored\n");
 
   std::string key;
   const auto graph = ReadHeadArtifact<proto::AreaGraph>(*store, "lab", kMergeStage, &key);
   EXPECT_EQ(key, ReceivedAreaGraphKey(published_key));
   EXPECT_NE(key, published_key);
   EXPECT_EQ(graph.areas_size(), 2);
-  EXPECT_EQ(graph.passages(0).id(), 7);
+  EXPECT_EQ(graph.passages(0).id(), 0);
+  EXPECT_EQ(graph.passages(0).stable_id(), 7);
   const auto summaries = store->ReadArtifactSummaries("lab");
   ASSERT_EQ(summaries.size(), 1u);
   EXPECT_EQ(summaries[0].stage, "merge");

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "stages/match/area_graph_matching.h"
 
 namespace areagraph::testing {
 namespace {
@@ -80,6 +81,33 @@ proto::AreaGraph MakeAreaGraph() {
     point->set_y(y);
   }
   return graph;
+}
+
+void MakeTwoVersions(proto::AreaGraph& first, proto::AreaGraph& second) {
+  first = MatchAreaGraph(MakeAreaGraph(), nullptr, VersionLink{}, proto::MatchOptions());
+  proto::AreaGraph grown = MakeAreaGraph();
+  proto::Area* corridor = grown.mutable_areas(1);
+  corridor->mutable_polygon_m()->mutable_outer()->clear_points();
+  SetRing(corridor->mutable_polygon_m()->mutable_outer(), {{2, 0}, {4, 0}, {4, 1.3}, {2, 1.3}});
+  corridor->set_area_m2(2.6);
+  proto::Area* dead_end = grown.add_areas();
+  dead_end->set_id(2);
+  dead_end->set_kind(proto::AREA_DEAD_END);
+  SetRing(dead_end->mutable_polygon_m()->mutable_outer(), {{3, 1.3}, {4, 1.3}, {4, 2.3}, {3, 2.3}});
+  dead_end->set_area_m2(1.0);
+  dead_end->mutable_centroid_m()->set_x(3.5);
+  dead_end->mutable_centroid_m()->set_y(1.8);
+  grown.mutable_passages(0)->mutable_point_m()->set_y(0.55);
+  proto::Passage* opening = grown.add_passages();
+  *opening = grown.passages(0);
+  opening->set_id(8);
+  opening->set_area_a(1);
+  opening->set_area_b(2);
+  opening->mutable_point_m()->set_x(3.5);
+  opening->mutable_point_m()->set_y(1.3);
+  corridor->add_passage_ids(8);
+  dead_end->add_passage_ids(8);
+  second = MatchAreaGraph(grown, &first, VersionLink{"first-key", 2}, proto::MatchOptions());
 }
 
 ::testing::AssertionResult ThrowsMessage(const std::function<void()>& body,

@@ -17,6 +17,12 @@ proto::GridMap MakeGridMap();
 // passage 7, in a 100 x 80 px frame at 0.05 m.
 proto::AreaGraph MakeAreaGraph();
 
+// Two versions of MakeAreaGraph's map as ag-match makes them (stable ids,
+// version 1 and 2, predecessor "first-key"): in the second the corridor is
+// 30 % larger, a dead end (stable id 2) opens off it through passage 1, and
+// the door (stable id 0) moved 0.1 m.
+void MakeTwoVersions(proto::AreaGraph& first, proto::AreaGraph& second);
+
 // Success when `body` throws an areagraph::Error whose message contains
 // `expected`.
 ::testing::AssertionResult ThrowsMessage(const std::function<void()>& body,

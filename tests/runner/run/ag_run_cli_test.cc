@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "store/artifact_store.h"
 #include "tests/runner/run/runner_test_support.h"
 
 namespace areagraph::testing {
@@ -33,14 +34,14 @@ TEST_F(AgRunTest, SecondRunIsAllCacheHits) {
   EXPECT_EQ(cold.maps(), 3);
   EXPECT_EQ(cold.succeeded(), 3);
   EXPECT_EQ(cold.cache_hits(), 0);
-  EXPECT_EQ(cold.cache_misses(), 18);
-  EXPECT_GT(cold.areas(), 3 * 4);  // every floor has at least 2 rooms a side and a corridor
+  EXPECT_EQ(cold.cache_misses(), 21);  // 3 maps, 7 stages
+  EXPECT_GT(cold.areas(), 3 * 4);      // every floor has at least 2 rooms a side and a corridor
   EXPECT_EQ(cold.passages() > 0, true);
 
   const proto::RunSummary warm = RunJson(Args({}), &run);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(warm.cache_misses(), 0);
-  EXPECT_EQ(warm.cache_hits(), 18);
+  EXPECT_EQ(warm.cache_hits(), 21);
   EXPECT_EQ(warm.fully_cached(), 3);
   EXPECT_EQ(warm.areas(), cold.areas());
   EXPECT_EQ(warm.passages(), cold.passages());
@@ -78,11 +79,16 @@ TEST_F(AgRunTest, ChangedStageOptionRerunsThatStageOnward) {
     EXPECT_EQ(CountOf(summary, stage).hits, 3) << stage;
     EXPECT_EQ(CountOf(summary, stage).misses, 0) << stage;
   }
-  for (const char* stage : {"cut", "merge"}) {
+  for (const char* stage : {"cut", "merge", "match"}) {
     EXPECT_EQ(CountOf(summary, stage).hits, 0) << stage;
     EXPECT_EQ(CountOf(summary, stage).misses, 3) << stage;
   }
-  // Going back to the defaults finds the first results again.
+  // Going back to the defaults finds the first results again up to merge;
+  // match makes each map's next version, matched to the one just made.
+  const proto::RunSummary back = RunJson(Args({}));
+  EXPECT_EQ(back.cache_misses(), 3);
+  EXPECT_EQ(CountOf(back, "match").misses, 3);
+  // And once more is a hit everywhere.
   EXPECT_EQ(RunJson(Args({})).cache_misses(), 0);
 }
 
@@ -93,10 +99,19 @@ TEST_F(AgRunTest, ChangedInputFileRerunsThatMapOnly) {
   std::filesystem::rename(dir_.File("map_40.png"), maps_ + "/map_12.png");
   const proto::RunSummary summary = RunJson(Args({}));
   EXPECT_EQ(summary.fully_cached(), 2);
-  for (const char* stage : {"import", "clean", "voronoi", "prune", "cut", "merge"}) {
+  for (const char* stage : {"import", "clean", "voronoi", "prune", "cut", "merge", "match"}) {
     EXPECT_EQ(CountOf(summary, stage).misses, 1) << stage;
     EXPECT_EQ(CountOf(summary, stage).hits, 2) << stage;
   }
+  // The changed map's graph is its second version, after the first; the
+  // others still have one.
+  const auto store = OpenArtifactStore(store_, StoreMode::kReadOnly);
+  const std::vector<VersionRecord> history = store->ReadVersions("map_12");
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_EQ(history[1].number, 2);
+  EXPECT_EQ(history[1].predecessor_key, history[0].cache_key);
+  EXPECT_TRUE(history[1].is_head);
+  EXPECT_EQ(store->ReadVersions("map_11").size(), 1u);
 }
 
 TEST_F(AgRunTest, OnlyFromAndForceRestrictTheStages) {
@@ -106,9 +121,10 @@ TEST_F(AgRunTest, OnlyFromAndForceRestrictTheStages) {
   EXPECT_EQ(CountOf(only, "voronoi").misses, 3);
 
   const proto::RunSummary from = RunJson(Args({"--from", "cut"}));
-  ASSERT_EQ(from.stages_size(), 2);
+  ASSERT_EQ(from.stages_size(), 3);
   EXPECT_EQ(CountOf(from, "cut").hits, 3);
   EXPECT_EQ(CountOf(from, "merge").hits, 3);
+  EXPECT_EQ(CountOf(from, "match").hits, 3);
   EXPECT_EQ(from.succeeded(), 3);
 }
 

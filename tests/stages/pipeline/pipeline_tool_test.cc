@@ -53,8 +53,8 @@ TEST_F(AreaToolsTest, StagesNameTheStageToRunFirst) {
 TEST_F(AreaToolsTest, PipelineRunsEveryStageOnceThenHitsTheCache) {
   const CommandResult first = Run("ag-pipeline");
   ASSERT_EQ(first.exit_code, 0) << first.err;
-  EXPECT_EQ(CountLines(first.out), 6) << first.out;
-  for (const char* stage : {"clean", "voronoi", "prune", "cut", "merge"}) {
+  EXPECT_EQ(CountLines(first.out), 7) << first.out;
+  for (const char* stage : {"clean", "voronoi", "prune", "cut", "merge", "match"}) {
     EXPECT_NE(first.out.find(std::string(stage) + " "), std::string::npos) << stage;
   }
   EXPECT_EQ(first.out.find("cached"), std::string::npos) << first.out;
@@ -65,7 +65,7 @@ TEST_F(AreaToolsTest, PipelineRunsEveryStageOnceThenHitsTheCache) {
   EXPECT_EQ(second.out.find("computed"), std::string::npos) << second.out;
 
   // The stage tools share the pipeline's cache.
-  for (const char* tool : {"ag-prune", "ag-cut", "ag-merge"}) {
+  for (const char* tool : {"ag-prune", "ag-cut", "ag-merge", "ag-match"}) {
     const CommandResult stage = Run(tool);
     ASSERT_EQ(stage.exit_code, 0) << stage.err;
     EXPECT_EQ(CountLines(stage.out), 1) << stage.out;
@@ -80,7 +80,7 @@ TEST_F(AreaToolsTest, ChangingCutOptionsRerunsCutAndMergeOnly) {
   for (const char* cached : {"clean   cached", "voronoi cached", "prune   cached"}) {
     EXPECT_NE(rerun.out.find(cached), std::string::npos) << rerun.out;
   }
-  for (const char* computed : {"cut     computed", "merge   computed"}) {
+  for (const char* computed : {"cut     computed", "merge   computed", "match   computed"}) {
     EXPECT_NE(rerun.out.find(computed), std::string::npos) << rerun.out;
   }
   const CommandResult cut = Run("ag-cut", {"--set", "cut.room_width_m=1.0"});

@@ -1,0 +1,43 @@
+#include "stages/common/stage_versions.h"
+
+#include <algorithm>
+
+namespace areagraph {
+
+VersionLink PreviousVersionOf(ArtifactStore& store, const std::string& map_name,
+                              const StageDefinition& stage, const proto::PipelineOptions& options,
+                              const std::vector<std::string>& input_keys) {
+  const std::optional<std::string> head = store.ReadHeadKey(map_name, stage.info.name);
+  if (!head) return VersionLink{};
+  // A head outside the history (none is written that way) starts a new one.
+  const std::optional<VersionRecord> record = store.ReadVersion(map_name, *head);
+  if (!record) return VersionLink{*head, 2};
+  const VersionLink head_link{record->predecessor_key, record->number};
+  if (StageCacheKey(stage.info, stage.options_of(options), CacheKeyInputs(input_keys, head_link)) ==
+      *head) {
+    return head_link;
+  }
+  return VersionLink{*head, record->number + 1};
+}
+
+std::vector<std::string> CacheKeyInputs(const std::vector<std::string>& input_keys,
+                                        const std::optional<VersionLink>& version) {
+  std::vector<std::string> keys = input_keys;
+  if (version && !version->predecessor_key.empty()) keys.push_back(version->predecessor_key);
+  return keys;
+}
+
+std::optional<std::string> NewestGraphKey(ArtifactStore& store, const std::string& map_name) {
+  const StageDefinition& final_stage = StageOf(FinalStage());
+  const std::optional<std::string> final_key = store.ReadHeadKey(map_name, final_stage.info.name);
+  if (final_stage.inputs.empty()) return final_key;
+  const std::optional<std::string> input_key =
+      store.ReadHeadKey(map_name, final_stage.inputs.front().name);
+  if (!final_key || !input_key) return final_key ? final_key : input_key;
+  const std::optional<ArtifactRecord> made = store.ReadArtifactSummary(map_name, *final_key);
+  const bool current = made && std::find(made->input_keys.begin(), made->input_keys.end(),
+                                         *input_key) != made->input_keys.end();
+  return current ? final_key : input_key;
+}
+
+}  // namespace areagraph

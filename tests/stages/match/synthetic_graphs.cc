@@ -1,0 +1,65 @@
+#include "tests/stages/match/synthetic_graphs.h"
+
+#include "stages/common/map_frame.h"
+
+namespace areagraph::testing {
+
+proto::MapFrame Frame(int width_px, int height_px, double origin_x, double origin_y) {
+  proto::MapFrame frame;
+  frame.set_resolution_m(0.05);
+  frame.set_origin_x_m(origin_x);
+  frame.set_origin_y_m(origin_y);
+  frame.set_width_px(width_px);
+  frame.set_height_px(height_px);
+  return frame;
+}
+
+proto::AreaGraph RectGraph(const proto::MapFrame& frame, const std::vector<WorldRect>& rects) {
+  proto::AreaGraph graph;
+  graph.set_format_version(1);
+  *graph.mutable_frame() = frame;
+  const MapTransform transform(frame);
+  for (const WorldRect& rect : rects) {
+    proto::Area* area = graph.add_areas();
+    area->set_id(graph.areas_size() - 1);
+    area->set_area_m2((rect.x1 - rect.x0) * (rect.y1 - rect.y0));
+    const double corners[4][2] = {
+        {rect.x0, rect.y0}, {rect.x1, rect.y0}, {rect.x1, rect.y1}, {rect.x0, rect.y1}};
+    for (const auto& corner : corners) {
+      proto::Point2* metres = area->mutable_polygon_m()->mutable_outer()->add_points();
+      metres->set_x(corner[0]);
+      metres->set_y(corner[1]);
+      const Eigen::Vector2d pixel = transform.WorldToPixel({corner[0], corner[1]});
+      proto::Point2* pixels = area->mutable_polygon_px()->mutable_outer()->add_points();
+      pixels->set_x(pixel.x());
+      pixels->set_y(pixel.y());
+    }
+  }
+  return graph;
+}
+
+void AddPassage(proto::AreaGraph& graph, int a, int b, double x, double y) {
+  proto::Passage* passage = graph.add_passages();
+  passage->set_id(graph.passages_size() - 1);
+  passage->set_area_a(a);
+  passage->set_area_b(b);
+  passage->mutable_point_m()->set_x(x);
+  passage->mutable_point_m()->set_y(y);
+  passage->set_width_m(0.9);
+  graph.mutable_areas(a)->add_passage_ids(passage->id());
+  graph.mutable_areas(b)->add_passage_ids(passage->id());
+}
+
+std::vector<int> AreaIds(const proto::AreaGraph& graph) {
+  std::vector<int> ids;
+  for (const proto::Area& area : graph.areas()) ids.push_back(area.stable_id());
+  return ids;
+}
+
+std::vector<int> PassageIds(const proto::AreaGraph& graph) {
+  std::vector<int> ids;
+  for (const proto::Passage& passage : graph.passages()) ids.push_back(passage.stable_id());
+  return ids;
+}
+
+}  // namespace areagraph::testing

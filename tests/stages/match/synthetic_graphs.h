@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+#include "proto/geometry.pb.h"
+
+namespace areagraph::testing {
+
+// A rectangle in world metres: [x0, x1] x [y0, y1].
+struct WorldRect {
+  double x0 = 0;
+  double y0 = 0;
+  double x1 = 0;
+  double y1 = 0;
+};
+
+// A frame of width x height px at 0.05 m whose bottom-left corner is at
+// (origin_x, origin_y) metres.
+proto::MapFrame Frame(int width_px, int height_px, double origin_x = 0, double origin_y = 0);
+
+// An Area Graph (as ag-merge makes it: ids are indices, no stable ids) with
+// one rectangular area per rect, in `frame`.
+proto::AreaGraph RectGraph(const proto::MapFrame& frame, const std::vector<WorldRect>& rects);
+
+// Adds a passage between areas a and b (indices) at (x, y) metres, 0.9 m wide.
+void AddPassage(proto::AreaGraph& graph, int a, int b, double x, double y);
+
+// The stable ids of the areas in index order, and of the passages.
+std::vector<int> AreaIds(const proto::AreaGraph& graph);
+std::vector<int> PassageIds(const proto::AreaGraph& graph);
+
+}  // namespace areagraph::testing

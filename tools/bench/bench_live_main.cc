@@ -1,0 +1,313 @@
+// ag-bench-live: feeds a running ag-live a simulated exploration over LCM and
+// prints, per update, the time from ag-live's receipt of the grid to its
+// publication of the graph, and how stable the ids are against the ground
+// truth. A benchmark: it checks nothing. Run it through tools/bench-live.sh,
+// which starts ag-live inside a private network namespace.
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <lcm/lcm-cpp.hpp>
+#include <opencv2/imgproc.hpp>
+#include <regex>
+#include <thread>
+
+#include "common/error.h"
+#include "common/text.h"
+#include "runner/common/map_run.h"
+#include "runner/live/area_graph_publisher.h"
+#include "runner/live/lcm_connection.h"
+#include "runner/live/lcm_conversion.h"
+#include "runner/live/live_map_server.h"
+#include "stages/common/command_line.h"
+#include "tools/bench/id_stability.h"
+#include "tools/bench/median_timer.h"
+#include "tools/eval/label_image.h"
+#include "tools/eval/map_evaluation.h"
+#include "tools/example_maps/exploration.h"
+#include "tools/example_maps/random_floor_plan.h"
+
+namespace areagraph {
+namespace {
+
+struct BenchFlags {
+  std::string name;
+  std::string map_path;
+  std::string gt_path;
+  double generated_m = 0;
+  uint32_t seed = 1;
+  int steps = 20;
+  int noise_steps = 3;
+  std::string url = kDefaultLcmUrl;
+  std::string live_log;
+  std::string scratch_dir = "/tmp";
+  bool cold = true;
+  double timeout_s = 900;
+  floorplan::ExplorationSettings exploration;
+};
+
+// The whole map's cells and its ground-truth rooms (CV_32S).
+struct Truth {
+  cv::Mat cells;
+  cv::Mat rooms;
+};
+
+Truth LoadTruth(const BenchFlags& flags) {
+  Truth truth;
+  if (flags.generated_m > 0) {
+    floorplan::FloorPlan closed(1, 1);
+    const floorplan::FloorPlan plan =
+        floorplan::LargeOfficePlan(flags.generated_m, flags.generated_m, flags.seed, &closed);
+    truth.cells = floorplan::ClassifyGrey(plan.image());
+    cv::connectedComponents(closed.image() == floorplan::kFreeGrey, truth.rooms, 4, CV_32S);
+    DropSmallSegments(&truth.rooms, 100);
+    return truth;
+  }
+  truth.cells = floorplan::ClassifyGrey(ToGrey8(ReadImageFile(flags.map_path)));
+  GroundTruthStyle style = GroundTruthStyle::kAuto;
+  truth.rooms = ReadGroundTruthLabels(flags.gt_path, &style);
+  if (truth.rooms.size() != truth.cells.size()) {
+    throw InputError("the ground truth is " + std::to_string(truth.rooms.cols) + "x" +
+                     std::to_string(truth.rooms.rows) + ", the map " +
+                     std::to_string(truth.cells.cols) + "x" + std::to_string(truth.cells.rows));
+  }
+  return truth;
+}
+
+// A cropped exploration map as the GridMap a SLAM node would send: the whole
+// map's bottom-left corner is the world origin.
+proto::GridMap ToGridMap(const floorplan::ExplorationMap& map, int whole_height) {
+  proto::GridMap grid;
+  grid.set_format_version(kGridMapFormatVersion);
+  proto::MapFrame* frame = grid.mutable_frame();
+  frame->set_resolution_m(0.05);
+  frame->set_origin_x_m(map.crop.x * 0.05);
+  frame->set_origin_y_m((whole_height - map.crop.y - map.crop.height) * 0.05);
+  frame->set_width_px(map.cells.cols);
+  frame->set_height_px(map.cells.rows);
+  grid.set_cells(std::string(reinterpret_cast<const char*>(map.cells.data), map.cells.total()));
+  return grid;
+}
+
+int64_t MicrosecondsNow() {
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::system_clock::now().time_since_epoch())
+      .count();
+}
+
+// Waits for the area_graph_t of `name` made from the grid of `map_utime`.
+class GraphWaiter {
+ public:
+  GraphWaiter(lcm::LCM& lcm, const std::string& url) : lcm_(lcm), url_(url) {
+    lcm_.subscribe(kAreaGraphChannel, &GraphWaiter::OnGraph, this);
+    StartReceiving(lcm_, url_);
+  }
+  areagraph_lcm::area_graph_t Wait(const std::string& name, int64_t map_utime, double timeout_s) {
+    const auto give_up = std::chrono::steady_clock::now() +
+                         std::chrono::milliseconds(static_cast<int64_t>(timeout_s * 1000));
+    while (std::chrono::steady_clock::now() < give_up) {
+      HandleOneMessage(lcm_, 100, url_);
+      if (got_ && last_.map_name == name && last_.map_utime == map_utime) return last_;
+    }
+    throw Error("no Area Graph for '" + name + "' within " + FormatNumber(timeout_s) +
+                " s; is ag-live running (tools/bench-live.sh starts it)?");
+  }
+
+ private:
+  void OnGraph(const lcm::ReceiveBuffer* buffer, const std::string&) {
+    last_ = DecodeAreaGraphMessage(buffer->data, static_cast<int>(buffer->data_size));
+    got_ = true;
+  }
+  lcm::LCM& lcm_;
+  std::string url_;
+  areagraph_lcm::area_graph_t last_;
+  bool got_ = false;
+};
+
+// ag-live's own figure for the graph with key `key`: "published N ms after
+// receipt" on its line in `log` (it writes the line right after publishing).
+double ReceiptToPublicationMs(const std::string& log, const std::string& key) {
+  if (log.empty()) return -1;
+  const std::regex line(".* key " + key.substr(0, 12) + ", .*published (\\d+) ms after receipt");
+  for (int attempt = 0; attempt < 50; ++attempt) {
+    std::ifstream in(log);
+    double found = -1;
+    for (std::string text; std::getline(in, text);) {
+      std::smatch match;
+      if (std::regex_match(text, match, line)) found = std::stod(match[1].str());
+    }
+    if (found >= 0) return found;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  return -1;
+}
+
+// The whole pipeline on `grid` in a new store, in process, as ag-live runs
+// it: what a cold run of this map costs.
+double ColdPipelineMs(const proto::GridMap& grid, const std::string& scratch_dir) {
+  const std::string path = scratch_dir + "/ag-bench-live-cold.db";
+  std::remove(path.c_str());
+  std::remove((path + "-wal").c_str());
+  std::remove((path + "-shm").c_str());
+  double elapsed = 0;
+  {
+    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
+    FailureLog failures(*store);
+    const std::string digest = LiveGridDigest(grid);
+    MapImport map_import;
+    map_import.read_inputs = [&] {
+      StageInputs inputs;
+      inputs.digests = {digest};
+      return inputs;
+    };
+    map_import.decode = [&] { return std::make_unique<proto::GridMap>(grid); };
+    elapsed = ElapsedMs([&] {
+      RunOneMap(*store, failures, "cold", "", map_import, proto::PipelineOptions(),
+                MapRunSettings(), PipelineObserver(), nullptr);
+    });
+  }
+  std::remove(path.c_str());
+  return elapsed;
+}
+
+std::string Percent(int part, int whole) {
+  if (whole == 0) return "-";
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f %%", 100.0 * part / whole);
+  return text;
+}
+
+int RunBench(const BenchFlags& flags) {
+  if (flags.name.empty()) throw OptionsError("--name is required");
+  if ((flags.generated_m > 0) == !flags.map_path.empty()) {
+    throw OptionsError("give either --map and --gt, or --generated");
+  }
+  if (!flags.map_path.empty() && flags.gt_path.empty()) throw OptionsError("--map needs --gt");
+  const Truth truth = LoadTruth(flags);
+  floorplan::ExplorationSettings settings = flags.exploration;
+  settings.steps = flags.steps;
+  settings.seed = flags.seed;
+  std::cerr << "ag-bench-live: " << flags.name << ": " << truth.cells.cols << "x"
+            << truth.cells.rows << " px, " << CountSegments(truth.rooms)
+            << " ground-truth rooms; planning the exploration" << std::endl;
+  floorplan::Exploration exploration(truth.cells, settings);
+  std::cerr << "ag-bench-live: " << flags.name << ": " << exploration.scans() << " scans in "
+            << flags.steps << " steps, then " << flags.noise_steps << " noise-only updates"
+            << std::endl;
+
+  const std::string url = ReceivingLcmUrl(flags.url);
+  const std::unique_ptr<lcm::LCM> lcm = OpenLcm(url);
+  GraphWaiter waiter(*lcm, url);
+  std::printf(
+      "| step | seen | grid px | areas | version | receipt to publication ms | round trip ms | "
+      "cold ms | update / cold | GT-tracked areas kept | ids kept |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  GroundTruthView previous;
+  IdStability explored_total, noise_total;
+  std::vector<double> ratios;
+  const double free_cells = cv::countNonZero(truth.cells == floorplan::kFreeCell);
+  for (int step = 1; step <= flags.steps + flags.noise_steps; ++step) {
+    const uint32_t noise_seed = flags.seed * 1000 + static_cast<uint32_t>(step);
+    const floorplan::ExplorationMap map = step <= flags.steps
+                                              ? exploration.MapAfter(step, noise_seed)
+                                              : exploration.MapAgain(noise_seed);
+    const proto::GridMap grid = ToGridMap(map, truth.cells.rows);
+    const int64_t utime = MicrosecondsNow();
+    const areagraph_lcm::grid_map_t message = ToLcmGridMap(flags.name, utime, grid);
+    const auto sent = std::chrono::steady_clock::now();
+    if (lcm->publish(kGridMapChannel, &message) != 0) throw Error("cannot publish on MAP");
+    const areagraph_lcm::area_graph_t published = waiter.Wait(flags.name, utime, flags.timeout_s);
+    const double round_trip =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count();
+    const double live_ms = ReceiptToPublicationMs(flags.live_log, published.artifact_key);
+    const double cold_ms = flags.cold ? ColdPipelineMs(grid, flags.scratch_dir) : -1;
+    const GroundTruthView view =
+        ViewAgainstGroundTruth(AreaGraphFromLcm(published), truth.rooms, map.seen);
+    std::string tracked = "-", kept = "-";
+    if (step > 1) {
+      const IdStability stability = CompareViews(previous, view);
+      IdStability& total = step <= flags.steps ? explored_total : noise_total;
+      total.tracked += stability.tracked;
+      total.kept += stability.kept;
+      total.ids_before += stability.ids_before;
+      total.ids_kept += stability.ids_kept;
+      tracked = std::to_string(stability.kept) + " / " + std::to_string(stability.tracked);
+      kept = Percent(stability.ids_kept, stability.ids_before);
+    }
+    std::string ratio = "-";
+    if (cold_ms > 0 && live_ms >= 0) {
+      ratios.push_back(live_ms / cold_ms);
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.2f", live_ms / cold_ms);
+      ratio = text;
+    }
+    std::printf(
+        "| %d%s | %.0f %% | %dx%d | %d | %lld | %.0f | %.0f | %.0f | %s | %s | %s |\n", step,
+        step > flags.steps ? " (noise)" : "",
+        100.0 * cv::countNonZero(map.seen & (truth.cells == floorplan::kFreeCell)) / free_cells,
+        grid.frame().width_px(), grid.frame().height_px(), published.num_areas,
+        static_cast<long long>(published.version), live_ms, round_trip, cold_ms, ratio.c_str(),
+        tracked.c_str(), kept.c_str());
+    std::fflush(stdout);
+    std::cerr << "ag-bench-live: " << flags.name << ": step " << step << " done" << std::endl;
+    previous = view;
+  }
+  std::printf(
+      "\n%s: over the exploration, %s of the areas whose ground-truth room was fully seen in "
+      "both updates kept their id (%d of %d); over the noise-only updates %s (%d of %d), and "
+      "%s of all ids stayed. Update / cold: median %.2f, max %.2f.\n\n",
+      flags.name.c_str(), Percent(explored_total.kept, explored_total.tracked).c_str(),
+      explored_total.kept, explored_total.tracked,
+      Percent(noise_total.kept, noise_total.tracked).c_str(), noise_total.kept, noise_total.tracked,
+      Percent(noise_total.ids_kept, noise_total.ids_before).c_str(), Median(ratios),
+      ratios.empty() ? 0 : *std::max_element(ratios.begin(), ratios.end()));
+  return 0;
+}
+
+}  // namespace
+}  // namespace areagraph
+
+int main(int argc, char** argv) {
+  using namespace areagraph;
+  CLI::App app{
+      "Feeds a running ag-live (same LCM URL) a simulated exploration: a robot with a 360-degree "
+      "8 m range sensor explores the map frontier by frontier; its path is cut into --steps "
+      "growing maps, each with fresh scan noise and cropped to what was seen (so the grid grows "
+      "and moves), then --noise-steps more with only new noise. Prints a Markdown row per "
+      "update: ag-live's time from receipt to publication (from --live-log), the round trip, "
+      "the cold pipeline time of the same grid in a new store, and how many areas whose "
+      "ground-truth room was fully seen in both updates kept their id. Run it through "
+      "tools/bench-live.sh."};
+  BenchFlags flags;
+  app.add_option("--name", flags.name, "map name sent to ag-live")->required();
+  app.add_option("--map", flags.map_path, "map image (the whole building)");
+  app.add_option("--gt", flags.gt_path, "its ground truth (colour or line style, as ag-eval)");
+  app.add_option("--generated", flags.generated_m,
+                 "instead of --map: a generated office floor this many metres square");
+  app.add_option("--seed", flags.seed, "seed of the generated floor and of the noise")
+      ->capture_default_str();
+  app.add_option("--steps", flags.steps, "growing maps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--noise-steps", flags.noise_steps, "noise-only maps after the last step")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  app.add_option("--wall-noise", flags.exploration.wall_noise,
+                 "chance that a free cell next to a wall turns occupied, per map")
+      ->capture_default_str();
+  app.add_option("--frontier-noise", flags.exploration.frontier_noise,
+                 "chance that a free cell next to unseen space turns unknown, per map")
+      ->capture_default_str();
+  app.add_option("--speckles", flags.exploration.speckles_per_m2,
+                 "one-cell obstacles per square metre of free space, per map")
+      ->capture_default_str();
+  app.add_option("--url", flags.url, "LCM URL (ttl=0)")->capture_default_str();
+  app.add_option("--live-log", flags.live_log, "ag-live's standard output, to read its timings");
+  app.add_option("--scratch", flags.scratch_dir, "folder for the cold runs' store")
+      ->capture_default_str();
+  app.add_flag("!--no-cold", flags.cold, "skip the cold pipeline runs");
+  app.add_option("--timeout", flags.timeout_s, "seconds to wait for each graph")
+      ->capture_default_str();
+  return RunCommand("ag-bench-live", app, argc, argv, [&] { return RunBench(flags); });
+}
