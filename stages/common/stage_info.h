@@ -23,12 +23,14 @@ inline constexpr StageInfo kCleanStage{"clean", 3};
 inline constexpr StageInfo kVoronoiStage{"voronoi", 2};  // 2: edges in face order
 inline constexpr StageInfo kPruneStage{"prune", 1};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
-inline constexpr StageInfo kCutStage{"cut", 2};
+// cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
+inline constexpr StageInfo kCutStage{"cut", 3};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
 // merge 5: polygons are a simplified planar partition, passages lie on shared borders.
-inline constexpr StageInfo kMergeStage{"merge", 5};
+// merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
+inline constexpr StageInfo kMergeStage{"merge", 6};
 inline constexpr StageInfo kMatchStage{"match", 1};
 
 // Whether two StageInfos name the same stage.
