@@ -220,9 +220,10 @@ std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path,
 
 // The schema version this build writes and the newest it reads. 2 added the
 // failures table, 3 the artifacts' summary line, 4 the versions table (each
-// map's history of Area Graphs). An older store is upgraded when opened
-// read-write, and read as it is (without failures, summary lines or
-// history) when opened read-only.
-constexpr int kStoreSchemaVersion = 4;
+// map's history of Area Graphs), 5 zstd-compressed payloads (a codec per
+// artifact; rows written before stay uncompressed and readable). An older
+// store is upgraded when opened read-write, and read as it is (without
+// failures, summary lines or history) when opened read-only.
+constexpr int kStoreSchemaVersion = 5;
 
 }  // namespace areagraph

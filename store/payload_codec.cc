@@ -42,20 +42,18 @@ std::string CompressPayload(std::string_view raw) {
   return stored;
 }
 
-std::string DecodePayload(std::string_view stored, int64_t codec, const std::string& what,
-                          uint64_t max_bytes) {
+std::string DecodePayload(std::string_view stored, int64_t codec, uint64_t max_bytes) {
   if (codec == static_cast<int64_t>(PayloadCodec::kNone)) return std::string(stored);
   if (codec != static_cast<int64_t>(PayloadCodec::kZstd)) {
-    throw StoreError(what + " has unknown payload codec " + std::to_string(codec) +
+    throw StoreError("unknown payload codec " + std::to_string(codec) +
                      " (written by a newer areagraph?)");
   }
   const unsigned long long size = ZSTD_getFrameContentSize(stored.data(), stored.size());
   if (size == ZSTD_CONTENTSIZE_ERROR || size == ZSTD_CONTENTSIZE_UNKNOWN) {
-    throw StoreError(what + " is corrupt (its payload is not a zstd frame with a size)");
+    throw StoreError("payload is not a zstd frame with a size");
   }
   if (size > max_bytes) {
-    throw StoreError(what + " is corrupt (its zstd frame claims " + std::to_string(size) +
-                     " bytes)");
+    throw StoreError("payload's zstd frame claims " + std::to_string(size) + " bytes");
   }
   ZSTD_DCtx* context = DecompressionContext();
   if (context == nullptr) throw StoreError("zstd: out of memory for a decompression context");
@@ -63,8 +61,8 @@ std::string DecodePayload(std::string_view stored, int64_t codec, const std::str
   const size_t written =
       ZSTD_decompressDCtx(context, raw.data(), raw.size(), stored.data(), stored.size());
   if (ZSTD_isError(written) || written != raw.size()) {
-    throw StoreError(what + " is corrupt (zstd: " +
-                     (ZSTD_isError(written) ? ZSTD_getErrorName(written) : "short frame") + ")");
+    throw StoreError(std::string("payload's zstd frame is damaged: ") +
+                     (ZSTD_isError(written) ? ZSTD_getErrorName(written) : "short frame"));
   }
   return raw;
 }

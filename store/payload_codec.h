@@ -22,10 +22,10 @@ inline constexpr int kPayloadZstdLevel = 1;
 // One zstd frame of `raw`. Throws StoreError if zstd fails.
 std::string CompressPayload(std::string_view raw);
 
-// The raw bytes of a stored payload. Throws StoreError naming `what` if the
-// codec is unknown or the frame is damaged, truncated or claims more than
-// `max_bytes`.
-std::string DecodePayload(std::string_view stored, int64_t codec, const std::string& what,
+// The raw bytes of a stored payload. Throws StoreError saying what is wrong
+// (the caller names the artifact) if the codec is unknown or the frame is
+// damaged, truncated or claims more than `max_bytes`.
+std::string DecodePayload(std::string_view stored, int64_t codec,
                           uint64_t max_bytes = uint64_t{1} << 32);
 
 }  // namespace areagraph

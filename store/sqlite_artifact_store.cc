@@ -13,6 +13,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "store/digest.h"
+#include "store/payload_codec.h"
 #include "store/sqlite_store_sql.h"
 #include "store/sqlite_versions_sql.h"
 
@@ -166,6 +167,11 @@ void SqliteArtifactStore::CreateOrUpgradeSchema() {
     Exec(store_sql::kAddArtifactSummaryColumn, "adding the artifacts' summary column");
   }
   if (version < 4) Exec(store_sql::kCreateVersionsTable, "creating the versions table");
+  if (version >= 1 && version < 5) {
+    Exec(store_sql::kAddPayloadCodecColumn, "adding the artifacts' payload codec column");
+    Exec(store_sql::kAddPayloadSizeColumn, "adding the artifacts' payload size column");
+    Exec(store_sql::kFillPayloadSizes, "recording the payload sizes");
+  }
   if (version < kStoreSchemaVersion) {
     Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
          "setting the schema version");
@@ -192,23 +198,29 @@ void SqliteArtifactStore::PrepareStatements() {
   sql_stmt_read_all_maps_ = Prepare(store_sql::kReadAllMaps, "reading the maps");
   sql_stmt_read_map_ = Prepare(store_sql::kReadMap, "reading a map");
   const bool summaries = HasSummaryLines();
-  sql_stmt_read_artifact_ =
-      Prepare(summaries ? store_sql::kReadArtifact : store_sql::kReadArtifactBeforeSchema3,
-              "reading an artifact");
-  sql_stmt_read_head_ =
-      Prepare(summaries ? store_sql::kReadHead : store_sql::kReadHeadBeforeSchema3,
-              "reading a head artifact");
+  const bool codecs = HasPayloadCodecs();
+  sql_stmt_read_artifact_ = Prepare(codecs      ? store_sql::kReadArtifact
+                                    : summaries ? store_sql::kReadArtifactBeforeSchema5
+                                                : store_sql::kReadArtifactBeforeSchema3,
+                                    "reading an artifact");
+  sql_stmt_read_head_ = Prepare(codecs      ? store_sql::kReadHead
+                                : summaries ? store_sql::kReadHeadBeforeSchema5
+                                            : store_sql::kReadHeadBeforeSchema3,
+                                "reading a head artifact");
   sql_stmt_read_artifact_summaries_ =
-      Prepare(summaries ? store_sql::kReadArtifactSummaries
-                        : store_sql::kReadArtifactSummariesBeforeSchema3,
+      Prepare(codecs      ? store_sql::kReadArtifactSummaries
+              : summaries ? store_sql::kReadArtifactSummariesBeforeSchema5
+                          : store_sql::kReadArtifactSummariesBeforeSchema3,
               "listing the artifacts of a map");
-  sql_stmt_read_artifact_summary_ = Prepare(
-      summaries ? store_sql::kReadArtifactSummary : store_sql::kReadArtifactSummaryBeforeSchema3,
-      "reading an artifact");
+  sql_stmt_read_artifact_summary_ =
+      Prepare(codecs      ? store_sql::kReadArtifactSummary
+              : summaries ? store_sql::kReadArtifactSummaryBeforeSchema5
+                          : store_sql::kReadArtifactSummaryBeforeSchema3,
+              "reading an artifact");
   sql_stmt_read_artifact_ref_ = Prepare(store_sql::kReadArtifactRef, "finding an artifact");
   sql_stmt_read_artifact_id_ = Prepare(store_sql::kReadArtifactId, "finding an artifact");
   sql_stmt_upsert_map_ = Prepare(store_sql::kUpsertMap, "writing a map");
-  if (HasSummaryLines()) {  // an older store is only ever read
+  if (HasPayloadCodecs()) {  // an older store is only ever read
     sql_stmt_upsert_artifact_ = Prepare(store_sql::kUpsertArtifact, "writing an artifact");
   }
   sql_stmt_write_head_ = Prepare(store_sql::kWriteHead, "writing a head");
@@ -257,16 +269,24 @@ ArtifactRecord SqliteArtifactStore::ReadArtifactRow(const SqliteStatement& state
   artifact.is_head = statement.ColumnInt64(9, "heads.artifact_id") != 0;
   artifact.summary_line = statement.ColumnText(10, "artifacts.summary");
   if (!with_payload) {
-    artifact.payload_bytes = statement.ColumnInt64(11, "length(artifacts.payload)");
+    artifact.payload_bytes = statement.ColumnInt64(11, "artifacts.payload_size");
     return artifact;
   }
-  artifact.payload = statement.ColumnBlob(11, "artifacts.payload");
+  const auto corrupt = [&](const std::string& problem) {
+    return StoreError("artifact " + ShortKey(artifact.cache_key) + " of map '" + map_name +
+                      "' in store '" + path_ + "' is corrupt (" + problem + "); run ag-" +
+                      artifact.stage + " --store " + path_ + " --map " + map_name +
+                      " --force to recompute it");
+  };
+  try {
+    artifact.payload = DecodePayload(statement.ColumnBlobView(11, "artifacts.payload"),
+                                     statement.ColumnInt64(12, "artifacts.payload_codec"));
+  } catch (const StoreError& error) {
+    throw corrupt(error.what());
+  }
   artifact.payload_bytes = static_cast<int64_t>(artifact.payload.size());
   if (Sha256Hex(artifact.payload) != artifact.payload_digest) {
-    throw StoreError("artifact " + ShortKey(artifact.cache_key) + " of map '" + map_name +
-                     "' in store '" + path_ + "' is corrupt (payload digest mismatch); run ag-" +
-                     artifact.stage + " --store " + path_ + " --map " + map_name +
-                     " --force to recompute it");
+    throw corrupt("payload digest mismatch");
   }
   return artifact;
 }
@@ -337,6 +357,7 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
   }
   // Hashing before the transaction keeps the write lock short.
   const std::string payload_digest = Sha256Hex(artifact.payload);
+  const std::string stored_payload = CompressPayload(artifact.payload);
   SqliteTransaction transaction = BeginTransaction();
 
   int64_t map_id = 0;
@@ -363,10 +384,12 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     insert.BindText(5, artifact.options_text);
     insert.BindInt64(6, artifact.stage_version);
     insert.BindText(7, artifact.proto_type);
-    insert.BindBlob(8, artifact.payload);
+    insert.BindBlob(8, stored_payload);
     insert.BindText(9, payload_digest);
     insert.BindDouble(10, artifact.elapsed_ms);
     insert.BindText(11, artifact.summary_line);
+    insert.BindInt64(12, static_cast<int64_t>(PayloadCodec::kZstd));
+    insert.BindInt64(13, static_cast<int64_t>(artifact.payload.size()));
     insert.Step();
   }
   int64_t artifact_id = 0;

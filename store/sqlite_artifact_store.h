@@ -78,6 +78,8 @@ class SqliteArtifactStore : public ArtifactStore {
   bool HasSummaryLines() const { return schema_version_ >= 3; }
   // The versions statements need schema 4; older read-only stores have none.
   bool HasVersionsTable() const { return schema_version_ >= 4; }
+  // Schema 5 keeps a codec per payload; older read-only stores are raw.
+  bool HasPayloadCodecs() const { return schema_version_ >= 5; }
 
   std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
   SqliteTransaction BeginTransaction();
@@ -112,7 +114,7 @@ class SqliteArtifactStore : public ArtifactStore {
   std::vector<std::string> CheckStructure(const char* schema, StructureCheck structure);
   // Throws StoreError naming `path` when an artifact that the merge would
   // copy from it has a payload that fails its digest or is not protobuf.
-  void CheckMergeSourcePayloads(const std::string& path);
+  void CheckMergeSourcePayloads(const std::string& path, int source_version);
 
   const std::string path_;
   const StoreMode mode_;
@@ -152,9 +154,11 @@ namespace store_internal {
 // Input keys are stored newline-joined.
 std::vector<std::string> SplitLines(const std::string& joined);
 
-// What is wrong with a stored payload: "payload digest mismatch" or
-// "payload is not protobuf wire format"; nullopt when it is intact.
-std::optional<std::string> PayloadProblem(std::string_view payload, std::string_view digest);
+// What is wrong with a stored payload (decoded with `codec`): a damaged
+// frame, "payload digest mismatch" or "payload is not protobuf wire format";
+// nullopt when it is intact.
+std::optional<std::string> PayloadProblem(std::string_view stored, int64_t codec,
+                                          std::string_view digest);
 
 }  // namespace store_internal
 

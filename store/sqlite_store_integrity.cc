@@ -9,6 +9,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "store/digest.h"
+#include "store/payload_codec.h"
 #include "store/protobuf_wire.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
@@ -17,7 +18,14 @@ namespace areagraph {
 
 namespace store_internal {
 
-std::optional<std::string> PayloadProblem(std::string_view payload, std::string_view digest) {
+std::optional<std::string> PayloadProblem(std::string_view stored, int64_t codec,
+                                          std::string_view digest) {
+  std::string payload;
+  try {
+    payload = DecodePayload(stored, codec);
+  } catch (const StoreError& error) {
+    return std::string(error.what());
+  }
   if (Sha256Hex(payload) != digest) return "payload digest mismatch";
   if (!IsWellFormedProtobuf(payload)) return "payload is not protobuf wire format";
   return std::nullopt;
@@ -27,15 +35,16 @@ std::optional<std::string> PayloadProblem(std::string_view payload, std::string_
 
 namespace {
 
-// SQL function ag_payload_problem(payload, digest): NULL or the problem.
+// SQL function ag_payload_problem(payload, codec, digest): NULL or the problem.
 void PayloadProblemFunction(sqlite3_context* context, int, sqlite3_value** values) {
   const auto* payload = static_cast<const char*>(sqlite3_value_blob(values[0]));
   const int payload_bytes = sqlite3_value_bytes(values[0]);
-  const auto* digest = reinterpret_cast<const char*>(sqlite3_value_text(values[1]));
-  const int digest_bytes = sqlite3_value_bytes(values[1]);
+  const int64_t codec = sqlite3_value_int64(values[1]);
+  const auto* digest = reinterpret_cast<const char*>(sqlite3_value_text(values[2]));
+  const int digest_bytes = sqlite3_value_bytes(values[2]);
   const std::optional<std::string> problem = store_internal::PayloadProblem(
       std::string_view(payload == nullptr ? "" : payload, static_cast<size_t>(payload_bytes)),
-      std::string_view(digest == nullptr ? "" : digest, static_cast<size_t>(digest_bytes)));
+      codec, std::string_view(digest == nullptr ? "" : digest, static_cast<size_t>(digest_bytes)));
   if (!problem) return sqlite3_result_null(context);
   sqlite3_result_text(context, problem->c_str(), static_cast<int>(problem->size()),
                       SQLITE_TRANSIENT);
@@ -74,14 +83,16 @@ std::vector<std::string> SqliteArtifactStore::CheckStructure(const char* schema,
   return findings;
 }
 
-void SqliteArtifactStore::CheckMergeSourcePayloads(const std::string& path) {
+void SqliteArtifactStore::CheckMergeSourcePayloads(const std::string& path, int source_version) {
   CheckSqlite(
       db_, path_,
-      sqlite3_create_function_v2(db_, "ag_payload_problem", 2,
+      sqlite3_create_function_v2(db_, "ag_payload_problem", 3,
                                  SQLITE_UTF8 | SQLITE_DETERMINISTIC | SQLITE_DIRECTONLY, nullptr,
                                  PayloadProblemFunction, nullptr, nullptr, nullptr),
       "registering the payload check");
-  SqliteStatement find(db_, path_, store_sql::kFindDamagedMergePayload,
+  SqliteStatement find(db_, path_,
+                       source_version >= 5 ? store_sql::kFindDamagedMergePayload
+                                           : store_sql::kFindDamagedMergePayloadBeforeSchema5,
                        "merging: checking the payloads of '" + path + "'");
   StatementUse use(find);
   if (!find.Step()) return;

@@ -11,6 +11,9 @@
 
 #include "common/error.h"
 #include "common/text.h"
+#include "store/digest.h"
+#include "store/payload_codec.h"
+#include "store/protobuf_wire.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
 #include "store/store_maintenance.h"
@@ -108,7 +111,10 @@ void SqliteArtifactStore::CheckArtifacts(const std::vector<std::string>& file_in
     count.Step();
     total = count.ColumnInt64(0, "count(*)");
   }
-  SqliteStatement rows(db_, path_, store_sql::kVerifyArtifacts, "verifying the artifacts");
+  SqliteStatement rows(
+      db_, path_,
+      HasPayloadCodecs() ? store_sql::kVerifyArtifacts : store_sql::kVerifyArtifactsBeforeSchema5,
+      "verifying the artifacts");
   StatementUse use(rows);
   int64_t done = 0;
   while (rows.Step()) {  // one payload in memory at a time
@@ -136,8 +142,9 @@ void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
       return report("artifact row " + std::to_string(id) + " belongs to no map");
     }
     const std::optional<std::string> damage = store_internal::PayloadProblem(
-        row.ColumnBlobView(8, "artifacts.payload"), row.ColumnText(7, "artifacts.payload_digest"));
-    if (damage && damage->rfind("payload digest", 0) == 0) {
+        row.ColumnBlobView(8, "artifacts.payload"), row.ColumnInt64(9, "artifacts.payload_codec"),
+        row.ColumnText(7, "artifacts.payload_digest"));
+    if (damage && damage->rfind("payload is not protobuf", 0) != 0) {
       return report(*damage + " (corrupt); recompute it with ag-" + found.stage + " --force");
     }
     if (damage) return report(*damage);
@@ -215,7 +222,7 @@ MaintenanceCounts SqliteArtifactStore::CollectGarbage() {
       const int64_t id = sizes.ColumnInt64(0, "artifacts.id");
       if (kept.count(id) > 0) continue;
       garbage.push_back(id);
-      counts.payload_bytes += sizes.ColumnInt64(1, "length(artifacts.payload)");
+      counts.payload_bytes += sizes.ColumnInt64(1, "artifacts.payload_size");
     }
   }
   SqliteStatement erase(db_, path_, store_sql::kDeleteArtifact, "deleting an artifact");
@@ -281,15 +288,19 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(const std::string& pa
   };
   counts.maps = run(store_sql::kMergeMaps, "copying maps");
   {
-    SqliteStatement count(db_, path_, store_sql::kCountNewArtifacts, "merging: counting");
+    SqliteStatement count(db_, path_,
+                          source_version >= 5 ? store_sql::kCountNewArtifacts
+                                              : store_sql::kCountNewArtifactsBeforeSchema5,
+                          "merging: counting");
     StatementUse use(count);
     count.Step();
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
-  CheckMergeSourcePayloads(path);  // under the write lock: exactly what is copied next
-  counts.artifacts = run(
-      source_version >= 3 ? store_sql::kMergeArtifacts : store_sql::kMergeArtifactsBeforeSchema3,
-      "copying artifacts");
+  CheckMergeSourcePayloads(path, source_version);  // under the write lock: what is copied next
+  counts.artifacts = run(source_version >= 5   ? store_sql::kMergeArtifacts
+                         : source_version >= 3 ? store_sql::kMergeArtifactsBeforeSchema5
+                                               : store_sql::kMergeArtifactsBeforeSchema3,
+                         "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");
   run(store_sql::kMergeMapSources, "updating map sources");

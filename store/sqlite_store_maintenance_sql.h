@@ -14,10 +14,14 @@ inline constexpr char kCountArtifacts[] = "SELECT count(*) FROM artifacts";
 
 // Every artifact with its payload, in storage order; the caller holds one
 // row at a time. A row whose map is gone (hand-edited file) still shows up.
-inline constexpr char kVerifyArtifacts[] = R"sql(
-SELECT a.id, a.map_id, m.id IS NOT NULL, coalesce(m.name, ''), a.stage, a.cache_key,
-       a.input_keys, a.payload_digest, a.payload
-FROM artifacts a LEFT JOIN maps m ON m.id = a.map_id ORDER BY a.id)sql";
+// Before schema 5 every payload is raw.
+#define AG_VERIFY_ARTIFACTS(codec)                                                       \
+  "SELECT a.id, a.map_id, m.id IS NOT NULL, coalesce(m.name, ''), a.stage, a.cache_key," \
+  " a.input_keys, a.payload_digest, a.payload, " codec                                   \
+  " FROM artifacts a LEFT JOIN maps m ON m.id = a.map_id ORDER BY a.id"
+inline constexpr char kVerifyArtifacts[] = AG_VERIFY_ARTIFACTS("a.payload_codec");
+inline constexpr char kVerifyArtifactsBeforeSchema5[] = AG_VERIFY_ARTIFACTS("0");
+#undef AG_VERIFY_ARTIFACTS
 
 // Heads that do not point at an artifact of their own map and stage.
 inline constexpr char kFindBrokenHeads[] = R"sql(
@@ -40,8 +44,8 @@ inline constexpr char kQuickCheckOf[] = "PRAGMA %s.quick_check";
 inline constexpr char kReadHeadArtifactIds[] = "SELECT artifact_id FROM heads";
 inline constexpr char kReadArtifactInputs[] =
     "SELECT map_id, input_keys FROM artifacts WHERE id = ?1";
-// length() reads a BLOB's size without loading it.
-inline constexpr char kListArtifactSizes[] = "SELECT id, length(payload) FROM artifacts";
+// The decoded sizes (gc needs a writable store, which has schema 5).
+inline constexpr char kListArtifactSizes[] = "SELECT id, payload_size FROM artifacts";
 inline constexpr char kDeleteArtifact[] = "DELETE FROM artifacts WHERE id = ?1";
 inline constexpr char kDeleteEmptyMaps[] =
     "DELETE FROM maps WHERE NOT EXISTS (SELECT 1 FROM artifacts a WHERE a.map_id = maps.id)";
@@ -59,42 +63,63 @@ INSERT INTO main.maps (name, source_path, source_digest)
 SELECT name, source_path, source_digest FROM merge_source.maps WHERE true
 ON CONFLICT (name) DO NOTHING)sql";
 
-// What kMergeArtifacts will add: count and payload bytes (run it first).
-inline constexpr char kCountNewArtifacts[] = R"sql(
-SELECT count(*), coalesce(sum(length(sa.payload)), 0)
-FROM merge_source.artifacts sa
-JOIN merge_source.maps sm ON sm.id = sa.map_id
-JOIN main.maps mm ON mm.name = sm.name
-WHERE NOT EXISTS (
-  SELECT 1 FROM main.artifacts ma WHERE ma.map_id = mm.id AND ma.cache_key = sa.cache_key))sql";
+// What kMergeArtifacts will add: count and decoded payload bytes (run it
+// first). A source before schema 5 holds raw payloads only.
+#define AG_COUNT_NEW_ARTIFACTS(size)                   \
+  "SELECT count(*), coalesce(sum(" size                \
+  "), 0)"                                              \
+  " FROM merge_source.artifacts sa"                    \
+  " JOIN merge_source.maps sm ON sm.id = sa.map_id"    \
+  " JOIN main.maps mm ON mm.name = sm.name"            \
+  " WHERE NOT EXISTS (SELECT 1 FROM main.artifacts ma" \
+  "                   WHERE ma.map_id = mm.id AND ma.cache_key = sa.cache_key)"
+inline constexpr char kCountNewArtifacts[] = AG_COUNT_NEW_ARTIFACTS("sa.payload_size");
+inline constexpr char kCountNewArtifactsBeforeSchema5[] =
+    AG_COUNT_NEW_ARTIFACTS("length(sa.payload)");
+#undef AG_COUNT_NEW_ARTIFACTS
 
 // The first artifact that kMergeArtifacts would copy whose payload fails
 // ag_payload_problem (a function the store registers: NULL when the payload
-// matches its digest and is protobuf wire format, else the problem).
-inline constexpr char kFindDamagedMergePayload[] = R"sql(
-SELECT sm.name, sa.stage, sa.cache_key, ag_payload_problem(sa.payload, sa.payload_digest)
-FROM merge_source.artifacts sa
-JOIN merge_source.maps sm ON sm.id = sa.map_id
-WHERE NOT EXISTS (
-  SELECT 1 FROM main.maps mm JOIN main.artifacts ma ON ma.map_id = mm.id
-  WHERE mm.name = sm.name AND ma.cache_key = sa.cache_key)
-AND ag_payload_problem(sa.payload, sa.payload_digest) IS NOT NULL
-ORDER BY sa.id LIMIT 1)sql";
+// decodes, matches its digest and is protobuf wire format, else the problem).
+// Before schema 5 every payload is raw.
+#define AG_FIND_DAMAGED_MERGE_PAYLOAD(codec)                                  \
+  "SELECT sm.name, sa.stage, sa.cache_key,"                                   \
+  " ag_payload_problem(sa.payload, " codec                                    \
+  ", sa.payload_digest)"                                                      \
+  " FROM merge_source.artifacts sa"                                           \
+  " JOIN merge_source.maps sm ON sm.id = sa.map_id"                           \
+  " WHERE NOT EXISTS ("                                                       \
+  "   SELECT 1 FROM main.maps mm JOIN main.artifacts ma ON ma.map_id = mm.id" \
+  "   WHERE mm.name = sm.name AND ma.cache_key = sa.cache_key)"               \
+  " AND ag_payload_problem(sa.payload, " codec                                \
+  ", sa.payload_digest) IS NOT NULL"                                          \
+  " ORDER BY sa.id LIMIT 1"
+inline constexpr char kFindDamagedMergePayload[] =
+    AG_FIND_DAMAGED_MERGE_PAYLOAD("sa.payload_codec");
+inline constexpr char kFindDamagedMergePayloadBeforeSchema5[] = AG_FIND_DAMAGED_MERGE_PAYLOAD("0");
+#undef AG_FIND_DAMAGED_MERGE_PAYLOAD
 
-// Copies rows verbatim, creation time included; an existing key is kept. A
-// source older than schema 3 has no summary lines.
-#define AG_MERGE_ARTIFACTS(summary)                                                           \
+// Copies rows verbatim, creation time and payload codec included; an existing
+// key is kept. A source older than schema 3 has no summary lines, one older
+// than schema 5 only uncompressed payloads.
+#define AG_MERGE_ARTIFACTS(summary, codec, size)                                              \
   "INSERT INTO main.artifacts (map_id, stage, cache_key, input_keys, options, stage_version," \
-  " proto_type, payload, payload_digest, created_at, elapsed_ms, summary)"                    \
+  " proto_type, payload, payload_digest, created_at, elapsed_ms, summary, payload_codec,"     \
+  " payload_size)"                                                                            \
   " SELECT mm.id, sa.stage, sa.cache_key, sa.input_keys, sa.options, sa.stage_version,"       \
   " sa.proto_type, sa.payload, sa.payload_digest, sa.created_at, sa.elapsed_ms, " summary     \
+  ", " codec ", " size                                                                        \
   " FROM merge_source.artifacts sa"                                                           \
   " JOIN merge_source.maps sm ON sm.id = sa.map_id"                                           \
   " JOIN main.maps mm ON mm.name = sm.name"                                                   \
   " WHERE true"                                                                               \
   " ON CONFLICT (map_id, cache_key) DO NOTHING"
-inline constexpr char kMergeArtifacts[] = AG_MERGE_ARTIFACTS("sa.summary");
-inline constexpr char kMergeArtifactsBeforeSchema3[] = AG_MERGE_ARTIFACTS("''");
+inline constexpr char kMergeArtifacts[] =
+    AG_MERGE_ARTIFACTS("sa.summary", "sa.payload_codec", "sa.payload_size");
+inline constexpr char kMergeArtifactsBeforeSchema5[] =
+    AG_MERGE_ARTIFACTS("sa.summary", "0", "length(sa.payload)");
+inline constexpr char kMergeArtifactsBeforeSchema3[] =
+    AG_MERGE_ARTIFACTS("''", "0", "length(sa.payload)");
 #undef AG_MERGE_ARTIFACTS
 
 // The source's heads that win, as ids of this store: where this store has no

@@ -31,6 +31,8 @@ CREATE TABLE IF NOT EXISTS artifacts (
   created_at TEXT NOT NULL,
   elapsed_ms REAL NOT NULL,
   summary TEXT NOT NULL DEFAULT '',
+  payload_codec INTEGER NOT NULL DEFAULT 0,
+  payload_size INTEGER NOT NULL DEFAULT 0,
   UNIQUE (map_id, cache_key))
 )sql";
 
@@ -38,6 +40,15 @@ CREATE TABLE IF NOT EXISTS artifacts (
 // can print it without reading the payload.
 inline constexpr char kAddArtifactSummaryColumn[] =
     "ALTER TABLE artifacts ADD COLUMN summary TEXT NOT NULL DEFAULT ''";
+
+// Schema 5: how each payload is kept (PayloadCodec; older rows stay as they
+// were written, uncompressed) and the size of the decoded message, which
+// summaries report without reading the payload.
+inline constexpr char kAddPayloadCodecColumn[] =
+    "ALTER TABLE artifacts ADD COLUMN payload_codec INTEGER NOT NULL DEFAULT 0";
+inline constexpr char kAddPayloadSizeColumn[] =
+    "ALTER TABLE artifacts ADD COLUMN payload_size INTEGER NOT NULL DEFAULT 0";
+inline constexpr char kFillPayloadSizes[] = "UPDATE artifacts SET payload_size = length(payload)";
 
 // Listing a map's artifacts oldest first reads this index in order.
 inline constexpr char kCreateArtifactsByTimeIndex[] = R"sql(
@@ -78,43 +89,58 @@ inline constexpr char kReadMap[] =
     "SELECT id, name, source_path, source_digest FROM maps WHERE name = ?1";
 
 // Artifact reads share their first columns; see ReadArtifactRow. Each comes
-// in two forms: for schema 3 and later, and for older stores opened read-only,
-// whose artifacts have no summary column.
+// in forms for older stores opened read-only, whose artifacts have no summary
+// column (before schema 3) or no payload codec (before schema 5).
 #define AG_ARTIFACT_COLUMNS(summary)                                               \
   "a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type, " \
   "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL, " summary
 #define AG_JOIN_HEAD_OF_ARTIFACT \
   " LEFT JOIN heads h ON h.map_id = a.map_id AND h.stage = a.stage AND h.artifact_id = a.id"
-#define AG_READ_ARTIFACT(summary) \
-  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", a.payload FROM maps m"                         \
-                                         " JOIN artifacts a ON a.map_id = m.id"            \
-                                         AG_JOIN_HEAD_OF_ARTIFACT                          \
-                                         " WHERE m.name = ?1 AND a.cache_key = ?2"
-#define AG_READ_HEAD(summary) \
-  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", a.payload FROM maps m"                         \
-                                         " JOIN heads h ON h.map_id = m.id"                \
-                                         " JOIN artifacts a ON a.id = h.artifact_id"       \
+#define AG_READ_ARTIFACT(summary, codec)                                       \
+  "SELECT " AG_ARTIFACT_COLUMNS(                                               \
+      summary) ", a.payload, " codec                                           \
+               " FROM maps m"                                                  \
+               " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
+               " WHERE m.name = ?1 AND a.cache_key = ?2"
+#define AG_READ_HEAD(summary, codec)                                                 \
+  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", a.payload, " codec                       \
+                                         " FROM maps m"                              \
+                                         " JOIN heads h ON h.map_id = m.id"          \
+                                         " JOIN artifacts a ON a.id = h.artifact_id" \
                                          " WHERE m.name = ?1 AND h.stage = ?2"
-// length() reads the BLOB's size from its header without loading the payload.
-#define AG_READ_ARTIFACT_SUMMARIES(summary) \
-  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", length(a.payload) FROM maps m"                 \
-                                         " JOIN artifacts a ON a.map_id = m.id"            \
-                                         AG_JOIN_HEAD_OF_ARTIFACT                          \
-                                         " WHERE m.name = ?1 ORDER BY a.created_at, a.id"
-#define AG_READ_ARTIFACT_SUMMARY(summary) \
-  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", length(a.payload) FROM maps m"                 \
-                                         " JOIN artifacts a ON a.map_id = m.id"            \
-                                         AG_JOIN_HEAD_OF_ARTIFACT                          \
-                                         " WHERE m.name = ?1 AND a.cache_key = ?2"
+// Summaries carry the message's size: from payload_size (schema 5) or, in
+// older stores, length(), which reads a BLOB's size without loading it.
+#define AG_READ_ARTIFACT_SUMMARIES(summary, size)                              \
+  "SELECT " AG_ARTIFACT_COLUMNS(                                               \
+      summary) ", " size                                                       \
+               " FROM maps m"                                                  \
+               " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
+               " WHERE m.name = ?1 ORDER BY a.created_at, a.id"
+#define AG_READ_ARTIFACT_SUMMARY(summary, size)                                \
+  "SELECT " AG_ARTIFACT_COLUMNS(                                               \
+      summary) ", " size                                                       \
+               " FROM maps m"                                                  \
+               " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
+               " WHERE m.name = ?1 AND a.cache_key = ?2"
 
-inline constexpr char kReadArtifact[] = AG_READ_ARTIFACT("a.summary");
-inline constexpr char kReadHead[] = AG_READ_HEAD("a.summary");
-inline constexpr char kReadArtifactSummaries[] = AG_READ_ARTIFACT_SUMMARIES("a.summary");
-inline constexpr char kReadArtifactSummary[] = AG_READ_ARTIFACT_SUMMARY("a.summary");
-inline constexpr char kReadArtifactBeforeSchema3[] = AG_READ_ARTIFACT("''");
-inline constexpr char kReadHeadBeforeSchema3[] = AG_READ_HEAD("''");
-inline constexpr char kReadArtifactSummariesBeforeSchema3[] = AG_READ_ARTIFACT_SUMMARIES("''");
-inline constexpr char kReadArtifactSummaryBeforeSchema3[] = AG_READ_ARTIFACT_SUMMARY("''");
+inline constexpr char kReadArtifact[] = AG_READ_ARTIFACT("a.summary", "a.payload_codec");
+inline constexpr char kReadHead[] = AG_READ_HEAD("a.summary", "a.payload_codec");
+inline constexpr char kReadArtifactBeforeSchema5[] = AG_READ_ARTIFACT("a.summary", "0");
+inline constexpr char kReadHeadBeforeSchema5[] = AG_READ_HEAD("a.summary", "0");
+inline constexpr char kReadArtifactSummaries[] =
+    AG_READ_ARTIFACT_SUMMARIES("a.summary", "a.payload_size");
+inline constexpr char kReadArtifactSummary[] =
+    AG_READ_ARTIFACT_SUMMARY("a.summary", "a.payload_size");
+inline constexpr char kReadArtifactSummariesBeforeSchema5[] =
+    AG_READ_ARTIFACT_SUMMARIES("a.summary", "length(a.payload)");
+inline constexpr char kReadArtifactSummaryBeforeSchema5[] =
+    AG_READ_ARTIFACT_SUMMARY("a.summary", "length(a.payload)");
+inline constexpr char kReadArtifactBeforeSchema3[] = AG_READ_ARTIFACT("''", "0");
+inline constexpr char kReadHeadBeforeSchema3[] = AG_READ_HEAD("''", "0");
+inline constexpr char kReadArtifactSummariesBeforeSchema3[] =
+    AG_READ_ARTIFACT_SUMMARIES("''", "length(a.payload)");
+inline constexpr char kReadArtifactSummaryBeforeSchema3[] =
+    AG_READ_ARTIFACT_SUMMARY("''", "length(a.payload)");
 
 #undef AG_ARTIFACT_COLUMNS
 #undef AG_JOIN_HEAD_OF_ARTIFACT
@@ -138,14 +164,16 @@ ON CONFLICT (name) DO UPDATE SET
 // pointing at it stay valid.
 inline constexpr char kUpsertArtifact[] = R"sql(
 INSERT INTO artifacts (map_id, stage, cache_key, input_keys, options, stage_version, proto_type,
-                       payload, payload_digest, created_at, elapsed_ms, summary)
-VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?10, ?11)
+                       payload, payload_digest, created_at, elapsed_ms, summary, payload_codec, payload_size)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?10, ?11, ?12,
+        ?13)
 ON CONFLICT (map_id, cache_key) DO UPDATE SET
   stage = excluded.stage, input_keys = excluded.input_keys, options = excluded.options,
   stage_version = excluded.stage_version, proto_type = excluded.proto_type,
   payload = excluded.payload, payload_digest = excluded.payload_digest,
   created_at = excluded.created_at, elapsed_ms = excluded.elapsed_ms,
-  summary = excluded.summary)sql";
+  summary = excluded.summary, payload_codec = excluded.payload_codec,
+  payload_size = excluded.payload_size)sql";
 
 inline constexpr char kReadArtifactId[] =
     "SELECT id FROM artifacts WHERE map_id = ?1 AND cache_key = ?2";

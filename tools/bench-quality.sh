@@ -1,86 +1,104 @@
 #!/usr/bin/env bash
-# Segmentation quality benchmark. Runs the pipeline on the Area Graph paper's
-# 16 maps (with the defaults, which estimate W; with the paper's per-map W and
-# noise from data_setting; and with the fixed W = 1.25 m) and on MAORIS' 20
-# RobotMap maps (defaults), scores every result with ag-eval against the human
-# ground truth, and prints Markdown tables that also score the published
-# results shipped with the data. --build DIR uses the executables of an
-# existing build (DIR/bin) instead of building build/.
+# Segmentation quality benchmark over five sets of maps, every result scored
+# by ag-eval against human (or drawn) ground truth, MAORIS' per-zone MCC:
+# - areagraph/: the Area Graph paper's 16 maps, with the defaults, with the
+#   paper's per-map W and noise (data_setting) and with W = 1.25 m; the paper
+#   code's shipped results are scored alongside;
+# - RobotMap: MAORIS' 20 maps, with MAORIS', Bormann's Voronoi and DuDe's
+#   shipped results alongside;
+# - bormann/: Bormann's 20 maps in all four variants (plain, furnitures,
+#   trashbins, furnitures + trashbins: 79 maps), scored against the plain
+#   map's line ground truth (lab_b_scan_furnitures_trashbins was published at
+#   2/3 scale: it runs at 0.075 m/px and its result is scaled up to the GT);
+# - tuning and held-out: the two parts of ag-make-benchmark (generated floors
+#   with drawn ground truth). Constants are chosen on tuning; held-out is only
+#   reported.
+# Every set also runs with W = 1.25 m (the defaults otherwise) and with the
+# paper's behaviour (examples/options/paper.pbtxt); the generated floors also
+# with W from their true door and corridor widths (the paper's rule).
+# Prints a summary and per-map tables (Markdown) on stdout.
 #
-#   tools/bench-quality.sh [--data DIR] [--out DIR] [--build DIR]
+#   tools/bench-quality.sh [--data DIR] [--out DIR] [--build DIR] [--sets LIST]
+#                          [--options FILE] [--set KEY=VALUE]... [--jobs N]
+#
+# --sets: comma-separated subset of areagraph,robotmap,bormann,tuning,held-out
+# (default: all five). --options and --set change the "ours, defaults" runs
+# only (to try an option against the same tables).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 DATA=../shared/data
 OUT=out/bench-quality
 BUILD=
+SETS=areagraph,robotmap,bormann,tuning,held-out
+JOBS=2
+OURS=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --data) DATA=$2; shift 2 ;;
     --out) OUT=$2; shift 2 ;;
     --build) BUILD=$2; shift 2 ;;
-    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
+    --sets) SETS=$2; shift 2 ;;
+    --options) OURS+=(--options "$2"); shift 2 ;;
+    --set) OURS+=(--set "$2"); shift 2 ;;
+    --jobs) JOBS=$2; shift 2 ;;
+    -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
     *) echo "bench-quality: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
+for set in ${SETS//,/ }; do
+  case "$set" in areagraph|robotmap|bormann|tuning|held-out) ;;
+    *) echo "bench-quality: unknown set '$set' (areagraph, robotmap, bormann, tuning, held-out)" >&2
+       exit 2 ;;
+  esac
+done
+wanted() { [[ ",$SETS," == *",$1,"* ]]; }
 AG=$DATA/areagraph
 RM=$DATA/maoris/RobotMap
-[ -d "$AG/input" ] || { echo "bench-quality: no data at $AG/input (use --data)" >&2; exit 1; }
+BM=$DATA/bormann
+if wanted areagraph || wanted robotmap || wanted bormann; then
+  [ -d "$AG/input" ] || { echo "bench-quality: no data at $AG/input (use --data)" >&2; exit 1; }
+fi
 if [ -n "$BUILD" ]; then
   BIN=$BUILD/bin
-  [ -x "$BIN/ag-pipeline" ] || { echo "bench-quality: no ag-pipeline in $BIN" >&2; exit 1; }
+  [ -x "$BIN/ag-run" ] || { echo "bench-quality: no ag-run in $BIN" >&2; exit 1; }
 else
   tools/build.sh >/dev/null
   BIN=build/bin
 fi
+PAPER=(--options examples/options/paper.pbtxt)
+FIXED=(--set cut.room_width_m=1.25)
 rm -rf "$OUT"
-mkdir -p "$OUT"/{auto,strategy,fixed,maoris}
-STORE=$OUT/store.db
+mkdir -p "$OUT/manifests"
 
-# data_setting lists, per section, "<map>.png <value>" lines.
-setting() {  # setting SECTION_PREFIX MAP -> value or empty
-  awk -v section="$1" -v map="$2.png" '
-    /^[a-zA-Z].*:$/ || /^[a-z].*\):?$/ { in_section = index($0, section) == 1 }
-    in_section && $1 == map { print $2; exit }' "$AG/data_setting"
+# run MANIFEST OUTDIR [ag-run flags]: runs every map of the manifest and
+# exports its labels to OUTDIR/<name>.png (a failed map gets no file). Each
+# run has its own store, removed afterwards: a store of every run would grow
+# to gigabytes.
+run() {
+  local manifest=$1 outdir=$2
+  shift 2
+  mkdir -p "$outdir"
+  echo "bench-quality: $outdir" >&2
+  local store=$outdir.db
+  "$BIN/ag-run" --store "$store" --jobs "$JOBS" "$@" "$manifest" >"$outdir.log" 2>&1 ||
+    grep -i "failed" "$outdir.log" | grep -v " 0 failed" >&2 || true
+  tail -n +2 "$manifest" | cut -f2 | while read -r name; do
+    "$BIN/ag-export" --store "$store" --map "$name" --format labels --out "$outdir/$name.png" \
+      >/dev/null 2>&1 || echo "bench-quality: no result for $name" >&2
+  done
+  rm -f "$store" "$store-wal" "$store-shm"
 }
 
-run_map() {  # run_map IMAGE NAME OUTDIR [--set k=v]...
-  local image=$1 name=$2 outdir=$3
-  shift 3
-  "$BIN/ag-import" --store "$STORE" --name "$name" "$image" >/dev/null
-  if "$BIN/ag-pipeline" --store "$STORE" --map "$name" "$@" >"$outdir/$name.log" 2>&1; then
-    "$BIN/ag-export" --store "$STORE" --map "$name" --format labels --out "$outdir/$name.png" >/dev/null
-  else
-    echo "bench-quality: $name failed: $(tail -n 1 "$outdir/$name.log")" >&2
-  fi
-}
-
-for image in "$AG"/input/*.png; do
-  name=$(basename "$image" .png)
-  w=$(setting "w (m) according" "$name")
-  noise=$(setting "noise percentage" "$name")
-  noise_set=()
-  [ -n "$noise" ] && noise_set=(--set "clean.outlier_percent=$noise")
-  echo "areagraph/$name: W=${w:-1.25 (none given)} noise=${noise:-default}" >&2
-  run_map "$image" "$name" "$OUT/auto"
-  run_map "$image" "$name" "$OUT/strategy" --set "cut.room_width_m=${w:-1.25}" "${noise_set[@]}"
-  run_map "$image" "$name" "$OUT/fixed" --set cut.room_width_m=1.25 "${noise_set[@]}"
-done
-for image in "$RM"/Maps/*.png; do
-  name=$(basename "$image" .png)
-  echo "maoris/$name" >&2
-  run_map "$image" "$name" "$OUT/maoris"
-done
-
-# mcc_column DIR GT [ag-eval flags] -> "map<TAB>mcc" lines, plus "mean<TAB>x"
-mcc_column() {
+# mcc DIR GT [ag-eval flags] -> "map<TAB>mcc" lines, then "mean<TAB>x" and "median<TAB>x"
+mcc() {
   local dir=$1 gt=$2
   shift 2
   { "$BIN/ag-eval" --dataset --results "$dir" --gt "$gt" "$@" 2>/dev/null || true; } |
     awk -F'|' 'NR > 2 { gsub(/[ *]/, "", $2); gsub(/[ *]/, "", $3); print $2 "\t" $3 }'
 }
 
-# join_table TITLE LABEL:FILE... -> Markdown table with one MCC column per file
-join_table() {
+# table TITLE LABEL:FILE... -> Markdown table with one MCC column per file
+table() {
   local title=$1
   shift
   echo
@@ -102,28 +120,182 @@ join_table() {
   }
 }
 
+mean_of() { awk -F'\t' '$1 == "mean" { print $2 }' "$1" 2>/dev/null || true; }
+count_of() { grep -cvE '^(mean|median)	' "$1" 2>/dev/null || true; }
+
 T=$OUT/tables
 mkdir -p "$T"
-for variant in standard maoris; do
-  flags=(--mcc-variant "$variant")
-  mcc_column "$OUT/auto" "$AG/GT" "${flags[@]}" >"$T/ours-auto-$variant"
-  mcc_column "$OUT/strategy" "$AG/GT" "${flags[@]}" >"$T/ours-strategy-$variant"
-  mcc_column "$OUT/fixed" "$AG/GT" "${flags[@]}" >"$T/ours-fixed-$variant"
-  mcc_column "$AG/strategy_w" "$AG/GT" "${flags[@]}" --drop-result-px 100 >"$T/paper-strategy-$variant"
-  mcc_column "$AG/w=1_25" "$AG/GT" "${flags[@]}" --drop-result-px 100 >"$T/paper-fixed-$variant"
-  rm_flags=("${flags[@]}" --gt-style maoris-lines)
-  mcc_column "$OUT/maoris" "$RM/GT" "${rm_flags[@]}" >"$T/ours-maoris-$variant"
-  mcc_column "$RM/maoris/t03m01R40D50" "$RM/GT" "${rm_flags[@]}" >"$T/maoris-$variant"
-  mcc_column "$RM/Voronoi" "$RM/GT" "${rm_flags[@]}" >"$T/voronoi-$variant"
-  mcc_column "$RM/DuDe_results/Incremental" "$RM/GT" "${rm_flags[@]}" >"$T/dude-$variant"
+SUMMARY=$T/summary
+: >"$SUMMARY"
+# summary_row NAME FILE_DEFAULTS FILE_FIXED FILE_PAPER PUBLISHED_TEXT
+summary_row() {
+  printf '| %s | %s | **%s** | %s | %s | %s |\n' "$1" "$(count_of "$2")" "$(mean_of "$2")" \
+    "$(mean_of "$3")" "$(mean_of "$4")" "$5" >>"$SUMMARY"
+}
+
+# data_setting lists, per section, "<map>.png <value>" lines.
+setting() {  # setting SECTION_PREFIX MAP -> value or empty
+  awk -v section="$1" -v map="$2.png" '
+    /^[a-zA-Z].*:$/ || /^[a-z].*\):?$/ { in_section = index($0, section) == 1 }
+    in_section && $1 == map { print $2; exit }' "$AG/data_setting"
+}
+
+if wanted areagraph; then
+  M=$OUT/manifests/areagraph.tsv
+  S=$OUT/manifests/areagraph-strategy.tsv
+  printf 'path\tname\n' >"$M"
+  printf 'path\tname\tcut.room_width_m\tclean.outlier_percent\n' >"$S"
+  for image in "$AG"/input/*.png; do
+    name=$(basename "$image" .png)
+    w=$(setting "w (m) according" "$name")
+    noise=$(setting "noise percentage" "$name")
+    printf '%s\tag_%s\n' "$(realpath "$image")" "$name" >>"$M"
+    printf '%s\tag_%s\t%s\t%s\n' "$(realpath "$image")" "$name" "${w:-1.25}" "${noise:-1.5}" >>"$S"
+  done
+  run "$M" "$OUT/areagraph/auto" "${OURS[@]}"
+  run "$S" "$OUT/areagraph/strategy"
+  run "$S" "$OUT/areagraph/fixed" "${FIXED[@]}"
+  run "$M" "$OUT/areagraph/paper" "${PAPER[@]}"
+  for dir in "$OUT"/areagraph/*/; do  # results named like the GT
+    for f in "$dir"ag_*.png; do [ -e "$f" ] && mv "$f" "$dir$(basename "$f" | sed 's/^ag_//')"; done
+  done
+  for variant in standard maoris; do
+    flags=(--mcc-variant "$variant")
+    for run_name in auto strategy fixed paper; do
+      mcc "$OUT/areagraph/$run_name" "$AG/GT" "${flags[@]}" >"$T/ag-$run_name-$variant"
+    done
+    mcc "$AG/strategy_w" "$AG/GT" "${flags[@]}" --drop-result-px 100 >"$T/ag-code-strategy-$variant"
+    mcc "$AG/w=1_25" "$AG/GT" "${flags[@]}" --drop-result-px 100 >"$T/ag-code-fixed-$variant"
+  done
+  summary_row "areagraph/" "$T/ag-auto-maoris" "$T/ag-fixed-maoris" "$T/ag-paper-maoris" \
+    "paper code: strategy W $(mean_of "$T/ag-code-strategy-maoris"), W = 1.25 $(mean_of "$T/ag-code-fixed-maoris")"
+fi
+
+if wanted robotmap; then
+  M=$OUT/manifests/robotmap.tsv
+  printf 'path\tname\n' >"$M"
+  for image in "$RM"/Maps/*.png; do
+    printf '%s\trm_%s\n' "$(realpath "$image")" "$(basename "$image" .png)" >>"$M"
+  done
+  run "$M" "$OUT/robotmap/auto" "${OURS[@]}"
+  run "$M" "$OUT/robotmap/fixed" "${FIXED[@]}"
+  run "$M" "$OUT/robotmap/paper" "${PAPER[@]}"
+  for dir in "$OUT"/robotmap/*/; do
+    for f in "$dir"rm_*.png; do [ -e "$f" ] && mv "$f" "$dir$(basename "$f" | sed 's/^rm_//')"; done
+  done
+  for variant in standard maoris; do
+    flags=(--gt-style maoris-lines --mcc-variant "$variant")
+    for run_name in auto fixed paper; do
+      mcc "$OUT/robotmap/$run_name" "$RM/GT" "${flags[@]}" >"$T/rm-$run_name-$variant"
+    done
+    mcc "$RM/maoris/t03m01R40D50" "$RM/GT" "${flags[@]}" >"$T/rm-maoris-$variant"
+    mcc "$RM/Voronoi" "$RM/GT" "${flags[@]}" >"$T/rm-voronoi-$variant"
+    mcc "$RM/DuDe_results/Incremental" "$RM/GT" "${flags[@]}" >"$T/rm-dude-$variant"
+  done
+  summary_row "RobotMap" "$T/rm-auto-maoris" "$T/rm-fixed-maoris" "$T/rm-paper-maoris" \
+    "MAORIS $(mean_of "$T/rm-maoris-maoris"), DuDe $(mean_of "$T/rm-dude-maoris"), Voronoi $(mean_of "$T/rm-voronoi-maoris")"
+fi
+
+BM_VARIANTS=(plain furnitures trashbins furnitures_trashbins)
+if wanted bormann; then
+  M=$OUT/manifests/bormann.tsv
+  printf 'path\tname\timport.resolution_m\n' >"$M"
+  for gt in "$BM"/*_gt_segmentation.png; do
+    base=$(basename "$gt" _gt_segmentation.png)
+    for variant in "${BM_VARIANTS[@]}"; do
+      suffix=_$variant
+      [ "$variant" = plain ] && suffix=
+      image=$BM/$base$suffix.png
+      [ -e "$image" ] || continue
+      resolution=0.05
+      # Published at 649x243 instead of 974x365 like the other variants.
+      [ "$base$suffix" = lab_b_scan_furnitures_trashbins ] && resolution=0.075
+      printf '%s\tbm_%s__%s\t%s\n' "$(realpath "$image")" "$variant" "$base" "$resolution" >>"$M"
+    done
+  done
+  for run_name in auto fixed paper; do
+    case $run_name in auto) flags=("${OURS[@]}") ;; fixed) flags=("${FIXED[@]}") ;;
+      paper) flags=("${PAPER[@]}") ;; esac
+    run "$M" "$OUT/bormann/$run_name" "${flags[@]}"
+    for variant in "${BM_VARIANTS[@]}"; do
+      mkdir -p "$OUT/bormann/$run_name-$variant"
+      for f in "$OUT/bormann/$run_name"/bm_"$variant"__*.png; do
+        [ -e "$f" ] && mv "$f" "$OUT/bormann/$run_name-$variant/$(basename "$f" | sed 's/^bm_.*__//')"
+      done
+      mcc "$OUT/bormann/$run_name-$variant" "$BM" --gt-suffix _gt_segmentation --gt-style lines \
+        --mcc-variant maoris --scale-result >"$T/bm-$run_name-$variant"
+    done
+    # All 79 maps in one column: map names get the variant.
+    for variant in "${BM_VARIANTS[@]}"; do
+      grep -vE '^(mean|median)	' "$T/bm-$run_name-$variant" | sed "s/^/$variant: /"
+    done | awk -F'\t' '{ print; sum += $2; n++ } END { if (n) printf "mean\t%.3f\n", sum / n }' \
+      >"$T/bm-$run_name-all"
+  done
+  for variant in "${BM_VARIANTS[@]}"; do
+    summary_row "bormann/ ${variant//_/ + }" "$T/bm-auto-$variant" "$T/bm-fixed-$variant" \
+      "$T/bm-paper-$variant" "-"
+  done
+  summary_row "bormann/ all variants" "$T/bm-auto-all" "$T/bm-fixed-all" "$T/bm-paper-all" "-"
+fi
+
+for part in tuning held-out; do
+  wanted "$part" || continue
+  G=$OUT/generated/$part
+  "$BIN/ag-make-benchmark" --part "$part" "$G" >/dev/null
+  M=$OUT/manifests/$part.tsv
+  S=$OUT/manifests/$part-true-widths.tsv
+  printf 'path\tname\n' >"$M"
+  printf 'path\tname\tcut.room_width_m\n' >"$S"
+  # The paper's rule on the drawn widths: door + 0.1 m when the widest door
+  # is narrower than the corridor (or there is none), else corridor - 0.1 m.
+  tail -n +2 "$G/index.tsv" | while IFS=$'\t' read -r name seed layout res corridor narrow wide zones; do
+    printf '%s\t%s\n' "$(realpath "$G/maps/$name.png")" "$name" >>"$M"
+    w=$(awk -v d="$wide" -v c="$corridor" 'BEGIN { print (c == 0 || d < c) ? d + 0.1 : c - 0.1 }')
+    printf '%s\t%s\t%s\n' "$(realpath "$G/maps/$name.png")" "$name" "$w" >>"$S"
+  done
+  run "$M" "$OUT/$part/auto" "${OURS[@]}"
+  run "$M" "$OUT/$part/fixed" "${FIXED[@]}"
+  run "$S" "$OUT/$part/true" --set cut.room_width_auto=false
+  run "$M" "$OUT/$part/paper" "${PAPER[@]}"
+  for run_name in auto fixed true paper; do
+    mcc "$OUT/$part/$run_name" "$G/gt" --gt-style labels --mcc-variant maoris >"$T/$part-$run_name"
+  done
+  summary_row "generated $part" "$T/$part-auto" "$T/$part-fixed" "$T/$part-paper" \
+    "ours with W from the true widths $(mean_of "$T/$part-true")"
 done
 
 echo "## Segmentation quality, $(date -u +%Y-%m-%d)"
-for variant in standard maoris; do
-  join_table "areagraph/ (16 maps), MCC ($variant)" \
-    "ours, defaults (auto W):$T/ours-auto-$variant" "ours, strategy W:$T/ours-strategy-$variant" "ours, W = 1.25:$T/ours-fixed-$variant" \
-    "paper code, strategy W:$T/paper-strategy-$variant" "paper code, W = 1.25:$T/paper-fixed-$variant"
-  join_table "maoris/RobotMap (20 maps), MCC ($variant)" \
-    "ours, defaults:$T/ours-maoris-$variant" "MAORIS:$T/maoris-$variant" \
-    "Bormann Voronoi:$T/voronoi-$variant" "DuDe:$T/dude-$variant"
+echo
+echo "Mean MCC (ag-eval, maoris variant). Defaults: no per-map settings."
+echo
+echo "| set | maps | ours, defaults | ours, W = 1.25 m | ours, paper options | published / reference |"
+echo "|---|---|---|---|---|---|"
+cat "$SUMMARY"
+if wanted areagraph; then
+  for variant in maoris standard; do
+    table "areagraph/ (16 maps), MCC ($variant)" \
+      "ours, defaults (auto W):$T/ag-auto-$variant" "ours, strategy W:$T/ag-strategy-$variant" \
+      "ours, W = 1.25:$T/ag-fixed-$variant" "ours, paper options:$T/ag-paper-$variant" \
+      "paper code, strategy W:$T/ag-code-strategy-$variant" \
+      "paper code, W = 1.25:$T/ag-code-fixed-$variant"
+  done
+fi
+if wanted robotmap; then
+  for variant in maoris standard; do
+    table "maoris/RobotMap (20 maps), MCC ($variant)" \
+      "ours, defaults:$T/rm-auto-$variant" "ours, W = 1.25:$T/rm-fixed-$variant" \
+      "ours, paper options:$T/rm-paper-$variant" "MAORIS:$T/rm-maoris-$variant" \
+      "Bormann Voronoi:$T/rm-voronoi-$variant" "DuDe:$T/rm-dude-$variant"
+  done
+fi
+if wanted bormann; then
+  table "bormann/ (20 maps x 4 variants), MCC (maoris), ours with the defaults" \
+    "plain:$T/bm-auto-plain" "furnitures:$T/bm-auto-furnitures" \
+    "trashbins:$T/bm-auto-trashbins" "furnitures + trashbins:$T/bm-auto-furnitures_trashbins"
+fi
+for part in tuning held-out; do
+  wanted "$part" || continue
+  table "generated $part ($(count_of "$T/$part-auto") floors), MCC (maoris)" \
+    "ours, defaults:$T/$part-auto" "ours, W = 1.25:$T/$part-fixed" \
+    "ours, W from true widths:$T/$part-true" "ours, paper options:$T/$part-paper"
 done

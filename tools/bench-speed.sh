@@ -16,9 +16,19 @@
 #              and writes included,
 #   total/floor, and the peak resident memory of any process of the run.
 # The floor is the median of --floor-repeat runs inside one process.
+# More tables (tools/bench-speed-series.sh), each against the floor of the
+# same maps in the same run, with ag-run --jobs 1 from a new store (start-up
+# included, wall and CPU time): "runs", the 16 maps one by one; "scale",
+# lab_a tiled N x N into one connected map (--tiles, default 1 2 4 6 8);
+# "clutter", rooms of N x N px with 1 % random obstacle cells
+# (--clutter-sizes, default 500 1000 2000); "render",
+# ag-render of every stage of lab_a and of lab_a tiled 2 x 2 against that
+# stage's compute time. --tables picks which tables run (default all:
+# maps runs scale clutter render).
 #
 # Usage: tools/bench-speed.sh [--runs N] [--floor-repeat R] [--build-dir DIR]
-#                             [--no-build] [--data DIR]
+#                             [--no-build] [--data DIR] [--tables "LIST"]
+#                             [--tiles "N..."] [--clutter-sizes "N..."]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -27,6 +37,9 @@ floor_repeat=5
 build_dir=build
 build=1
 data=../shared/data/areagraph/input
+tables="maps runs scale clutter render"
+tiles="1 2 4 6 8"
+clutter_sizes="500 1000 2000"
 while [ $# -gt 0 ]; do
   case "$1" in
     --runs) runs="$2"; shift 2 ;;
@@ -34,7 +47,15 @@ while [ $# -gt 0 ]; do
     --build-dir) build_dir="$2"; shift 2 ;;
     --no-build) build=0; shift ;;
     --data) data="$2"; shift 2 ;;
-    -h|--help) sed -n '2,23p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --tables) tables="$2"; shift 2
+      for table in $tables; do
+        case "$table" in maps|runs|scale|clutter|render) ;; *)
+          echo "bench-speed: unknown table '$table' (maps, runs, scale, clutter, render)" >&2; exit 2 ;;
+        esac
+      done ;;
+    --tiles) tiles="$2"; shift 2 ;;
+    --clutter-sizes) clutter_sizes="$2"; shift 2 ;;
+    -h|--help) sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-speed: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -47,7 +68,7 @@ if [ "$build" = 1 ]; then
   tools/build.sh >&2
 fi
 bin="$build_dir/bin"
-for tool in ag-import ag-inspect ag-bench-floor; do
+for tool in ag-import ag-inspect ag-bench-floor ag-run ag-render ag-bench-tile; do
   if [ ! -x "$bin/$tool" ]; then
     echo "bench-speed: $bin/$tool is missing; build it first" >&2
     exit 1
@@ -105,115 +126,136 @@ median() {
   printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print v[int(NR / 2) + 1] }'
 }
 
-load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-echo "bench-speed: floor of ${#maps[@]} maps ($floor_repeat repeats)" >&2
-"$bin/ag-bench-floor" --repeat "$floor_repeat" "${maps[@]}" >"$work/floor.txt"
+# The per-map table of the 16 maps (ag-import, then ag-pipeline).
+maps_table() {
+  load_before=$(cut -d' ' -f1-3 /proc/loadavg)
+  echo "bench-speed: floor of ${#maps[@]} maps ($floor_repeat repeats)" >&2
+  "$bin/ag-bench-floor" --repeat "$floor_repeat" "${maps[@]}" >"$work/floor.txt"
 
-rows=()
-declare -A total
-declare -A measured
-for column in floor import "${stages[@]}" stages wall; do
-  total[$column]=0
-  measured[$column]=0
-done
-peak_rss=0
-for map in "${maps[@]}"; do
-  name=$(basename "${map%.*}")
-  size=$(awk -v m="$name" '$1 == m { print $2 }' "$work/floor.txt")
-  floor=$(awk -v m="$name" '$1 == m { print $NF }' "$work/floor.txt")
-  declare -A samples=()
-  rss_samples=()
-  for ((run = 1; run <= runs; ++run)); do
-    echo "bench-speed: $name run $run/$runs" >&2
-    store="$work/store.db"
-    rm -f "$store" "$store-wal" "$store-shm" "$work/rss"
-    : >"$work/log"
-    start=$(now_ms)
-    run_measured "$bin/ag-import" --store "$store" --name "$name" "$map"
-    imported=$(now_ms)
-    if [ "$mode" = pipeline ]; then
-      run_measured "$bin/ag-pipeline" --store "$store" --map "$name"
-    else
+  rows=()
+  declare -A total
+  declare -A measured
+  for column in floor import "${stages[@]}" stages wall; do
+    total[$column]=0
+    measured[$column]=0
+  done
+  peak_rss=0
+  for map in "${maps[@]}"; do
+    name=$(basename "${map%.*}")
+    size=$(awk -v m="$name" '$1 == m { print $2 }' "$work/floor.txt")
+    floor=$(awk -v m="$name" '$1 == m { print $NF }' "$work/floor.txt")
+    declare -A samples=()
+    rss_samples=()
+    for ((run = 1; run <= runs; ++run)); do
+      echo "bench-speed: $name run $run/$runs" >&2
+      store="$work/store.db"
+      rm -f "$store" "$store-wal" "$store-shm" "$work/rss"
+      : >"$work/log"
+      start=$(now_ms)
+      run_measured "$bin/ag-import" --store "$store" --name "$name" "$map"
+      imported=$(now_ms)
+      if [ "$mode" = pipeline ]; then
+        run_measured "$bin/ag-pipeline" --store "$store" --map "$name"
+      else
+        for stage in "${stages[@]}"; do
+          if [ -x "$bin/ag-$stage" ]; then
+            run_measured "$bin/ag-$stage" --store "$store" --map "$name"
+          fi
+        done
+      fi
+      finish=$(now_ms)
+      samples[import]+=" $((imported - start))"
+      samples[wall]+=" $((finish - start))"
+      # The compute time the store recorded for each stage's head artifact.
+      inspect=$("$bin/ag-inspect" --store "$store" --map "$name")
+      sum=$((imported - start))
       for stage in "${stages[@]}"; do
-        if [ -x "$bin/ag-$stage" ]; then
-          run_measured "$bin/ag-$stage" --store "$store" --map "$name"
+        ms=$(awk -v s="$stage" '$1 == s && $NF == "*" { print $4 }' <<<"$inspect")
+        if [ -n "$ms" ]; then
+          samples[$stage]+=" $ms"
+          sum=$(awk -v a="$sum" -v b="$ms" 'BEGIN { print a + b }')
         fi
       done
-    fi
-    finish=$(now_ms)
-    samples[import]+=" $((imported - start))"
-    samples[wall]+=" $((finish - start))"
-    # The compute time the store recorded for each stage's head artifact.
-    inspect=$("$bin/ag-inspect" --store "$store" --map "$name")
-    sum=$((imported - start))
-    for stage in "${stages[@]}"; do
-      ms=$(awk -v s="$stage" '$1 == s && $NF == "*" { print $4 }' <<<"$inspect")
-      if [ -n "$ms" ]; then
-        samples[$stage]+=" $ms"
-        sum=$(awk -v a="$sum" -v b="$ms" 'BEGIN { print a + b }')
+      samples[stages]+=" $sum"
+      if [ -f "$work/rss" ]; then
+        rss_samples+=("$(grep -E '^[0-9]+$' "$work/rss" | sort -n | tail -1)")
       fi
     done
-    samples[stages]+=" $sum"
-    if [ -f "$work/rss" ]; then
-      rss_samples+=("$(grep -E '^[0-9]+$' "$work/rss" | sort -n | tail -1)")
-    fi
-  done
 
-  row="| $name | $size | $(printf '%.1f' "$floor")"
-  total[floor]=$(awk -v a="${total[floor]}" -v b="$floor" 'BEGIN { print a + b }')
-  for column in import "${stages[@]}" stages wall; do
+    row="| $name | $size | $(printf '%.1f' "$floor")"
+    total[floor]=$(awk -v a="${total[floor]}" -v b="$floor" 'BEGIN { print a + b }')
+    for column in import "${stages[@]}" stages wall; do
+      # shellcheck disable=SC2086
+      value=$(median ${samples[$column]:-})
+      if [ -z "$value" ]; then
+        row+=" | –"
+        continue
+      fi
+      row+=" | $(printf '%.0f' "$value")"
+      measured[$column]=1
+      total[$column]=$(awk -v a="${total[$column]}" -v b="$value" 'BEGIN { print a + b }')
+    done
     # shellcheck disable=SC2086
-    value=$(median ${samples[$column]:-})
-    if [ -z "$value" ]; then
-      row+=" | –"
-      continue
+    wall=$(median ${samples[wall]})
+    row+=" | $(awk -v w="$wall" -v f="$floor" 'BEGIN { printf "%.1f", w / f }')"
+    rss=$(median "${rss_samples[@]}")
+    if [ -n "$rss" ]; then
+      row+=" | $(awk -v k="$rss" 'BEGIN { printf "%.0f", k / 1024 }') |"
+      if [ "$rss" -gt "$peak_rss" ]; then peak_rss=$rss; fi
+    else
+      row+=" | n/a |"
     fi
-    row+=" | $(printf '%.0f' "$value")"
-    measured[$column]=1
-    total[$column]=$(awk -v a="${total[$column]}" -v b="$value" 'BEGIN { print a + b }')
+    rows+=("$row")
+    unset samples
   done
-  # shellcheck disable=SC2086
-  wall=$(median ${samples[wall]})
-  row+=" | $(awk -v w="$wall" -v f="$floor" 'BEGIN { printf "%.1f", w / f }')"
-  rss=$(median "${rss_samples[@]}")
-  if [ -n "$rss" ]; then
-    row+=" | $(awk -v k="$rss" 'BEGIN { printf "%.0f", k / 1024 }') |"
-    if [ "$rss" -gt "$peak_rss" ]; then peak_rss=$rss; fi
-  else
-    row+=" | n/a |"
-  fi
-  rows+=("$row")
-  unset samples
-done
-load_after=$(cut -d' ' -f1-3 /proc/loadavg)
+  load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 
-cpu=$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)
-echo "Speed of the Area Graph pipeline, $(date -u +%Y-%m-%d), $(nproc) cores ($cpu)."
-echo "Load average before/after: $load_before / $load_after. Medians of $runs runs per map,"
-echo "each from an empty store; floor: median of $floor_repeat. Times in ms."
-echo
-echo -n "| map | size | floor | import | clean | voronoi | prune | cut | merge | stages | total"
-echo " | total/floor | peak RSS MB |"
-echo "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
-printf '%s\n' "${rows[@]}"
-totals="| **all ${#maps[@]} maps** | | $(printf '%.1f' "${total[floor]}")"
-for column in import "${stages[@]}" stages wall; do
-  if [ "${measured[$column]}" = 1 ]; then
-    totals+=" | $(printf '%.0f' "${total[$column]}")"
+  cpu=$(awk -F': ' '/model name/ { print $2; exit }' /proc/cpuinfo)
+  echo "Speed of the Area Graph pipeline, $(date -u +%Y-%m-%d), $(nproc) cores ($cpu)."
+  echo "Load average before/after: $load_before / $load_after. Medians of $runs runs per map,"
+  echo "each from an empty store; floor: median of $floor_repeat. Times in ms."
+  echo
+  echo -n "| map | size | floor | import | clean | voronoi | prune | cut | merge | stages | total"
+  echo " | total/floor | peak RSS MB |"
+  echo "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+  printf '%s\n' "${rows[@]}"
+  totals="| **all ${#maps[@]} maps** | | $(printf '%.1f' "${total[floor]}")"
+  for column in import "${stages[@]}" stages wall; do
+    if [ "${measured[$column]}" = 1 ]; then
+      totals+=" | $(printf '%.0f' "${total[$column]}")"
+    else
+      totals+=" | –"
+    fi
+  done
+  totals+=" | $(awk -v w="${total[wall]}" -v f="${total[floor]}" 'BEGIN { printf "%.1f", w / f }')"
+  if [ "$peak_rss" -gt 0 ]; then
+    totals+=" | $(awk -v k="$peak_rss" 'BEGIN { printf "%.0f", k / 1024 }') (max) |"
   else
-    totals+=" | –"
+    totals+=" | n/a |"
   fi
+  echo "$totals"
+  echo
+  echo "import: wall time of the ag-import process; clean..merge: compute time inside each stage"
+  echo "(the store's elapsed_ms); stages: their sum; total: wall time of all processes of a run"
+  echo "(start-up and store writes included); floor: ag-bench-floor (decode + Delaunay of the"
+  echo "obstacle sites) in one process."
+  echo
+}
+
+# shellcheck source=tools/bench-speed-series.sh
+source tools/bench-speed-series.sh
+series_load=$(cut -d' ' -f1-3 /proc/loadavg)
+for table in $tables; do
+  case "$table" in
+    maps) maps_table ;;
+    runs) runs_table ;;
+    scale) scale_table ;;
+    clutter) clutter_table ;;
+    render) render_table ;;
+    *) echo "bench-speed: unknown table '$table'" >&2; exit 2 ;;
+  esac
 done
-totals+=" | $(awk -v w="${total[wall]}" -v f="${total[floor]}" 'BEGIN { printf "%.1f", w / f }')"
-if [ "$peak_rss" -gt 0 ]; then
-  totals+=" | $(awk -v k="$peak_rss" 'BEGIN { printf "%.0f", k / 1024 }') (max) |"
-else
-  totals+=" | n/a |"
-fi
-echo "$totals"
-echo
-echo "import: wall time of the ag-import process; clean..merge: compute time inside each stage"
-echo "(the store's elapsed_ms); stages: their sum; total: wall time of all processes of a run"
-echo "(start-up and store writes included); floor: ag-bench-floor (decode + Delaunay of the"
-echo "obstacle sites) in one process."
+echo "Run of $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores; load average at the start /"
+echo "end: $series_load / $(cut -d' ' -f1-3 /proc/loadavg). Medians of $runs runs; floor: median of"
+echo "$floor_repeat in one process (ag-bench-floor); CPU = user + system of all processes."
 if [ ${#notes[@]} -gt 0 ]; then printf 'Note: %s\n' "${notes[@]}" | awk '!seen[$0]++'; fi

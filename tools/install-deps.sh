@@ -8,13 +8,13 @@ PACKAGES=(
   libcgal-dev libeigen3-dev
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libprotobuf-dev protobuf-compiler
-  libsqlite3-dev sqlite3 libzstd-dev
+  libsqlite3-dev sqlite3 libzstd-dev libpng-dev
   libssl-dev libyaml-cpp-dev libcli11-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
-  python3-protobuf python3-networkx  # examples/python and its test
+  python3-protobuf python3-networkx python3-zstandard  # examples/python and its test
   # Test dependencies: ag-export's files opened with the users' own tools
   # (tests/tools/export/ecosystem_test.cc): GDAL's ogr2ogr/ogrinfo, shapely.
   gdal-bin python3-shapely

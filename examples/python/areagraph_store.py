@@ -3,10 +3,13 @@
 The protobuf message classes are built from the descriptor set that the build writes
 (build/python/areagraph_descriptors.pb: every .proto of the project, with imports), so
 they live under our own names (areagraph.proto.AreaGraph, ...) and nothing needs to be
-generated or installed. Needs Debian's python3-protobuf; to_networkx needs python3-networkx.
+generated or installed. Needs Debian's python3-protobuf and python3-zstandard (payloads
+are zstd frames since store schema 5); to_networkx needs python3-networkx.
 """
 
 import sqlite3
+
+import zstandard
 
 from google.protobuf import descriptor_pb2, message_factory
 
@@ -30,6 +33,9 @@ class AreagraphStore:
 
     def __init__(self, store_path, descriptor_path):
         self._db = sqlite3.connect(f"file:{store_path}?mode=ro", uri=True)
+        (schema,) = self._db.execute("PRAGMA user_version").fetchone()
+        # Schema 5 added artifacts.payload_codec (0 raw, 1 zstd); older rows are raw.
+        self._codec_column = "a.payload_codec" if schema >= 5 else "0"
         self._classes = load_message_classes(descriptor_path)
 
     def maps(self):
@@ -39,12 +45,16 @@ class AreagraphStore:
     def head(self, map_name, stage):
         """The head artifact of (map, stage), parsed; MissingArtifact when there is none."""
         row = self._db.execute(
-            "SELECT a.proto_type, a.payload FROM maps m"
+            f"SELECT a.proto_type, a.payload, {self._codec_column} FROM maps m"
             " JOIN heads h ON h.map_id = m.id JOIN artifacts a ON a.id = h.artifact_id"
             " WHERE m.name = ? AND h.stage = ?", (map_name, stage)).fetchone()
         if row is None:
             raise MissingArtifact(f"map '{map_name}' has no {stage} artifact")
-        proto_type, payload = row
+        proto_type, payload, codec = row
+        if codec == 1:
+            payload = zstandard.ZstdDecompressor().decompress(payload)
+        elif codec != 0:
+            raise ValueError(f"map '{map_name}', {stage}: unknown payload codec {codec}")
         message = self._classes[proto_type]()
         message.ParseFromString(payload)
         return message

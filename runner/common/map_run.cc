@@ -58,6 +58,7 @@ void RunStages(ArtifactStore& store, const std::string& map_name, const MapImpor
                const PipelineObserver& observer) {
   const std::vector<StageInfo> stages = PipelineStages();
   StageInfo first = settings.first;
+  ArtifactMemo memo;
   if (SameStage(first, kImportStage)) {
     const StageInputs inputs = InStep(map_name, kImportStage.name, import.read_inputs);
     const bool whole_pipeline = SameStage(settings.last, stages.back());
@@ -68,12 +69,12 @@ void RunStages(ArtifactStore& store, const std::string& map_name, const MapImpor
     }
     if (observer.on_start) observer.on_start(kImportStage);
     const StageRun run = RunCachedStage(store, map_name, StageOf(kImportStage), options, inputs,
-                                        import.decode, settings.force);
+                                        import.decode, settings.force, &memo);
     if (observer.on_done) observer.on_done(kImportStage, run);
     if (SameStage(settings.last, kImportStage)) return;
     first = stages.front();
   }
-  RunMapPipeline(store, map_name, options, settings.force, observer, first, settings.last);
+  RunMapPipeline(store, map_name, options, settings.force, observer, first, settings.last, &memo);
 }
 
 }  // namespace

@@ -93,6 +93,7 @@ void CheckCutOptions(const proto::CutOptions& options) {
           "cut.corridor_width_m = " + FormatNumber(corridor) +
               " m gives no room width (W = corridor - 0.1 m)");
   RequirePositive(options.room_width_m(), "cut.room_width_m", "metres");
+  RequireNotNegative(options.room_island_max_m(), "cut.room_island_max_m", "metres");
 }
 
 void CheckMergeOptions(const proto::MergeOptions& options) {

@@ -1,9 +1,10 @@
 #include "stages/common/png_file.h"
 
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the IMWRITE_ constants only
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/image_codecs.h"
 #include "stages/common/output_file.h"
 
 namespace areagraph {
@@ -12,7 +13,7 @@ std::string EncodePng(const cv::Mat& image, int compression) {
   std::vector<uchar> bytes;
   bool encoded = false;
   try {
-    encoded = cv::imencode(".png", image, bytes, {cv::IMWRITE_PNG_COMPRESSION, compression});
+    encoded = EncodeImage(".png", image, &bytes, {cv::IMWRITE_PNG_COMPRESSION, compression});
   } catch (const cv::Exception& error) {
     throw Error("cannot encode the picture as PNG: " + error.msg);
   }

@@ -37,9 +37,9 @@ std::string SummaryOfStored(ArtifactStore& store, const std::string& map_name,
 StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const google::protobuf::Message& options,
                          const StageInputs& inputs, const std::function<MessagePtr()>& compute,
-                         StageRun run) {
+                         StageRun run, ArtifactMemo* memo) {
   const auto start = std::chrono::steady_clock::now();
-  const MessagePtr result = compute();
+  MessagePtr result = compute();
   run.elapsed_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   run.summary = stage.summarize(*result);
@@ -61,6 +61,7 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.source_digest = inputs.source_digest;
   artifact.version = inputs.version;
   store.WriteArtifact(artifact);
+  if (memo != nullptr) memo->Keep(stage.info.name, run.cache_key, std::move(result));
   return run;
 }
 
@@ -69,7 +70,7 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
 StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
                         const StageDefinition& stage, const proto::PipelineOptions& options,
                         const StageInputs& inputs, const std::function<MessagePtr()>& compute,
-                        bool force) {
+                        bool force, ArtifactMemo* memo) {
   const google::protobuf::Message& stage_options = stage.options_of(options);
   StageRun run;
   run.cache_key =
@@ -86,7 +87,7 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
         return run;
       }
     }
-    return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run);
+    return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run, memo);
   } catch (const MapStepError&) {
     throw;
   } catch (const std::bad_alloc&) {
@@ -98,7 +99,7 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
 
 StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const proto::PipelineOptions& options,
-                         bool force) {
+                         bool force, ArtifactMemo* memo) {
   StageInputs inputs = HeadInputs(store, map_name, stage);
   if (stage.reads_previous_version()) {
     inputs.version = PreviousVersionOf(store, map_name, stage, options, inputs.digests);
@@ -109,6 +110,12 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
         std::vector<MessagePtr> artifacts;
         std::vector<const google::protobuf::Message*> views;
         for (size_t i = 0; i < stage.inputs.size(); ++i) {
+          const google::protobuf::Message* kept =
+              memo != nullptr ? memo->Find(stage.inputs[i].name, inputs.digests[i]) : nullptr;
+          if (kept != nullptr) {
+            views.push_back(kept);
+            continue;
+          }
           artifacts.emplace_back(StageOf(stage.inputs[i]).prototype->New());
           ParseArtifact(store, map_name, inputs.digests[i], artifacts.back().get());
           views.push_back(artifacts.back().get());
@@ -121,7 +128,7 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
         }
         return stage.compute_next_version(views, previous.get(), *inputs.version, options);
       },
-      force);
+      force, memo);
 }
 
 StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name,

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "proto/pipeline_options.pb.h"
+#include "stages/common/artifact_memo.h"
 #include "stages/common/stage_info.h"
 #include "stages/common/stage_table.h"
 #include "store/artifact_store.h"
@@ -17,18 +18,20 @@ namespace areagraph {
 // with the same cache key, in which case that artifact just becomes the head
 // again. `force` recomputes regardless. The result is written, with its
 // summary line, in one transaction. Whatever `compute` or the write throws is
-// rethrown as a MapStepError naming the map and the stage.
+// rethrown as a MapStepError naming the map and the stage. A computed
+// artifact is also kept in `memo` when there is one.
 StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
                         const StageDefinition& stage, const proto::PipelineOptions& options,
                         const StageInputs& inputs, const std::function<MessagePtr()>& compute,
-                        bool force = false);
+                        bool force = false, ArtifactMemo* memo = nullptr);
 
 // Runs a stage that reads artifacts (not import) through the cache on the
 // current heads of its inputs: HeadInputs, then RunCachedStage with the
-// table's compute function on the inputs read by key.
+// table's compute function on the inputs read by key, or taken from `memo`
+// when they were computed in this process (and kept there).
 StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const proto::PipelineOptions& options,
-                         bool force = false);
+                         bool force = false, ArtifactMemo* memo = nullptr);
 
 // The head keys of `stage`'s inputs. Throws MapStepError naming the
 // executable to run first when one is missing.

@@ -24,14 +24,16 @@ inline constexpr StageInfo kVoronoiStage{"voronoi", 2};  // 2: edges in face ord
 // prune 2: every part of the map above prune.min_component_m2 is kept, not only the biggest.
 inline constexpr StageInfo kPruneStage{"prune", 2};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
-// cut 3: room detection inside every part's boundary; parts carried to merge.
-inline constexpr StageInfo kCutStage{"cut", 3};
+// cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
+// cut 4: room detection inside every part's boundary; parts carried to merge.
+inline constexpr StageInfo kCutStage{"cut", 4};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
 // merge 5: polygons are a simplified planar partition, passages lie on shared borders.
-// merge 6: areas in every part's boundary, components and dropped parts counted (issue 13).
-inline constexpr StageInfo kMergeStage{"merge", 6};
+// merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
+// merge 7: areas in every part's boundary, components and dropped parts counted (issue 13).
+inline constexpr StageInfo kMergeStage{"merge", 7};
 inline constexpr StageInfo kMatchStage{"match", 1};
 
 // Whether two StageInfos name the same stage.

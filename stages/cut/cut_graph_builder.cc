@@ -9,8 +9,8 @@
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/edge_track.h"
 #include "stages/cut/room_width.h"
+#include "stages/cut/structure_sites.h"
 #include "stages/geometry/cell_grid.h"
-#include "stages/geometry/obstacle_sites.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/site_alpha_shape.h"
 
@@ -77,7 +77,9 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
   };
-  SiteAlphaShape shape(ObstacleSites(map.cells(), grid.width(), grid.height()), room_width_px / 2);
+  SiteAlphaShape shape(StructureSites(map.cells(), grid.width(), grid.height(), grid.resolution_m(),
+                                      options.room_island_max_m()),
+                       room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);
   auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };

@@ -1,8 +1,5 @@
 #include "stages/geometry/site_alpha_shape.h"
 
-#include <CGAL/Alpha_shape_2.h>
-#include <CGAL/Alpha_shape_face_base_2.h>
-#include <CGAL/Alpha_shape_vertex_base_2.h>
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
@@ -13,23 +10,24 @@
 namespace areagraph {
 namespace {
 
-// Per-face labels. `walked` marks boundary edges already put in a ring.
+// Per-face labels. `interior` and `in_complex` (bit i: edge i) are the face's
+// and its edges' places in the alpha complex; `walked` marks boundary edges
+// already put in a ring.
 struct FaceInfo {
   int filled_region = -1;
   int room = -1;
   bool outside = false;
+  bool interior = false;
+  unsigned char in_complex = 0;
   unsigned char walked = 0;
 };
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using VertexBase = CGAL::Alpha_shape_vertex_base_2<Kernel>;
-using FaceBase =
-    CGAL::Alpha_shape_face_base_2<Kernel,
-                                  CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
+using FaceBase = CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>;
+using Tds =
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<Kernel>, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
-using AlphaShape = CGAL::Alpha_shape_2<Delaunay>;
-using Face = AlphaShape::Face_handle;
+using Face = Delaunay::Face_handle;
 
 Eigen::Vector2d ToVector(const Kernel::Point_2& point) { return {point.x(), point.y()}; }
 
@@ -65,14 +63,62 @@ proto::Ring ToProtoRing(const PointList& points) {
 }  // namespace
 
 struct SiteAlphaShape::Impl {
-  AlphaShape shape;
+  Delaunay shape;
   Face hint;
   int enclosed_regions = 0;  // found by FindEnclosedRegions
 
+  // Inserts the points as Alpha_shape_2's constructor does (one range
+  // insert), so the triangulation of co-circular grid points is the same.
   explicit Impl(const std::vector<Kernel::Point_2>& points, double alpha)
-      : shape(points.begin(), points.end(), alpha, AlphaShape::GENERAL) {}
+      : shape(points.begin(), points.end()) {
+    if (HasFaces()) Classify(alpha);
+  }
 
   bool HasFaces() const { return shape.dimension() == 2; }
+
+  // The alpha complex for one alpha, with Alpha_shape_2's rules and functors
+  // in GENERAL mode (as ComputeAlphaComplex), without its alpha spectrum
+  // (maps of every face and edge by the alpha at which they appear), which
+  // cost most of ag-prune and ag-cut: a finite face is interior when its
+  // squared circumradius is <= alpha; an edge is in the complex when a face
+  // beside it is interior, or when it is finite, its squared half-length is
+  // <= alpha and no opposite vertex lies strictly inside its diametral
+  // circle (singular).
+  void Classify(double alpha) {
+    const auto& traits = shape.geom_traits();
+    const auto squared_radius = traits.compute_squared_radius_2_object();
+    const auto side_of_bounded_circle = traits.side_of_bounded_circle_2_object();
+    for (Face face : shape.all_face_handles()) {
+      face->info().interior = !shape.is_infinite(face) &&
+                              squared_radius(face->vertex(0)->point(), face->vertex(1)->point(),
+                                             face->vertex(2)->point()) <= alpha;
+    }
+    auto attached = [&](const Face& face, int i) {
+      return !shape.is_infinite(face) &&
+             side_of_bounded_circle(face->vertex(Delaunay::cw(i))->point(),
+                                    face->vertex(Delaunay::ccw(i))->point(),
+                                    face->vertex(i)->point()) == CGAL::ON_BOUNDED_SIDE;
+    };
+    for (Face face : shape.all_face_handles()) {
+      unsigned char bits = 0;
+      for (int i = 0; i < 3; ++i) {
+        const Face neighbor = face->neighbor(i);
+        bool in_complex = face->info().interior || neighbor->info().interior;
+        if (!in_complex && !shape.is_infinite(face, i)) {
+          in_complex = squared_radius(face->vertex(Delaunay::ccw(i))->point(),
+                                      face->vertex(Delaunay::cw(i))->point()) <= alpha &&
+                       !attached(face, i) && !attached(neighbor, neighbor->index(face));
+        }
+        if (in_complex) bits |= static_cast<unsigned char>(1 << i);
+      }
+      face->info().in_complex = bits;
+    }
+  }
+
+  // Alpha_shape_2::classify(face) != EXTERIOR.
+  static bool Interior(const Face& face) { return face->info().interior; }
+  // Alpha_shape_2::classify(face, i) != EXTERIOR.
+  static bool InComplex(const Face& face, int i) { return face->info().in_complex & (1 << i); }
 
   // Labels edge-connected groups of `member` faces, crossing only edges that
   // `connects` accepts; `label` selects the field to write. Returns the count.
@@ -185,7 +231,7 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
     queue.pop_front();
     for (int i = 0; i < 3; ++i) {
       const Face next = face->neighbor(i);
-      if (next->info().outside || impl.shape.classify(face, i) != AlphaShape::EXTERIOR) continue;
+      if (next->info().outside || Impl::InComplex(face, i)) continue;
       next->info().outside = true;
       queue.push_back(next);
     }
@@ -220,11 +266,8 @@ int SiteAlphaShape::DetectRooms(
   Impl& impl = *impl_;
   if (!impl.HasFaces()) return 0;
   return impl.LabelRegions(
-      [&](const Face& face) {
-        return impl.shape.classify(face) == AlphaShape::EXTERIOR && inside_boundary(Centroid(face));
-      },
-      [&](const Face& face, int i) { return impl.shape.classify(face, i) == AlphaShape::EXTERIOR; },
-      &FaceInfo::room);
+      [&](const Face& face) { return !Impl::Interior(face) && inside_boundary(Centroid(face)); },
+      [&](const Face& face, int i) { return !Impl::InComplex(face, i); }, &FaceInfo::room);
 }
 
 std::vector<double> SiteAlphaShape::RoomAreas() {

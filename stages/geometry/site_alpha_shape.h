@@ -11,7 +11,8 @@
 namespace areagraph {
 
 // The Delaunay triangulation of obstacle sites, classified by one alpha
-// (CGAL Alpha_shape_2, GENERAL mode; alpha = squared radius). Used twice:
+// (the alpha complex of CGAL Alpha_shape_2 in GENERAL mode for that one
+// alpha, alpha = squared radius, classified directly). Used twice:
 // ag-prune takes the regions the shape encloses as the map's boundaries,
 // ag-cut takes the empty regions (faces wider than the alpha disk) as rooms.
 class SiteAlphaShape {

@@ -1,11 +1,13 @@
 #include "stages/import/grey_image.h"
 
 #include <mutex>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the IMREAD_ flags
 #include <sstream>
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/image_codecs.h"
+#include "stages/import/png_grey_decoder.h"
 #include "stages/import/png_header.h"
 #include "stages/import/stderr_capture.h"
 
@@ -39,10 +41,9 @@ cv::Mat DecodeQuietly(const std::string& bytes, const std::string& path) {
   static std::mutex decode_mutex;
   std::lock_guard<std::mutex> lock(decode_mutex);
   ScopedStderrCapture capture;
-  const std::vector<uchar> buffer(bytes.begin(), bytes.end());
   cv::Mat image;
   try {
-    image = cv::imdecode(buffer, cv::IMREAD_GRAYSCALE | cv::IMREAD_ANYDEPTH);
+    image = DecodeImage(bytes, cv::IMREAD_GRAYSCALE | cv::IMREAD_ANYDEPTH);
   } catch (const cv::Exception& e) {
     throw InputError("cannot decode image '" + path + "': OpenCV check failed: " + e.err);
   }
@@ -62,11 +63,12 @@ cv::Mat DecodeGreyImage(const std::string& bytes, const std::string& path, int64
     const PngHeader header = ReadPngHeader(bytes, path);
     CheckPixelCount(header.width, header.height, max_pixels, path);
     if (!header.complete) throw InputError("PNG file '" + path + "' is truncated");
-  } else if (!cv::haveImageReader(path)) {
+  } else if (!HaveImageReader(path)) {
     throw InputError("'" + path + "' is not an image that OpenCV can read (PNG, PGM, BMP, ...)");
   }
 
-  cv::Mat image = DecodeQuietly(bytes, path);
+  cv::Mat image;
+  if (!DecodeCommonPngToGrey(bytes, &image)) image = DecodeQuietly(bytes, path);
   CheckPixelCount(image.cols, image.rows, max_pixels, path);
   switch (image.depth()) {
     case CV_8U:

@@ -15,6 +15,7 @@
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
+#include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
 
 namespace areagraph {
@@ -75,6 +76,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
 
   AreaPlan plan = AssignAreas(graph);
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
+  if (options.join_rooms_without_doors()) JoinRoomsWithoutDoors(graph, grid.resolution_m(), &plan);
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
   std::vector<std::vector<PointList>> paths(plan.areas.size());

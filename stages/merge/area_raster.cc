@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <opencv2/imgproc.hpp>
 
 #include "stages/geometry/polygon_raster.h"
@@ -17,24 +16,35 @@ constexpr int kDy[4] = {0, 0, 1, -1};
 // growing; cleared to 0 afterwards.
 constexpr int kUnreached = -1;
 
-// Breadth-first growth of all labels (kUnreached too) into unlabelled domain cells.
+// The 4-neighbours of cell `index` (row-major in a cols x rows grid) in the
+// order +x, -x, +y, -y, or -1 where one would leave the grid.
+inline void Neighbours(int index, int cols, int rows, int neighbours[4]) {
+  const int c = index % cols, r = index / cols;
+  neighbours[0] = c + 1 < cols ? index + 1 : -1;
+  neighbours[1] = c > 0 ? index - 1 : -1;
+  neighbours[2] = r + 1 < rows ? index + cols : -1;
+  neighbours[3] = r > 0 ? index - cols : -1;
+}
+
+// Breadth-first growth of all labels (kUnreached too) into unlabelled domain
+// cells, seeded in row-major order: a flat queue of cell indices over the
+// continuous matrices, linear in the grid.
 void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
-  std::deque<cv::Point> queue;
-  for (int r = 0; r < labels->rows; ++r) {
-    const int* row = labels->ptr<int>(r);
-    for (int c = 0; c < labels->cols; ++c) {
-      if (row[c] != 0) queue.emplace_back(c, r);
-    }
+  CV_Assert(domain.isContinuous() && labels->isContinuous());
+  const int cols = labels->cols, rows = labels->rows;
+  const uint8_t* inside = domain.ptr<uint8_t>();
+  int* label = labels->ptr<int>();
+  std::vector<int> queue;
+  for (int i = 0; i < cols * rows; ++i) {
+    if (label[i] != 0) queue.push_back(i);
   }
-  while (!queue.empty()) {
-    const cv::Point p = queue.front();
-    queue.pop_front();
-    const int label = labels->at<int>(p);
-    for (int k = 0; k < 4; ++k) {
-      const cv::Point q(p.x + kDx[k], p.y + kDy[k]);
-      if (q.x < 0 || q.y < 0 || q.x >= labels->cols || q.y >= labels->rows) continue;
-      if (!domain.at<uint8_t>(q) || labels->at<int>(q) != 0) continue;
-      labels->at<int>(q) = label;
+  int neighbours[4];
+  for (size_t head = 0; head < queue.size(); ++head) {
+    const int p = queue[head];
+    Neighbours(p, cols, rows, neighbours);
+    for (int q : neighbours) {
+      if (q < 0 || !inside[q] || label[q] != 0) continue;
+      label[q] = label[p];
       queue.push_back(q);
     }
   }
@@ -43,32 +53,34 @@ void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
 // Clears every cell that is not in the main 4-connected piece of its label:
 // the piece with most of the area's path cells (`on_path`), else the biggest.
 void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
-  cv::Mat piece(labels->size(), CV_32S, cv::Scalar(-1));
+  CV_Assert(on_path.isContinuous() && labels->isContinuous());
+  const int cols = labels->cols, rows = labels->rows;
+  const uint8_t* path = on_path.ptr<uint8_t>();
+  const int* label = labels->ptr<int>();
+  cv::Mat piece_mat(labels->size(), CV_32S, cv::Scalar(-1));
+  int* piece = piece_mat.ptr<int>();
   std::vector<int64_t> piece_size;
   std::vector<int64_t> piece_path;
   std::vector<int> piece_label;
-  for (int r = 0; r < labels->rows; ++r) {
-    for (int c = 0; c < labels->cols; ++c) {
-      const int label = labels->at<int>(r, c);
-      if (label <= 0 || piece.at<int>(r, c) >= 0) continue;
-      const int id = static_cast<int>(piece_size.size());
-      piece_size.push_back(0);
-      piece_path.push_back(0);
-      piece_label.push_back(label);
-      std::deque<cv::Point> queue{cv::Point(c, r)};
-      piece.at<int>(r, c) = id;
-      while (!queue.empty()) {
-        const cv::Point p = queue.front();
-        queue.pop_front();
-        ++piece_size[id];
-        piece_path[id] += on_path.at<uint8_t>(p) != 0;
-        for (int k = 0; k < 4; ++k) {
-          const cv::Point q(p.x + kDx[k], p.y + kDy[k]);
-          if (q.x < 0 || q.y < 0 || q.x >= labels->cols || q.y >= labels->rows) continue;
-          if (labels->at<int>(q) != label || piece.at<int>(q) >= 0) continue;
-          piece.at<int>(q) = id;
-          queue.push_back(q);
-        }
+  std::vector<int> queue;
+  int neighbours[4];
+  for (int start = 0; start < cols * rows; ++start) {
+    if (label[start] <= 0 || piece[start] >= 0) continue;
+    const int id = static_cast<int>(piece_size.size());
+    piece_size.push_back(0);
+    piece_path.push_back(0);
+    piece_label.push_back(label[start]);
+    queue.assign(1, start);
+    piece[start] = id;
+    for (size_t head = 0; head < queue.size(); ++head) {
+      const int p = queue[head];
+      ++piece_size[id];
+      piece_path[id] += path[p] != 0;
+      Neighbours(p, cols, rows, neighbours);
+      for (int q : neighbours) {
+        if (q < 0 || label[q] != label[start] || piece[q] >= 0) continue;
+        piece[q] = id;
+        queue.push_back(q);
       }
     }
   }
@@ -80,11 +92,9 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
       best = static_cast<int>(id);
     }
   }
-  for (int r = 0; r < labels->rows; ++r) {
-    for (int c = 0; c < labels->cols; ++c) {
-      int& label = labels->at<int>(r, c);
-      if (label > 0 && biggest[label] != piece.at<int>(r, c)) label = 0;
-    }
+  int* writable = labels->ptr<int>();
+  for (int i = 0; i < cols * rows; ++i) {
+    if (writable[i] > 0 && biggest[writable[i]] != piece[i]) writable[i] = 0;
   }
 }
 

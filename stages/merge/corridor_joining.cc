@@ -19,6 +19,17 @@ bool IsUniform(const proto::GraphEdge& edge) {
   return smallest >= kUniformClearanceShare * median;
 }
 
+// The bit of corridor in front of a door that AssignAreas gave to a corridor
+// piece: it leads to a passage point and lies within the free disks of its
+// ends. Its narrowing is the door's, not one along the corridor.
+bool IsDoorwayStub(const proto::CutGraph& graph, const proto::GraphEdge& edge) {
+  const proto::GraphVertex& source = graph.vertices(edge.source());
+  const proto::GraphVertex& target = graph.vertices(edge.target());
+  const bool to_door =
+      source.kind() == proto::VERTEX_PASSAGE || target.kind() == proto::VERTEX_PASSAGE;
+  return to_door && edge.length_px() <= source.clearance_px() + target.clearance_px();
+}
+
 }  // namespace
 
 void JoinCorridorPieces(const proto::CutGraph& graph, AreaPlan* plan) {
@@ -26,7 +37,10 @@ void JoinCorridorPieces(const proto::CutGraph& graph, AreaPlan* plan) {
   std::vector<bool> joinable(area_count);
   for (int k = 0; k < area_count; ++k) {
     joinable[k] = plan->areas[k].kind != proto::AREA_ROOM;
-    for (int e : plan->areas[k].edges) joinable[k] = joinable[k] && IsUniform(graph.edges(e));
+    for (int e : plan->areas[k].edges) {
+      const proto::GraphEdge& edge = graph.edges(e);
+      joinable[k] = joinable[k] && (IsUniform(edge) || IsDoorwayStub(graph, edge));
+    }
   }
   std::vector<std::set<int>> joinable_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {

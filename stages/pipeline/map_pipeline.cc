@@ -14,6 +14,17 @@ size_t StepIndex(const std::vector<StageInfo>& stages, const StageInfo& stage) {
   throw OptionsError("'" + std::string(stage.name) + "' is not a stage after import");
 }
 
+// True when one of stages[from, end) reads `input`'s artifact.
+bool ReadLater(const std::vector<StageInfo>& stages, size_t from, size_t end,
+               const StageInfo& input) {
+  for (size_t i = from; i < end; ++i) {
+    for (const StageInfo& read : StageOf(stages[i]).inputs) {
+      if (SameStage(read, input)) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
@@ -40,13 +51,19 @@ std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
 
 void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
                     const proto::PipelineOptions& options, bool force,
-                    const PipelineObserver& observer, const StageInfo& first,
-                    const StageInfo& last) {
+                    const PipelineObserver& observer, const StageInfo& first, const StageInfo& last,
+                    ArtifactMemo* memo) {
+  ArtifactMemo own_memo;
+  if (memo == nullptr) memo = &own_memo;
   const std::vector<StageInfo> stages = PipelineStages();
-  for (size_t i = StepIndex(stages, first); i <= StepIndex(stages, last); ++i) {
+  const size_t end = StepIndex(stages, last) + 1;
+  for (size_t i = StepIndex(stages, first); i < end; ++i) {
     if (observer.on_start) observer.on_start(stages[i]);
-    const StageRun run = RunStageOnHeads(store, map_name, StageOf(stages[i]), options, force);
+    const StageRun run = RunStageOnHeads(store, map_name, StageOf(stages[i]), options, force, memo);
     if (observer.on_done) observer.on_done(stages[i], run);
+    for (const StageDefinition& stage : StageTable()) {
+      if (!ReadLater(stages, i + 1, end, stage.info)) memo->Forget(stage.info.name);
+    }
   }
 }
 

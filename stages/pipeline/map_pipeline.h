@@ -33,11 +33,14 @@ struct PipelineObserver {
 // Runs the stages from `first` to `last` (both after import, `first` not
 // after `last`) for one imported map, each through RunStageOnHeads. Throws
 // what the stages throw (MapStepError), and InputError naming the stage to
-// run first when an input is missing.
+// run first when an input is missing. Each computed artifact goes to the
+// next stages in memory (through `memo`, which may already hold the import's
+// artifact, or a memo of its own when null) and is dropped once no later
+// stage reads it.
 void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
                     const proto::PipelineOptions& options, bool force,
-                    const PipelineObserver& observer, const StageInfo& first,
-                    const StageInfo& last);
+                    const PipelineObserver& observer, const StageInfo& first, const StageInfo& last,
+                    ArtifactMemo* memo = nullptr);
 
 // Runs every stage after import; `on_stage` hears about each as soon as it is
 // done.

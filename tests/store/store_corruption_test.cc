@@ -43,11 +43,18 @@ class StoreCorruptionTest : public ::testing::Test {
 TEST_F(StoreCorruptionTest, ChangedPayloadByteIsReportedNotReturned) {
   testing::FlipPayloadByte(path_, kKey, 5000);
   std::unique_ptr<ArtifactStore> store = Reopen();
-  const std::string expected = "artifact 0123456789ab of map 'lab_a' in store '" + path_ +
-                               "' is corrupt (payload digest mismatch); run ag-clean --store " +
-                               path_ + " --map lab_a --force to recompute it";
-  EXPECT_EQ(ReadError([&] { store->ReadArtifact("lab_a", kKey); }), expected);
-  EXPECT_EQ(ReadError([&] { store->ReadHead("lab_a", "clean"); }), expected);
+  // The flip breaks the zstd frame or changes the bytes it decodes to; the
+  // digest catches the latter.
+  const std::string prefix =
+      "artifact 0123456789ab of map 'lab_a' in store '" + path_ + "' is corrupt (";
+  const std::string suffix =
+      "); run ag-clean --store " + path_ + " --map lab_a --force to recompute it";
+  for (const std::string& error : {ReadError([&] { store->ReadArtifact("lab_a", kKey); }),
+                                   ReadError([&] { store->ReadHead("lab_a", "clean"); })}) {
+    EXPECT_EQ(error.rfind(prefix, 0), 0u) << error;
+    ASSERT_GE(error.size(), suffix.size()) << error;
+    EXPECT_EQ(error.substr(error.size() - suffix.size()), suffix) << error;
+  }
   // Listing needs no payload and still works, so the user can see what is there.
   ASSERT_EQ(store->ReadArtifactSummaries("lab_a").size(), 1u);
   EXPECT_EQ(store->ReadArtifactSummaries("lab_a")[0].payload_bytes, 10000);

@@ -51,7 +51,9 @@ TEST(VerifyTest, CorruptedPayloadIsReported) {
   EXPECT_EQ(problems[0].map_name, "lab");
   EXPECT_EQ(problems[0].stage, "clean");
   EXPECT_EQ(problems[0].cache_key, "k-c");
-  EXPECT_NE(problems[0].problem.find("digest mismatch"), std::string::npos) << problems[0].problem;
+  EXPECT_NE(problems[0].problem.find("(corrupt); recompute it with ag-clean --force"),
+            std::string::npos)
+      << problems[0].problem;
 }
 
 TEST(VerifyTest, PayloadThatIsNotProtobufIsReported) {

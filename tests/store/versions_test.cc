@@ -112,12 +112,13 @@ TEST(VersionsTest, MergeCopiesTheHistoryByMapAndKey) {
   EXPECT_EQ(QueryColumn(dir.File("out.db"), "SELECT count(*) FROM versions"), Keys{"4"});
 }
 
-// A store of schema 3: this build's schema without the versions table.
+// A store of schema 3: schema 4 without the versions table.
 void CreateVersion3Store(const std::string& path) {
   {
     std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
     store->WriteArtifact(Artifact("m", "merge", "g1", {}, "graph 1"));
   }
+  testing::RewriteAsSchema4(path);
   testing::ExecSql(path, "DROP TABLE versions; PRAGMA user_version = 3");
 }
 

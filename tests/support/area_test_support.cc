@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 #include <set>
 
+#include "stages/clean/clean_stage.h"
 #include "stages/common/map_frame.h"
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/geometry/edge_polygon.h"
@@ -157,6 +158,15 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) 
   }
   map.set_cells(cells);
   return map;
+}
+
+proto::CleanedMap CleanDrawnMap(const cv::Mat& grey, const proto::CleanOptions& options,
+                                double resolution_m) {
+  const proto::CleanedMap drawn = CleanedMapFromImage(grey, resolution_m);
+  proto::GridMap grid;
+  *grid.mutable_frame() = drawn.frame();
+  grid.set_cells(drawn.cells());
+  return CleanGridMap(grid, options);
 }
 
 AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOptions& options) {

@@ -2,9 +2,12 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
+
+#include "store/payload_codec.h"
 
 namespace areagraph::testing {
 namespace {
@@ -56,6 +59,36 @@ std::vector<std::string> HeadDigests(const std::string& path) {
                      " ORDER BY 1");
 }
 
+void RewriteAsSchema4(const std::string& path) {
+  const std::vector<std::string> ids = QueryColumn(path, "SELECT id FROM artifacts");
+  Connection db = OpenRaw(path);
+  for (const std::string& id : ids) {
+    sqlite3_stmt* raw = nullptr;
+    Check(db.get(),
+          sqlite3_prepare_v2(db.get(), "SELECT payload, payload_codec FROM artifacts WHERE id = ?1",
+                             -1, &raw, nullptr));
+    std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)> read(raw, &sqlite3_finalize);
+    sqlite3_bind_int64(raw, 1, std::stoll(id));
+    Check(db.get(), sqlite3_step(raw));
+    const char* bytes = static_cast<const char*>(sqlite3_column_blob(raw, 0));
+    const std::string payload =
+        DecodePayload(std::string_view(bytes != nullptr ? bytes : "", sqlite3_column_bytes(raw, 0)),
+                      sqlite3_column_int64(raw, 1));
+    read.reset();
+    Check(db.get(), sqlite3_prepare_v2(db.get(), "UPDATE artifacts SET payload = ?1 WHERE id = ?2",
+                                       -1, &raw, nullptr));
+    std::unique_ptr<sqlite3_stmt, decltype(&sqlite3_finalize)> write(raw, &sqlite3_finalize);
+    sqlite3_bind_blob(raw, 1, payload.data(), static_cast<int>(payload.size()), SQLITE_TRANSIENT);
+    sqlite3_bind_int64(raw, 2, std::stoll(id));
+    Check(db.get(), sqlite3_step(raw));
+  }
+  Check(db.get(), sqlite3_exec(db.get(),
+                               "ALTER TABLE artifacts DROP COLUMN payload_codec;"
+                               "ALTER TABLE artifacts DROP COLUMN payload_size;"
+                               "PRAGMA user_version = 4;",
+                               nullptr, nullptr, nullptr));
+}
+
 void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset) {
   const std::vector<std::string> ids =
       QueryColumn(path, "SELECT id FROM artifacts WHERE cache_key = '" + cache_key + "'");
@@ -65,6 +98,7 @@ void FlipPayloadByte(const std::string& path, const std::string& cache_key, int 
   Check(db.get(), sqlite3_blob_open(db.get(), "main", "artifacts", "payload", std::stoll(ids[0]),
                                     /*flags=*/1, &blob));
   char byte = 0;
+  offset %= std::max(1, sqlite3_blob_bytes(blob));  // payloads are stored compressed
   Check(db.get(), sqlite3_blob_read(blob, &byte, 1, offset));
   byte = static_cast<char>(byte ^ 0x5a);
   Check(db.get(), sqlite3_blob_write(blob, &byte, 1, offset));

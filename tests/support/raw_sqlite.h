@@ -21,8 +21,13 @@ std::vector<std::string> QueryColumn(const std::string& path, const std::string&
 // same results give the same list.
 std::vector<std::string> HeadDigests(const std::string& path);
 
-// Overwrites one byte of artifacts.payload in place (the BLOB API, no SQL
-// rewrite), keeping the stored digest.
+// Turns a store of this build into one as schema 4 wrote it: raw payloads,
+// no payload_codec or payload_size column.
+void RewriteAsSchema4(const std::string& path);
+
+// Overwrites one byte of the stored artifacts.payload in place (the BLOB API,
+// no SQL rewrite), keeping the stored digest; `offset` is taken modulo the
+// stored (compressed) size.
 void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset);
 
 // Flips (XOR 0xff) `bytes` bytes at the start of the root page of table or

@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
       "chromatic colour; white, black and grey = none)."};
   std::string result_path, results_dir, gt_path, suffix, gt_suffix, style_name = "auto";
   std::string variant_name = "standard", offset_text;
-  bool dataset = false, json = false, maoris_grey = false;
+  bool dataset = false, json = false, maoris_grey = false, scale_result = false;
   int drop_result_px = 0;
   std::string gt_picture;
   int picture_width = 0;
@@ -69,6 +69,9 @@ int main(int argc, char** argv) {
   app.add_option("--drop-result-px", drop_result_px,
                  "drop result segments of at most this many pixels before scoring")
       ->capture_default_str();
+  app.add_flag("--scale-result", scale_result,
+               "scale a segmentation of another size but the same shape as its GT (aspect "
+               "ratios within 1 %) to the GT's size instead of looking for it inside the GT");
   app.add_flag("--json", json, "print JSON instead of text or Markdown");
   app.add_option("--gt-picture", gt_picture,
                  "instead of scoring: draw the --gt file's segments as ag-eval reads them into "
@@ -84,6 +87,7 @@ int main(int argc, char** argv) {
     if (!offset_text.empty()) options.gt_offset = ParseOffset(offset_text);
     if (drop_result_px < 0) throw areagraph::OptionsError("--drop-result-px must be >= 0");
     options.drop_result_segments_px = drop_result_px;
+    options.scale_result_to_gt = scale_result;
 
     if (!gt_picture.empty()) {
       if (picture_width < 0) throw areagraph::OptionsError("--picture-width must be positive");

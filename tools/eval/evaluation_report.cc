@@ -54,6 +54,7 @@ eval::MapScores MapMessage(const MapEvaluation& map) {
     scores.set_gt_offset_x(map.gt_offset.x);
     scores.set_gt_offset_y(map.gt_offset.y);
   }
+  if (map.result_scaled) scores.set_result_scaled(true);
   return scores;
 }
 
@@ -82,6 +83,7 @@ std::string FormatMapText(const MapEvaluation& map) {
                      std::to_string(map.result_segments) + "/" + std::to_string(map.gt_segments) +
                      "\ngt style " + GroundTruthStyleName(map.gt_style) + "\n";
   if (map.gt_cropped) text += "gt offset " + OffsetText(map) + "\n";
+  if (map.result_scaled) text += "result scaled to the gt's size\n";
   return text;
 }
 

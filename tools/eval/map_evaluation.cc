@@ -1,7 +1,9 @@
 #include "tools/eval/map_evaluation.h"
 
+#include <cmath>
 #include <filesystem>
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "tools/eval/ground_truth_alignment.h"
 #include "tools/eval/label_image.h"
@@ -9,6 +11,15 @@
 #include "tools/eval/zone_overlaps.h"
 
 namespace areagraph {
+namespace {
+
+bool SameShape(const cv::Size& a, const cv::Size& b) {
+  const double ratio_a = static_cast<double>(a.width) / a.height;
+  const double ratio_b = static_cast<double>(b.width) / b.height;
+  return std::abs(ratio_a / ratio_b - 1) <= 0.01;
+}
+
+}  // namespace
 
 MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_labels,
                                MccVariant variant) {
@@ -44,6 +55,13 @@ MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_
   }
   GroundTruthStyle style = options.gt_style;
   cv::Mat gt_labels = ReadGroundTruthLabels(gt_path, &style);
+  const bool scale = options.scale_result_to_gt && gt_labels.size() != result_labels.size() &&
+                     SameShape(gt_labels.size(), result_labels.size());
+  if (scale) {
+    cv::Mat scaled;
+    cv::resize(result_labels, scaled, gt_labels.size(), 0, 0, cv::INTER_NEAREST);
+    result_labels = scaled;
+  }
   cv::Point offset;
   const bool crop = gt_labels.size() != result_labels.size() || options.gt_offset.has_value();
   if (crop) {
@@ -58,6 +76,7 @@ MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_
   evaluation.gt_style = style;
   evaluation.gt_cropped = crop;
   evaluation.gt_offset = offset;
+  evaluation.result_scaled = scale;
   return evaluation;
 }
 

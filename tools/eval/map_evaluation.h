@@ -22,6 +22,11 @@ struct EvaluationOptions {
   // Result segments of at most this many pixels are dropped before scoring
   // (0 keeps all).
   int drop_result_segments_px = 0;
+  // A segmentation of another size than its GT but of the same shape (aspect
+  // ratios within 1 %) is scaled to the GT's size (nearest neighbour) instead
+  // of being looked for inside it: for maps published downscaled, such as
+  // bormann/lab_b_scan_furnitures_trashbins.
+  bool scale_result_to_gt = false;
 };
 
 // The scores of one segmentation against its ground truth.
@@ -34,6 +39,8 @@ struct MapEvaluation {
   // segmentation's top-left pixel in the GT.
   bool gt_cropped = false;
   cv::Point gt_offset;
+  // Whether the segmentation was scaled to the GT's size.
+  bool result_scaled = false;
   double mcc = 0;
   double precision = 0;
   double recall = 0;

@@ -29,16 +29,15 @@ cv::Rect OuterPixels(const FloorPlan& plan, const RectM& rect) {
                      plan.WallStart(plan.ToPixels(rect.y + rect.height)) + t);
 }
 
-// The free inside of the rectangle, in pixels.
-cv::Rect InnerPixels(const FloorPlan& plan, const RectM& rect) {
+}  // namespace
+
+cv::Rect InnerCells(const FloorPlan& plan, const RectM& rect) {
   const int t = plan.wall_thickness_px();
   return ClippedRect(plan.image(), plan.WallStart(plan.ToPixels(rect.x)) + t,
                      plan.WallStart(plan.ToPixels(rect.y)) + t,
                      plan.WallStart(plan.ToPixels(rect.x + rect.width)),
                      plan.WallStart(plan.ToPixels(rect.y + rect.height)));
 }
-
-}  // namespace
 
 FloorPlan::FloorPlan(double width_m, double height_m, double resolution_m, double wall_thickness_m)
     : resolution_m_(resolution_m),
@@ -58,7 +57,7 @@ void DrawRegion(FloorPlan& plan, const std::vector<RectM>& parts) {
   cv::Mat inner = cv::Mat::zeros(image.size(), CV_8UC1);
   for (const RectM& part : parts) {
     outer(OuterPixels(plan, part)).setTo(1);
-    inner(InnerPixels(plan, part)).setTo(1);
+    inner(InnerCells(plan, part)).setTo(1);
   }
   image.setTo(kWallGrey, outer);
   image.setTo(kFreeGrey, inner);
@@ -131,8 +130,8 @@ void DrawMaze(FloorPlan& plan, const RectM& area, int cols, int rows, uint32_t s
     visited[next.y * cols + next.x] = true;
     stack.push_back(next);
     // The union of both cells' insides plus the wall between them.
-    const cv::Rect a = InnerPixels(plan, cell_rect(cell.x, cell.y));
-    const cv::Rect b = InnerPixels(plan, cell_rect(next.x, next.y));
+    const cv::Rect a = InnerCells(plan, cell_rect(cell.x, cell.y));
+    const cv::Rect b = InnerCells(plan, cell_rect(next.x, next.y));
     const int x0 = std::min(a.x, b.x), y0 = std::min(a.y, b.y);
     const int x1 = std::max(a.br().x, b.br().x), y1 = std::max(a.br().y, b.br().y);
     plan.image()(ClippedRect(plan.image(), x0, y0, x1, y1)).setTo(kFreeGrey);

@@ -51,6 +51,10 @@ class FloorPlan {
   cv::Mat image_;
 };
 
+// The free cells inside a rectangle's walls (clipped to the image): what a
+// room drawn with DrawRoom leaves free, and what its ground truth covers.
+cv::Rect InnerCells(const FloorPlan& plan, const RectM& rect);
+
 // A free room with walls around it. Draw rooms before the doors that open
 // them: a room's walls cover whatever lies under them.
 void DrawRoom(FloorPlan& plan, const RectM& room);

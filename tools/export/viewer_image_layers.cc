@@ -1,9 +1,10 @@
 // The viewer's raster layers: the grid map and what cleaning changed.
 #include <opencv2/core.hpp>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the IMWRITE_ flags
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/image_codecs.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
 
@@ -18,9 +19,9 @@ std::string EncodePng(const cv::Mat& image) {
   std::vector<uchar> bytes;
   // Run-length deflate: as small as level 9 on maps (few grey values in long
   // runs) at half its time.
-  if (!cv::imencode(".png", image, bytes,
-                    {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
-                     cv::IMWRITE_PNG_STRATEGY_RLE})) {
+  if (!EncodeImage(".png", image, &bytes,
+                   {cv::IMWRITE_PNG_COMPRESSION, 9, cv::IMWRITE_PNG_STRATEGY,
+                    cv::IMWRITE_PNG_STRATEGY_RLE})) {
     throw Error("cannot encode a viewer layer as PNG");
   }
   return std::string(bytes.begin(), bytes.end());

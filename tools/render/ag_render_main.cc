@@ -1,6 +1,7 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <opencv2/imgproc.hpp>
 

@@ -1,10 +1,11 @@
 #include "tools/report/map_thumbnail.h"
 
 #include <algorithm>
-#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgcodecs.hpp>  // the IMWRITE_ flags
 #include <opencv2/imgproc.hpp>
 
 #include "proto/artifacts.pb.h"
+#include "stages/common/image_codecs.h"
 #include "stages/common/stage.h"
 #include "tools/render/artifact_drawing.h"
 
@@ -57,7 +58,7 @@ std::string MapThumbnailPng(const std::vector<ArtifactRecord>& run, int max_side
   cv::Mat small;
   cv::resize(full, small, cv::Size(), factor, factor, cv::INTER_AREA);
   std::vector<uchar> bytes;
-  if (!cv::imencode(".png", small, bytes, {cv::IMWRITE_PNG_COMPRESSION, 9})) return "";
+  if (!EncodeImage(".png", small, &bytes, {cv::IMWRITE_PNG_COMPRESSION, 9})) return "";
   return std::string(bytes.begin(), bytes.end());
 }
 

@@ -1,6 +1,7 @@
 // ag-prune, ag-cut, ag-merge and ag-pipeline run as a user would.
 #include <gtest/gtest.h>
 
+#include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
@@ -87,6 +88,23 @@ TEST_F(AreaToolsTest, ChangingCutOptionsRerunsCutAndMergeOnly) {
   ASSERT_EQ(cut.exit_code, 0) << cut.err;
   EXPECT_NE(cut.out.find("W = 1.00 m"), std::string::npos) << cut.out;
   EXPECT_NE(cut.out.find("(cached)"), std::string::npos) << cut.out;
+}
+
+// ag-pipeline hands each artifact to the next stage in memory; the stage
+// tools read it back from the store. Both must write the same bytes.
+TEST_F(AreaToolsTest, PipelineInOneProcessWritesWhatTheStageToolsWrite) {
+  const std::string one_by_one = dir_.File("one_by_one.db");
+  ASSERT_EQ(RunTool("ag-import", {"--store", one_by_one, dir_.File("two_rooms.png")}).exit_code, 0);
+  const std::vector<std::string> tools = {"ag-clean", "ag-voronoi", "ag-prune",
+                                          "ag-cut",   "ag-merge",   "ag-match"};
+  for (const std::string& tool : tools) {
+    const CommandResult stage = RunTool(tool, {"--store", one_by_one, "--map", "two_rooms"});
+    ASSERT_EQ(stage.exit_code, 0) << tool << ": " << stage.err;
+  }
+  ASSERT_EQ(Run("ag-pipeline").exit_code, 0);
+  const std::vector<std::string> digests = HeadDigests(store_);
+  EXPECT_EQ(digests.size(), tools.size() + 1);  // and the import
+  EXPECT_EQ(digests, HeadDigests(one_by_one));
 }
 
 TEST_F(AreaToolsTest, BadOptionsGiveOneLine) {

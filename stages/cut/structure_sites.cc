@@ -1,0 +1,160 @@
+#include "stages/cut/structure_sites.h"
+
+#include <algorithm>
+#include <cmath>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+#include "stages/geometry/cell_states.h"
+#include "stages/geometry/obstacle_sites.h"
+#include "stages/geometry/wall_thickness.h"
+
+namespace areagraph {
+namespace {
+
+// What decides whether an obstacle region is an island.
+struct RegionShape {
+  bool on_border = false;
+  // Twice the depth of the deepest cell (px).
+  float thickness = 0;
+  int64_t cells = 0;
+  // The smallest rotated rectangle around its site cells: centre, unit
+  // vector along its longer side, and its sides (px).
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  Eigen::Vector2d axis = Eigen::Vector2d::UnitX();
+  float length = 0;
+  float width = 0;
+};
+
+// The map's non-free cells, their 8-connected regions and their depth.
+struct ObstacleRegions {
+  int width = 0;
+  int height = 0;
+  cv::Mat labels;
+  cv::Mat depth;
+  std::vector<RegionShape> shapes;
+
+  bool NonFree(const Eigen::Vector2d& p) const {
+    const int c = static_cast<int>(std::floor(p.x())), r = static_cast<int>(std::floor(p.y()));
+    return c >= 0 && r >= 0 && c < width && r < height && labels.at<int>(r, c) != 0;
+  }
+  int LabelAt(const Eigen::Vector2d& p) const {
+    const int c = static_cast<int>(std::floor(p.x())), r = static_cast<int>(std::floor(p.y()));
+    return c >= 0 && r >= 0 && c < width && r < height ? labels.at<int>(r, c) : 0;
+  }
+};
+
+ObstacleRegions FindRegions(const std::string& cells, int width, int height,
+                            const std::vector<int>& site_cells) {
+  ObstacleRegions regions;
+  regions.width = width;
+  regions.height = height;
+  cv::Mat obstacle(height, width, CV_8U);
+  for (int index = 0; index < width * height; ++index) {
+    obstacle.data[index] = cells[index] == proto::CELL_FREE ? 0 : 255;
+  }
+  const int count = cv::connectedComponents(obstacle, regions.labels, 8, CV_32S);
+  regions.depth = ObstacleDepth(cells, width, height);
+  std::vector<RegionShape>& shapes = regions.shapes;
+  shapes.resize(count);
+  const int* label = regions.labels.ptr<int>();
+  const float* depth_of = regions.depth.ptr<float>();
+  for (int index = 0; index < width * height; ++index) {
+    RegionShape& shape = shapes[label[index]];
+    shape.thickness = std::max(shape.thickness, 2 * depth_of[index]);
+    ++shape.cells;
+    const int col = index % width, row = index / width;
+    shape.on_border |= col == 0 || row == 0 || col == width - 1 || row == height - 1;
+  }
+  std::vector<std::vector<cv::Point2f>> outline(count);
+  for (const int index : site_cells) {
+    outline[label[index]].emplace_back(index % width + 0.5f, index / width + 0.5f);
+  }
+  for (int region = 1; region < count; ++region) {
+    RegionShape& shape = shapes[region];
+    if (shape.on_border || outline[region].empty()) continue;
+    const cv::RotatedRect rect = cv::minAreaRect(outline[region]);
+    const double angle = rect.angle * M_PI / 180;
+    const Eigen::Vector2d along_width(std::cos(angle), std::sin(angle));
+    const bool wide = rect.size.width >= rect.size.height;
+    shape.centre = {rect.center.x, rect.center.y};
+    shape.axis = wide ? along_width : Eigen::Vector2d(-along_width.y(), along_width.x());
+    shape.length = std::max(rect.size.width, rect.size.height) + 1;
+    shape.width = std::min(rect.size.width, rect.size.height) + 1;
+  }
+  return regions;
+}
+
+// Whether, past one end of `region` along its axis (`direction` +1 or -1),
+// within `gap_px`, another obstacle continues the region's line end-on for
+// `run_px` and is about as wide as the region: a wall broken by a door, or a
+// row of blocks that divides a room, rather than furniture standing free.
+bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, double gap_px,
+                    double run_px) {
+  const RegionShape& shape = regions.shapes[region];
+  const Eigen::Vector2d along = direction * shape.axis;
+  const Eigen::Vector2d across(-along.y(), along.x());
+  const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along;
+  // The first obstacle cell of another region past the end.
+  double hit = -1;
+  for (double t = 0; t <= gap_px; t += 1) {
+    const int label = regions.LabelAt(end + t * along);
+    if (label != 0 && label != region) {
+      hit = t;
+      break;
+    }
+  }
+  if (hit < 0) return false;
+  for (double t = hit; t <= hit + run_px; t += 1) {
+    if (!regions.NonFree(end + t * along)) return false;
+  }
+  // Its extent across the line, halfway along the run, counted both ways.
+  const Eigen::Vector2d middle = end + (hit + 0.5 * run_px) * along;
+  const double limit = 2 * shape.width;
+  double extent = 1;
+  for (const int side : {-1, 1}) {
+    for (double s = 1; s <= limit && regions.NonFree(middle + side * s * across); s += 1) {
+      extent += 1;
+    }
+  }
+  return extent <= kEndOnWidthRatio * shape.width;
+}
+
+}  // namespace
+
+PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
+                         double max_island_m) {
+  const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
+  std::vector<uint8_t> island;
+  ObstacleRegions regions;
+  if (max_island_m > 0) {
+    regions = FindRegions(cells, width, height, site_cells);
+    const double max_island_px = max_island_m / resolution_m;
+    const double min_thickness = std::max(
+        kMinIslandThicknessM / resolution_m,
+        kIslandWallRatio * TypicalWallThickness(regions.depth, kMaxWallThicknessM / resolution_m));
+    const double gap_px = kWallGapM / resolution_m;
+    const double run_px = kEndOnRunM / resolution_m;
+    island.assign(regions.shapes.size(), 0);
+    for (size_t region = 1; region < regions.shapes.size(); ++region) {
+      const RegionShape& s = regions.shapes[region];
+      island[region] = !s.on_border && s.length <= max_island_px && s.thickness >= min_thickness &&
+                       s.length <= kMaxIslandElongation * s.width &&
+                       s.cells >= kMinIslandSolidity * s.length * s.width;
+      if (island[region] && (ContinuedEndOn(regions, region, 1, gap_px, run_px) ||
+                             ContinuedEndOn(regions, region, -1, gap_px, run_px))) {
+        island[region] = 0;
+      }
+    }
+  }
+  PointList sites;
+  sites.reserve(site_cells.size());
+  for (const int index : site_cells) {
+    if (!island.empty() && island[regions.labels.ptr<int>()[index]]) continue;
+    sites.push_back(CellCentre(index % width, index / width));
+  }
+  return sites;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,25 @@
+#pragma once
+
+#include "proto/artifacts.pb.h"
+#include "stages/merge/area_assignment.h"
+
+namespace areagraph {
+
+// An opening separates two rooms only when it is narrower than this share
+// of the free width on both of its sides (the widest within kSideReachM of
+// it). Chosen on the generated tuning floors and the real maps (0.9).
+inline constexpr double kDoorWidthShare = 0.9;
+// How far into each area the width beside an opening is looked for (metres).
+inline constexpr double kSideReachM = 1.5;
+
+// Joins room areas that meet at a graph vertex without a narrowing between
+// them: the opening there is not narrower than kDoorWidthShare of the space
+// on the narrower side. The room disk stopped there (at a piece of furniture
+// or a bend), but nothing divides the room; a door is narrower than the
+// rooms it joins. (A second cue, how deep the narrowing is, separated
+// furniture gaps from doors on the generated floors but merged real rooms
+// on the scanned maps, whose doorways are deep: dropped, see
+// docs/quality.md.)
+void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m, AreaPlan* plan);
+
+}  // namespace areagraph

@@ -1,0 +1,84 @@
+// ag-import decodes the common PNGs with libpng itself; the pixels must be
+// exactly those of cv::imdecode(IMREAD_GRAYSCALE | IMREAD_ANYDEPTH).
+#include "stages/import/png_grey_decoder.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <opencv2/imgcodecs.hpp>
+#include <sstream>
+
+#include "stages/common/image_codecs.h"
+#include "tests/stages/import/test_png_writer.h"
+#include "tests/support/test_support.h"
+
+namespace areagraph::testing {
+namespace {
+
+// True when libpng took `bytes` and gave OpenCV's pixels; false when it
+// declined (OpenCV decodes those).
+bool DecodesLikeOpenCv(const std::string& bytes, const std::string& what) {
+  cv::Mat ours;
+  if (!DecodeCommonPngToGrey(bytes, &ours)) {
+    EXPECT_TRUE(ours.empty()) << what;
+    return false;
+  }
+  const cv::Mat theirs = DecodeImage(bytes, cv::IMREAD_GRAYSCALE | cv::IMREAD_ANYDEPTH);
+  EXPECT_EQ(theirs.type(), CV_8UC1) << what;
+  EXPECT_EQ(ours.size(), theirs.size()) << what;
+  if (ours.size() == theirs.size() && theirs.type() == CV_8UC1) {
+    EXPECT_EQ(cv::countNonZero(ours != theirs), 0) << what;
+  }
+  return true;
+}
+
+std::string Encode(const cv::Mat& image) {
+  std::vector<uchar> bytes;
+  EXPECT_TRUE(EncodeImage(".png", image, &bytes));
+  return std::string(bytes.begin(), bytes.end());
+}
+
+TEST(PngGreyDecoder, GreyRgbRgbaPaletteAndGreyAlphaAsOpenCv) {
+  cv::Mat grey(7, 9, CV_8UC1), bgr(7, 9, CV_8UC3), bgra(7, 9, CV_8UC4);
+  cv::randu(grey, 0, 256);
+  cv::randu(bgr, 0, 256);
+  cv::randu(bgra, 0, 256);
+  EXPECT_TRUE(DecodesLikeOpenCv(Encode(grey), "grey"));
+  EXPECT_TRUE(DecodesLikeOpenCv(Encode(bgr), "rgb"));
+  EXPECT_TRUE(DecodesLikeOpenCv(Encode(bgra), "rgba"));
+  EXPECT_TRUE(DecodesLikeOpenCv(
+      PalettePng(2, 2, {0, 1, 2, 1}, {255, 0, 0, 0, 255, 0, 10, 20, 30}, {255, 0, 128}),
+      "palette with transparency"));
+  EXPECT_TRUE(DecodesLikeOpenCv(GreyAlphaPng(2, 1, {200, 0, 17, 255}, 8), "grey+alpha"));
+}
+
+TEST(PngGreyDecoder, DeclinesSixteenBitAndDamagedFiles) {
+  cv::Mat wide(3, 3, CV_16UC1, cv::Scalar(40000));
+  cv::Mat out;
+  EXPECT_FALSE(DecodeCommonPngToGrey(Encode(wide), &out));
+  EXPECT_FALSE(DecodeCommonPngToGrey(GreyAlphaPng(1, 1, {1000, 65535}, 16), &out));
+  std::string truncated = Encode(cv::Mat(40, 40, CV_8UC1, cv::Scalar(3)));
+  truncated.resize(truncated.size() / 2);
+  EXPECT_FALSE(DecodeCommonPngToGrey(truncated, &out));
+  EXPECT_TRUE(out.empty());
+  EXPECT_FALSE(DecodeCommonPngToGrey("P5\n1 1\n255\n\x01", &out));
+}
+
+// Every PNG of ../shared/data (maps, ground truths, published results: grey,
+// RGB, RGBA, palette) decodes to OpenCV's pixels.
+TEST(PngGreyDecoder, EverySharedPngAsOpenCv) {
+  if (!HaveSharedData()) GTEST_SKIP() << "no ../shared/data";
+  int decoded = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(SharedDataPath(""))) {
+    if (!entry.is_regular_file() || entry.path().extension() != ".png") continue;
+    std::ifstream file(entry.path(), std::ios::binary);
+    std::stringstream bytes;
+    bytes << file.rdbuf();
+    decoded += DecodesLikeOpenCv(bytes.str(), entry.path().string());
+  }
+  EXPECT_GT(decoded, 100);
+}
+
+}  // namespace
+}  // namespace areagraph::testing

@@ -1,0 +1,173 @@
+# shellcheck shell=bash disable=SC2154
+# Sourced by tools/bench-speed.sh: the tables that grow one map against the
+# floor (issue 14), each in one run of the script. Expects `bin`, `work`,
+# `runs`, `floor_repeat`, `data`, `tiles`, `clutter_sizes` and `notes` set. Every timed command runs under /usr/bin/time, which
+# gives its wall time, CPU time (user + system) and peak resident memory (the
+# largest of the process and the children it waited for).
+
+# timed_run OUT COMMAND...: runs COMMAND quietly; appends "wall cpu rss_kb"
+# to OUT. A failure becomes a note and appends nothing.
+timed_run() {
+  local out=$1 status=0
+  shift
+  /usr/bin/time -f '%e %U %S %M' -o "$work/time.txt" "$@" >"$work/series.log" 2>&1 || status=$?
+  if [ "$status" -ne 0 ]; then
+    notes+=("$(basename "$1") failed (exit $status): $(tail -1 "$work/series.log")")
+    return 1
+  fi
+  awk '{ printf "%s %.2f %s\n", $1, $2 + $3, $4 }' "$work/time.txt" >>"$out"
+}
+
+# The median of the numbers on stdin, one a line ("" for none).
+stdin_median() { sort -g | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
+
+# column N FILE: the median of column N of FILE.
+column() { awk -v c="$1" '{ print $c }' "$2" | stdin_median; }
+
+# The floor of one image in one process: median ms, and that process's peak
+# resident memory in MB.
+floor_of() {
+  local map=$1
+  /usr/bin/time -f '%M' -o "$work/floor_rss.txt" \
+    "$bin/ag-bench-floor" --repeat "$floor_repeat" "$map" >"$work/floor_one.txt"
+  floor_ms=$(awk '$1 != "map" && $1 != "total" { print $NF }' "$work/floor_one.txt")
+  floor_mb=$(awk '{ printf "%.0f", $1 / 1024 }' "$work/floor_rss.txt")
+}
+
+# ag-run --jobs 1 on MAP from a new store each time, --runs times; sets
+# run_wall, run_cpu (medians, s) and run_mb (median peak MB), and leaves the
+# last store in $work/series.db.
+run_cold() {
+  local map=$1
+  : >"$work/run.txt"
+  for ((run = 1; run <= runs; ++run)); do
+    rm -f "$work"/series.db*
+    timed_run "$work/run.txt" "$bin/ag-run" --jobs 1 --store "$work/series.db" "$map" || true
+  done
+  run_wall=$(column 1 "$work/run.txt")
+  run_cpu=$(column 2 "$work/run.txt")
+  run_mb=$(awk '{ print $3 / 1024 }' "$work/run.txt" | stdin_median)
+}
+
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (b > 0 && a != "") printf "%.1f", a / b; else printf "–" }'; }
+
+# The tiling scale series: lab_a repeated N x N (ag-bench-tile).
+scale_table() {
+  local source="$data/lab_a.png" n map mpx
+  [ -f "$source" ] || { notes+=("no $source: the scale series did not run"); return; }
+  echo "#### Scale: lab_a tiled N x N into one connected map (ag-bench-tile), ag-run --jobs 1"
+  echo
+  echo -n "| tiles | Mpx | floor s | floor MB | ag-run s | CPU s | × floor | s per Mpx | CPU s per Mpx"
+  echo " | peak MB | MB × floor |"
+  echo "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|"
+  for n in $tiles; do
+    map="$work/lab_a_${n}x${n}.png"
+    "$bin/ag-bench-tile" --tiles "$n" "$source" "$map" >/dev/null
+    echo "bench-speed: scale $n x $n" >&2
+    floor_of "$map"
+    run_cold "$map"
+    mpx=$(awk '$1 != "map" && $1 != "total" { split($2, d, "x"); printf "%.2f", d[1] * d[2] / 1e6 }' \
+      "$work/floor_one.txt")
+    printf '| %s x %s | %s | %.2f | %s | %.2f | %.2f | %s | %.2f | %.2f | %.0f | %s |\n' "$n" "$n" \
+      "$mpx" "$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')" "$floor_mb" "$run_wall" \
+      "$run_cpu" "$(ratio "$run_wall" "$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')")" \
+      "$(awk -v w="$run_wall" -v m="$mpx" 'BEGIN { print w / m }')" \
+      "$(awk -v w="$run_cpu" -v m="$mpx" 'BEGIN { print w / m }')" "$run_mb" \
+      "$(ratio "$run_mb" "$floor_mb")"
+  done
+  echo
+}
+
+# The clutter series: an N x N px room with 1 % random obstacle cells.
+clutter_table() {
+  local size map
+  if ! "$bin/ag-make-example-maps" --help 2>/dev/null | grep -q -- --clutter; then
+    notes+=("ag-make-example-maps has no --clutter: the clutter series did not run")
+    return
+  fi
+  echo "#### Clutter: an N x N px room with 1 % random obstacle cells, ag-run --jobs 1"
+  echo
+  echo "| size | floor s | ag-run s | CPU s | × floor | merge s (compute) | peak MB |"
+  echo "|---|--:|--:|--:|--:|--:|--:|"
+  for size in $clutter_sizes; do
+    "$bin/ag-make-example-maps" --clutter "$size" --out "$work" >/dev/null
+    map="$work/clutter_$size.png"
+    echo "bench-speed: clutter $size" >&2
+    floor_of "$map"
+    run_cold "$map"
+    local merge_ms
+    merge_ms=$("$bin/ag-inspect" --store "$work/series.db" --map "clutter_$size" |
+      awk '$1 == "merge" && $NF == "*" { print $4 }')
+    printf '| %s² | %.2f | %.2f | %.2f | %s | %.2f | %.0f |\n' "$size" \
+      "$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')" "$run_wall" "$run_cpu" \
+      "$(ratio "$run_wall" "$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')")" \
+      "$(awk -v m="${merge_ms:-0}" 'BEGIN { print m / 1000 }')" "$run_mb"
+  done
+  echo
+}
+
+# ag-render of every stage against that stage's compute time, on lab_a and
+# on lab_a tiled 2 x 2.
+render_table() {
+  local source="$data/lab_a.png" map name stage ms
+  [ -f "$source" ] || { notes+=("no $source: the render table did not run"); return; }
+  echo "#### ag-render of each stage against the stage's compute time"
+  echo
+  echo "| map | floor s | stage | compute s | ag-render s | CPU s | render / compute |"
+  echo "|---|--:|---|--:|--:|--:|--:|"
+  "$bin/ag-bench-tile" --tiles 2 "$source" "$work/lab_a_2x2.png" >/dev/null
+  for map in "$source" "$work/lab_a_2x2.png"; do
+    name=$(basename "${map%.*}")
+    echo "bench-speed: render $name" >&2
+    floor_of "$map"
+    rm -f "$work"/series.db*
+    "$bin/ag-run" --jobs 1 --store "$work/series.db" "$map" >/dev/null 2>&1 ||
+      { notes+=("ag-run failed on $name: no render row"); continue; }
+    for stage in import clean voronoi prune cut merge; do
+      ms=$("$bin/ag-inspect" --store "$work/series.db" --map "$name" |
+        awk -v s="$stage" '$1 == s && $NF == "*" { print $4 }')
+      : >"$work/render.txt"
+      for ((run = 1; run <= runs; ++run)); do
+        timed_run "$work/render.txt" "$bin/ag-render" --store "$work/series.db" --map "$name" \
+          --stage "$stage" --out "$work/render.png" || true
+      done
+      local wall cpu
+      wall=$(column 1 "$work/render.txt")
+      cpu=$(column 2 "$work/render.txt")
+      printf '| %s | %.2f | %s | %.3f | %.2f | %.2f | %s |\n' "$name" \
+        "$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')" "$stage" \
+        "$(awk -v m="${ms:-0}" 'BEGIN { print m / 1000 }')" "$wall" "$cpu" \
+        "$(ratio "$wall" "$(awk -v m="${ms:-0}" 'BEGIN { print m / 1000 }')")"
+    done
+  done
+  echo
+}
+
+# The 16 maps as the issue measures them: ag-run --jobs 1 per map from a new
+# store, start-up included, against each map's floor.
+runs_table() {
+  local map name
+  local floor_sum=0 wall_sum=0 cpu_sum=0 peak=0
+  echo "#### The 16 maps, ag-run --jobs 1 per map from a new store (start-up included)"
+  echo
+  echo "| map | floor s | ag-run s | CPU s | × floor | CPU × floor | peak MB |"
+  echo "|---|--:|--:|--:|--:|--:|--:|"
+  for map in "${maps[@]}"; do
+    name=$(basename "${map%.*}")
+    echo "bench-speed: ag-run $name" >&2
+    floor_of "$map"
+    run_cold "$map"
+    local floor_s
+    floor_s=$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')
+    printf '| %s | %.3f | %.2f | %.2f | %s | %s | %.0f |\n' "$name" "$floor_s" "$run_wall" \
+      "$run_cpu" "$(ratio "$run_wall" "$floor_s")" "$(ratio "$run_cpu" "$floor_s")" "$run_mb"
+    floor_sum=$(awk -v a="$floor_sum" -v b="$floor_s" 'BEGIN { print a + b }')
+    wall_sum=$(awk -v a="$wall_sum" -v b="$run_wall" 'BEGIN { print a + b }')
+    cpu_sum=$(awk -v a="$cpu_sum" -v b="$run_cpu" 'BEGIN { print a + b }')
+    peak=$(awk -v a="$peak" -v b="$run_mb" 'BEGIN { print (b > a) ? b : a }')
+  done
+  printf '| **all %s maps** | %.2f | %.2f | %.2f | %s | %s | %.0f (max) |\n' "${#maps[@]}" \
+    "$floor_sum" "$wall_sum" "$cpu_sum" "$(ratio "$wall_sum" "$floor_sum")" \
+    "$(ratio "$cpu_sum" "$floor_sum")" "$peak"
+  echo
+}

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "tools/example_maps/benchmark_layout.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::floorplan {
+
+// A generated floor with its ground truth, for the quality benchmark.
+struct BenchmarkFloor {
+  FloorLayout layout;
+  FloorPlan plan;
+  // CV_16U, the plan's size: zone k + 1 on the free inside of layout zone k
+  // (furniture included, as in Bormann's ground truth); 0 on walls,
+  // doorways, and space left unknown. A corridor with all its arms and
+  // branches is one zone, as people label it in the published ground truths.
+  cv::Mat truth;
+};
+
+// The floor of `seed`: RandomFloorLayout drawn at a random resolution of
+// 0.025-0.1 m/px with walls 0.1-0.3 m thick, furnished (FurnishRoom, desks
+// and cabinets in corridors), with some rooms left unexplored or only partly
+// scanned (unknown), stretches of wall missing from the scan (unknown), rough
+// wall surfaces and noise dots. Depends only on the seed.
+BenchmarkFloor RandomBenchmarkFloor(uint32_t seed);
+
+// A part of the generated benchmark: the floors of seeds first_seed ..
+// first_seed + count - 1.
+struct BenchmarkPart {
+  const char* name;
+  uint32_t first_seed;
+  int count;
+};
+
+// The split, decided once (2026-12-01) and never to be changed: constants are
+// chosen on the tuning part; the held-out part is only reported.
+inline constexpr BenchmarkPart kTuningPart{"tuning", 1, 30};
+inline constexpr BenchmarkPart kHeldOutPart{"held-out", 100001, 30};
+
+// Map name of a seed's floor: "floor_<seed>".
+std::string BenchmarkFloorName(uint32_t seed);
+
+}  // namespace areagraph::floorplan
