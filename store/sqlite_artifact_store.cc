@@ -197,25 +197,24 @@ void SqliteArtifactStore::CreateHeadsTable() {
 void SqliteArtifactStore::PrepareStatements() {
   sql_stmt_read_all_maps_ = Prepare(store_sql::kReadAllMaps, "reading the maps");
   sql_stmt_read_map_ = Prepare(store_sql::kReadMap, "reading a map");
-  const bool summaries = HasSummaryLines();
-  const bool codecs = HasPayloadCodecs();
-  sql_stmt_read_artifact_ = Prepare(codecs      ? store_sql::kReadArtifact
-                                    : summaries ? store_sql::kReadArtifactBeforeSchema5
-                                                : store_sql::kReadArtifactBeforeSchema3,
-                                    "reading an artifact");
-  sql_stmt_read_head_ = Prepare(codecs      ? store_sql::kReadHead
-                                : summaries ? store_sql::kReadHeadBeforeSchema5
-                                            : store_sql::kReadHeadBeforeSchema3,
-                                "reading a head artifact");
+  const int v = schema_version_;
+  sql_stmt_read_artifact_ = Prepare(
+      store_internal::ForSchema(v, store_sql::kReadArtifact, store_sql::kReadArtifactBeforeSchema5,
+                                store_sql::kReadArtifactBeforeSchema3),
+      "reading an artifact");
+  sql_stmt_read_head_ =
+      Prepare(store_internal::ForSchema(v, store_sql::kReadHead, store_sql::kReadHeadBeforeSchema5,
+                                        store_sql::kReadHeadBeforeSchema3),
+              "reading a head artifact");
   sql_stmt_read_artifact_summaries_ =
-      Prepare(codecs      ? store_sql::kReadArtifactSummaries
-              : summaries ? store_sql::kReadArtifactSummariesBeforeSchema5
-                          : store_sql::kReadArtifactSummariesBeforeSchema3,
+      Prepare(store_internal::ForSchema(v, store_sql::kReadArtifactSummaries,
+                                        store_sql::kReadArtifactSummariesBeforeSchema5,
+                                        store_sql::kReadArtifactSummariesBeforeSchema3),
               "listing the artifacts of a map");
   sql_stmt_read_artifact_summary_ =
-      Prepare(codecs      ? store_sql::kReadArtifactSummary
-              : summaries ? store_sql::kReadArtifactSummaryBeforeSchema5
-                          : store_sql::kReadArtifactSummaryBeforeSchema3,
+      Prepare(store_internal::ForSchema(v, store_sql::kReadArtifactSummary,
+                                        store_sql::kReadArtifactSummaryBeforeSchema5,
+                                        store_sql::kReadArtifactSummaryBeforeSchema3),
               "reading an artifact");
   sql_stmt_read_artifact_ref_ = Prepare(store_sql::kReadArtifactRef, "finding an artifact");
   sql_stmt_read_artifact_id_ = Prepare(store_sql::kReadArtifactId, "finding an artifact");

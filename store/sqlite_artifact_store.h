@@ -151,6 +151,13 @@ class SqliteArtifactStore : public ArtifactStore {
 
 namespace store_internal {
 
+// The form of a statement for a store of schema `version`: older stores have
+// no payload codec (before 5) and no summary lines (before 3).
+inline const char* ForSchema(int version, const char* current, const char* before5,
+                             const char* before3) {
+  return version >= 5 ? current : version >= 3 ? before5 : before3;
+}
+
 // Input keys are stored newline-joined.
 std::vector<std::string> SplitLines(const std::string& joined);
 

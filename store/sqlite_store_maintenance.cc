@@ -297,9 +297,9 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(const std::string& pa
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
   CheckMergeSourcePayloads(path, source_version);  // under the write lock: what is copied next
-  counts.artifacts = run(source_version >= 5   ? store_sql::kMergeArtifacts
-                         : source_version >= 3 ? store_sql::kMergeArtifactsBeforeSchema5
-                                               : store_sql::kMergeArtifactsBeforeSchema3,
+  counts.artifacts = run(store_internal::ForSchema(source_version, store_sql::kMergeArtifacts,
+                                                   store_sql::kMergeArtifactsBeforeSchema5,
+                                                   store_sql::kMergeArtifactsBeforeSchema3),
                          "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");
