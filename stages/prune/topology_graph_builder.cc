@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <set>
 #include <vector>
@@ -67,6 +68,8 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
   }
 
   ChainGraph graph;
+  // Sized once: on a large map, doubling would hold two copies for a moment.
+  graph.edges.reserve(kept_edges.size());
   std::vector<int> chain_vertex(vertex_count, -1);
   auto vertex_of = [&](int voronoi_vertex) {
     const int root = same_point.Find(voronoi_vertex);
@@ -205,7 +208,11 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
     throw InputError("no Topology Graph: the map has " + std::to_string(sites.size()) +
                      " obstacle cells next to free space, too few to enclose any");
   }
-  SiteAlphaShape boundary_shape(sites, options.boundary_alpha_radius_m() / resolution);
+  // Held by pointer so that the triangulation is gone before the graph is
+  // written out (on large maps it is a good part of the stage's peak memory).
+  auto boundary =
+      std::make_unique<SiteAlphaShape>(sites, options.boundary_alpha_radius_m() / resolution);
+  SiteAlphaShape& boundary_shape = *boundary;
   const std::vector<double> region_area = boundary_shape.FindEnclosedRegions();
   if (region_area.empty()) {
     throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +
@@ -230,6 +237,7 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
       [&](int v) { return free_space.PartAt(graph.vertices[v].position); }, free_space.cells,
       static_cast<int64_t>(std::ceil(options.min_component_m2() / (resolution * resolution))));
   std::vector<proto::Polygon> parts = PartBoundaries(graph, boundary_shape, region_area);
+  boundary.reset();
   if (parts.empty()) {
     throw InputError("no Topology Graph: no part of the graph lies inside the boundary");
   }
