@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/pipeline_options.h"
 #include "stages/match/area_cells.h"
 #include "stages/match/fragment_folding.h"
+#include "store/digest.h"
 
 namespace areagraph {
 namespace {
@@ -56,14 +58,14 @@ std::vector<int> MatchAreas(const proto::AreaGraph& current, const proto::AreaGr
 // its areas' previous ids (or -1).
 std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
                                             const proto::AreaGraph& previous,
-                                            const proto::MatchOptions& options) {
+                                            const proto::MatchOptions& options, bool fold) {
   const AreaCells before = RasterizeAreas(previous, current.frame());
   while (true) {
     const AreaCells after = RasterizeAreas(current, current.frame());
     const std::vector<AreaOverlap> overlaps = CountOverlaps(before, after);
     std::vector<int> ids =
         MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
-    if (options.fold_fragments_below_m2() <= 0) return ids;
+    if (!fold || options.fold_fragments_below_m2() <= 0) return ids;
     const std::vector<AreaFold> folds = FindNoiseFragments(current, previous, ids, after, overlaps,
                                                            options.fold_fragments_below_m2());
     int folded = 0;
@@ -134,7 +136,8 @@ void CheckIsMatched(const proto::AreaGraph& previous) {
 }  // namespace
 
 proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::AreaGraph* previous,
-                                const VersionLink& version, const proto::MatchOptions& options) {
+                                const VersionLink& version, const proto::MatchOptions& options,
+                                const std::string& segmentation_options_digest) {
   for (const proto::Passage& passage : current.passages()) {
     if (passage.area_a() < 0 || passage.area_a() >= current.areas_size() || passage.area_b() < 0 ||
         passage.area_b() >= current.areas_size()) {
@@ -147,7 +150,9 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
   int32_t next_area_id = 0, next_passage_id = 0;
   if (previous != nullptr) {
     CheckIsMatched(*previous);
-    area_ids = MatchAreasFoldingFragments(matched, *previous, options);
+    const bool same_segmentation =
+        previous->version().segmentation_options_digest() == segmentation_options_digest;
+    area_ids = MatchAreasFoldingFragments(matched, *previous, options, same_segmentation);
     next_area_id = previous->version().next_area_id();
     next_passage_id = previous->version().next_passage_id();
   }
@@ -168,7 +173,16 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
   place->set_predecessor_key(version.predecessor_key);
   place->set_next_area_id(next_area_id);
   place->set_next_passage_id(next_passage_id);
+  if (!segmentation_options_digest.empty()) {
+    place->set_segmentation_options_digest(segmentation_options_digest);
+  }
   return matched;
+}
+
+std::string SegmentationOptionsDigest(const proto::PipelineOptions& options) {
+  proto::PipelineOptions segmentation = options;
+  segmentation.clear_match();
+  return Sha256Hex(CanonicalText(segmentation));
 }
 
 }  // namespace areagraph

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string>
+
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
 #include "store/artifact_store.h"
@@ -22,7 +24,15 @@ namespace areagraph {
 // joins the same two stable areas within options.passage_max_shift_m() of
 // where it was, nearest first. Everything else gets ids never used before in
 // the map's history (previous->version() counts them).
+// `segmentation_options_digest` names the options of the stages before match
+// (SegmentationOptionsDigest); pieces fold back only when the previous
+// version was made with the same, so that a re-run with other options
+// publishes their areas. It is stored in the version.
 proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::AreaGraph* previous,
-                                const VersionLink& version, const proto::MatchOptions& options);
+                                const VersionLink& version, const proto::MatchOptions& options,
+                                const std::string& segmentation_options_digest = "");
+
+// SHA-256 of the canonical text of `options` without its match options.
+std::string SegmentationOptionsDigest(const proto::PipelineOptions& options);
 
 }  // namespace areagraph

@@ -108,6 +108,20 @@ TEST(FragmentFoldingTest, ASmallPieceSplitOffByNoiseFoldsBackAndCostsNoId) {
   EXPECT_EQ(AreaIds(unfolded), (Ids{1, 0}));
 }
 
+TEST(FragmentFoldingTest, OtherSegmentationOptionsPublishTheirPieces) {
+  proto::MatchOptions defaults;
+  const proto::AreaGraph first = MatchAreaGraph(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), nullptr,
+                                                VersionLink(), defaults, "options-a");
+  EXPECT_EQ(first.version().segmentation_options_digest(), "options-a");
+  const proto::AreaGraph split = RectGraph(Frame(200, 100), {{7.5, 0, 9, 4}, {0, 0, 7.5, 4}});
+  // The same options as before: noise, folded back.
+  EXPECT_EQ(AreaIds(MatchAreaGraph(split, &first, {"k", 2}, defaults, "options-a")), (Ids{0}));
+  // A re-run with other options (say a smaller merge.min_area_m2): the piece is theirs.
+  const proto::AreaGraph rerun = MatchAreaGraph(split, &first, {"k", 2}, defaults, "options-b");
+  EXPECT_EQ(AreaIds(rerun), (Ids{1, 0}));
+  EXPECT_EQ(rerun.version().segmentation_options_digest(), "options-b");
+}
+
 TEST(FragmentFoldingTest, ALargePieceAndNewlySeenSpaceStayAreasOfTheirOwn) {
   const proto::AreaGraph first = Match(RectGraph(Frame(400, 100), {{0, 0, 9, 4}}), nullptr);
   // A 12 m2 part (a door closed): a split, the larger part keeps the id.
