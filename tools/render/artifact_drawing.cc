@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
@@ -83,7 +84,9 @@ void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas) {
   }
   for (const proto::VoronoiEdge& edge : voronoi.edges()) {
     if (edge.target() < 0) continue;
-    const double t = std::min(1.0, edge.clearance_px() / max_clearance);
+    // 32 steps of clearance: the picture keeps few enough colours for a
+    // palette PNG, and 32 shades are more than the eye tells apart.
+    const double t = std::round(std::min(1.0, edge.clearance_px() / max_clearance) * 31) / 31;
     // Edges that hug the obstacles are the bulk of the diagram but not its
     // skeleton: keep them faint so the medial axis stands out.
     const bool hugs_obstacle = edge.clearance_px() < 2.0;

@@ -36,7 +36,10 @@ class Canvas {
 // Distinct, well separated colours for ids (golden-angle hues).
 cv::Scalar DistinctColour(int id);
 
-// A scale that makes the longer side about 1600 px, at least 1, at most 8.
+// The most pixels per cell (at most 8) that keep the longer side within
+// 1000 px, and 1 for maps bigger than that: a picture about the map's own
+// size, like the docs' pictures. (It aimed at 1600 px, which drew lab_a at
+// 2 x and made encoding four times the pixels cost more than some stages.)
 int DefaultScale(int width, int height);
 
 }  // namespace areagraph
