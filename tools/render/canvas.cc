@@ -101,6 +101,20 @@ void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, doubl
   tinted.copyTo(area, mask);
 }
 
+void Canvas::FaintLines(
+    const std::vector<std::pair<const proto::Point2*, const proto::Point2*>>& lines,
+    const cv::Scalar& colour, double alpha) {
+  if (lines.empty()) return;
+  cv::Mat mask = cv::Mat::zeros(image_.size(), CV_8UC1);
+  for (const auto& [a, b] : lines) {
+    cv::line(mask, ToCanvas(*a), ToCanvas(*b), cv::Scalar(255), 1, kLineType, kShift);
+  }
+  cv::Mat tinted;
+  cv::addWeighted(image_, 1.0 - alpha, cv::Mat(image_.size(), image_.type(), colour), alpha, 0,
+                  tinted);
+  tinted.copyTo(image_, mask);
+}
+
 void Canvas::Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour) {
   const double font_scale = std::clamp(0.25 * scale_, 0.4, 0.9);
   int baseline = 0;

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <utility>
+#include <vector>
 
 #include "proto/geometry.pb.h"
 
@@ -23,6 +25,10 @@ class Canvas {
   void Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness);
   // Fills a polygon (outer minus holes) blending `colour` with weight `alpha`.
   void Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha);
+  // Blends `colour` with weight `alpha` into the pixels of 1-px lines (pairs
+  // of points), each pixel once: faint lines through which the map shows.
+  void FaintLines(const std::vector<std::pair<const proto::Point2*, const proto::Point2*>>& lines,
+                  const cv::Scalar& colour, double alpha);
   void Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour);
   // Paints whole map cells (flat indices), e.g. removed obstacles.
   void PaintCells(const google::protobuf::RepeatedField<int32_t>& cells, int width,

@@ -6,6 +6,7 @@
 
 #include <set>
 #include <string>
+#include <utility>
 
 #include "proto/artifacts.pb.h"
 #include "tools/render/artifact_drawing.h"
@@ -45,26 +46,34 @@ TEST(Canvas, AShortCellStringLeavesTheRestUnknown) {
   EXPECT_EQ(canvas.image().at<cv::Vec3b>(0, 1), cv::Vec3b(200, 200, 200));
 }
 
-TEST(Canvas, AVoronoiEdgeIsDrawnInItsExactColour) {
+TEST(Canvas, VoronoiEdgesAreDrawnInTheirExactColours) {
   proto::VoronoiDiagram voronoi;
-  *voronoi.add_vertices()->mutable_position() = At(2, 10);
-  *voronoi.add_vertices()->mutable_position() = At(38, 10);
-  proto::VoronoiEdge* edge = voronoi.add_edges();
-  edge->set_source(0);
-  edge->set_target(1);
-  edge->set_clearance_px(8);  // the widest edge: pure blue, 2 px
+  for (const auto& [x, y] : {std::pair{2, 10}, {38, 10}, {2, 15}, {38, 15}}) {
+    *voronoi.add_vertices()->mutable_position() = At(x, y);
+  }
+  proto::VoronoiEdge* skeleton = voronoi.add_edges();
+  skeleton->set_source(0);
+  skeleton->set_target(1);
+  skeleton->set_clearance_px(8);  // the widest edge: pure blue, 2 px
+  proto::VoronoiEdge* hugging = voronoi.add_edges();
+  hugging->set_source(2);
+  hugging->set_target(3);
+  hugging->set_clearance_px(1);  // near an obstacle: faint, blended half into the map
   Canvas canvas(std::string(40 * 20, static_cast<char>(proto::CELL_FREE)), 40, 20, 2);
   DrawVoronoiDiagram(voronoi, canvas);
-  const cv::Vec3b blue(255, 60, 0), white(255, 255, 255);
-  for (int x = 8; x < 72; x += 4) EXPECT_EQ(canvas.image().at<cv::Vec3b>(20, x), blue) << x;
+  const cv::Vec3b blue(255, 60, 0), faint(225, 215, 250), white(255, 255, 255);
+  for (int x = 8; x < 72; x += 4) {
+    EXPECT_EQ(canvas.image().at<cv::Vec3b>(20, x), blue) << x;
+    EXPECT_EQ(canvas.image().at<cv::Vec3b>(30, x), faint) << x;
+  }
   EXPECT_EQ(canvas.image().at<cv::Vec3b>(10, 40), white);
   EXPECT_EQ(canvas.image().at<cv::Vec3b>(20, 78), white);  // beyond the edge's end
-  // Not anti-aliased: the picture has the two colours only.
+  // Not anti-aliased: the picture has these three colours only.
   std::set<int> colours;
   for (auto it = canvas.image().begin<cv::Vec3b>(); it != canvas.image().end<cv::Vec3b>(); ++it) {
     colours.insert((*it)[0] | (*it)[1] << 8 | (*it)[2] << 16);
   }
-  EXPECT_EQ(colours.size(), 2u);
+  EXPECT_EQ(colours.size(), 3u);
 }
 
 TEST(Canvas, DefaultScaleKeepsThePictureNearTheMapsOwnSize) {
