@@ -384,7 +384,7 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     insert.BindText(5, artifact.options_text);
     insert.BindInt64(6, artifact.stage_version);
     insert.BindText(7, artifact.proto_type);
-    insert.BindBlob(8, payload.frame);
+    insert.BindBlobUncopied(8, payload.frame);  // `payload` outlives `use`
     insert.BindText(9, payload.digest);
     insert.BindDouble(10, artifact.elapsed_ms);
     insert.BindText(11, artifact.summary_line);
