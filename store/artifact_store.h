@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "store/payload_encoder.h"
+
 namespace areagraph {
 
 // A map known to the store: a name, and the file its head import came from.
@@ -71,6 +73,9 @@ struct NewArtifact {
   int stage_version = 0;
   std::string proto_type;
   std::string payload;
+  // When set, the payload already compressed and hashed (EncodeMessagePayload,
+  // without its raw bytes in memory); `payload` is then ignored.
+  std::optional<EncodedPayload> encoded_payload;
   double elapsed_ms = 0;
   std::string summary_line;
   // Only ag-import sets these; they update the map row.

@@ -14,6 +14,7 @@
 #include "common/text.h"
 #include "store/digest.h"
 #include "store/payload_codec.h"
+#include "store/payload_encoder.h"
 #include "store/sqlite_store_sql.h"
 #include "store/sqlite_versions_sql.h"
 
@@ -355,8 +356,8 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     }
   }
   // Hashing before the transaction keeps the write lock short.
-  const std::string payload_digest = Sha256Hex(artifact.payload);
-  const std::string stored_payload = CompressPayload(artifact.payload);
+  const EncodedPayload payload =
+      artifact.encoded_payload ? *artifact.encoded_payload : EncodeRawPayload(artifact.payload);
   SqliteTransaction transaction = BeginTransaction();
 
   int64_t map_id = 0;
@@ -383,12 +384,12 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     insert.BindText(5, artifact.options_text);
     insert.BindInt64(6, artifact.stage_version);
     insert.BindText(7, artifact.proto_type);
-    insert.BindBlob(8, stored_payload);
-    insert.BindText(9, payload_digest);
+    insert.BindBlobUncopied(8, payload.frame);  // `payload` outlives `use`
+    insert.BindText(9, payload.digest);
     insert.BindDouble(10, artifact.elapsed_ms);
     insert.BindText(11, artifact.summary_line);
     insert.BindInt64(12, static_cast<int64_t>(PayloadCodec::kZstd));
-    insert.BindInt64(13, static_cast<int64_t>(artifact.payload.size()));
+    insert.BindInt64(13, payload.raw_bytes);
     insert.Step();
   }
   int64_t artifact_id = 0;

@@ -67,10 +67,18 @@ void SqliteStatement::BindText(int index, std::string_view text) {
 }
 
 void SqliteStatement::BindBlob(int index, std::string_view bytes) {
+  BindBlobWith(index, bytes, SQLITE_TRANSIENT);
+}
+
+void SqliteStatement::BindBlobUncopied(int index, std::string_view bytes) {
+  BindBlobWith(index, bytes, SQLITE_STATIC);
+}
+
+void SqliteStatement::BindBlobWith(int index, std::string_view bytes, void (*lifetime)(void*)) {
   // A null pointer would bind NULL; an empty payload must stay a zero-length BLOB.
   static const char kEmpty = 0;
   const char* data = bytes.empty() ? &kEmpty : bytes.data();
-  Check(sqlite3_bind_blob64(stmt_, index, data, bytes.size(), SQLITE_TRANSIENT));
+  Check(sqlite3_bind_blob64(stmt_, index, data, bytes.size(), lifetime));
 }
 
 void SqliteStatement::BindInt64(int index, int64_t value) {

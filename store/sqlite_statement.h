@@ -29,6 +29,9 @@ class SqliteStatement {
 
   void BindText(int index, std::string_view text);
   void BindBlob(int index, std::string_view bytes);
+  // Binds `bytes` without SQLite's copy (a stage's payload frame is tens of
+  // MB); they must stay alive until the statement is reset.
+  void BindBlobUncopied(int index, std::string_view bytes);
   void BindInt64(int index, int64_t value);
   void BindDouble(int index, double value);
 
@@ -47,6 +50,8 @@ class SqliteStatement {
   void Reset() noexcept;
 
  private:
+  // BindBlob with SQLite's lifetime flag (SQLITE_TRANSIENT or SQLITE_STATIC).
+  void BindBlobWith(int index, std::string_view bytes, void (*lifetime)(void*));
   void Check(int rc) const;
   void CheckColumnType(int index, const char* column, int expected, const char* expected_name,
                        int also_allowed = -1) const;

@@ -4,6 +4,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 
@@ -21,19 +22,32 @@ class ArtifactMemo {
             std::shared_ptr<const google::protobuf::Message> artifact) {
     artifacts_[stage] = {cache_key, std::move(artifact)};
   }
-  // `stage`'s artifact with `cache_key`, or null when it was not computed here.
-  const google::protobuf::Message* Find(const std::string& stage,
-                                        const std::string& cache_key) const {
+  // Marks `stage`'s artifact as read for the last time by the next stage:
+  // Acquire then hands it over instead of sharing it, so that the reader
+  // can free it before it finishes (prune drops the Voronoi diagram once it
+  // has filtered it).
+  void MarkLastRead(const std::string& stage) { last_read_.insert(stage); }
+  // `stage`'s artifact with `cache_key`, or null when it was not computed
+  // here. An artifact marked by MarkLastRead leaves the memo: the caller's
+  // pointer is then its only owner.
+  std::shared_ptr<const google::protobuf::Message> Acquire(const std::string& stage,
+                                                           const std::string& cache_key) {
     const auto found = artifacts_.find(stage);
     if (found == artifacts_.end() || found->second.first != cache_key) return nullptr;
-    return found->second.second.get();
+    std::shared_ptr<const google::protobuf::Message> artifact = found->second.second;
+    if (last_read_.count(stage) > 0) Forget(stage);
+    return artifact;
   }
   // Drops `stage`'s artifact, to free its memory once no later stage reads it.
-  void Forget(const std::string& stage) { artifacts_.erase(stage); }
+  void Forget(const std::string& stage) {
+    artifacts_.erase(stage);
+    last_read_.erase(stage);
+  }
 
  private:
   std::map<std::string, std::pair<std::string, std::shared_ptr<const google::protobuf::Message>>>
       artifacts_;
+  std::set<std::string> last_read_;
 };
 
 }  // namespace areagraph

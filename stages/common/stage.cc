@@ -55,9 +55,9 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.options_text = CanonicalText(options);
   artifact.stage_version = stage.info.version;
   artifact.proto_type = result->GetTypeName();
-  if (!result->SerializeToString(&artifact.payload)) {
-    throw Error("the artifact is too big to store");
-  }
+  // Serialized straight into the frame and the hash: on large maps a
+  // serialized copy would be a good part of the peak.
+  artifact.encoded_payload = EncodeMessagePayload(*result);
   artifact.elapsed_ms = run.elapsed_ms;
   artifact.summary_line = run.summary;
   artifact.source_path = inputs.source_path;
@@ -110,20 +110,27 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
   return RunCachedStage(
       store, map_name, stage, options, inputs,
       [&] {
-        std::vector<MessagePtr> artifacts;
+        // Shared with the memo, or handed over by it when this stage is
+        // the input's last reader: then `release` frees it.
+        std::vector<std::shared_ptr<const google::protobuf::Message>> held;
         std::vector<const google::protobuf::Message*> views;
         for (size_t i = 0; i < stage.inputs.size(); ++i) {
-          const google::protobuf::Message* kept =
-              memo != nullptr ? memo->Find(stage.inputs[i].name, inputs.digests[i]) : nullptr;
-          if (kept != nullptr) {
-            views.push_back(kept);
-            continue;
+          held.push_back(memo != nullptr ? memo->Acquire(stage.inputs[i].name, inputs.digests[i])
+                                         : nullptr);
+          if (held[i] == nullptr) {
+            MessagePtr parsed(StageOf(stage.inputs[i]).prototype->New());
+            ParseArtifact(store, map_name, inputs.digests[i], parsed.get());
+            held[i] = std::move(parsed);
           }
-          artifacts.emplace_back(StageOf(stage.inputs[i]).prototype->New());
-          ParseArtifact(store, map_name, inputs.digests[i], artifacts.back().get());
-          views.push_back(artifacts.back().get());
+          views.push_back(held[i].get());
         }
-        if (!stage.reads_previous_version()) return stage.compute(views, options);
+        if (!stage.reads_previous_version()) {
+          const InputRelease release = [&](size_t i) {
+            views.at(i) = nullptr;
+            held.at(i).reset();
+          };
+          return stage.compute(views, release, options);
+        }
         MessagePtr previous;
         if (!inputs.version->predecessor_key.empty()) {
           previous.reset(stage.prototype->New());

@@ -100,7 +100,7 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.clean(); },
       &proto::CleanedMap::default_instance(),
       kCleanedMapFormatVersion,
-      [](const Inputs& in, const proto::PipelineOptions& o) {
+      [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(CleanGridMap(Input<proto::GridMap>(in, 0), o.clean()));
       },
       SummarizeCleanedMap,
@@ -113,7 +113,7 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.voronoi(); },
       &proto::VoronoiDiagram::default_instance(),
       kVoronoiDiagramFormatVersion,
-      [](const Inputs& in, const proto::PipelineOptions& o) {
+      [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(ComputeVoronoiStage(Input<proto::CleanedMap>(in, 0), o.voronoi()));
       },
       SummarizeVoronoiDiagram,
@@ -126,9 +126,10 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.prune(); },
       &proto::TopologyGraph::default_instance(),
       kTopologyGraphFormatVersion,
-      [](const Inputs& in, const proto::PipelineOptions& o) {
+      [](const Inputs& in, const InputRelease& release, const proto::PipelineOptions& o) {
         return Wrap(BuildTopologyGraph(Input<proto::VoronoiDiagram>(in, 0),
-                                       Input<proto::CleanedMap>(in, 1), o.prune()));
+                                       Input<proto::CleanedMap>(in, 1), o.prune(),
+                                       [&] { release(0); }));
       },
       SummarizeTopologyGraph,
       "Prunes a map's head VoronoiDiagram (run ag-voronoi first) into the Topology Graph: "
@@ -142,7 +143,7 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.cut(); },
       &proto::CutGraph::default_instance(),
       kCutGraphFormatVersion,
-      [](const Inputs& in, const proto::PipelineOptions& o) {
+      [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(BuildCutGraph(Input<proto::TopologyGraph>(in, 0),
                                   Input<proto::CleanedMap>(in, 1), o.cut()));
       },
@@ -159,7 +160,7 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.merge(); },
       &proto::AreaGraph::default_instance(),
       kAreaGraphFormatVersion,
-      [](const Inputs& in, const proto::PipelineOptions& o) {
+      [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(BuildAreaGraph(Input<proto::CutGraph>(in, 0), Input<proto::CleanedMap>(in, 1),
                                    o.merge()));
       },

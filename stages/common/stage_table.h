@@ -2,6 +2,7 @@
 
 #include <google/protobuf/message.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,10 @@
 namespace areagraph {
 
 using MessagePtr = std::unique_ptr<google::protobuf::Message>;
+
+// Called by a stage's compute with the index of an input it reads no more:
+// the caller may free that input before the stage finishes.
+using InputRelease = std::function<void(size_t input)>;
 
 // Everything the executables, the runner and the tools know about one stage.
 // Each stage is one row of StageTable(); nothing else lists the stages.
@@ -27,9 +32,11 @@ struct StageDefinition {
   // The format_version it writes (stage_info.h).
   uint32_t format_version;
   // Computes its artifact from its input artifacts (in `inputs` order, each of
-  // its stage's artifact type). Null for import. Throws what the stage throws.
+  // its stage's artifact type), calling `release` for an input it is done
+  // with early (prune: the Voronoi diagram); inputs[i] is dangling after.
+  // Null for import. Throws what the stage throws.
   MessagePtr (*compute)(const std::vector<const google::protobuf::Message*>& inputs,
-                        const proto::PipelineOptions& options);
+                        const InputRelease& release, const proto::PipelineOptions& options);
   // One line about an artifact of this stage, e.g. "12 areas, 11 passages";
   // stored beside the artifact, so that a cache hit prints it unparsed.
   std::string (*summarize)(const google::protobuf::Message& artifact);

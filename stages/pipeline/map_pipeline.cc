@@ -60,6 +60,9 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
   const size_t end = StepIndex(stages, last) + 1;
   for (size_t i = StepIndex(stages, first); i < end; ++i) {
     if (observer.on_start) observer.on_start(stages[i]);
+    for (const StageInfo& input : StageOf(stages[i]).inputs) {
+      if (!ReadLater(stages, i + 1, end, input)) memo->MarkLastRead(input.name);
+    }
     const StageRun run = RunStageOnHeads(store, map_name, StageOf(stages[i]), options, force, memo);
     if (observer.on_done) observer.on_done(stages[i], run);
     for (const StageDefinition& stage : StageTable()) {

@@ -218,7 +218,8 @@ proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& fra
 
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
-                                        const proto::PruneOptions& options) {
+                                        const proto::PruneOptions& options,
+                                        const std::function<void()>& diagram_done) {
   CheckPruneOptions(options);
   const CellGrid grid(map);
   const double resolution = grid.resolution_m();
@@ -246,6 +247,7 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   const double min_clearance_px = options.min_clearance_m() / resolution;
   FilteredGraph filtered =
       FilteredVoronoiGraph(diagram, grid, std::move(boundary_shape), min_clearance_px);
+  if (diagram_done) diagram_done();  // `diagram` may be gone from here on
   ChainGraph& graph = filtered.graph;
   graph.JoinDegreeTwoChains();
   if (graph.edges.empty()) {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "proto/artifacts.pb.h"
@@ -16,9 +17,13 @@ namespace areagraph {
 // other group with at least prune.min_component_m2 of free space (each with
 // the outline of the alpha-shape region around it in part_boundaries); the
 // groups dropped are counted. Throws InputError ("no Topology Graph: ...")
-// when nothing is left, and OptionsError on bad options.
+// when nothing is left, and OptionsError on bad options. Calls
+// `diagram_done`, when given, once it reads `diagram` no more (after the
+// filters, before the chains are pruned), so that a caller that owns the
+// diagram can free it while the rest runs.
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
-                                        const proto::PruneOptions& options);
+                                        const proto::PruneOptions& options,
+                                        const std::function<void()>& diagram_done = nullptr);
 
 }  // namespace areagraph

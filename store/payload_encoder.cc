@@ -1,0 +1,136 @@
+#include "store/payload_encoder.h"
+
+#include <google/protobuf/io/coded_stream.h>
+#include <google/protobuf/io/zero_copy_stream.h>
+#include <zstd.h>
+
+#include <climits>
+#include <memory>
+#include <vector>
+
+#include "common/error.h"
+#include "store/digest.h"
+#include "store/payload_codec.h"
+
+namespace areagraph {
+namespace {
+
+struct CompressionContextDeleter {
+  void operator()(ZSTD_CCtx* context) const { ZSTD_freeCCtx(context); }
+};
+
+// One context per thread, as CompressPayload keeps one: creating one costs
+// more than compressing a small artifact.
+ZSTD_CCtx* CompressionContext() {
+  thread_local std::unique_ptr<ZSTD_CCtx, CompressionContextDeleter> context(ZSTD_createCCtx());
+  if (!context) throw StoreError("zstd: out of memory for a compression context");
+  return context.get();
+}
+
+// The bytes protobuf writes go, one buffer at a time, into SHA-256 and a
+// zstd stream whose frame is pledged `raw_bytes` (so it records its content
+// size, as DecodePayload needs).
+class EncodingStream : public google::protobuf::io::ZeroCopyOutputStream {
+ public:
+  explicit EncodingStream(uint64_t raw_bytes)
+      : context_(CompressionContext()), buffer_(kBufferBytes), out_(ZSTD_CStreamOutSize()) {
+    Check(ZSTD_CCtx_reset(context_, ZSTD_reset_session_and_parameters));
+    Check(ZSTD_CCtx_setParameter(context_, ZSTD_c_compressionLevel, kPayloadZstdLevel));
+    Check(ZSTD_CCtx_setPledgedSrcSize(context_, raw_bytes));
+    // Reserved, not filled: only the pages the frame uses become resident.
+    frame_.reserve(ZSTD_compressBound(raw_bytes));
+  }
+
+  bool Next(void** data, int* size) override {
+    Feed(used_, ZSTD_e_continue);
+    *data = buffer_.data();
+    *size = static_cast<int>(buffer_.size());
+    used_ = buffer_.size();
+    count_ += used_;
+    return true;
+  }
+  void BackUp(int count) override {
+    used_ -= count;
+    count_ -= count;
+  }
+  int64_t ByteCount() const override { return count_; }
+
+  // Ends the frame with what is left in the buffer, or with `tail` when the
+  // buffer is empty; the stream is not used after.
+  EncodedPayload Finish(std::string_view tail = {}) {
+    if (used_ > 0) {
+      tail = std::string_view(buffer_.data(), used_);
+    } else {
+      count_ += static_cast<int64_t>(tail.size());
+    }
+    Feed(tail, ZSTD_e_end);
+    EncodedPayload payload;
+    payload.frame = std::move(frame_);
+    payload.digest = hash_.FinishHex();
+    payload.raw_bytes = count_;
+    return payload;
+  }
+
+ private:
+  // 64 KB: protobuf fills it in pieces; zstd keeps its own window.
+  static constexpr size_t kBufferBytes = size_t{1} << 16;
+
+  // Passes the first `bytes` of the buffer on.
+  void Feed(size_t bytes, ZSTD_EndDirective mode) {
+    Feed(std::string_view(buffer_.data(), bytes), mode);
+  }
+  // Hashes and compresses `bytes`; ZSTD_e_end also ends the frame.
+  void Feed(std::string_view bytes, ZSTD_EndDirective mode) {
+    hash_.Update(bytes);
+    ZSTD_inBuffer in{bytes.data(), bytes.size(), 0};
+    size_t remaining = 0;
+    do {
+      ZSTD_outBuffer out{out_.data(), out_.size(), 0};
+      remaining = Check(ZSTD_compressStream2(context_, &out, &in, mode));
+      frame_.append(out_.data(), out.pos);
+    } while (mode == ZSTD_e_end ? remaining != 0 : in.pos < in.size);
+    used_ = 0;
+  }
+
+  static size_t Check(size_t result) {
+    if (ZSTD_isError(result)) {
+      throw StoreError(std::string("zstd compression failed: ") + ZSTD_getErrorName(result));
+    }
+    return result;
+  }
+
+  ZSTD_CCtx* context_;
+  std::vector<char> buffer_;
+  std::vector<char> out_;
+  size_t used_ = 0;
+  int64_t count_ = 0;
+  std::string frame_;
+  Sha256 hash_;
+};
+
+}  // namespace
+
+EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message) {
+  const size_t raw_bytes = message.ByteSizeLong();
+  if (raw_bytes > static_cast<size_t>(INT_MAX)) {
+    throw StoreError("the artifact is too big to store (" + std::to_string(raw_bytes) + " bytes)");
+  }
+  EncodingStream stream(raw_bytes);
+  {
+    // The sizes ByteSizeLong just cached: no second pass over the message.
+    google::protobuf::io::CodedOutputStream coded(&stream);
+    message.SerializeWithCachedSizes(&coded);
+    if (coded.HadError()) throw StoreError("could not serialize a " + message.GetTypeName());
+  }
+  if (stream.ByteCount() != static_cast<int64_t>(raw_bytes)) {
+    throw StoreError("a " + message.GetTypeName() + " changed size while it was serialized");
+  }
+  return stream.Finish();
+}
+
+EncodedPayload EncodeRawPayload(std::string_view raw) {
+  EncodingStream stream(raw.size());
+  return stream.Finish(raw);
+}
+
+}  // namespace areagraph

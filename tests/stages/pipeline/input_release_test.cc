@@ -1,0 +1,85 @@
+// In one process the stages hand artifacts on through ArtifactMemo; an input's
+// last reader gets it for itself, and prune lets go of the Voronoi diagram
+// once it has filtered it (the peak memory of large maps).
+#include <gtest/gtest.h>
+
+#include "stages/common/artifact_memo.h"
+#include "stages/import/import_stage.h"
+#include "stages/pipeline/map_pipeline.h"
+#include "stages/prune/topology_graph_builder.h"
+#include "tests/support/test_support.h"
+
+namespace areagraph {
+namespace {
+
+// A store holding two_rooms up to its Voronoi diagram.
+std::unique_ptr<ArtifactStore> StoreUpToVoronoi(const proto::PipelineOptions& options) {
+  auto store = OpenArtifactStore(":memory:");
+  const ImportSource source = ReadImportSource(testing::SourcePath("examples/two_rooms.png"));
+  RunCachedStage(*store, "m", StageOf(kImportStage), options, ImportInputs(source), [&] {
+    return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
+  });
+  RunMapPipeline(*store, "m", options, false, PipelineObserver{}, kCleanStage, kVoronoiStage);
+  return store;
+}
+
+TEST(ArtifactMemoTest, SharesAnArtifactUntilItsLastReaderTakesIt) {
+  ArtifactMemo memo;
+  auto artifact = std::make_shared<proto::VoronoiDiagram>();
+  const std::weak_ptr<const google::protobuf::Message> watch = artifact;
+  memo.Keep("voronoi", "key", std::move(artifact));
+  EXPECT_EQ(memo.Acquire("voronoi", "other-key"), nullptr);
+  EXPECT_NE(memo.Acquire("voronoi", "key"), nullptr);
+  EXPECT_NE(memo.Acquire("voronoi", "key"), nullptr) << "shared, not handed over";
+  memo.MarkLastRead("voronoi");
+  std::shared_ptr<const google::protobuf::Message> taken = memo.Acquire("voronoi", "key");
+  ASSERT_NE(taken, nullptr);
+  EXPECT_EQ(memo.Acquire("voronoi", "key"), nullptr);
+  EXPECT_FALSE(watch.expired());
+  taken.reset();
+  EXPECT_TRUE(watch.expired()) << "the last reader was not the only owner";
+}
+
+TEST(InputReleaseTest, PruneReleasesTheDiagramAndNeverReadsItAfter) {
+  const proto::PipelineOptions options;
+  const auto store = StoreUpToVoronoi(options);
+  const auto map = ReadHeadArtifact<proto::CleanedMap>(*store, "m", kCleanStage);
+  const auto diagram = ReadHeadArtifact<proto::VoronoiDiagram>(*store, "m", kVoronoiStage);
+  const std::string expected =
+      BuildTopologyGraph(diagram, map, options.prune()).SerializeAsString();
+
+  proto::VoronoiDiagram consumed = diagram;
+  std::vector<size_t> released;
+  const MessagePtr graph = StageOf(kPruneStage)
+                               .compute(
+                                   {&consumed, &map},
+                                   [&](size_t input) {
+                                     released.push_back(input);
+                                     consumed.Clear();  // as if freed
+                                   },
+                                   options);
+  EXPECT_EQ(released, std::vector<size_t>{0});
+  EXPECT_TRUE(graph->SerializeAsString() == expected)
+      << "prune read the diagram after releasing it";
+}
+
+TEST(InputReleaseTest, TheLastReaderFreesTheMemosArtifactAndOthersLeaveIt) {
+  const proto::PipelineOptions options;
+  for (const bool last_read : {false, true}) {
+    const auto store = StoreUpToVoronoi(options);
+    std::string key;
+    auto diagram = std::make_shared<proto::VoronoiDiagram>(
+        ReadHeadArtifact<proto::VoronoiDiagram>(*store, "m", kVoronoiStage, &key));
+    const std::weak_ptr<const google::protobuf::Message> watch = diagram;
+    ArtifactMemo memo;
+    memo.Keep(kVoronoiStage.name, key, std::move(diagram));
+    if (last_read) memo.MarkLastRead(kVoronoiStage.name);
+    const StageRun run = RunStageOnHeads(*store, "m", StageOf(kPruneStage), options, false, &memo);
+    EXPECT_FALSE(run.cache_hit);
+    EXPECT_EQ(watch.expired(), last_read) << "last_read = " << last_read;
+    EXPECT_EQ(memo.Acquire(kVoronoiStage.name, key) == nullptr, last_read);
+  }
+}
+
+}  // namespace
+}  // namespace areagraph

@@ -1,0 +1,87 @@
+#include "store/payload_encoder.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "proto/artifacts.pb.h"
+#include "store/digest.h"
+#include "store/payload_codec.h"
+
+namespace areagraph {
+namespace {
+
+constexpr int64_t kZstd = static_cast<int64_t>(PayloadCodec::kZstd);
+
+// A diagram of `vertex_count` vertices and as many edges: several MB, so
+// that serialization passes many buffers and zstd many blocks and windows.
+proto::VoronoiDiagram RandomDiagram(int vertex_count) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(0.0, 4000.0);
+  proto::VoronoiDiagram diagram;
+  diagram.set_format_version(1);
+  for (int v = 0; v < vertex_count; ++v) {
+    proto::Point2* site = diagram.add_sites();
+    site->set_x(std::floor(coordinate(random)) + 0.5);
+    site->set_y(std::floor(coordinate(random)) + 0.5);
+    proto::VoronoiVertex* vertex = diagram.add_vertices();
+    vertex->mutable_position()->set_x(coordinate(random));
+    vertex->mutable_position()->set_y(coordinate(random));
+    vertex->set_clearance_px(coordinate(random) / 100);
+    proto::VoronoiEdge* edge = diagram.add_edges();
+    edge->set_source(v);
+    edge->set_target(static_cast<int>(random() % vertex_count));
+    edge->set_left_site(static_cast<int>(random() % vertex_count));
+    edge->set_right_site(static_cast<int>(random() % vertex_count));
+    edge->set_clearance_px(coordinate(random) / 100);
+  }
+  return diagram;
+}
+
+// What the store wrote before: the serialized copy, compressed in one go.
+void ExpectSameAsOneShot(const EncodedPayload& encoded, const std::string& raw) {
+  EXPECT_EQ(encoded.raw_bytes, static_cast<int64_t>(raw.size()));
+  EXPECT_EQ(encoded.digest, Sha256Hex(raw));
+  EXPECT_TRUE(encoded.frame == CompressPayload(raw)) << "the stored bytes changed";
+  EXPECT_TRUE(DecodePayload(encoded.frame, kZstd) == raw);
+}
+
+TEST(PayloadEncoderTest, StreamedMessageEqualsOneShotCompressionOfItsBytes) {
+  const proto::VoronoiDiagram diagram = RandomDiagram(150000);
+  const std::string raw = diagram.SerializeAsString();
+  ASSERT_GT(raw.size(), size_t{4} << 20);
+  ExpectSameAsOneShot(EncodeMessagePayload(diagram), raw);
+}
+
+TEST(PayloadEncoderTest, LongBytesFieldEqualsOneShot) {
+  proto::GridMap grid;
+  grid.mutable_frame()->set_width_px(1500);
+  std::string cells(1500 * 1400, '\0');
+  std::mt19937 random(3);
+  for (char& cell : cells) cell = static_cast<char>(random() % 3 == 0 ? random() % 3 : 0);
+  grid.set_cells(cells);
+  ExpectSameAsOneShot(EncodeMessagePayload(grid), grid.SerializeAsString());
+}
+
+TEST(PayloadEncoderTest, SmallAndEmptyMessagesEqualOneShot) {
+  ExpectSameAsOneShot(EncodeMessagePayload(proto::VoronoiDiagram()), "");
+  ExpectSameAsOneShot(EncodeMessagePayload(RandomDiagram(3)), RandomDiagram(3).SerializeAsString());
+}
+
+TEST(PayloadEncoderTest, RawBytesEqualOneShot) {
+  const std::string raw = RandomDiagram(20000).SerializeAsString();
+  ExpectSameAsOneShot(EncodeRawPayload(raw), raw);
+  ExpectSameAsOneShot(EncodeRawPayload(""), "");
+}
+
+TEST(PayloadEncoderTest, ConsecutiveEncodingsDoNotLeakState) {
+  const std::string first = RandomDiagram(1000).SerializeAsString();
+  const EncodedPayload again = EncodeRawPayload(first);
+  EncodeMessagePayload(RandomDiagram(50000));
+  EXPECT_TRUE(EncodeRawPayload(first).frame == again.frame);
+}
+
+}  // namespace
+}  // namespace areagraph
