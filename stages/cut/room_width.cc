@@ -66,7 +66,7 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   proto::RoomWidthEstimate estimate;
   if (options.room_width_auto() && !strategy) {
     estimate = EstimateRoomWidth(LongestPart(topology), frame.resolution_m(), fixed,
-                                 options.room_width_above_doors());
+                                 options.room_width_above_doors(), options.room_width_door_margin_m());
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);
