@@ -109,6 +109,8 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
           "match.min_overlap = " + FormatNumber(options.min_overlap()) +
               " must be above 0 and at most 1 (a fraction of the smaller area)");
   RequireNotNegative(options.passage_max_shift_m(), "match.passage_max_shift_m", "metres");
+  RequireNotNegative(options.fold_fragments_below_m2(), "match.fold_fragments_below_m2",
+                     "square metres");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

@@ -35,7 +35,8 @@ inline constexpr StageInfo kCutStage{"cut", 5};
 // merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
 // merge 7: areas in every part's boundary, components and dropped parts counted (issue 13).
 inline constexpr StageInfo kMergeStage{"merge", 7};
-inline constexpr StageInfo kMatchStage{"match", 1};
+// match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
+inline constexpr StageInfo kMatchStage{"match", 2};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {

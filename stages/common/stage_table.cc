@@ -185,7 +185,7 @@ std::vector<StageDefinition> MakeStageTable() {
          const proto::PipelineOptions& o) {
         return Wrap(MatchAreaGraph(Input<proto::AreaGraph>(in, 0),
                                    static_cast<const proto::AreaGraph*>(previous), version,
-                                   o.match()));
+                                   o.match(), SegmentationOptionsDigest(o)));
       },
   });
   return table;

@@ -6,6 +6,7 @@
 
 #include "stages/cut/edge_track.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/point_buckets.h"
 
 namespace areagraph {
 namespace {
@@ -150,14 +151,18 @@ std::vector<proto::DetectedWidth> OnePerPlace(std::vector<proto::DetectedWidth> 
   std::sort(doors.begin(), doors.end(),
             [](const auto& a, const auto& b) { return a.width_m() > b.width_m(); });
   std::vector<proto::DetectedWidth> kept;
+  // Buckets twice the reach wide: only kept doors in the nine around a door
+  // can be near it (thousands of doors on cluttered maps).
+  PointBuckets kept_places(2 * kDoorReachM / resolution_m);
   for (const proto::DetectedWidth& door : doors) {
-    bool near = false;
-    for (const proto::DetectedWidth& other : kept) {
-      const double d = std::hypot(door.position().x() - other.position().x(),
-                                  door.position().y() - other.position().y());
-      near |= d * resolution_m < kDoorReachM;
-    }
-    if (!near) kept.push_back(door);
+    const double x = door.position().x(), y = door.position().y();
+    const bool near = kept_places.AnyNear(x, y, [&](int k) {
+      const proto::Point2& other = kept[k].position();
+      return std::hypot(x - other.x(), y - other.y()) * resolution_m < kDoorReachM;
+    });
+    if (near) continue;
+    kept_places.Add(x, y, static_cast<int>(kept.size()));
+    kept.push_back(door);
   }
   return kept;
 }

@@ -261,6 +261,21 @@ proto::Polygon SiteAlphaShape::EnclosedRegionOutline(int region) {
   return Impl::ToPolygon(found->second, /*with_holes=*/false);
 }
 
+std::map<int, proto::Polygon> SiteAlphaShape::EnclosedRegionOutlines(const std::set<int>& regions) {
+  Impl& impl = *impl_;
+  std::map<int, proto::Polygon> outlines;
+  if (!impl.HasFaces() || regions.empty()) return outlines;
+  // A region's rings do not depend on the others' (each walk marks its own
+  // region's faces only), so one pass gives what EnclosedRegionOutline gives.
+  const auto rings = impl.RegionRings(&FaceInfo::filled_region);
+  for (const int region : regions) {
+    const auto found = rings.find(region);
+    outlines[region] =
+        found == rings.end() ? proto::Polygon() : Impl::ToPolygon(found->second, false);
+  }
+  return outlines;
+}
+
 int SiteAlphaShape::DetectRooms(
     const std::function<bool(const Eigen::Vector2d&)>& inside_boundary) {
   Impl& impl = *impl_;

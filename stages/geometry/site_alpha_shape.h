@@ -2,7 +2,9 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <map>
 #include <memory>
+#include <set>
 #include <vector>
 
 #include "proto/geometry.pb.h"
@@ -35,6 +37,8 @@ class SiteAlphaShape {
   // The outer ring of a region (rooms wider than alpha are inside it, not
   // holes); empty for an unknown region.
   proto::Polygon EnclosedRegionOutline(int region);
+  // EnclosedRegionOutline of each of `regions`, in one pass over the faces.
+  std::map<int, proto::Polygon> EnclosedRegionOutlines(const std::set<int>& regions);
 
   // --- Rooms (ag-cut) ---
 

@@ -9,7 +9,10 @@
 #include <vector>
 
 #include "common/error.h"
+#include "stages/common/pipeline_options.h"
 #include "stages/match/area_cells.h"
+#include "stages/match/fragment_folding.h"
+#include "store/digest.h"
 
 namespace areagraph {
 namespace {
@@ -22,13 +25,13 @@ std::vector<int> StableAreaIds(const proto::AreaGraph& graph) {
 }
 
 // Gives each area of `current` the stable id of the previous area it matches
-// (or -1); see MatchAreaGraph.
+// (or -1); see MatchAreaGraph. `after`: current's cells; `overlaps`: with
+// the previous graph's cells, as CountOverlaps gives them.
 std::vector<int> MatchAreas(const proto::AreaGraph& current, const proto::AreaGraph& previous,
-                            double min_overlap) {
-  const AreaCells after = RasterizeAreas(current, current.frame());
-  const AreaCells before = RasterizeAreas(previous, current.frame());
+                            const AreaCells& after, const AreaCells& before,
+                            const std::vector<AreaOverlap>& overlaps, double min_overlap) {
   std::vector<AreaOverlap> pairs;
-  for (const AreaOverlap& pair : CountOverlaps(before, after)) {
+  for (const AreaOverlap& pair : overlaps) {
     const int64_t smaller = std::min(before.cells[pair.before], after.cells[pair.after]);
     if (pair.cells >= min_overlap * smaller) pairs.push_back(pair);
   }
@@ -46,6 +49,29 @@ std::vector<int> MatchAreas(const proto::AreaGraph& current, const proto::AreaGr
     ids[pair.after] = previous.areas(pair.before).stable_id();
   }
   return ids;
+}
+
+// Matches the areas of `current` to `previous`, first folding the pieces
+// that noise split off a previous area back into it (FindNoiseFragments;
+// again while folds make more of them, as when a piece only borders another
+// piece): `current` becomes the graph that is published, and the result is
+// its areas' previous ids (or -1).
+std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
+                                            const proto::AreaGraph& previous,
+                                            const proto::MatchOptions& options, bool fold) {
+  const AreaCells before = RasterizeAreas(previous, current.frame());
+  while (true) {
+    const AreaCells after = RasterizeAreas(current, current.frame());
+    const std::vector<AreaOverlap> overlaps = CountOverlaps(before, after);
+    std::vector<int> ids =
+        MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
+    if (!fold || options.fold_fragments_below_m2() <= 0) return ids;
+    const std::vector<AreaFold> folds = FindNoiseFragments(current, previous, ids, after, overlaps,
+                                                           options.fold_fragments_below_m2());
+    int folded = 0;
+    if (!folds.empty()) current = FoldAreas(current, folds, &folded);
+    if (folded == 0) return ids;
+  }
 }
 
 // The two stable area ids a passage joins, smaller first.
@@ -110,7 +136,8 @@ void CheckIsMatched(const proto::AreaGraph& previous) {
 }  // namespace
 
 proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::AreaGraph* previous,
-                                const VersionLink& version, const proto::MatchOptions& options) {
+                                const VersionLink& version, const proto::MatchOptions& options,
+                                const std::string& segmentation_options_digest) {
   for (const proto::Passage& passage : current.passages()) {
     if (passage.area_a() < 0 || passage.area_a() >= current.areas_size() || passage.area_b() < 0 ||
         passage.area_b() >= current.areas_size()) {
@@ -118,22 +145,24 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
                        " joins an area that is not in the graph");
     }
   }
+  proto::AreaGraph matched = current;
   std::vector<int> area_ids(current.areas_size(), -1);
-  std::vector<int> passage_ids(current.passages_size(), -1);
   int32_t next_area_id = 0, next_passage_id = 0;
   if (previous != nullptr) {
     CheckIsMatched(*previous);
-    area_ids = MatchAreas(current, *previous, options.min_overlap());
+    const bool same_segmentation =
+        previous->version().segmentation_options_digest() == segmentation_options_digest;
+    area_ids = MatchAreasFoldingFragments(matched, *previous, options, same_segmentation);
     next_area_id = previous->version().next_area_id();
     next_passage_id = previous->version().next_passage_id();
   }
   NumberNewOnes(area_ids, next_area_id);
+  std::vector<int> passage_ids(matched.passages_size(), -1);
   if (previous != nullptr) {
-    passage_ids = MatchPassages(current, area_ids, *previous, options.passage_max_shift_m());
+    passage_ids = MatchPassages(matched, area_ids, *previous, options.passage_max_shift_m());
   }
   NumberNewOnes(passage_ids, next_passage_id);
 
-  proto::AreaGraph matched = current;
   for (int i = 0; i < matched.areas_size(); ++i)
     matched.mutable_areas(i)->set_stable_id(area_ids[i]);
   for (int i = 0; i < matched.passages_size(); ++i) {
@@ -144,7 +173,16 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
   place->set_predecessor_key(version.predecessor_key);
   place->set_next_area_id(next_area_id);
   place->set_next_passage_id(next_passage_id);
+  if (!segmentation_options_digest.empty()) {
+    place->set_segmentation_options_digest(segmentation_options_digest);
+  }
   return matched;
+}
+
+std::string SegmentationOptionsDigest(const proto::PipelineOptions& options) {
+  proto::PipelineOptions segmentation = options;
+  segmentation.clear_match();
+  return Sha256Hex(CanonicalText(segmentation));
 }
 
 }  // namespace areagraph

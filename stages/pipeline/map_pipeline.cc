@@ -1,6 +1,7 @@
 #include "stages/pipeline/map_pipeline.h"
 
 #include "common/error.h"
+#include "stages/common/freed_memory.h"
 #include "stages/common/stage_versions.h"
 
 namespace areagraph {
@@ -64,6 +65,7 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
     for (const StageDefinition& stage : StageTable()) {
       if (!ReadLater(stages, i + 1, end, stage.info)) memo->Forget(stage.info.name);
     }
+    ReturnFreedMemory();
   }
 }
 

@@ -18,13 +18,18 @@ void AppendTail(const std::vector<T>& tail, size_t skip, std::vector<T>* out) {
 
 ChainEdge ChainEdge::Reversed() const {
   ChainEdge reversed = *this;
-  std::swap(reversed.source, reversed.target);
-  std::reverse(reversed.path.begin(), reversed.path.end());
-  std::reverse(reversed.clearance_px.begin(), reversed.clearance_px.end());
-  // Walking the other way swaps the sides.
-  reversed.left_sites.assign(right_sites.rbegin(), right_sites.rend());
-  reversed.right_sites.assign(left_sites.rbegin(), left_sites.rend());
+  reversed.Reverse();
   return reversed;
+}
+
+void ChainEdge::Reverse() {
+  std::swap(source, target);
+  std::reverse(path.begin(), path.end());
+  std::reverse(clearance_px.begin(), clearance_px.end());
+  // Walking the other way swaps the sides.
+  std::swap(left_sites, right_sites);
+  std::reverse(left_sites.begin(), left_sites.end());
+  std::reverse(right_sites.begin(), right_sites.end());
 }
 
 void ChainEdge::Append(const ChainEdge& next) {
@@ -86,17 +91,22 @@ void ChainGraph::JoinDegreeTwoChains() {
 
   std::vector<bool> used(edges.size(), false);
   std::vector<ChainEdge> joined;
+  // Each edge enters one chain and `edges` is replaced at the end, so the
+  // walk turns and moves the edges themselves instead of copying them.
+  auto take = [&](const Incidence& end) -> ChainEdge& {
+    used[end.edge] = true;
+    if (end.at_target) edges[end.edge].Reverse();
+    return edges[end.edge];
+  };
   auto walk = [&](int start, Incidence first) {
-    ChainEdge chain = first.at_target ? edges[first.edge].Reversed() : edges[first.edge];
-    used[first.edge] = true;
+    ChainEdge chain = std::move(take(first));
     int came_by = first.edge;
     int v = chain.target;
     while (v != start && !is_anchor(v)) {
       const auto& at = incidences[v];
       const Incidence next = at[0].edge == came_by ? at[1] : at[0];
       if (used[next.edge]) break;
-      used[next.edge] = true;
-      chain.Append(next.at_target ? edges[next.edge].Reversed() : edges[next.edge]);
+      chain.Append(take(next));
       came_by = next.edge;
       v = chain.target;
     }

@@ -37,6 +37,8 @@ struct ChainEdge {
   double Length() const { return PathLength(path); }
   // The same chain walked from target to source.
   ChainEdge Reversed() const;
+  // Turns this chain around in place (what Reversed returns).
+  void Reverse();
   // Appends `next`, which must start where this chain ends.
   void Append(const ChainEdge& next);
   // The edge's own polygon followed by everything it absorbed.

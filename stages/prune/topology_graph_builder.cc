@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <opencv2/imgproc.hpp>
 #include <set>
 #include <vector>
@@ -35,15 +37,29 @@ void CheckIndex(int index, int size, const char* element, int edge) {
 }
 
 // The Voronoi edges that survive the boundary, free-cell and clearance
-// filters, as one-segment chains.
-ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const CellGrid& grid,
-                                SiteAlphaShape& boundary_shape, double min_clearance_px) {
+// filters as one-segment chains, the enclosed region of each chain vertex,
+// and the outline of every region that holds one.
+struct FilteredGraph {
+  ChainGraph graph;
+  std::vector<int> vertex_region;  // by chain vertex
+  std::map<int, proto::Polygon> region_outlines;
+};
+
+// Builds the FilteredGraph. Frees `boundary_shape` (its triangulation is
+// about as big as the diagram) once the outlines are taken, before the
+// chains are built.
+FilteredGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const CellGrid& grid,
+                                   std::unique_ptr<SiteAlphaShape> boundary_shape,
+                                   double min_clearance_px) {
   const int vertex_count = diagram.vertices_size();
   const int site_count = diagram.sites_size();
   std::vector<char> keep(vertex_count, 0);
+  std::vector<int> region(vertex_count, -1);
   for (int v = 0; v < vertex_count; ++v) {
     const Eigen::Vector2d p = FromProtoPoint(diagram.vertices(v).position());
-    keep[v] = grid.FreeAt(p) && boundary_shape.EnclosedRegionAt(p) >= 0;
+    if (!grid.FreeAt(p)) continue;
+    region[v] = boundary_shape->EnclosedRegionAt(p);
+    keep[v] = region[v] >= 0;
   }
 
   DisjointSets same_point(vertex_count);
@@ -66,7 +82,19 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
     }
   }
 
-  ChainGraph graph;
+  FilteredGraph filtered;
+  std::set<int> regions;
+  for (int e : kept_edges) {
+    for (const int v : {diagram.edges(e).source(), diagram.edges(e).target()}) {
+      regions.insert(region[same_point.Find(v)]);
+    }
+  }
+  filtered.region_outlines = boundary_shape->EnclosedRegionOutlines(regions);
+  boundary_shape.reset();
+
+  ChainGraph& graph = filtered.graph;
+  // Sized once: on a large map, doubling would hold two copies for a moment.
+  graph.edges.reserve(kept_edges.size());
   std::vector<int> chain_vertex(vertex_count, -1);
   auto vertex_of = [&](int voronoi_vertex) {
     const int root = same_point.Find(voronoi_vertex);
@@ -74,6 +102,7 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
       chain_vertex[root] = static_cast<int>(graph.vertices.size());
       const proto::VoronoiVertex& v = diagram.vertices(root);
       graph.vertices.push_back({FromProtoPoint(v.position()), v.clearance_px(), false});
+      filtered.vertex_region.push_back(region[root]);
     }
     return chain_vertex[root];
   };
@@ -92,7 +121,7 @@ ChainGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const Cell
     chain.min_clearance_px = edge.clearance_px();
     graph.edges.push_back(std::move(chain));
   }
-  return graph;
+  return filtered;
 }
 
 // The 4-connected pieces of the map's free cells: the parts of the map.
@@ -125,13 +154,12 @@ FreeSpaceParts LabelFreeSpace(const CellGrid& grid) {
 
 // The outlines of the enclosed regions that hold a vertex of the kept graph,
 // biggest region first (ties: the lower id).
-std::vector<proto::Polygon> PartBoundaries(const ChainGraph& graph, SiteAlphaShape& shape,
+std::vector<proto::Polygon> PartBoundaries(const FilteredGraph& filtered,
                                            const std::vector<double>& region_area) {
   std::set<int> regions;
-  for (const ChainEdge& edge : graph.edges) {
+  for (const ChainEdge& edge : filtered.graph.edges) {
     for (const int v : {edge.source, edge.target}) {
-      const int region = shape.EnclosedRegionAt(graph.vertices[v].position);
-      if (region >= 0) regions.insert(region);
+      if (filtered.vertex_region[v] >= 0) regions.insert(filtered.vertex_region[v]);
     }
   }
   std::vector<int> order(regions.begin(), regions.end());
@@ -139,8 +167,8 @@ std::vector<proto::Polygon> PartBoundaries(const ChainGraph& graph, SiteAlphaSha
                    [&](int a, int b) { return region_area[a] > region_area[b]; });
   std::vector<proto::Polygon> outlines;
   for (const int region : order) {
-    proto::Polygon outline = shape.EnclosedRegionOutline(region);
-    if (outline.outer().points_size() >= 3) outlines.push_back(std::move(outline));
+    const proto::Polygon& outline = filtered.region_outlines.at(region);
+    if (outline.outer().points_size() >= 3) outlines.push_back(outline);
   }
   return outlines;
 }
@@ -205,15 +233,20 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
     throw InputError("no Topology Graph: the map has " + std::to_string(sites.size()) +
                      " obstacle cells next to free space, too few to enclose any");
   }
-  SiteAlphaShape boundary_shape(sites, options.boundary_alpha_radius_m() / resolution);
-  const std::vector<double> region_area = boundary_shape.FindEnclosedRegions();
+  // Held by pointer: FilteredVoronoiGraph frees it before the chains are
+  // built (on large maps it is a good part of the stage's peak memory).
+  auto boundary_shape =
+      std::make_unique<SiteAlphaShape>(sites, options.boundary_alpha_radius_m() / resolution);
+  const std::vector<double> region_area = boundary_shape->FindEnclosedRegions();
   if (region_area.empty()) {
     throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +
                      Metres(options.boundary_alpha_radius_m()) + " radius)");
   }
 
   const double min_clearance_px = options.min_clearance_m() / resolution;
-  ChainGraph graph = FilteredVoronoiGraph(diagram, grid, boundary_shape, min_clearance_px);
+  FilteredGraph filtered =
+      FilteredVoronoiGraph(diagram, grid, std::move(boundary_shape), min_clearance_px);
+  ChainGraph& graph = filtered.graph;
   graph.JoinDegreeTwoChains();
   if (graph.edges.empty()) {
     throw InputError("no Topology Graph: no Voronoi edge inside the boundary keeps " +
@@ -229,7 +262,7 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   const PartSelection selection = graph.KeepParts(
       [&](int v) { return free_space.PartAt(graph.vertices[v].position); }, free_space.cells,
       static_cast<int64_t>(std::ceil(options.min_component_m2() / (resolution * resolution))));
-  std::vector<proto::Polygon> parts = PartBoundaries(graph, boundary_shape, region_area);
+  std::vector<proto::Polygon> parts = PartBoundaries(filtered, region_area);
   if (parts.empty()) {
     throw InputError("no Topology Graph: no part of the graph lies inside the boundary");
   }

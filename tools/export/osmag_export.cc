@@ -19,6 +19,13 @@ constexpr double kStructureMarginM = 0.1;
 
 std::string Metres(double value) { return FixedDecimals(value, 3); }
 
+// The id that stays across the map's versions (ag-match), for a graph that
+// has them; a merge artifact's indices are not stable, so they get none.
+std::string StableIdTag(const proto::AreaGraph& graph, int32_t stable_id) {
+  if (!graph.has_version()) return "";
+  return OsmTag("areagraph:stable_id", std::to_string(stable_id));
+}
+
 double SquaredDistanceToSegment(const proto::Point2& p, const proto::Point2& a,
                                 const proto::Point2& b) {
   const double dx = b.x() - a.x(), dy = b.y() - a.y(), length2 = dx * dx + dy * dy;
@@ -109,21 +116,22 @@ std::string AreaGraphToOsmAg(const proto::AreaGraph& graph, const OsmAgSettings&
     for (const proto::Point2& p : rings[i]) outline.push_back(nodes.NodeAt(p.x(), p.y()));
     outline.push_back(outline.front());
     ways += OsmWayXml(nodes.NextId(), outline,
-                      OsmTag("areagraph:kind", AreaKindName(area.kind())) + height +
-                          OsmTag("indoor", "room") + level + OsmTag("name", AreaName(area.id())) +
+                      OsmTag("areagraph:kind", AreaKindName(area.kind())) +
+                          StableIdTag(graph, area.stable_id()) + height + OsmTag("indoor", "room") +
+                          level + OsmTag("name", AreaName(area.id())) +
                           OsmTag("osmAG:areaType", "room") +
                           OsmTag("osmAG:parent", settings.map_name) + OsmTag("osmAG:type", "area"));
   }
   for (const proto::Passage& passage : graph.passages()) {
     std::vector<int64_t> line;
     for (const proto::Point2& p : PassageLine(passage)) line.push_back(nodes.NodeAt(p.x(), p.y()));
-    ways +=
-        OsmWayXml(nodes.NextId(), line,
-                  OsmTag("door", "yes") + OsmTag("indoor", "door") + level +
-                      OsmTag("name", "passage_" + std::to_string(passage.id())) +
-                      OsmTag("osmAG:from", AreaName(passage.area_a())) +
-                      OsmTag("osmAG:to", AreaName(passage.area_b())) +
-                      OsmTag("osmAG:type", "passage") + OsmTag("width", Metres(passage.width_m())));
+    ways += OsmWayXml(
+        nodes.NextId(), line,
+        StableIdTag(graph, passage.stable_id()) + OsmTag("door", "yes") + OsmTag("indoor", "door") +
+            level + OsmTag("name", "passage_" + std::to_string(passage.id())) +
+            OsmTag("osmAG:from", AreaName(passage.area_a())) +
+            OsmTag("osmAG:to", AreaName(passage.area_b())) + OsmTag("osmAG:type", "passage") +
+            OsmTag("width", Metres(passage.width_m())));
   }
   return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
          "<osm version=\"0.6\" generator=\"areagraph\" upload=\"never\">\n" +

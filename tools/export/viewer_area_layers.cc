@@ -86,6 +86,7 @@ viewer::AreaLayer AreaLayerOf(const proto::AreaGraph& graph) {
     SetPixel(transform, area.centroid_m(), added->mutable_label_at());
     added->mutable_topology_edge_ids()->CopyFrom(area.topology_edge_ids());
     added->mutable_passage_ids()->CopyFrom(area.passage_ids());
+    if (graph.has_version()) added->set_stable_id(area.stable_id());
   }
   for (const proto::Passage& passage : graph.passages()) {
     viewer::Passage* added = layer.add_passages();
@@ -96,6 +97,7 @@ viewer::AreaLayer AreaLayerOf(const proto::AreaGraph& graph) {
     SetPixel(transform, passage.segment_m().a(), added->mutable_a());
     SetPixel(transform, passage.segment_m().b(), added->mutable_b());
     SetPixel(transform, passage.point_m(), added->mutable_at());
+    if (graph.has_version()) added->set_stable_id(passage.stable_id());
   }
   return layer;
 }

@@ -88,7 +88,9 @@ void AddLayer(const ArtifactRecord& artifact, const ArtifactRecord* grid_artifac
     proto::CutOptions options;
     ParseStageOptions(stage, artifact.options_text, &options);
     *run->mutable_room_width() = RoomWidthOf(cut.room_width(), options);
-  } else if (stage == kMergeStage.name) {
+  } else if (stage == kMergeStage.name || stage == kMatchStage.name) {
+    // Match comes after merge: its graph (stable ids, noise pieces folded
+    // back) is the one published, and replaces merge's.
     *run->mutable_area_graph() = AreaLayerOf(Parse<proto::AreaGraph>(artifact));
   }
 }

@@ -48,8 +48,10 @@ std::string MapThumbnailPng(const std::vector<ArtifactRecord>& run, int max_side
   if (!BaseCells(run, &cells, &frame)) return "";
   Canvas canvas(cells, frame.width_px(), frame.height_px(), 1);
   proto::AreaGraph graph;
-  if (const ArtifactRecord* merge = StageArtifact(run, kMergeStage);
-      merge != nullptr && graph.ParseFromString(merge->payload)) {
+  // The published graph (match: stable ids as labels), else merge's.
+  const ArtifactRecord* published = StageArtifact(run, kMatchStage);
+  if (published == nullptr) published = StageArtifact(run, kMergeStage);
+  if (published != nullptr && graph.ParseFromString(published->payload)) {
     DrawAreaGraph(graph, canvas);
   }
   const cv::Mat& full = canvas.image();

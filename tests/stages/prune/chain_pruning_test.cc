@@ -64,6 +64,21 @@ TEST(ChainGraphTest, DegreeTwoChainsJoinAndCyclesKeepOneJunction) {
   EXPECT_TRUE(cycle.vertices[cycle.edges[0].source].forced_junction);
 }
 
+TEST(ChainGraphTest, ReverseInPlaceEqualsReversed) {
+  ChainEdge edge = Chain(3, 7, {0, 0}, {10, 5}, 4, 2);
+  edge.clearance_px = {1, 2, 3, 4, 5};
+  const ChainEdge expected = edge.Reversed();
+  edge.Reverse();
+  EXPECT_EQ(edge.source, 7);
+  EXPECT_EQ(edge.target, 3);
+  EXPECT_EQ(edge.path, expected.path);
+  EXPECT_EQ(edge.clearance_px, expected.clearance_px);
+  EXPECT_EQ(edge.left_sites, expected.left_sites);
+  EXPECT_EQ(edge.right_sites, expected.right_sites);
+  EXPECT_EQ(edge.path.front(), Eigen::Vector2d(10, 5));
+  EXPECT_EQ(edge.clearance_px.front(), 5);
+}
+
 TEST(ChainPruningTest, ShortDeadEndGoesAndItsPolygonIsAbsorbed) {
   ChainGraph graph = Star(30);
   EXPECT_EQ(RemoveShortDeadEnds(&graph, 50), 1);

@@ -74,6 +74,19 @@ TEST(OsmAgExport, SharesNodesAndOrdersWays) {
   EXPECT_EQ(xml.find("\"height\""), std::string::npos);
 }
 
+TEST(OsmAgExport, TagsTheStableIdsOfAMatchedGraphOnly) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  const std::string unmatched = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  EXPECT_EQ(unmatched.find("areagraph:stable_id"), std::string::npos);
+  graph.mutable_version()->set_number(3);
+  graph.mutable_areas(0)->set_stable_id(7);
+  graph.mutable_areas(1)->set_stable_id(2);
+  graph.mutable_passages(0)->set_stable_id(11);
+  const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"areagraph:stable_id\" v=\"(\\d+)\"/>"),
+            (std::vector<std::string>{"7", "2", "11"}));
+}
+
 TEST(OsmAgExport, WritesLevelAndHeightWhenGiven) {
   OsmAgSettings settings{"house", GeoAnchor()};
   settings.level = -1;

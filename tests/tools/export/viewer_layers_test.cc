@@ -245,6 +245,21 @@ TEST(AreaLayerOf, AreasAndPassagesInPixels) {
   EXPECT_DOUBLE_EQ(std::abs(passage.a().y() - passage.b().y()), 6);
 }
 
+TEST(AreaLayerOf, CarriesStableIdsOfAMatchedGraphOnly) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  EXPECT_FALSE(AreaLayerOf(graph).areas(0).has_stable_id());
+  EXPECT_FALSE(AreaLayerOf(graph).passages(0).has_stable_id());
+  graph.mutable_version()->set_number(2);
+  graph.mutable_areas(0)->set_stable_id(5);
+  graph.mutable_areas(1)->set_stable_id(9);
+  graph.mutable_passages(0)->set_stable_id(4);
+  const viewer::AreaLayer layer = AreaLayerOf(graph);
+  EXPECT_EQ(layer.areas(0).stable_id(), 5);
+  EXPECT_EQ(layer.areas(1).stable_id(), 9);
+  EXPECT_EQ(layer.areas(1).id(), 1);  // the index still links passages to areas
+  EXPECT_EQ(layer.passages(0).stable_id(), 4);
+}
+
 TEST(StageOptionValues, FlagsTheOptionsThatDepartFromTheDefaults) {
   const auto values =
       StageOptionValues("cut", "room_width_m: 0.9\nroom_width_auto: false\ndoor_width_m: 0\n");

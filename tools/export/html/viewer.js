@@ -85,6 +85,12 @@
     return 'hsl(' + ((id * 137.508) % 360).toFixed(1) + ',65%,' + (lightness || 55) + '%)';
   }
 
+  // The id shown for an area or passage: its stable id (kept across the map's
+  // versions) when the graph has them, else its index in the graph.
+  function shownId(item) {
+    return item.stable_id !== undefined ? item.stable_id : item.id;
+  }
+
   function metres(value, digits) {
     return value === undefined ? '-' : value.toFixed(digits === undefined ? 2 : digits) + ' m';
   }
@@ -181,7 +187,7 @@
       if (!graph) return;
       for (const area of graph.areas || []) {
         svg('path', {
-          d: area.path, class: 'area', fill: idColour(area.id), stroke: idColour(area.id, 30),
+          d: area.path, class: 'area', fill: idColour(shownId(area)), stroke: idColour(shownId(area), 30),
           'data-sel': 'area/' + area.id, 'data-id': area.id,
         }, group);
       }
@@ -189,7 +195,7 @@
       for (const area of graph.areas || []) {
         if (!area.label_at) continue;
         svg('text', { x: area.label_at.x, y: area.label_at.y, class: 'area-label' }, labels)
-          .textContent = String(area.id);
+          .textContent = String(shownId(area));
       }
     },
     passages(group, run) {
@@ -460,7 +466,8 @@
         const other = passage.area_a === area.id ? passage.area_b : passage.area_a;
         return ' (' + metres(passage.width_m) + ' to area ' + other + ')';
       }));
-      return 'Area ' + area.id;
+      if (area.stable_id !== undefined) row(table, 'index in this version', String(area.id));
+      return 'Area ' + shownId(area);
     },
     passage(run, passage, table) {
       row(table, 'width', metres(passage.width_m));
@@ -469,7 +476,8 @@
       between.appendChild(document.createTextNode(' and '));
       link(between, 'area', passage.area_b, run.index, 'area ' + passage.area_b);
       row(table, 'between', between);
-      return 'Passage ' + passage.id;
+      if (passage.stable_id !== undefined) row(table, 'index in this version', String(passage.id));
+      return 'Passage ' + shownId(passage);
     },
     door(run, door, table) {
       const width = run.room_width;

@@ -1,0 +1,17 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+namespace areagraph {
+
+// Encodes 8-bit images of 1 (grey), 3 (BGR) or 4 (BGRA) channels as PNG with
+// libpng directly: OpenCV's encoder is reached only by loading its codecs
+// (about 0.4 G instructions, more than drawing a picture), and it lets
+// libpng try every row filter, which costs more than the deflate itself.
+// `compression` is zlib's level (0-9); each row gets the filter `filters`
+// names (libpng's PNG_FILTER_* bits, PNG_ALL_FILTERS for its heuristic).
+// Returns false, leaving `png` empty, for other depths or channel counts.
+bool EncodePngWithLibpng(const cv::Mat& image, int compression, int filters, std::string* png);
+
+}  // namespace areagraph
