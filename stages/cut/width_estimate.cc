@@ -193,8 +193,8 @@ double NarrowestCorridorM(std::vector<proto::DetectedWidth> corridors) {
 }  // namespace
 
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
-                                           double resolution_m, double fallback_m,
-                                           bool above_doors, double door_margin_m) {
+                                           double resolution_m, double fallback_m, bool above_doors,
+                                           double door_margin_m) {
   std::vector<WidthProfile> profiles;
   std::vector<std::vector<int>> incident(topology.vertices_size());
   for (const proto::GraphEdge& edge : topology.edges()) {

@@ -25,8 +25,7 @@ namespace areagraph {
 // a door was found. Never below kMinRoomWidthM.
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m,
-                                           bool above_doors = false,
-                                           double door_margin_m = 0.1);
+                                           bool above_doors = false, double door_margin_m = 0.1);
 
 inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;

@@ -235,7 +235,8 @@ TEST(ChooseRoomWidthTest, DrawnMapGetsItsDoorWidthPlusATenth) {
   EXPECT_TRUE(chosen.automatic());
   EXPECT_EQ(chosen.doors_size(), 3);
   EXPECT_NEAR(chosen.room_width_m(), 0.9 + proto::CutOptions().room_width_door_margin_m(), 0.1);
-  EXPECT_DOUBLE_EQ(chosen.room_width_m(), chosen.widest_door_m() + proto::CutOptions().room_width_door_margin_m());
+  EXPECT_DOUBLE_EQ(chosen.room_width_m(),
+                   chosen.widest_door_m() + proto::CutOptions().room_width_door_margin_m());
   // What ag-cut stored is this choice.
   EXPECT_DOUBLE_EQ(stages.cut.room_width().room_width_m(), chosen.room_width_m());
   // The paper's strategy ignores the map.
