@@ -3,7 +3,10 @@
 #include <png.h>
 
 #include <csetjmp>
+#include <optional>
 #include <vector>
+
+#include "stages/common/png_palette.h"
 
 namespace areagraph {
 namespace {
@@ -27,10 +30,25 @@ struct WriteStructs {
   ~WriteStructs() { png_destroy_write_struct(&png, info != nullptr ? &info : nullptr); }
 };
 
+// Declares the picture's palette (as RGB) and its bits per index; libpng
+// packs the one-byte indices into them.
+void SetPalette(png_structp png, png_infop info, const cv::Mat& image,
+                const std::vector<cv::Vec3b>& colours) {
+  std::vector<png_color> entries;
+  for (const cv::Vec3b& bgr : colours) entries.push_back({bgr[2], bgr[1], bgr[0]});
+  const int depth = PaletteBitDepth(colours.size());
+  png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols),
+               static_cast<png_uint_32>(image.rows), depth, PNG_COLOR_TYPE_PALETTE,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_PLTE(png, info, entries.data(), static_cast<int>(entries.size()));
+}
+
 // The encoding proper; libpng reports errors by longjmp to here, so nothing
-// with a destructor lives in this frame (the caller owns `rows` and `png_out`).
+// with a destructor lives in this frame (the caller owns `rows`, `palette`
+// and `png_out`). A picture with a palette is written as its indices.
 bool Encode(WriteStructs& structs, const cv::Mat& image, int compression, int filters,
-            std::vector<png_bytep>* rows, std::string* png_out) {
+            const std::optional<PalettePicture>& palette, std::vector<png_bytep>* rows,
+            std::string* png_out) {
   png_structp png = structs.png;
   png_infop info = structs.info;
   if (setjmp(png_jmpbuf(png))) return false;
@@ -39,15 +57,26 @@ bool Encode(WriteStructs& structs, const cv::Mat& image, int compression, int fi
   const int colour_type = channels == 1   ? PNG_COLOR_TYPE_GRAY
                           : channels == 3 ? PNG_COLOR_TYPE_RGB
                                           : PNG_COLOR_TYPE_RGB_ALPHA;
-  png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols),
-               static_cast<png_uint_32>(image.rows), 8, colour_type, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  if (palette) {
+    SetPalette(png, info, image, palette->colours);
+  } else {
+    png_set_IHDR(png, info, static_cast<png_uint_32>(image.cols),
+                 static_cast<png_uint_32>(image.rows), 8, colour_type, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  }
   png_set_compression_level(png, compression);
   png_set_filter(png, PNG_FILTER_TYPE_BASE, filters);
   png_write_info(png, info);
-  if (channels > 1) png_set_bgr(png);
+  if (palette) {
+    if (PaletteBitDepth(palette->colours.size()) < 8) png_set_packing(png);
+  } else if (channels > 1) {
+    png_set_bgr(png);
+  }
+  const cv::Mat& samples = palette ? palette->indices : image;
   rows->resize(image.rows);
-  for (int y = 0; y < image.rows; ++y) (*rows)[y] = const_cast<png_bytep>(image.ptr<uchar>(y));
+  for (int y = 0; y < image.rows; ++y) {
+    (*rows)[y] = const_cast<png_bytep>(samples.ptr<uchar>(y));
+  }
   png_write_image(png, rows->data());
   png_write_end(png, nullptr);
   return true;
@@ -68,8 +97,13 @@ bool EncodePngWithLibpng(const cv::Mat& image, int compression, int filters, std
   if (structs.png == nullptr) return false;
   structs.info = png_create_info_struct(structs.png);
   if (structs.info == nullptr) return false;
-  std::vector<png_bytep> rows;  // outside Encode's setjmp frame
-  if (!Encode(structs, image, compression, filters, &rows, png)) {
+  // Outside Encode's setjmp frame: a BGR picture of few colours (maps, flat
+  // drawings) as palette indices, a third of the bytes or less to filter and
+  // deflate, and a smaller file.
+  const std::optional<PalettePicture> palette =
+      channels == 3 ? ToPalette(image) : std::optional<PalettePicture>();
+  std::vector<png_bytep> rows;
+  if (!Encode(structs, image, compression, filters, palette, &rows, png)) {
     png->clear();
     return false;
   }

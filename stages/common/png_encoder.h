@@ -11,6 +11,8 @@ namespace areagraph {
 // libpng try every row filter, which costs more than the deflate itself.
 // `compression` is zlib's level (0-9); each row gets the filter `filters`
 // names (libpng's PNG_FILTER_* bits, PNG_ALL_FILTERS for its heuristic).
+// A BGR image of at most 256 colours is written with a palette (the same
+// pixels when decoded, far fewer bytes to compress).
 // Returns false, leaving `png` empty, for other depths or channel counts.
 bool EncodePngWithLibpng(const cv::Mat& image, int compression, int filters, std::string* png);
 

@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <lcm/lcm-cpp.hpp>
@@ -21,12 +22,14 @@
 #include "runner/live/lcm_conversion.h"
 #include "runner/live/live_map_server.h"
 #include "stages/common/command_line.h"
+#include "stages/common/png_file.h"
 #include "tools/bench/id_stability.h"
 #include "tools/bench/median_timer.h"
 #include "tools/eval/label_image.h"
 #include "tools/eval/map_evaluation.h"
 #include "tools/example_maps/exploration.h"
 #include "tools/example_maps/random_floor_plan.h"
+#include "tools/export/area_label_image.h"
 
 namespace areagraph {
 namespace {
@@ -44,6 +47,7 @@ struct BenchFlags {
   std::string scratch_dir = "/tmp";
   bool cold = true;
   double timeout_s = 900;
+  std::string dump_dir;
   floorplan::ExplorationSettings exploration;
 };
 
@@ -171,6 +175,27 @@ double ColdPipelineMs(const proto::GridMap& grid, const std::string& scratch_dir
   return elapsed;
 }
 
+// Writes step `step` into `dir` for scoring with ag-eval outside the bench:
+// grid/<name>_NN.png (the grid sent, grey as ag-import reads it),
+// live/<name>_NN.png (the published graph's areas, 16-bit labels) and
+// gt/<name>_NN.png (the ground-truth rooms cropped to the grid and to what was
+// seen, 16-bit labels).
+void DumpStep(const std::string& dir, const std::string& name, int step,
+              const floorplan::ExplorationMap& map, const proto::AreaGraph& published,
+              const cv::Mat& gt_rooms) {
+  char file[300];
+  std::snprintf(file, sizeof(file), "/%s_%02d.png", name.c_str(), step);
+  cv::Mat grey(map.cells.size(), CV_8U, cv::Scalar(205));
+  grey.setTo(254, map.cells == floorplan::kFreeCell);
+  grey.setTo(0, map.cells == floorplan::kOccupiedCell);
+  WritePngFile(dir + "/grid" + file, grey);
+  WritePngFile(dir + "/live" + file, AreaLabelImage(published));
+  cv::Mat gt;
+  gt_rooms(map.crop).convertTo(gt, CV_16U);
+  gt.setTo(0, map.seen(map.crop) == 0);
+  WritePngFile(dir + "/gt" + file, gt);
+}
+
 std::string Percent(int part, int whole) {
   if (whole == 0) return "-";
   char text[32];
@@ -184,6 +209,11 @@ int RunBench(const BenchFlags& flags) {
     throw OptionsError("give either --map and --gt, or --generated");
   }
   if (!flags.map_path.empty() && flags.gt_path.empty()) throw OptionsError("--map needs --gt");
+  if (!flags.dump_dir.empty()) {
+    for (const char* sub : {"/grid", "/live", "/gt"}) {
+      std::filesystem::create_directories(flags.dump_dir + sub);
+    }
+  }
   const Truth truth = LoadTruth(flags);
   floorplan::ExplorationSettings settings = flags.exploration;
   settings.steps = flags.steps;
@@ -222,8 +252,11 @@ int RunBench(const BenchFlags& flags) {
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count();
     const double live_ms = ReceiptToPublicationMs(flags.live_log, published.artifact_key);
     const double cold_ms = flags.cold ? ColdPipelineMs(grid, flags.scratch_dir) : -1;
-    const GroundTruthView view =
-        ViewAgainstGroundTruth(AreaGraphFromLcm(published), truth.rooms, map.seen);
+    const proto::AreaGraph published_graph = AreaGraphFromLcm(published);
+    const GroundTruthView view = ViewAgainstGroundTruth(published_graph, truth.rooms, map.seen);
+    if (!flags.dump_dir.empty()) {
+      DumpStep(flags.dump_dir, flags.name, step, map, published_graph, truth.rooms);
+    }
     std::string tracked = "-", kept = "-";
     if (step > 1) {
       const IdStability stability = CompareViews(previous, view);
@@ -307,6 +340,11 @@ int main(int argc, char** argv) {
   app.add_option("--scratch", flags.scratch_dir, "folder for the cold runs' store")
       ->capture_default_str();
   app.add_flag("!--no-cold", flags.cold, "skip the cold pipeline runs");
+  app.add_option("--dump", flags.dump_dir,
+                 "also write each update into this folder: grid/<name>_NN.png (the grid sent), "
+                 "live/<name>_NN.png (the published areas as 16-bit labels) and gt/<name>_NN.png "
+                 "(the ground truth cropped to the grid and to what was seen), to score with "
+                 "ag-eval");
   app.add_option("--timeout", flags.timeout_s, "seconds to wait for each graph")
       ->capture_default_str();
   return RunCommand("ag-bench-live", app, argc, argv, [&] { return RunBench(flags); });

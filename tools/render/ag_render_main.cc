@@ -1,4 +1,6 @@
 // ag-render: draws a stage's artifact over its map as a PNG.
+#include <google/protobuf/arena.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <fstream>
@@ -52,9 +54,15 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
             bool doors, int width, const std::string& crop, const std::string& out) {
   const StageDefinition& definition = FindStage(stage, "--stage");
   Canvas canvas = BaseCanvas(store, map, definition.info, scale);
-  const MessagePtr artifact(definition.prototype->New());
-  ParseHeadArtifact(store, map, definition.info, artifact.get(), nullptr);
-  DrawArtifact(*artifact, canvas);
+  // The import's GridMap is the canvas itself: not read a second time. The
+  // others are parsed into an arena, which frees tens of thousands of
+  // messages (a Voronoi diagram's edges) at once.
+  if (!SameStage(definition.info, kImportStage)) {
+    google::protobuf::Arena arena;
+    google::protobuf::Message* artifact = definition.prototype->New(&arena);
+    ParseHeadArtifact(store, map, definition.info, artifact, nullptr);
+    DrawArtifact(*artifact, canvas);
+  }
   if (doors) {
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
@@ -85,7 +93,9 @@ int main(int argc, char** argv) {
                "also draw the doors (rings) and corridors (dots) that ag-cut found for "
                "cut.room_width_m=auto");
   app.add_option("--width", width, "shrink the picture to at most this many pixels wide");
-  app.add_option("--scale", scale, "output pixels per map cell (default: about 1600 px wide)");
+  app.add_option("--scale", scale,
+                 "output pixels per map cell (default: the most that keeps the picture within "
+                 "1000 px, at least 1)");
   std::string crop;
   app.add_option("--crop", crop, "draw only the window X,Y,W,H (map cells; with --scale to zoom)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {

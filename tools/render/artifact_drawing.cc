@@ -2,8 +2,10 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cmath>
 #include <opencv2/imgproc.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "stages/common/map_frame.h"
@@ -81,16 +83,26 @@ void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas) {
   for (const proto::VoronoiEdge& edge : voronoi.edges()) {
     max_clearance = std::max(max_clearance, edge.clearance_px());
   }
+  // Edges that hug the obstacles are the bulk of the diagram but not its
+  // skeleton: drawn first, blended half into the map so that walls show
+  // through them, and the medial axis stands out on top. At 1 px per cell
+  // the skeleton is 1 px wide too (a 2-px line is a filled polygon with
+  // round caps, three times the work).
+  std::vector<std::pair<const proto::Point2*, const proto::Point2*>> faint;
   for (const proto::VoronoiEdge& edge : voronoi.edges()) {
-    if (edge.target() < 0) continue;
-    const double t = std::min(1.0, edge.clearance_px() / max_clearance);
-    // Edges that hug the obstacles are the bulk of the diagram but not its
-    // skeleton: keep them faint so the medial axis stands out.
-    const bool hugs_obstacle = edge.clearance_px() < 2.0;
-    const cv::Scalar colour =
-        hugs_obstacle ? cv::Scalar(225, 215, 250) : cv::Scalar(255 * t, 60, 255 * (1 - t));
+    if (edge.target() < 0 || edge.clearance_px() >= 2.0) continue;
+    faint.emplace_back(&voronoi.vertices(edge.source()).position(),
+                       &voronoi.vertices(edge.target()).position());
+  }
+  canvas.FaintLines(faint, cv::Scalar(195, 175, 245), 0.5);
+  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
+    if (edge.target() < 0 || edge.clearance_px() < 2.0) continue;
+    // 32 steps of clearance: the picture keeps few enough colours for a
+    // palette PNG, and 32 shades are more than the eye tells apart.
+    const double t = std::round(std::min(1.0, edge.clearance_px() / max_clearance) * 31) / 31;
     canvas.Line(voronoi.vertices(edge.source()).position(),
-                voronoi.vertices(edge.target()).position(), colour, hugs_obstacle ? 1 : 2);
+                voronoi.vertices(edge.target()).position(), cv::Scalar(255 * t, 60, 255 * (1 - t)),
+                std::min(2, canvas.scale()));
   }
 }
 

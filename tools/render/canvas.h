@@ -1,6 +1,8 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <utility>
+#include <vector>
 
 #include "proto/geometry.pb.h"
 
@@ -23,6 +25,10 @@ class Canvas {
   void Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness);
   // Fills a polygon (outer minus holes) blending `colour` with weight `alpha`.
   void Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha);
+  // Blends `colour` with weight `alpha` into the pixels of 1-px lines (pairs
+  // of points), each pixel once: faint lines through which the map shows.
+  void FaintLines(const std::vector<std::pair<const proto::Point2*, const proto::Point2*>>& lines,
+                  const cv::Scalar& colour, double alpha);
   void Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour);
   // Paints whole map cells (flat indices), e.g. removed obstacles.
   void PaintCells(const google::protobuf::RepeatedField<int32_t>& cells, int width,
@@ -36,7 +42,10 @@ class Canvas {
 // Distinct, well separated colours for ids (golden-angle hues).
 cv::Scalar DistinctColour(int id);
 
-// A scale that makes the longer side about 1600 px, at least 1, at most 8.
+// The most pixels per cell (at most 8) that keep the longer side within
+// 1000 px, and 1 for maps bigger than that: a picture about the map's own
+// size, like the docs' pictures. (It aimed at 1600 px, which drew lab_a at
+// 2 x and made encoding four times the pixels cost more than some stages.)
 int DefaultScale(int width, int height);
 
 }  // namespace areagraph

@@ -33,8 +33,8 @@ TEST(AgRenderSpeedCli, EveryStageOfAClutteredRoomWithinACpuLimit) {
     EXPECT_EQ(render.signal, 0) << stage << ": ag-render ran out of its 4 s of CPU";
     ASSERT_EQ(render.exit_code, 0) << stage << ": " << render.err;
     const cv::Mat picture = cv::imread(out, cv::IMREAD_COLOR);
-    // The default scale makes the longer side about 1600 px: 3 px per cell here.
-    EXPECT_EQ(picture.size(), cv::Size(1500, 1500)) << stage;
+    // The default scale keeps the longer side within 1000 px: 2 px per cell here.
+    EXPECT_EQ(picture.size(), cv::Size(1000, 1000)) << stage;
   }
 }
 

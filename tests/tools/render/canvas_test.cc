@@ -1,0 +1,88 @@
+// The canvas under every picture: the map's cells at the chosen scale, and
+// lines drawn with their exact colour (not anti-aliased).
+#include "tools/render/canvas.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <utility>
+
+#include "proto/artifacts.pb.h"
+#include "tools/render/artifact_drawing.h"
+
+namespace areagraph {
+namespace {
+
+proto::Point2 At(double x, double y) {
+  proto::Point2 point;
+  point.set_x(x);
+  point.set_y(y);
+  return point;
+}
+
+TEST(Canvas, DrawsEachCellAsScaleByScalePixelsOfItsStateColour) {
+  // 3 x 2 cells: free, occupied, unknown / unknown, free, occupied.
+  const std::string cells = {proto::CELL_FREE,    proto::CELL_OCCUPIED, proto::CELL_UNKNOWN,
+                             proto::CELL_UNKNOWN, proto::CELL_FREE,     proto::CELL_OCCUPIED};
+  for (const int scale : {1, 3}) {
+    Canvas canvas(cells, 3, 2, scale);
+    ASSERT_EQ(canvas.image().size(), cv::Size(3 * scale, 2 * scale));
+    ASSERT_EQ(canvas.image().type(), CV_8UC3);
+    const cv::Vec3b free(255, 255, 255), occupied(40, 40, 40), unknown(200, 200, 200);
+    const cv::Vec3b expected[2][3] = {{free, occupied, unknown}, {unknown, free, occupied}};
+    for (int y = 0; y < 2 * scale; ++y) {
+      for (int x = 0; x < 3 * scale; ++x) {
+        EXPECT_EQ(canvas.image().at<cv::Vec3b>(y, x), expected[y / scale][x / scale])
+            << "scale " << scale << " at " << x << "," << y;
+      }
+    }
+  }
+}
+
+TEST(Canvas, AShortCellStringLeavesTheRestUnknown) {
+  Canvas canvas(std::string(1, static_cast<char>(proto::CELL_FREE)), 2, 1, 1);
+  EXPECT_EQ(canvas.image().at<cv::Vec3b>(0, 0), cv::Vec3b(255, 255, 255));
+  EXPECT_EQ(canvas.image().at<cv::Vec3b>(0, 1), cv::Vec3b(200, 200, 200));
+}
+
+TEST(Canvas, VoronoiEdgesAreDrawnInTheirExactColours) {
+  proto::VoronoiDiagram voronoi;
+  for (const auto& [x, y] : {std::pair{2, 10}, {38, 10}, {2, 15}, {38, 15}}) {
+    *voronoi.add_vertices()->mutable_position() = At(x, y);
+  }
+  proto::VoronoiEdge* skeleton = voronoi.add_edges();
+  skeleton->set_source(0);
+  skeleton->set_target(1);
+  skeleton->set_clearance_px(8);  // the widest edge: pure blue, 2 px
+  proto::VoronoiEdge* hugging = voronoi.add_edges();
+  hugging->set_source(2);
+  hugging->set_target(3);
+  hugging->set_clearance_px(1);  // near an obstacle: faint, blended half into the map
+  Canvas canvas(std::string(40 * 20, static_cast<char>(proto::CELL_FREE)), 40, 20, 2);
+  DrawVoronoiDiagram(voronoi, canvas);
+  const cv::Vec3b blue(255, 60, 0), faint(225, 215, 250), white(255, 255, 255);
+  for (int x = 8; x < 72; x += 4) {
+    EXPECT_EQ(canvas.image().at<cv::Vec3b>(20, x), blue) << x;
+    EXPECT_EQ(canvas.image().at<cv::Vec3b>(30, x), faint) << x;
+  }
+  EXPECT_EQ(canvas.image().at<cv::Vec3b>(10, 40), white);
+  EXPECT_EQ(canvas.image().at<cv::Vec3b>(20, 78), white);  // beyond the edge's end
+  // Not anti-aliased: the picture has these three colours only.
+  std::set<int> colours;
+  for (auto it = canvas.image().begin<cv::Vec3b>(); it != canvas.image().end<cv::Vec3b>(); ++it) {
+    colours.insert((*it)[0] | (*it)[1] << 8 | (*it)[2] << 16);
+  }
+  EXPECT_EQ(colours.size(), 3u);
+}
+
+TEST(Canvas, DefaultScaleKeepsThePictureNearTheMapsOwnSize) {
+  EXPECT_EQ(DefaultScale(120, 100), 8);    // small maps are enlarged, at most 8 x
+  EXPECT_EQ(DefaultScale(500, 500), 2);    // 1000 px
+  EXPECT_EQ(DefaultScale(645, 573), 1);    // lab_a: its own size
+  EXPECT_EQ(DefaultScale(1290, 1146), 1);  // never below 1
+  EXPECT_EQ(DefaultScale(0, 0), 8);
+}
+
+}  // namespace
+}  // namespace areagraph
