@@ -94,6 +94,7 @@ void CheckCutOptions(const proto::CutOptions& options) {
               " m gives no room width (W = corridor - 0.1 m)");
   RequirePositive(options.room_width_m(), "cut.room_width_m", "metres");
   RequireNotNegative(options.room_island_max_m(), "cut.room_island_max_m", "metres");
+  RequireNotNegative(options.room_width_door_margin_m(), "cut.room_width_door_margin_m", "metres");
 }
 
 void CheckMergeOptions(const proto::MergeOptions& options) {

@@ -26,7 +26,8 @@ inline constexpr StageInfo kPruneStage{"prune", 2};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
-inline constexpr StageInfo kCutStage{"cut", 4};
+// cut 5: doors with wall jambs closed for the room disk (cut.close_wall_doors).
+inline constexpr StageInfo kCutStage{"cut", 5};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "stages/common/stage_info.h"
 #include "stages/cut/cut_planning.h"
+#include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
 #include "stages/cut/room_width.h"
 #include "stages/cut/structure_sites.h"
@@ -77,9 +78,14 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
   };
-  SiteAlphaShape shape(StructureSites(map.cells(), grid.width(), grid.height(), grid.resolution_m(),
-                                      options.room_island_max_m()),
-                       room_width_px / 2);
+  PointList sites = StructureSites(map.cells(), grid.width(), grid.height(), grid.resolution_m(),
+                                   options.room_island_max_m());
+  if (options.close_wall_doors()) {
+    const PointList closing =
+        DoorClosingSites(room_width, map.cells(), grid.width(), grid.height(), grid.resolution_m());
+    sites.insert(sites.end(), closing.begin(), closing.end());
+  }
+  SiteAlphaShape shape(std::move(sites), room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);
   auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };

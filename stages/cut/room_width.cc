@@ -65,8 +65,9 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
   proto::RoomWidthEstimate estimate;
   if (options.room_width_auto() && !strategy) {
-    estimate = EstimateRoomWidth(LongestPart(topology), frame.resolution_m(), fixed,
-                                 options.room_width_above_doors());
+    estimate =
+        EstimateRoomWidth(LongestPart(topology), frame.resolution_m(), fixed,
+                          options.room_width_above_doors(), options.room_width_door_margin_m());
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);

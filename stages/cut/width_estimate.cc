@@ -193,8 +193,8 @@ double NarrowestCorridorM(std::vector<proto::DetectedWidth> corridors) {
 }  // namespace
 
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
-                                           double resolution_m, double fallback_m,
-                                           bool above_doors) {
+                                           double resolution_m, double fallback_m, bool above_doors,
+                                           double door_margin_m) {
   std::vector<WidthProfile> profiles;
   std::vector<std::vector<int>> incident(topology.vertices_size());
   for (const proto::GraphEdge& edge : topology.edges()) {
@@ -222,7 +222,7 @@ proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
   // door: a disk that passes doors merges rooms, which costs far more than
   // a corridor cut in two.
   if (door > 0 && (above_doors || corridor <= 0 || door < corridor + kSameWidthM)) {
-    width = door + 0.1;
+    width = door + door_margin_m;
   } else if (corridor > 0) {
     width = corridor - 0.1;
   }

@@ -17,14 +17,15 @@ namespace areagraph {
 // widest door (the 90th percentile, so that one stray wide gap between
 // furniture does not decide)
 // and the narrowest corridor (the narrowest width that corridors keep for
-// kCorridorMinTotalM in all), and W by the paper's rule: door + 0.1 m when
+// kCorridorMinTotalM in all), and W by the paper's rule: door + `door_margin_m`
+// (the paper: 0.1 m) when
 // the door is narrower than the corridor (or within kSameWidthM), else
 // corridor - 0.1 m; one of them alone decides when the other is missing;
-// `fallback_m` when neither was found. `above_doors`: door + 0.1 m whenever
+// `fallback_m` when neither was found. `above_doors`: door + `door_margin_m` whenever
 // a door was found. Never below kMinRoomWidthM.
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m,
-                                           bool above_doors = false);
+                                           bool above_doors = false, double door_margin_m = 0.1);
 
 inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;

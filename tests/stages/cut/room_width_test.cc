@@ -171,7 +171,7 @@ TEST(ChooseRoomWidthTest, AutomaticFollowsTheDoorsAndCorridorsFound) {
   EXPECT_NEAR(door.doors(0).position().x(), 60, 1e-9);
   EXPECT_NEAR(door.widest_door_m(), 0.85, 1e-9);
   EXPECT_NEAR(door.narrowest_corridor_m(), 1.95, 1e-9);
-  EXPECT_NEAR(door.room_width_m(), 0.95, 1e-9);  // door + 0.1 m
+  EXPECT_NEAR(door.room_width_m(), 0.85 + options.room_width_door_margin_m(), 1e-9);
   // Without doors: corridor - 0.1 m.
   const proto::RoomWidthEstimate corridor = ChooseRoomWidth(options, kBigMap, kCorridor);
   EXPECT_TRUE(corridor.automatic());
@@ -193,8 +193,8 @@ TEST(ChooseRoomWidthTest, DoorWiderThanTheCorridorFollowsRoomWidthAboveDoors) {
   EXPECT_NEAR(above.doors(0).position().x(), 45, 1e-9);
   EXPECT_NEAR(above.widest_door_m(), 1.45, 1e-9);
   EXPECT_NEAR(above.narrowest_corridor_m(), 1.15, 1e-9);
-  EXPECT_NEAR(above.room_width_m(), 1.55, 1e-9);  // door + 0.1 m
-  options.set_room_width_above_doors(false);      // the paper's rule
+  EXPECT_NEAR(above.room_width_m(), 1.45 + options.room_width_door_margin_m(), 1e-9);
+  options.set_room_width_above_doors(false);  // the paper's rule
   EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, graph).room_width_m(), 1.05, 1e-9);
 }
 
@@ -234,8 +234,9 @@ TEST(ChooseRoomWidthTest, DrawnMapGetsItsDoorWidthPlusATenth) {
       ChooseRoomWidth(proto::CutOptions(), map.frame(), stages.topology);
   EXPECT_TRUE(chosen.automatic());
   EXPECT_EQ(chosen.doors_size(), 3);
-  EXPECT_NEAR(chosen.room_width_m(), 1.0, 0.1);
-  EXPECT_DOUBLE_EQ(chosen.room_width_m(), chosen.widest_door_m() + 0.1);
+  EXPECT_NEAR(chosen.room_width_m(), 0.9 + proto::CutOptions().room_width_door_margin_m(), 0.1);
+  EXPECT_DOUBLE_EQ(chosen.room_width_m(),
+                   chosen.widest_door_m() + proto::CutOptions().room_width_door_margin_m());
   // What ag-cut stored is this choice.
   EXPECT_DOUBLE_EQ(stages.cut.room_width().room_width_m(), chosen.room_width_m());
   // The paper's strategy ignores the map.

@@ -1,0 +1,85 @@
+// DoorClosingSites on drawn plans: a door in a wall is closed, a gap between
+// a wall and a free-standing desk or shelf is not.
+#include "stages/cut/door_sites.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/area_test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::FloorPlan;
+using floorplan::RectM;
+using floorplan::WallDirection;
+
+constexpr double kResolutionM = 0.05;
+
+// Two 4 x 4 m rooms side by side, the wall between them at x = 4.5 m with a
+// 1.0 m door centred at y = 2.5 m.
+FloorPlan TwoRooms() {
+  FloorPlan plan(9, 5, kResolutionM);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 4, 4});
+  floorplan::DrawRoom(plan, {4.5, 0.5, 4, 4});
+  floorplan::DrawDoor(plan, 4.5, 2.5, 1.0, WallDirection::kVertical);
+  return plan;
+}
+
+// An estimate holding one door at (x_m, y_m), `width_m` wide.
+proto::RoomWidthEstimate OneDoor(double x_m, double y_m, double width_m) {
+  proto::RoomWidthEstimate estimate;
+  proto::DetectedWidth* door = estimate.add_doors();
+  door->mutable_position()->set_x(x_m / kResolutionM);
+  door->mutable_position()->set_y(y_m / kResolutionM);
+  door->set_width_m(width_m);
+  return estimate;
+}
+
+PointList Sites(const FloorPlan& plan, const proto::RoomWidthEstimate& estimate) {
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
+  return DoorClosingSites(estimate, map.cells(), map.frame().width_px(), map.frame().height_px(),
+                          kResolutionM);
+}
+
+TEST(DoorSitesTest, DoorInAWallIsClosedAcrossItsWholeWidth) {
+  const PointList sites = Sites(TwoRooms(), OneDoor(4.5, 2.5, 1.0));
+  ASSERT_GE(sites.size(), 15u);
+  double top = 1e9, bottom = -1e9;
+  for (const Eigen::Vector2d& site : sites) {
+    EXPECT_NEAR(site.x() * kResolutionM, 4.5, 0.15);
+    top = std::min(top, site.y() * kResolutionM);
+    bottom = std::max(bottom, site.y() * kResolutionM);
+  }
+  // From jamb to jamb: the door's 1.0 m less the jamb cells themselves.
+  EXPECT_NEAR(top, 2.0, 0.1);
+  EXPECT_NEAR(bottom, 3.0, 0.1);
+}
+
+TEST(DoorSitesTest, GapBetweenAFreeStandingDeskAndAWallIsNoDoor) {
+  // A 1.6 x 0.8 m desk 0.9 m below the left room's top wall: the gap is a
+  // narrowing between wider spaces, but one side of it is a small island.
+  FloorPlan plan = TwoRooms();
+  floorplan::DrawFurniture(plan, {1.5, 1.5, 1.6, 0.8});
+  EXPECT_TRUE(Sites(plan, OneDoor(2.3, 1.05, 0.85)).empty());
+}
+
+TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
+  // A wall stub from the top wall down to y = 2 m and a free-standing shelf
+  // (1.2 x 0.15 m) in line with it below a 0.9 m gap: both sides line up
+  // like door jambs, but the shelf is a small island, not wall structure.
+  FloorPlan plan = TwoRooms();
+  floorplan::DrawFurniture(plan, {2.45, 0.5, 0.15, 1.5});
+  floorplan::DrawFurniture(plan, {2.45, 2.9, 0.15, 1.2});
+  EXPECT_TRUE(Sites(plan, OneDoor(2.5, 2.45, 0.9)).empty());
+  // The same gap with the shelf joined to the bottom wall is a door.
+  floorplan::DrawFurniture(plan, {2.45, 2.9, 0.15, 1.6});
+  EXPECT_FALSE(Sites(plan, OneDoor(2.5, 2.45, 0.9)).empty());
+}
+
+TEST(DoorSitesTest, NoDoorsNoSites) {
+  EXPECT_TRUE(Sites(TwoRooms(), proto::RoomWidthEstimate()).empty());
+}
+
+}  // namespace
+}  // namespace areagraph::testing

@@ -1,0 +1,71 @@
+// Local door decisions (cut.close_wall_doors) through the whole pipeline: a
+// door wider than the map's W still divides the room behind it from the
+// corridor, while furniture keeps a room whole (furniture_rooms_test).
+#include <gtest/gtest.h>
+
+#include "tests/support/area_test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::WallDirection;
+
+// Ten 4 x 4 m offices on both sides of a corridor 2 m between wall centres,
+// each opening into it through a 0.9 m door, except the third office on top,
+// whose door is 1.3 m wide: W (above the 90th percentile of the doors, the
+// 0.9 m ones) is narrower than it.
+constexpr double kWideDoorX = 10.5, kWideDoorWidth = 1.3;
+constexpr double kCorridorY = 4.5, kCorridorHeight = 2;
+
+floorplan::FloorPlan OfficesAlongACorridor() {
+  floorplan::FloorPlan plan(21, 11);
+  for (int i = 0; i < 5; ++i) {
+    floorplan::DrawRoom(plan, {0.5 + 4 * i, 0.5, 4, 4});
+    floorplan::DrawRoom(plan, {0.5 + 4 * i, kCorridorY + kCorridorHeight, 4, 4});
+  }
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
+  for (int i = 0; i < 5; ++i) {
+    const double x = 2.5 + 4 * i;
+    floorplan::DrawDoor(plan, x, kCorridorY, x == kWideDoorX ? kWideDoorWidth : 0.9,
+                        WallDirection::kHorizontal);
+    floorplan::DrawDoor(plan, x, kCorridorY + kCorridorHeight, 0.9, WallDirection::kHorizontal);
+  }
+  return plan;
+}
+
+struct WideDoorAreas {
+  double room_width_m = 0;
+  int office = -1;
+  int corridor = -1;
+};
+
+WideDoorAreas RunOffices(const proto::PipelineOptions& options) {
+  const proto::CleanedMap map = CleanDrawnMap(OfficesAlongACorridor().image());
+  const AreaStages stages = RunAreaStages(map, options);
+  WideDoorAreas found;
+  found.room_width_m = stages.cut.room_width().room_width_m();
+  found.office = AreaAt(stages.areas, kWideDoorX, 2.5);
+  found.corridor = AreaAt(stages.areas, kWideDoorX, kCorridorY + kCorridorHeight / 2);
+  return found;
+}
+
+TEST(LocalDoorsTest, DoorWiderThanWStillDividesOfficeFromCorridor) {
+  const WideDoorAreas found = RunOffices({});
+  EXPECT_LT(found.room_width_m, kWideDoorWidth);
+  ASSERT_NE(found.office, -1);
+  ASSERT_NE(found.corridor, -1);
+  EXPECT_NE(found.office, found.corridor);
+}
+
+TEST(LocalDoorsTest, WithOneGlobalWTheOfficeLeaksIntoTheCorridor) {
+  // The paper's single W: the room disk passes the wide door.
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_close_wall_doors(false);
+  const WideDoorAreas found = RunOffices(options);
+  EXPECT_LT(found.room_width_m, kWideDoorWidth);
+  EXPECT_EQ(found.office, found.corridor);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
