@@ -15,22 +15,16 @@ namespace {
 using testing::AddPassage;
 using testing::AreaIds;
 using testing::Frame;
+using testing::MatchAfter;
 using testing::PassageIds;
 using testing::RectGraph;
 using Ids = std::vector<int>;
-
-// Matches `current` to `previous` (null for a first version) with defaults.
-proto::AreaGraph Match(const proto::AreaGraph& current, const proto::AreaGraph* previous) {
-  VersionLink link;
-  if (previous != nullptr) link = {"previous-key", previous->version().number() + 1};
-  return MatchAreaGraph(current, previous, link, proto::MatchOptions());
-}
 
 TEST(AreaGraphMatchingTest, AFirstVersionNumbersAreasAndPassagesInOrder) {
   proto::AreaGraph graph = RectGraph(Frame(200, 100), {{0, 0, 4, 5}, {4, 0, 10, 5}, {0, 0, 1, 1}});
   AddPassage(graph, 0, 1, 4, 2);
   AddPassage(graph, 1, 2, 1, 0.5);
-  const proto::AreaGraph first = Match(graph, nullptr);
+  const proto::AreaGraph first = MatchAfter(graph, nullptr);
   EXPECT_EQ(AreaIds(first), (Ids{0, 1, 2}));
   EXPECT_EQ(PassageIds(first), (Ids{0, 1}));
   EXPECT_EQ(first.version().number(), 1);
@@ -48,8 +42,8 @@ TEST(AreaGraphMatchingTest, AFirstVersionNumbersAreasAndPassagesInOrder) {
 TEST(AreaGraphMatchingTest, TheSameGraphAgainKeepsEveryId) {
   proto::AreaGraph graph = RectGraph(Frame(200, 100), {{0, 0, 4, 5}, {4, 0, 10, 5}});
   AddPassage(graph, 0, 1, 4, 2);
-  const proto::AreaGraph first = Match(graph, nullptr);
-  const proto::AreaGraph second = Match(graph, &first);
+  const proto::AreaGraph first = MatchAfter(graph, nullptr);
+  const proto::AreaGraph second = MatchAfter(graph, &first);
   EXPECT_EQ(AreaIds(second), AreaIds(first));
   EXPECT_EQ(PassageIds(second), PassageIds(first));
   EXPECT_EQ(second.version().number(), 2);
@@ -59,54 +53,54 @@ TEST(AreaGraphMatchingTest, TheSameGraphAgainKeepsEveryId) {
 
 TEST(AreaGraphMatchingTest, AGrownAreaKeepsItsIdAndNewSpaceGetsANewOne) {
   // A room seen in part, then whole, and a corridor found beside it.
-  const proto::AreaGraph first = Match(RectGraph(Frame(200, 100), {{0, 0, 2, 5}}), nullptr);
+  const proto::AreaGraph first = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 2, 5}}), nullptr);
   const proto::AreaGraph second =
-      Match(RectGraph(Frame(200, 100), {{5, 0, 9, 5}, {0, 0, 5, 5}}), &first);
+      MatchAfter(RectGraph(Frame(200, 100), {{5, 0, 9, 5}, {0, 0, 5, 5}}), &first);
   EXPECT_EQ(AreaIds(second), (Ids{1, 0}));
   EXPECT_EQ(second.version().next_area_id(), 2);
 }
 
 TEST(AreaGraphMatchingTest, ASplitKeepsTheIdOnItsLargestPart) {
-  const proto::AreaGraph first = Match(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), nullptr);
+  const proto::AreaGraph first = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), nullptr);
   // The small part comes first, so index order cannot be what decides.
   const proto::AreaGraph second =
-      Match(RectGraph(Frame(200, 100), {{6, 0, 9, 4}, {0, 0, 6, 4}}), &first);
+      MatchAfter(RectGraph(Frame(200, 100), {{6, 0, 9, 4}, {0, 0, 6, 4}}), &first);
   EXPECT_EQ(AreaIds(second), (Ids{1, 0}));
 }
 
 TEST(AreaGraphMatchingTest, AMergeKeepsTheIdOfItsLargestParent) {
   const proto::AreaGraph first =
-      Match(RectGraph(Frame(200, 100), {{0, 0, 3, 4}, {3, 0, 9, 4}, {9, 0, 10, 4}}), nullptr);
-  const proto::AreaGraph second = Match(RectGraph(Frame(200, 100), {{0, 0, 10, 4}}), &first);
+      MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 3, 4}, {3, 0, 9, 4}, {9, 0, 10, 4}}), nullptr);
+  const proto::AreaGraph second = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 10, 4}}), &first);
   EXPECT_EQ(AreaIds(second), (Ids{1}));
   EXPECT_EQ(second.version().next_area_id(), 3);
 }
 
 TEST(AreaGraphMatchingTest, AnIdIsNeverGivenToAnotherArea) {
   const proto::AreaGraph first =
-      Match(RectGraph(Frame(200, 100), {{0, 0, 4, 4}, {4, 0, 8, 4}}), nullptr);
+      MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 4, 4}, {4, 0, 8, 4}}), nullptr);
   // Area 1 is gone (its space unknown again), then new space appears there.
-  const proto::AreaGraph second = Match(RectGraph(Frame(200, 100), {{0, 0, 4, 4}}), &first);
+  const proto::AreaGraph second = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 4, 4}}), &first);
   EXPECT_EQ(AreaIds(second), (Ids{0}));
   EXPECT_EQ(second.version().next_area_id(), 2);
   const proto::AreaGraph third =
-      Match(RectGraph(Frame(200, 100), {{0, 0, 4, 4}, {4, 0, 8, 4}}), &second);
+      MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 4, 4}, {4, 0, 8, 4}}), &second);
   EXPECT_EQ(AreaIds(third), (Ids{0, 2}));
 }
 
 TEST(AreaGraphMatchingTest, AreasMatchInWorldCoordinatesWhenTheGridGrows) {
   // The map grows to the left and down: a bigger grid with another origin.
   const proto::AreaGraph first =
-      Match(RectGraph(Frame(200, 100), {{0, 0, 4, 5}, {4, 0, 10, 5}}), nullptr);
-  const proto::AreaGraph second = Match(
+      MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 4, 5}, {4, 0, 10, 5}}), nullptr);
+  const proto::AreaGraph second = MatchAfter(
       RectGraph(Frame(300, 200, -5, -5), {{-5, 0, 0, 5}, {4, 0, 10, 5}, {0, 0, 4, 5}}), &first);
   EXPECT_EQ(AreaIds(second), (Ids{2, 1, 0}));
 }
 
 TEST(AreaGraphMatchingTest, ASmallOverlapIsNoMatch) {
   // Under half of the smaller area: a different area that happens to touch.
-  const proto::AreaGraph first = Match(RectGraph(Frame(200, 100), {{0, 0, 4, 4}}), nullptr);
-  const proto::AreaGraph second = Match(RectGraph(Frame(200, 100), {{2.5, 0, 9, 4}}), &first);
+  const proto::AreaGraph first = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 4, 4}}), nullptr);
+  const proto::AreaGraph second = MatchAfter(RectGraph(Frame(200, 100), {{2.5, 0, 9, 4}}), &first);
   EXPECT_EQ(AreaIds(second), (Ids{1}));
   proto::MatchOptions loose;
   loose.set_min_overlap(0.3);
@@ -118,9 +112,9 @@ TEST(AreaGraphMatchingTest, ASmallOverlapIsNoMatch) {
 TEST(AreaGraphMatchingTest, IdsFollowTheAreasNotTheirOrder) {
   const std::vector<testing::WorldRect> rects = {
       {0, 0, 3, 4}, {3, 0, 7, 4}, {7, 0, 9, 4}, {0, 4, 9, 6}};
-  const proto::AreaGraph first = Match(RectGraph(Frame(200, 150), rects), nullptr);
+  const proto::AreaGraph first = MatchAfter(RectGraph(Frame(200, 150), rects), nullptr);
   std::vector<testing::WorldRect> reversed(rects.rbegin(), rects.rend());
-  const proto::AreaGraph second = Match(RectGraph(Frame(200, 150), reversed), &first);
+  const proto::AreaGraph second = MatchAfter(RectGraph(Frame(200, 150), reversed), &first);
   EXPECT_EQ(AreaIds(second), (Ids{3, 2, 1, 0}));
 }
 
@@ -129,7 +123,7 @@ TEST(AreaGraphMatchingTest, PassagesKeepTheirIdsByTheirAreasAndPlace) {
   AddPassage(graph, 0, 1, 4, 1);
   AddPassage(graph, 0, 1, 4, 3);  // a second door between the same rooms
   AddPassage(graph, 0, 2, 2, 4);
-  const proto::AreaGraph first = Match(graph, nullptr);
+  const proto::AreaGraph first = MatchAfter(graph, nullptr);
   ASSERT_EQ(PassageIds(first), (Ids{0, 1, 2}));
 
   proto::AreaGraph next = RectGraph(Frame(200, 100), {{0, 0, 4, 4}, {4, 0, 8, 4}, {0, 4, 8, 5}});
@@ -137,14 +131,14 @@ TEST(AreaGraphMatchingTest, PassagesKeepTheirIdsByTheirAreasAndPlace) {
   AddPassage(next, 0, 1, 4, 0.9);  // the first door
   AddPassage(next, 0, 2, 6, 4);    // between the same areas but 4 m away: a new one
   AddPassage(next, 1, 2, 6, 4);    // between other areas: new
-  const proto::AreaGraph second = Match(next, &first);
+  const proto::AreaGraph second = MatchAfter(next, &first);
   EXPECT_EQ(PassageIds(second), (Ids{1, 0, 3, 4}));
   EXPECT_EQ(second.version().next_passage_id(), 5);
 }
 
 TEST(AreaGraphMatchingTest, RefusesAPreviousVersionWithoutStableIds) {
   const proto::AreaGraph merge_artifact = RectGraph(Frame(200, 100), {{0, 0, 4, 4}});
-  EXPECT_THROW(Match(merge_artifact, &merge_artifact), InputError);
+  EXPECT_THROW(MatchAfter(merge_artifact, &merge_artifact), InputError);
 }
 
 }  // namespace

@@ -18,16 +18,10 @@ namespace {
 using testing::AddPassage;
 using testing::AreaIds;
 using testing::Frame;
+using testing::MatchAfter;
 using testing::PassageIds;
 using testing::RectGraph;
 using Ids = std::vector<int>;
-
-proto::AreaGraph Match(const proto::AreaGraph& current, const proto::AreaGraph* previous,
-                       const proto::MatchOptions& options = {}) {
-  VersionLink link;
-  if (previous != nullptr) link = {"previous-key", previous->version().number() + 1};
-  return MatchAreaGraph(current, previous, link, options);
-}
 
 // Twice the shoelace area of a ring, and of a polygon (outer minus holes).
 double RingArea(const proto::Ring& ring) {
@@ -85,11 +79,11 @@ TEST(PolygonUnionTest, APieceThatFilledAHoleClosesIt) {
 }
 
 TEST(FragmentFoldingTest, ASmallPieceSplitOffByNoiseFoldsBackAndCostsNoId) {
-  const proto::AreaGraph first = Match(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), nullptr);
+  const proto::AreaGraph first = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), nullptr);
   // Noise splits off a 6 m2 strip (below the default 8 m2).
   proto::AreaGraph split = RectGraph(Frame(200, 100), {{7.5, 0, 9, 4}, {0, 0, 7.5, 4}});
   AddPassage(split, 0, 1, 7.5, 2);
-  const proto::AreaGraph second = Match(split, &first);
+  const proto::AreaGraph second = MatchAfter(split, &first);
   ASSERT_EQ(second.areas_size(), 1);
   EXPECT_EQ(AreaIds(second), (Ids{0}));
   EXPECT_DOUBLE_EQ(second.areas(0).area_m2(), 36);
@@ -97,14 +91,14 @@ TEST(FragmentFoldingTest, ASmallPieceSplitOffByNoiseFoldsBackAndCostsNoId) {
   EXPECT_EQ(second.passages_size(), 0);  // the border it opened is inside the area
   EXPECT_EQ(second.version().next_area_id(), 1);
   // The next update without the split: every id is still there.
-  const proto::AreaGraph third = Match(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), &second);
+  const proto::AreaGraph third = MatchAfter(RectGraph(Frame(200, 100), {{0, 0, 9, 4}}), &second);
   EXPECT_EQ(AreaIds(third), (Ids{0}));
   EXPECT_EQ(third.version().next_area_id(), 1);
 
   // Without folding, the strip is a new area whose id the next update drops.
   proto::MatchOptions no_folding;
   no_folding.set_fold_fragments_below_m2(0);
-  const proto::AreaGraph unfolded = Match(split, &first, no_folding);
+  const proto::AreaGraph unfolded = MatchAfter(split, &first, no_folding);
   EXPECT_EQ(AreaIds(unfolded), (Ids{1, 0}));
 }
 
@@ -123,21 +117,21 @@ TEST(FragmentFoldingTest, OtherSegmentationOptionsPublishTheirPieces) {
 }
 
 TEST(FragmentFoldingTest, ALargePieceAndNewlySeenSpaceStayAreasOfTheirOwn) {
-  const proto::AreaGraph first = Match(RectGraph(Frame(400, 100), {{0, 0, 9, 4}}), nullptr);
+  const proto::AreaGraph first = MatchAfter(RectGraph(Frame(400, 100), {{0, 0, 9, 4}}), nullptr);
   // A 12 m2 part (a door closed): a split, the larger part keeps the id.
   const proto::AreaGraph split =
-      Match(RectGraph(Frame(400, 100), {{6, 0, 9, 4}, {0, 0, 6, 4}}), &first);
+      MatchAfter(RectGraph(Frame(400, 100), {{6, 0, 9, 4}, {0, 0, 6, 4}}), &first);
   EXPECT_EQ(AreaIds(split), (Ids{1, 0}));
   // A 4 m2 room seen for the first time beside the known one.
   const proto::AreaGraph grown =
-      Match(RectGraph(Frame(400, 100), {{0, 0, 9, 4}, {9, 0, 11, 2}}), &first);
+      MatchAfter(RectGraph(Frame(400, 100), {{0, 0, 9, 4}, {9, 0, 11, 2}}), &first);
   EXPECT_EQ(AreaIds(grown), (Ids{0, 1}));
 }
 
 TEST(FragmentFoldingTest, TheFragmentsPassagesMoveToTheAreaItJoins) {
   proto::AreaGraph previous_graph = RectGraph(Frame(300, 100), {{0, 0, 9, 4}, {9, 0, 13, 4}});
   AddPassage(previous_graph, 0, 1, 9, 2);
-  const proto::AreaGraph first = Match(previous_graph, nullptr);
+  const proto::AreaGraph first = MatchAfter(previous_graph, nullptr);
 
   // Area 1 is a 6 m2 piece of the old area 0 between it and the old area 1.
   proto::AreaGraph split =
@@ -145,7 +139,7 @@ TEST(FragmentFoldingTest, TheFragmentsPassagesMoveToTheAreaItJoins) {
   AddPassage(split, 2, 1, 7.5, 2);  // inside what was one area
   AddPassage(split, 1, 0, 9, 2);    // the door that was there before
   AddPassage(split, 2, 0, 8, 3.9);  // hypothetical, to see that it stays
-  const proto::AreaGraph second = Match(split, &first);
+  const proto::AreaGraph second = MatchAfter(split, &first);
   ASSERT_EQ(second.areas_size(), 2);
   EXPECT_EQ(AreaIds(second), (Ids{1, 0}));
   ASSERT_EQ(second.passages_size(), 2);

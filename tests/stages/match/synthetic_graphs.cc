@@ -1,6 +1,7 @@
 #include "tests/stages/match/synthetic_graphs.h"
 
 #include "stages/common/map_frame.h"
+#include "stages/match/area_graph_matching.h"
 
 namespace areagraph::testing {
 
@@ -60,6 +61,13 @@ std::vector<int> PassageIds(const proto::AreaGraph& graph) {
   std::vector<int> ids;
   for (const proto::Passage& passage : graph.passages()) ids.push_back(passage.stable_id());
   return ids;
+}
+
+proto::AreaGraph MatchAfter(const proto::AreaGraph& current, const proto::AreaGraph* previous,
+                            const proto::MatchOptions& options) {
+  VersionLink link;
+  if (previous != nullptr) link = {"previous-key", previous->version().number() + 1};
+  return MatchAreaGraph(current, previous, link, options);
 }
 
 }  // namespace areagraph::testing

@@ -4,6 +4,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "proto/geometry.pb.h"
+#include "proto/pipeline_options.pb.h"
 
 namespace areagraph::testing {
 
@@ -29,5 +30,10 @@ void AddPassage(proto::AreaGraph& graph, int a, int b, double x, double y);
 // The stable ids of the areas in index order, and of the passages.
 std::vector<int> AreaIds(const proto::AreaGraph& graph);
 std::vector<int> PassageIds(const proto::AreaGraph& graph);
+
+// MatchAreaGraph of `current` after `previous` (null for a first version),
+// linked to a made-up predecessor key.
+proto::AreaGraph MatchAfter(const proto::AreaGraph& current, const proto::AreaGraph* previous,
+                            const proto::MatchOptions& options = {});
 
 }  // namespace areagraph::testing
