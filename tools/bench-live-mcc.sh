@@ -45,27 +45,8 @@ live() {
   local name=$1 dir=$2
   shift 2
   mkdir -p "$dir"
-  # shellcheck disable=SC2016
-  unshare -n sh -c '
-    set -e
-    ip link set lo up
-    ip route add 224.0.0.0/4 dev lo
-    bin=$1; dir=$2; name=$3; shift 3
-    live_flags=""
-    while [ "$1" != "--" ]; do live_flags="$live_flags $1"; shift; done
-    shift
-    # shellcheck disable=SC2086
-    "$bin/ag-live" --store "$dir/live.db" $live_flags >"$dir/live.out" 2>"$dir/live.err" &
-    live=$!
-    trap "kill $live 2>/dev/null" EXIT
-    i=0
-    until grep -q "ag-live: serving" "$dir/live.err" 2>/dev/null; do
-      i=$((i+1)); [ $i -gt 300 ] && { cat "$dir/live.err" >&2; exit 1; }
-      sleep 0.1
-    done
-    "$bin/ag-bench-live" --live-log "$dir/live.out" --scratch "$dir" --name "$name" \
-      --no-cold --dump "$dir" "$@" >"$dir/bench.md"
-  ' sh "$bin" "$dir" "$name" "$@"
+  tools/bench/live-in-namespace.sh "$bin" "$dir" "$@" --name "$name" --no-cold --dump "$dir" \
+    >"$dir/bench.md"
   rm -f "$dir"/live.db*
 }
 

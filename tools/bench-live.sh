@@ -75,21 +75,6 @@ for entry in "${maps[@]}"; do
   echo
   # One namespace per map: ag-live in the background, the driver in front.
   # shellcheck disable=SC2086
-  unshare -n sh -c '
-    set -e
-    ip link set lo up
-    ip route add 224.0.0.0/4 dev lo
-    "$0/ag-live" --store "$1/live.db" >"$1/live.out" 2>"$1/live.err" &
-    live=$!
-    trap "kill $live 2>/dev/null" EXIT
-    i=0
-    until grep -q "ag-live: serving" "$1/live.err" 2>/dev/null; do
-      i=$((i+1)); [ $i -gt 300 ] && { cat "$1/live.err" >&2; exit 1; }
-      sleep 0.1
-    done
-    W="$1"
-    shift
-    "$0/ag-bench-live" --live-log "$W/live.out" --scratch "$W" "$@"
-  ' "$bin" "$work" --name "$name" $args $cold_flag
+  tools/bench/live-in-namespace.sh "$bin" "$work" -- --name "$name" $args $cold_flag
   rm -f "$work"/live.db*
 done
