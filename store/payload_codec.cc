@@ -16,12 +16,6 @@ struct DecompressionContextDeleter {
   void operator()(ZSTD_DCtx* context) const { ZSTD_freeDCtx(context); }
 };
 
-// One context per thread: creating one costs more than compressing a small
-// artifact.
-ZSTD_CCtx* CompressionContext() {
-  thread_local std::unique_ptr<ZSTD_CCtx, CompressionContextDeleter> context(ZSTD_createCCtx());
-  return context.get();
-}
 ZSTD_DCtx* DecompressionContext() {
   thread_local std::unique_ptr<ZSTD_DCtx, DecompressionContextDeleter> context(ZSTD_createDCtx());
   return context.get();
@@ -29,9 +23,14 @@ ZSTD_DCtx* DecompressionContext() {
 
 }  // namespace
 
+ZSTD_CCtx* PayloadCompressionContext() {
+  thread_local std::unique_ptr<ZSTD_CCtx, CompressionContextDeleter> context(ZSTD_createCCtx());
+  if (!context) throw StoreError("zstd: out of memory for a compression context");
+  return context.get();
+}
+
 std::string CompressPayload(std::string_view raw) {
-  ZSTD_CCtx* context = CompressionContext();
-  if (context == nullptr) throw StoreError("zstd: out of memory for a compression context");
+  ZSTD_CCtx* context = PayloadCompressionContext();
   // Not zero-filled: of a bound as large as the payload, the frame touches
   // only its own pages (a 133 MB Voronoi diagram compresses to about 47 MB).
   const size_t bound = ZSTD_compressBound(raw.size());

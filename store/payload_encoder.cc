@@ -5,7 +5,6 @@
 #include <zstd.h>
 
 #include <climits>
-#include <memory>
 #include <vector>
 
 #include "common/error.h"
@@ -15,25 +14,13 @@
 namespace areagraph {
 namespace {
 
-struct CompressionContextDeleter {
-  void operator()(ZSTD_CCtx* context) const { ZSTD_freeCCtx(context); }
-};
-
-// One context per thread, as CompressPayload keeps one: creating one costs
-// more than compressing a small artifact.
-ZSTD_CCtx* CompressionContext() {
-  thread_local std::unique_ptr<ZSTD_CCtx, CompressionContextDeleter> context(ZSTD_createCCtx());
-  if (!context) throw StoreError("zstd: out of memory for a compression context");
-  return context.get();
-}
-
 // The bytes protobuf writes go, one buffer at a time, into SHA-256 and a
 // zstd stream whose frame is pledged `raw_bytes` (so it records its content
 // size, as DecodePayload needs).
 class EncodingStream : public google::protobuf::io::ZeroCopyOutputStream {
  public:
   explicit EncodingStream(uint64_t raw_bytes)
-      : context_(CompressionContext()), buffer_(kBufferBytes), out_(ZSTD_CStreamOutSize()) {
+      : context_(PayloadCompressionContext()), buffer_(kBufferBytes), out_(ZSTD_CStreamOutSize()) {
     Check(ZSTD_CCtx_reset(context_, ZSTD_reset_session_and_parameters));
     Check(ZSTD_CCtx_setParameter(context_, ZSTD_c_compressionLevel, kPayloadZstdLevel));
     Check(ZSTD_CCtx_setPledgedSrcSize(context_, raw_bytes));
