@@ -9,6 +9,7 @@
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/near_free_mask.h"
+#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 namespace {
@@ -19,13 +20,10 @@ namespace {
 std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, int height,
                                           double max_region_cells, cv::Mat* labels) {
   const int count = width * height;
-  cv::Mat obstacle(height, width, CV_8U);
-  for (int index = 0; index < count; ++index) {
-    obstacle.data[index] = cells[index] == proto::CELL_FREE ? 0 : 255;
-  }
   // (connectedComponentsWithStats would also give sizes and boxes, but its
   // statistics cost three times the labelling.)
-  const int region_count = cv::connectedComponents(obstacle, *labels, 8, CV_32S);
+  const int region_count =
+      cv::connectedComponents(ObstacleMask(cells, width, height), *labels, 8, CV_32S);
   const int* label = labels->ptr<int>();
   std::vector<int> size(region_count, 0);
   for (int index = 0; index < count; ++index) ++size[label[index]];

@@ -5,6 +5,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/geometry/wall_thickness.h"
+
 namespace areagraph {
 namespace {
 
@@ -14,12 +16,9 @@ class WallStructure {
  public:
   WallStructure(const std::string& cells, int width, int height, double min_region_px)
       : width_(width), height_(height) {
-    cv::Mat obstacle(height, width, CV_8U);
-    for (int index = 0; index < width * height; ++index) {
-      obstacle.data[index] = cells[index] == proto::CELL_FREE ? 0 : 255;
-    }
     cv::Mat stats, centroids;
-    const int count = cv::connectedComponentsWithStats(obstacle, labels_, stats, centroids, 8);
+    const int count = cv::connectedComponentsWithStats(ObstacleMask(cells, width, height), labels_,
+                                                       stats, centroids, 8);
     structure_.assign(count, 0);
     for (int region = 1; region < count; ++region) {
       const int left = stats.at<int>(region, cv::CC_STAT_LEFT);

@@ -50,12 +50,9 @@ ObstacleRegions FindRegions(const std::string& cells, int width, int height,
   ObstacleRegions regions;
   regions.width = width;
   regions.height = height;
-  cv::Mat obstacle(height, width, CV_8U);
-  for (int index = 0; index < width * height; ++index) {
-    obstacle.data[index] = cells[index] == proto::CELL_FREE ? 0 : 255;
-  }
+  const cv::Mat obstacle = ObstacleMask(cells, width, height);
   const int count = cv::connectedComponents(obstacle, regions.labels, 8, CV_32S);
-  regions.depth = ObstacleDepth(cells, width, height);
+  regions.depth = ObstacleDepth(obstacle);
   std::vector<RegionShape>& shapes = regions.shapes;
   shapes.resize(count);
   const int* label = regions.labels.ptr<int>();

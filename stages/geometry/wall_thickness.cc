@@ -8,11 +8,15 @@
 
 namespace areagraph {
 
-cv::Mat ObstacleDepth(const std::string& cells, int width, int height) {
+cv::Mat ObstacleMask(const std::string& cells, int width, int height) {
   cv::Mat obstacle(height, width, CV_8U);
   for (int index = 0; index < width * height; ++index) {
     obstacle.data[index] = cells[index] == proto::CELL_FREE ? 0 : 255;
   }
+  return obstacle;
+}
+
+cv::Mat ObstacleDepth(const cv::Mat& obstacle) {
   cv::Mat depth;
   cv::distanceTransform(obstacle, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
   return depth;

@@ -5,9 +5,14 @@
 
 namespace areagraph {
 
-// The depth of every non-free cell (occupied or unknown): its distance (px)
-// to the nearest free cell, as CV_32F the map's size; 0 on free cells.
-cv::Mat ObstacleDepth(const std::string& cells, int width, int height);
+// 255 on every non-free cell (occupied or unknown) and 0 on free cells, as
+// CV_8U the map's size: the input of OpenCV's labelling and distance
+// transform.
+cv::Mat ObstacleMask(const std::string& cells, int width, int height);
+
+// The depth of every non-free cell of an ObstacleMask: its distance (px) to
+// the nearest free cell, as CV_32F the map's size; 0 on free cells.
+cv::Mat ObstacleDepth(const cv::Mat& obstacle);
 
 // The typical thickness of a map's walls (px): the median, over the ridge
 // cells of `depth` (those at least as deep as all 8 neighbours), of twice
