@@ -94,12 +94,12 @@ int main(int argc, char** argv) {
                "cut.room_width_m=auto");
   app.add_option("--width", width, "shrink the picture to at most this many pixels wide");
   app.add_option("--scale", scale,
-                 "output pixels per map cell (default: the most that keeps the picture within "
-                 "1000 px, at least 1)");
+                 "output pixels per map cell, 1 to 16 (default: the most that keeps the picture "
+                 "within 1000 px, at least 1)")
+      ->check(CLI::Range(1, 16));
   std::string crop;
   app.add_option("--crop", crop, "draw only the window X,Y,W,H (map cells; with --scale to zoom)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
-    if (scale < 0 || scale > 16) throw areagraph::InputError("--scale must be between 1 and 16");
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     if (width < 0) throw areagraph::InputError("--width must be positive");
     areagraph::Render(*store, map, stage, scale, doors, width, crop, out);

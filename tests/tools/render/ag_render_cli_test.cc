@@ -53,5 +53,15 @@ TEST_F(AgRenderCli, BadCropIsOneLineAndNonZero) {
   }
 }
 
+// 0 used to be taken silently as "the default"; every value outside 1..16 is a usage error.
+TEST_F(AgRenderCli, ScaleOutsideOneToSixteenIsAUsageError) {
+  for (const char* scale : {"0", "-1", "17"}) {
+    const CommandResult result = Render({"--scale", scale});
+    EXPECT_EQ(result.exit_code, 2) << scale;
+    EXPECT_EQ(CountLines(result.err), 1) << result.err;
+    EXPECT_NE(result.err.find("--scale"), std::string::npos) << result.err;
+  }
+}
+
 }  // namespace
 }  // namespace areagraph::testing
