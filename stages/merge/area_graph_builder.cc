@@ -65,6 +65,37 @@ int CountComponents(const proto::AreaGraph& graph) {
   return count;
 }
 
+// The free space split among the plan's areas (PartitionFreeSpace). The
+// removed obstacles that areas must not cover are cleared from the boundary
+// mask, which becomes the partition's domain, instead of a raster of their
+// own; the paths are freed before the outlines are built.
+AreaRaster PartitionedFreeSpace(const proto::CutGraph& graph, const proto::CleanedMap& map,
+                                const CellGrid& grid, const AreaPlan& plan,
+                                const proto::MergeOptions& options) {
+  std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
+  std::vector<std::vector<PointList>> paths(plan.areas.size());
+  for (size_t k = 0; k < plan.areas.size(); ++k) {
+    for (int e : plan.areas[k].edges) {
+      paths[k].push_back(ToPointList(graph.edges(e).path()));
+      polygons[k].push_back(&graph.edges(e).polygon());
+      for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
+        polygons[k].push_back(&absorbed);
+      }
+    }
+  }
+  cv::Mat domain = BoundaryMask(graph.part_boundaries(), graph.boundary(),
+                                cv::Size(grid.width(), grid.height()));
+  if (!options.cover_removed_obstacles()) {
+    for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
+      for (const int index : *list) {
+        if (index >= 0 && index < grid.width() * grid.height()) domain.data[index] = 0;
+      }
+    }
+  }
+  return PartitionFreeSpace(grid, std::move(domain), polygons, paths, ThroughPaths(graph, plan),
+                            options.grow_min_gap_m() / grid.resolution_m());
+}
+
 }  // namespace
 
 proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::CleanedMap& map,
@@ -78,31 +109,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
   if (options.join_rooms_without_doors()) JoinRoomsWithoutDoors(graph, grid.resolution_m(), &plan);
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
-  std::vector<std::vector<const proto::Polygon*>> polygons(plan.areas.size());
-  std::vector<std::vector<PointList>> paths(plan.areas.size());
-  for (size_t k = 0; k < plan.areas.size(); ++k) {
-    for (int e : plan.areas[k].edges) {
-      paths[k].push_back(ToPointList(graph.edges(e).path()));
-      polygons[k].push_back(&graph.edges(e).polygon());
-      for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
-        polygons[k].push_back(&absorbed);
-      }
-    }
-  }
-  cv::Mat removed;
-  if (!options.cover_removed_obstacles()) {
-    removed = cv::Mat::zeros(grid.height(), grid.width(), CV_8U);
-    for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
-      for (const int index : *list) {
-        if (index >= 0 && index < grid.width() * grid.height()) removed.data[index] = 1;
-      }
-    }
-  }
-  AreaRaster raster = PartitionFreeSpace(grid,
-                                         BoundaryMask(graph.part_boundaries(), graph.boundary(),
-                                                      cv::Size(grid.width(), grid.height())),
-                                         polygons, paths, ThroughPaths(graph, plan),
-                                         options.grow_min_gap_m() / grid.resolution_m(), removed);
+  AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);

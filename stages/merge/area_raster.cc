@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <opencv2/imgproc.hpp>
 
 #include "stages/geometry/polygon_raster.h"
@@ -27,24 +28,54 @@ inline void Neighbours(int index, int cols, int rows, int neighbours[4]) {
 }
 
 // Breadth-first growth of all labels (kUnreached too) into unlabelled domain
-// cells, seeded in row-major order: a flat queue of cell indices over the
-// continuous matrices, linear in the grid.
+// cells, seeded in row-major order, linear in the grid. Only labelled cells
+// beside an unlabelled domain cell are seeded (the others would add nothing
+// when their turn came, since labels are only ever set), and the queue lets
+// go of what it has handled, so it holds the growing front, not the map.
 void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
   CV_Assert(domain.isContinuous() && labels->isContinuous());
   const int cols = labels->cols, rows = labels->rows;
   const uint8_t* inside = domain.ptr<uint8_t>();
   int* label = labels->ptr<int>();
-  std::vector<int> queue;
-  for (int i = 0; i < cols * rows; ++i) {
-    if (label[i] != 0) queue.push_back(i);
-  }
+  auto open = [&](int q) { return q >= 0 && inside[q] && label[q] == 0; };
+  std::deque<int> queue;
   int neighbours[4];
-  for (size_t head = 0; head < queue.size(); ++head) {
-    const int p = queue[head];
+  for (int i = 0; i < cols * rows; ++i) {
+    if (label[i] == 0) continue;
+    Neighbours(i, cols, rows, neighbours);
+    if (std::any_of(neighbours, neighbours + 4, open)) queue.push_back(i);
+  }
+  while (!queue.empty()) {
+    const int p = queue.front();
+    queue.pop_front();
     Neighbours(p, cols, rows, neighbours);
     for (int q : neighbours) {
-      if (q < 0 || !inside[q] || label[q] != 0) continue;
+      if (!open(q)) continue;
       label[q] = label[p];
+      queue.push_back(q);
+    }
+  }
+}
+
+// Marks the cells of a piece while KeepMainPieces walks it; no area label
+// reaches this bit.
+constexpr int kVisited = 1 << 30;
+
+// Visits the 4-connected piece of cells equal to `value` around `start`
+// (breadth first), sets each to `mark` and calls visit(cell) on it.
+template <typename Visit>
+void WalkPiece(int start, int value, int mark, int cols, int rows, int* label, Visit visit) {
+  std::deque<int> queue(1, start);
+  label[start] = mark;
+  int neighbours[4];
+  while (!queue.empty()) {
+    const int p = queue.front();
+    queue.pop_front();
+    visit(p);
+    Neighbours(p, cols, rows, neighbours);
+    for (int q : neighbours) {
+      if (q < 0 || label[q] != value) continue;
+      label[q] = mark;
       queue.push_back(q);
     }
   }
@@ -52,87 +83,109 @@ void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
 
 // Clears every cell that is not in the main 4-connected piece of its label:
 // the piece with most of the area's path cells (`on_path`), else the biggest.
+// Pieces are marked in the labels themselves (kVisited), not in a second
+// raster.
 void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   CV_Assert(on_path.isContinuous() && labels->isContinuous());
   const int cols = labels->cols, rows = labels->rows;
   const uint8_t* path = on_path.ptr<uint8_t>();
-  const int* label = labels->ptr<int>();
-  cv::Mat piece_mat(labels->size(), CV_32S, cv::Scalar(-1));
-  int* piece = piece_mat.ptr<int>();
-  std::vector<int64_t> piece_size;
-  std::vector<int64_t> piece_path;
-  std::vector<int> piece_label;
-  std::vector<int> queue;
-  int neighbours[4];
+  int* label = labels->ptr<int>();
+  struct Piece {
+    int start;
+    int label;
+    int64_t size = 0;
+    int64_t path = 0;
+  };
+  std::vector<Piece> pieces;
   for (int start = 0; start < cols * rows; ++start) {
-    if (label[start] <= 0 || piece[start] >= 0) continue;
-    const int id = static_cast<int>(piece_size.size());
-    piece_size.push_back(0);
-    piece_path.push_back(0);
-    piece_label.push_back(label[start]);
-    queue.assign(1, start);
-    piece[start] = id;
-    for (size_t head = 0; head < queue.size(); ++head) {
-      const int p = queue[head];
-      ++piece_size[id];
-      piece_path[id] += path[p] != 0;
-      Neighbours(p, cols, rows, neighbours);
-      for (int q : neighbours) {
-        if (q < 0 || label[q] != label[start] || piece[q] >= 0) continue;
-        piece[q] = id;
-        queue.push_back(q);
-      }
-    }
+    if (label[start] <= 0 || (label[start] & kVisited) != 0) continue;
+    Piece piece{start, label[start]};
+    WalkPiece(start, piece.label, piece.label | kVisited, cols, rows, label, [&](int p) {
+      ++piece.size;
+      piece.path += path[p] != 0;
+    });
+    pieces.push_back(piece);
   }
   std::vector<int> biggest(label_count + 1, -1);
-  for (size_t id = 0; id < piece_size.size(); ++id) {
-    int& best = biggest[piece_label[id]];
-    if (best < 0 || piece_path[id] > piece_path[best] ||
-        (piece_path[id] == piece_path[best] && piece_size[id] > piece_size[best])) {
+  for (size_t id = 0; id < pieces.size(); ++id) {
+    const Piece& piece = pieces[id];
+    int& best = biggest[piece.label];
+    if (best < 0 || piece.path > pieces[best].path ||
+        (piece.path == pieces[best].path && piece.size > pieces[best].size)) {
       best = static_cast<int>(id);
     }
   }
-  int* writable = labels->ptr<int>();
+  for (size_t id = 0; id < pieces.size(); ++id) {
+    const Piece& piece = pieces[id];
+    if (biggest[piece.label] == static_cast<int>(id)) continue;
+    WalkPiece(piece.start, piece.label | kVisited, 0, cols, rows, label, [](int) {});
+  }
   for (int i = 0; i < cols * rows; ++i) {
-    if (writable[i] > 0 && biggest[writable[i]] != piece[i]) writable[i] = 0;
+    if (label[i] > 0) label[i] &= ~kVisited;
   }
 }
 
-// Marks kUnreached on the unlabelled cells of the cores (free cells at least
-// min_gap_px / 2 from any non-free cell, 4-connected pieces) that no area's
-// polygons or paths reach and that are big enough to be a room.
-void MarkUnreachedCores(const CellGrid& grid, const cv::Mat& domain, double min_gap_px,
-                        cv::Mat* labels) {
-  cv::Mat free_cells(labels->size(), CV_8U);
-  for (int r = 0; r < free_cells.rows; ++r) {
-    uint8_t* row = free_cells.ptr<uint8_t>(r);
-    for (int c = 0; c < free_cells.cols; ++c) row[c] = grid.IsFree(c, r) ? 255 : 0;
+// The cores: domain cells at least min_gap_px / 2 from any non-free cell
+// (1, else 0). The distances (4 bytes a cell) live only inside this call,
+// before the labels exist.
+cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px) {
+  cv::Mat cells(domain.size(), CV_8U);
+  for (int r = 0; r < cells.rows; ++r) {
+    uint8_t* row = cells.ptr<uint8_t>(r);
+    for (int c = 0; c < cells.cols; ++c) row[c] = grid.IsFree(c, r) ? 255 : 0;
   }
   cv::Mat distance;
-  cv::distanceTransform(free_cells, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  cv::Mat core = (distance >= 0.5 * min_gap_px) & (domain != 0);
-  cv::Mat pieces;
-  const int count = cv::connectedComponents(core, pieces, 4, CV_32S);
-  std::vector<uint8_t> reached(count, 0);
-  std::vector<int64_t> size(count, 0);
-  for (int r = 0; r < pieces.rows; ++r) {
-    for (int c = 0; c < pieces.cols; ++c) {
-      const int piece = pieces.at<int>(r, c);
-      ++size[piece];
-      if (labels->at<int>(r, c) > 0) reached[piece] = 1;
-    }
+  cv::distanceTransform(cells, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  const float reach = static_cast<float>(0.5 * min_gap_px);
+  for (int r = 0; r < cells.rows; ++r) {
+    uint8_t* row = cells.ptr<uint8_t>(r);
+    const float* d = distance.ptr<float>(r);
+    const uint8_t* inside = domain.ptr<uint8_t>(r);
+    for (int c = 0; c < cells.cols; ++c) row[c] = d[c] >= reach && inside[c] != 0 ? 1 : 0;
   }
+  return cells;
+}
+
+// Marks kUnreached on the unlabelled cells of the cores (`core`, see
+// CoreCells; consumed as visit marks) whose 4-connected pieces no area's
+// polygons or paths reach and that are big enough to be a room.
+void MarkUnreachedCores(cv::Mat core, double min_gap_px, cv::Mat* labels) {
+  CV_Assert(core.isContinuous() && labels->isContinuous());
+  const int cols = labels->cols, rows = labels->rows;
+  uint8_t* cell = core.ptr<uint8_t>();
+  int* label = labels->ptr<int>();
   // Pockets in clutter are no room: a core must span (2 gaps)^2 to stay unreached.
   const double min_core_cells = 4 * min_gap_px * min_gap_px;
-  for (int piece = 1; piece < count; ++piece) {
-    if (size[piece] < min_core_cells) reached[piece] = 1;
-  }
-  for (int r = 0; r < pieces.rows; ++r) {
-    for (int c = 0; c < pieces.cols; ++c) {
-      const int piece = pieces.at<int>(r, c);
-      int& label = labels->at<int>(r, c);
-      if (piece > 0 && !reached[piece] && label == 0) label = kUnreached;
+  enum : uint8_t { kCore = 1, kSeen = 2, kDone = 3 };
+  // Walks the piece of `from` cells around `start`, marking them `to`.
+  auto walk = [&](int start, uint8_t from, uint8_t to, auto visit) {
+    std::deque<int> queue(1, start);
+    cell[start] = to;
+    int neighbours[4];
+    while (!queue.empty()) {
+      const int p = queue.front();
+      queue.pop_front();
+      visit(p);
+      Neighbours(p, cols, rows, neighbours);
+      for (int q : neighbours) {
+        if (q < 0 || cell[q] != from) continue;
+        cell[q] = to;
+        queue.push_back(q);
+      }
     }
+  };
+  for (int start = 0; start < cols * rows; ++start) {
+    if (cell[start] != kCore) continue;
+    int64_t size = 0;
+    bool reached = false;
+    walk(start, kCore, kSeen, [&](int p) {
+      ++size;
+      reached = reached || label[p] > 0;
+    });
+    if (reached || size < min_core_cells) continue;
+    walk(start, kSeen, kDone, [&](int p) {
+      if (label[p] == 0) label[p] = kUnreached;
+    });
   }
 }
 
@@ -148,13 +201,16 @@ void CountCells(AreaRaster* raster) {
 
 }  // namespace
 
-AreaRaster PartitionFreeSpace(const CellGrid& grid, const cv::Mat& boundary_mask,
+AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
                               const std::vector<std::vector<const proto::Polygon*>>& area_polygons,
                               const std::vector<std::vector<PointList>>& area_paths,
                               const std::vector<std::pair<PointList, int>>& through_paths,
                               double min_gap_px, const cv::Mat& keep_out) {
   const cv::Size size(grid.width(), grid.height());
-  cv::Mat domain = boundary_mask.clone();
+  CV_Assert(boundary_mask.size() == size && boundary_mask.type() == CV_8U);
+  // The boundary mask's buffer becomes the domain (the caller hands it over).
+  cv::Mat domain = boundary_mask.isContinuous() ? boundary_mask : boundary_mask.clone();
+  boundary_mask.release();
   AreaRaster raster;
   for (int r = 0; r < size.height; ++r) {
     uint8_t* row = domain.ptr<uint8_t>(r);
@@ -164,6 +220,8 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, const cv::Mat& boundary_mask
       raster.domain_cells += row[c];
     }
   }
+  cv::Mat core;
+  if (min_gap_px > 0) core = CoreCells(grid, domain, min_gap_px);
   raster.labels = cv::Mat::zeros(size, CV_32S);
   for (size_t k = 0; k < area_polygons.size(); ++k) {
     for (const proto::Polygon* polygon : area_polygons[k]) {
@@ -184,12 +242,20 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, const cv::Mat& boundary_mask
     for (const PointList& path : area_paths[k]) draw_path(path, static_cast<int>(k));
   }
   for (const auto& [path, area] : through_paths) draw_path(path, area);
-  raster.labels.setTo(0, domain == 0);
-  if (min_gap_px > 0) MarkUnreachedCores(grid, domain, min_gap_px, &raster.labels);
+  int* label = raster.labels.ptr<int>();
+  const uint8_t* inside = domain.ptr<uint8_t>();
+  const size_t cells = static_cast<size_t>(size.area());
+  for (size_t i = 0; i < cells; ++i) {
+    if (!inside[i]) label[i] = 0;
+  }
+  if (!core.empty()) MarkUnreachedCores(std::move(core), min_gap_px, &raster.labels);
   GrowLabels(domain, &raster.labels);
   KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
+  on_path.release();
   GrowLabels(domain, &raster.labels);
-  raster.labels.setTo(0, raster.labels == kUnreached);
+  for (size_t i = 0; i < cells; ++i) {
+    if (label[i] == kUnreached) label[i] = 0;
+  }
   raster.cell_count.assign(area_polygons.size(), 0);
   CountCells(&raster);
   return raster;

@@ -40,7 +40,11 @@ struct AreaRaster {
 //
 // Cells where `keep_out` (CV_8U, map size, optional) is non-zero are not
 // part of the domain: no area covers them.
-AreaRaster PartitionFreeSpace(const CellGrid& grid, const cv::Mat& boundary_mask,
+//
+// `boundary_mask` is taken by value so that a caller that hands it over
+// (std::move or a temporary) lends its buffer to the domain raster: on a big
+// map every raster of the map's size counts towards the peak memory.
+AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
                               const std::vector<std::vector<const proto::Polygon*>>& area_polygons,
                               const std::vector<std::vector<PointList>>& area_paths,
                               const std::vector<std::pair<PointList, int>>& through_paths,
