@@ -59,26 +59,47 @@ double EdgeClearance(const Eigen::Vector2d& from, const Eigen::Vector2d& directi
   return std::min(from_clearance, to_clearance);
 }
 
-}  // namespace
+// One Voronoi edge before it becomes a message.
+struct PlainEdge {
+  int source;
+  int target;
+  int left_site;
+  int right_site;
+  double clearance_px;
+  // Index into PlainDiagram::ray_directions, or -1 for a segment.
+  int ray;
+};
 
-proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
-                                          const VoronoiBuildOptions& options) {
-  proto::VoronoiDiagram diagram;
-  diagram.mutable_sites()->Reserve(int(sites.size()));
-  for (const Eigen::Vector2d& site : sites) SetPoint(site, diagram.add_sites());
+// The diagram as plain arrays: the triangulation is gone before the messages
+// are made, so that on a big map (a million sites) the two never take memory
+// at the same time.
+struct PlainDiagram {
+  bool has_faces = false;
+  std::vector<Eigen::Vector2d> positions;
+  std::vector<double> clearances;
+  std::vector<PlainEdge> edges;
+  std::vector<Eigen::Vector2d> ray_directions;
+};
 
+// The dual of the sites' Delaunay triangulation (see BuildVoronoiDiagram).
+PlainDiagram DualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
+                                 const VoronoiBuildOptions& options) {
+  PlainDiagram plain;
   const auto indexed = cgal::IndexedPoints(sites);
   SiteDelaunay dt(indexed.begin(), indexed.end());
-  if (dt.dimension() < 2) return diagram;
+  if (dt.dimension() < 2) return plain;
+  plain.has_faces = true;
 
   const int face_count = NumberFaces(dt);
-  DisjointSets cocircular = MergeCocircularFaces(dt, face_count);
   int vertex_count = 0;
-  const std::vector<int> vertex_of_face = cocircular.DenseLabels(&vertex_count);
+  const std::vector<int> vertex_of_face =
+      MergeCocircularFaces(dt, face_count).DenseLabels(&vertex_count);
 
   // One Voronoi vertex per circle, placed at the first face's circumcentre.
-  std::vector<Eigen::Vector2d> positions(vertex_count);
-  std::vector<double> clearances(vertex_count, -1.0);
+  std::vector<Eigen::Vector2d>& positions = plain.positions;
+  std::vector<double>& clearances = plain.clearances;
+  positions.resize(vertex_count);
+  clearances.assign(vertex_count, -1.0);
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     const int vertex = vertex_of_face[f->info()];
     if (clearances[vertex] >= 0) continue;
@@ -86,17 +107,11 @@ proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& si
     positions[vertex] = cgal::ToEigen(centre);
     clearances[vertex] = std::sqrt(CGAL::squared_distance(centre, f->vertex(0)->point()));
   }
-  diagram.mutable_vertices()->Reserve(vertex_count);
-  for (int v = 0; v < vertex_count; ++v) {
-    proto::VoronoiVertex* vertex = diagram.add_vertices();
-    SetPoint(positions[v], vertex->mutable_position());
-    vertex->set_clearance_px(clearances[v]);
-  }
 
   // Each Delaunay edge once, from its finite face with the lower number
   // towards the other face. (CGAL's edge iterator picks the side by comparing
   // face addresses, which would make the output depend on the heap's history.)
-  diagram.mutable_edges()->Reserve(int(dt.number_of_vertices() + face_count));
+  plain.edges.reserve(dt.number_of_vertices() + face_count);
   for (auto face = dt.finite_faces_begin(); face != dt.finite_faces_end(); ++face) {
     for (int i = 0; i < 3; ++i) {
       const Face other = face->neighbor(i);
@@ -115,27 +130,59 @@ proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& si
       const Eigen::Vector2d left_site = cgal::ToEigen(left->point());
       const Eigen::Vector2d right_site = cgal::ToEigen(right->point());
 
-      proto::VoronoiEdge* edge = diagram.add_edges();
-      edge->set_source(source);
-      edge->set_target(target);
-      edge->set_left_site(left->info());
-      edge->set_right_site(right->info());
+      PlainEdge edge{source, target, left->info(), right->info(), 0, -1};
       if (is_ray) {
         // Perpendicular to the hull edge, pointing away from the face: the
         // face is on the CGAL-left of left_site -> right_site, so take its
         // right normal.
         const Eigen::Vector2d along = right_site - left_site;
         const Eigen::Vector2d direction = Eigen::Vector2d(along.y(), -along.x()).normalized();
-        SetPoint(direction, edge->mutable_ray_direction());
-        edge->set_clearance_px(EdgeClearance(positions[source], direction, INFINITY,
-                                             clearances[source], clearances[source], left_site,
-                                             right_site));
+        edge.ray = static_cast<int>(plain.ray_directions.size());
+        plain.ray_directions.push_back(direction);
+        edge.clearance_px =
+            EdgeClearance(positions[source], direction, INFINITY, clearances[source],
+                          clearances[source], left_site, right_site);
       } else {
-        edge->set_clearance_px(
+        edge.clearance_px =
             EdgeClearance(positions[source], positions[target] - positions[source], 1.0,
-                          clearances[source], clearances[target], left_site, right_site));
+                          clearances[source], clearances[target], left_site, right_site);
       }
+      plain.edges.push_back(edge);
     }
+  }
+  return plain;
+}
+
+}  // namespace
+
+proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
+                                          const VoronoiBuildOptions& options) {
+  PlainDiagram plain = DualOfTriangulation(sites, options);
+  proto::VoronoiDiagram diagram;
+  diagram.mutable_sites()->Reserve(int(sites.size()));
+  for (const Eigen::Vector2d& site : sites) SetPoint(site, diagram.add_sites());
+  if (!plain.has_faces) return diagram;
+
+  diagram.mutable_vertices()->Reserve(int(plain.positions.size()));
+  for (size_t v = 0; v < plain.positions.size(); ++v) {
+    proto::VoronoiVertex* vertex = diagram.add_vertices();
+    SetPoint(plain.positions[v], vertex->mutable_position());
+    vertex->set_clearance_px(plain.clearances[v]);
+  }
+  std::vector<Eigen::Vector2d>().swap(plain.positions);
+  std::vector<double>().swap(plain.clearances);
+
+  diagram.mutable_edges()->Reserve(int(plain.edges.size()));
+  for (const PlainEdge& plain_edge : plain.edges) {
+    proto::VoronoiEdge* edge = diagram.add_edges();
+    edge->set_source(plain_edge.source);
+    edge->set_target(plain_edge.target);
+    edge->set_left_site(plain_edge.left_site);
+    edge->set_right_site(plain_edge.right_site);
+    if (plain_edge.ray >= 0) {
+      SetPoint(plain.ray_directions[plain_edge.ray], edge->mutable_ray_direction());
+    }
+    edge->set_clearance_px(plain_edge.clearance_px);
   }
   return diagram;
 }
