@@ -204,10 +204,23 @@ struct SiteAlphaShape::Impl {
   }
 };
 
-SiteAlphaShape::SiteAlphaShape(const PointList& sites, double alpha_radius_px) {
+namespace {
+
+std::vector<Kernel::Point_2> KernelPoints(const PointList& sites) {
   std::vector<Kernel::Point_2> points;
   points.reserve(sites.size());
   for (const Eigen::Vector2d& site : sites) points.emplace_back(site.x(), site.y());
+  return points;
+}
+
+}  // namespace
+
+SiteAlphaShape::SiteAlphaShape(const PointList& sites, double alpha_radius_px)
+    : impl_(std::make_unique<Impl>(KernelPoints(sites), alpha_radius_px * alpha_radius_px)) {}
+
+SiteAlphaShape::SiteAlphaShape(PointList&& sites, double alpha_radius_px) {
+  std::vector<Kernel::Point_2> points = KernelPoints(sites);
+  PointList().swap(sites);
   impl_ = std::make_unique<Impl>(points, alpha_radius_px * alpha_radius_px);
 }
 

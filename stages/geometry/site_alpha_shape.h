@@ -20,6 +20,9 @@ namespace areagraph {
 class SiteAlphaShape {
  public:
   SiteAlphaShape(const PointList& sites, double alpha_radius_px);
+  // The same, freeing `sites` before it triangulates: on a big map the list
+  // (16 bytes a site) need not live beside the triangulation.
+  SiteAlphaShape(PointList&& sites, double alpha_radius_px);
   ~SiteAlphaShape();
   SiteAlphaShape(const SiteAlphaShape&) = delete;
   SiteAlphaShape& operator=(const SiteAlphaShape&) = delete;

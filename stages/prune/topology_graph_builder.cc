@@ -36,6 +36,38 @@ void CheckIndex(int index, int size, const char* element, int edge) {
   }
 }
 
+// The numbers of a Voronoi diagram, copied out of its messages (about three
+// times their size in memory), so that the diagram can go before the
+// boundary shape is built: on a big map the two would be most of the peak.
+struct PlainVoronoi {
+  struct Edge {
+    int source;
+    int target;
+    int left_site;
+    int right_site;
+    double clearance_px;
+  };
+  PointList sites;
+  PointList positions;
+  std::vector<double> clearances;
+  std::vector<Edge> edges;
+
+  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram)
+      : sites(ToPointList(diagram.sites())) {
+    positions.reserve(diagram.vertices_size());
+    clearances.reserve(diagram.vertices_size());
+    for (const proto::VoronoiVertex& vertex : diagram.vertices()) {
+      positions.push_back(FromProtoPoint(vertex.position()));
+      clearances.push_back(vertex.clearance_px());
+    }
+    edges.reserve(diagram.edges_size());
+    for (const proto::VoronoiEdge& edge : diagram.edges()) {
+      edges.push_back(
+          {edge.source(), edge.target(), edge.left_site(), edge.right_site(), edge.clearance_px()});
+    }
+  }
+};
+
 // The Voronoi edges that survive the boundary, free-cell and clearance
 // filters as one-segment chains, the enclosed region of each chain vertex,
 // and the outline of every region that holds one.
@@ -48,15 +80,15 @@ struct FilteredGraph {
 // Builds the FilteredGraph. Frees `boundary_shape` (its triangulation is
 // about as big as the diagram) once the outlines are taken, before the
 // chains are built.
-FilteredGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const CellGrid& grid,
+FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& grid,
                                    std::unique_ptr<SiteAlphaShape> boundary_shape,
                                    double min_clearance_px) {
-  const int vertex_count = diagram.vertices_size();
-  const int site_count = diagram.sites_size();
+  const int vertex_count = static_cast<int>(diagram.positions.size());
+  const int site_count = static_cast<int>(diagram.sites.size());
   std::vector<char> keep(vertex_count, 0);
   std::vector<int> region(vertex_count, -1);
   for (int v = 0; v < vertex_count; ++v) {
-    const Eigen::Vector2d p = FromProtoPoint(diagram.vertices(v).position());
+    const Eigen::Vector2d& p = diagram.positions[v];
     if (!grid.FreeAt(p)) continue;
     region[v] = boundary_shape->EnclosedRegionAt(p);
     keep[v] = region[v] >= 0;
@@ -64,19 +96,19 @@ FilteredGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const C
 
   DisjointSets same_point(vertex_count);
   std::vector<int> kept_edges;
-  for (int e = 0; e < diagram.edges_size(); ++e) {
-    const proto::VoronoiEdge& edge = diagram.edges(e);
-    CheckIndex(edge.source(), vertex_count, "vertex", e);
-    if (edge.target() < 0) continue;  // a ray
-    CheckIndex(edge.target(), vertex_count, "vertex", e);
-    CheckIndex(edge.left_site(), site_count, "site", e);
-    CheckIndex(edge.right_site(), site_count, "site", e);
-    if (!keep[edge.source()] || !keep[edge.target()]) continue;
-    if (!(edge.clearance_px() >= min_clearance_px)) continue;
-    const Eigen::Vector2d a = FromProtoPoint(diagram.vertices(edge.source()).position());
-    const Eigen::Vector2d b = FromProtoPoint(diagram.vertices(edge.target()).position());
+  for (int e = 0; e < static_cast<int>(diagram.edges.size()); ++e) {
+    const PlainVoronoi::Edge& edge = diagram.edges[e];
+    CheckIndex(edge.source, vertex_count, "vertex", e);
+    if (edge.target < 0) continue;  // a ray
+    CheckIndex(edge.target, vertex_count, "vertex", e);
+    CheckIndex(edge.left_site, site_count, "site", e);
+    CheckIndex(edge.right_site, site_count, "site", e);
+    if (!keep[edge.source] || !keep[edge.target]) continue;
+    if (!(edge.clearance_px >= min_clearance_px)) continue;
+    const Eigen::Vector2d& a = diagram.positions[edge.source];
+    const Eigen::Vector2d& b = diagram.positions[edge.target];
     if ((a - b).norm() < kSamePointPx) {
-      same_point.Union(edge.source(), edge.target());
+      same_point.Union(edge.source, edge.target);
     } else {
       kept_edges.push_back(e);
     }
@@ -85,7 +117,7 @@ FilteredGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const C
   FilteredGraph filtered;
   std::set<int> regions;
   for (int e : kept_edges) {
-    for (const int v : {diagram.edges(e).source(), diagram.edges(e).target()}) {
+    for (const int v : {diagram.edges[e].source, diagram.edges[e].target}) {
       regions.insert(region[same_point.Find(v)]);
     }
   }
@@ -100,25 +132,24 @@ FilteredGraph FilteredVoronoiGraph(const proto::VoronoiDiagram& diagram, const C
     const int root = same_point.Find(voronoi_vertex);
     if (chain_vertex[root] < 0) {
       chain_vertex[root] = static_cast<int>(graph.vertices.size());
-      const proto::VoronoiVertex& v = diagram.vertices(root);
-      graph.vertices.push_back({FromProtoPoint(v.position()), v.clearance_px(), false});
+      graph.vertices.push_back({diagram.positions[root], diagram.clearances[root], false});
       filtered.vertex_region.push_back(region[root]);
     }
     return chain_vertex[root];
   };
   for (int e : kept_edges) {
-    const proto::VoronoiEdge& edge = diagram.edges(e);
+    const PlainVoronoi::Edge& edge = diagram.edges[e];
     ChainEdge chain;
-    chain.source = vertex_of(edge.source());
-    chain.target = vertex_of(edge.target());
+    chain.source = vertex_of(edge.source);
+    chain.target = vertex_of(edge.target);
     if (chain.source == chain.target) continue;
     const ChainVertex& s = graph.vertices[chain.source];
     const ChainVertex& t = graph.vertices[chain.target];
     chain.path = {s.position, t.position};
     chain.clearance_px = {s.clearance_px, t.clearance_px};
-    chain.left_sites = {FromProtoPoint(diagram.sites(edge.left_site()))};
-    chain.right_sites = {FromProtoPoint(diagram.sites(edge.right_site()))};
-    chain.min_clearance_px = edge.clearance_px();
+    chain.left_sites = {diagram.sites[edge.left_site]};
+    chain.right_sites = {diagram.sites[edge.right_site]};
+    chain.min_clearance_px = edge.clearance_px;
     graph.edges.push_back(std::move(chain));
   }
   return filtered;
@@ -229,15 +260,16 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                        " is larger than the whole map");
   }
 
-  const PointList sites = ToPointList(diagram.sites());
-  if (sites.size() < 3) {
-    throw InputError("no Topology Graph: the map has " + std::to_string(sites.size()) +
+  if (diagram.sites_size() < 3) {
+    throw InputError("no Topology Graph: the map has " + std::to_string(diagram.sites_size()) +
                      " obstacle cells next to free space, too few to enclose any");
   }
+  const PlainVoronoi plain(diagram);
+  if (diagram_done) diagram_done();  // `diagram` may be gone from here on
   // Held by pointer: FilteredVoronoiGraph frees it before the chains are
   // built (on large maps it is a good part of the stage's peak memory).
   auto boundary_shape =
-      std::make_unique<SiteAlphaShape>(sites, options.boundary_alpha_radius_m() / resolution);
+      std::make_unique<SiteAlphaShape>(plain.sites, options.boundary_alpha_radius_m() / resolution);
   const std::vector<double> region_area = boundary_shape->FindEnclosedRegions();
   if (region_area.empty()) {
     throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +
@@ -246,8 +278,7 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
 
   const double min_clearance_px = options.min_clearance_m() / resolution;
   FilteredGraph filtered =
-      FilteredVoronoiGraph(diagram, grid, std::move(boundary_shape), min_clearance_px);
-  if (diagram_done) diagram_done();  // `diagram` may be gone from here on
+      FilteredVoronoiGraph(plain, grid, std::move(boundary_shape), min_clearance_px);
   ChainGraph& graph = filtered.graph;
   graph.JoinDegreeTwoChains();
   if (graph.edges.empty()) {

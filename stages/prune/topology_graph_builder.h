@@ -18,9 +18,9 @@ namespace areagraph {
 // the outline of the alpha-shape region around it in part_boundaries); the
 // groups dropped are counted. Throws InputError ("no Topology Graph: ...")
 // when nothing is left, and OptionsError on bad options. Calls
-// `diagram_done`, when given, once it reads `diagram` no more (after the
-// filters, before the chains are pruned), so that a caller that owns the
-// diagram can free it while the rest runs.
+// `diagram_done`, when given, once it reads `diagram` no more (it copies the
+// diagram's numbers first, before the boundary shape is built), so that a
+// caller that owns the diagram can free it while the rest runs.
 proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                                         const proto::CleanedMap& map,
                                         const proto::PruneOptions& options,

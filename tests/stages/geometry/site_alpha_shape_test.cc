@@ -1,5 +1,5 @@
 // SiteAlphaShape's outlines of several enclosed regions in one pass against
-// one region at a time.
+// one region at a time; the constructor that takes the sites over.
 #include "stages/geometry/site_alpha_shape.h"
 
 #include <google/protobuf/util/message_differencer.h>
@@ -46,6 +46,25 @@ TEST(SiteAlphaShapeTest, OutlinesInOnePassEqualOneAtATime) {
   }
   EXPECT_GE(non_empty, 2);
   EXPECT_TRUE(shape.EnclosedRegionOutlines({}).empty());
+}
+
+TEST(SiteAlphaShapeTest, TakingTheSitesOverFreesThemAndGivesTheSameShape) {
+  PointList sites;
+  AddBox(0, 0, 20, 12, &sites);
+  AddBox(30, 0, 10, 25, &sites);
+  SiteAlphaShape copied(sites, 1.5);
+  PointList handed_over = sites;
+  SiteAlphaShape taken(std::move(handed_over), 1.5);
+  EXPECT_TRUE(handed_over.empty());
+  EXPECT_EQ(handed_over.capacity(), 0u) << "the sites' memory was kept";
+  const std::vector<double> areas = copied.FindEnclosedRegions();
+  ASSERT_EQ(taken.FindEnclosedRegions(), areas);
+  ASSERT_GE(areas.size(), 2u);
+  for (int region = 0; region < static_cast<int>(areas.size()); ++region) {
+    EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(
+        taken.EnclosedRegionOutline(region), copied.EnclosedRegionOutline(region)))
+        << "region " << region;
+  }
 }
 
 }  // namespace
