@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <thread>
 #include <utility>
 
@@ -355,9 +356,13 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
       throw StoreError("input key of a " + artifact.stage + " artifact contains a line break");
     }
   }
-  // Hashing before the transaction keeps the write lock short.
-  const EncodedPayload payload =
-      artifact.encoded_payload ? *artifact.encoded_payload : EncodeRawPayload(artifact.payload);
+  // Hashing before the transaction keeps the write lock short. A payload
+  // encoded by the caller is used where it is, not copied (tens of MB on big
+  // maps).
+  std::optional<EncodedPayload> encoded_here;
+  if (!artifact.encoded_payload) encoded_here = EncodeRawPayload(artifact.payload);
+  const EncodedPayload& payload =
+      artifact.encoded_payload ? *artifact.encoded_payload : *encoded_here;
   SqliteTransaction transaction = BeginTransaction();
 
   int64_t map_id = 0;

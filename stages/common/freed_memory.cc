@@ -19,9 +19,11 @@ constexpr size_t kMinFreeBytes = size_t{64} << 20;
 
 void ReturnFreedMemory() {
 #if defined(__GLIBC__)
-  // Only when most of the heap is free, and much of it.
+  // Only when much of the heap is free, however much is in use: a stage that
+  // keeps a big artifact (cut's graph while merge runs) would otherwise carry
+  // everything freed beside it into the next stage's peak.
   const struct mallinfo2 heap = mallinfo2();
-  if (heap.fordblks > heap.uordblks && heap.fordblks > kMinFreeBytes) malloc_trim(0);
+  if (heap.fordblks > kMinFreeBytes) malloc_trim(0);
 #endif
 }
 

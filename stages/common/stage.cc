@@ -125,10 +125,17 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
           views.push_back(held[i].get());
         }
         if (!stage.reads_previous_version()) {
-          const InputRelease release = [&](size_t i) {
-            views.at(i) = nullptr;
-            held.at(i).reset();
-          };
+          const InputRelease release(
+              [&](size_t i) {
+                views.at(i) = nullptr;
+                held.at(i).reset();
+              },
+              [&](size_t i) -> std::shared_ptr<google::protobuf::Message> {
+                if (held.at(i).use_count() != 1) return nullptr;
+                // Made as a mutable message (parsed, or a stage's result in
+                // the memo); only `held` refers to it.
+                return std::const_pointer_cast<google::protobuf::Message>(std::move(held[i]));
+              });
           return stage.compute(views, release, options);
         }
         MessagePtr previous;

@@ -16,7 +16,26 @@ using MessagePtr = std::unique_ptr<google::protobuf::Message>;
 
 // Called by a stage's compute with the index of an input it reads no more:
 // the caller may free that input before the stage finishes.
-using InputRelease = std::function<void(size_t input)>;
+class InputRelease {
+ public:
+  using Take = std::function<std::shared_ptr<google::protobuf::Message>(size_t input)>;
+  // `release` frees input i; `take` hands it over (see TakeInput), or is empty.
+  template <typename Release>
+  InputRelease(Release release, Take take = {})  // NOLINT: a plain function converts
+      : release_(std::move(release)), take_(std::move(take)) {}
+  void operator()(size_t input) const { release_(input); }
+  // Input i itself, for a compute that frees parts of it as it goes, when the
+  // caller holds the only reference (the memo's last reader, or a parsed
+  // input); else null, and the input stays read-only. inputs[i] stays valid
+  // while the result lives.
+  std::shared_ptr<google::protobuf::Message> TakeInput(size_t input) const {
+    return take_ ? take_(input) : nullptr;
+  }
+
+ private:
+  std::function<void(size_t input)> release_;
+  Take take_;
+};
 
 // Everything the executables, the runner and the tools know about one stage.
 // Each stage is one row of StageTable(); nothing else lists the stages.

@@ -5,6 +5,7 @@
 #include <map>
 
 #include "common/error.h"
+#include "stages/common/freed_memory.h"
 #include "stages/common/stage_info.h"
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
@@ -66,11 +67,15 @@ void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count
 }  // namespace
 
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                              const proto::CutOptions& options) {
+                              const proto::CutOptions& options,
+                              const std::function<void(int edge)>& edge_done) {
   const CellGrid grid(map);
   CheckTopology(topology);
   const proto::RoomWidthEstimate room_width = ChooseRoomWidth(options, map.frame(), topology);
   const double room_width_px = room_width.room_width_m() / grid.resolution_m();
+  // The estimate's rasters are gone; the obstacle rasters below come from
+  // new mappings, so on a big map its freed pages would add to this stage's peak.
+  ReturnFreedMemory();
 
   const cv::Mat inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
                                       cv::Size(grid.width(), grid.height()));
@@ -108,7 +113,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     return it->second;
   };
 
-  for (const proto::GraphEdge& edge : topology.edges()) {
+  for (int edge_index = 0; edge_index < topology.edges_size(); ++edge_index) {
+    const proto::GraphEdge& edge = topology.edges(edge_index);
     const EdgeTrack track(edge);
     const bool source_dead = topology.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END;
     const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
@@ -153,6 +159,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
       piece.set_id(out.edges_size());
       *out.add_edges() = std::move(piece);
     }
+    if (edge_done) edge_done(edge_index);
   }
 
   std::vector<int> renumber(room_count, -1);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "proto/artifacts.pb.h"
@@ -16,8 +17,11 @@ namespace areagraph {
 // than the disk of diameter W are slivers of a corridor about W wide and
 // count as no room; of the others, only those that some edge runs through
 // are kept, renumbered from 0. Throws OptionsError for a bad W and
-// InputError for a corrupt input.
+// InputError for a corrupt input. Calls `edge_done`, when given, with the
+// index of each of topology's edges once it reads that edge no more, so that
+// a caller that owns the graph can free it edge by edge.
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                              const proto::CutOptions& options);
+                              const proto::CutOptions& options,
+                              const std::function<void(int edge)>& edge_done = {});
 
 }  // namespace areagraph

@@ -1,9 +1,11 @@
 // In one process the stages hand artifacts on through ArtifactMemo; an input's
-// last reader gets it for itself, and prune lets go of the Voronoi diagram
-// once it has filtered it (the peak memory of large maps).
+// last reader gets it for itself, prune lets go of the Voronoi diagram once
+// it has copied its numbers, and cut frees the Topology Graph's edges as it
+// cuts them when the graph is its alone (the peak memory of large maps).
 #include <gtest/gtest.h>
 
 #include "stages/common/artifact_memo.h"
+#include "stages/cut/cut_graph_builder.h"
 #include "stages/import/import_stage.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "stages/prune/topology_graph_builder.h"
@@ -12,14 +14,15 @@
 namespace areagraph {
 namespace {
 
-// A store holding two_rooms up to its Voronoi diagram.
-std::unique_ptr<ArtifactStore> StoreUpToVoronoi(const proto::PipelineOptions& options) {
+// A store holding two_rooms up to `last` (the Voronoi diagram by default).
+std::unique_ptr<ArtifactStore> StoreUpToVoronoi(const proto::PipelineOptions& options,
+                                                const StageInfo& last = kVoronoiStage) {
   auto store = OpenArtifactStore(":memory:");
   const ImportSource source = ReadImportSource(testing::SourcePath("examples/two_rooms.png"));
   RunCachedStage(*store, "m", StageOf(kImportStage), options, ImportInputs(source), [&] {
     return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
   });
-  RunMapPipeline(*store, "m", options, false, PipelineObserver{}, kCleanStage, kVoronoiStage);
+  RunMapPipeline(*store, "m", options, false, PipelineObserver{}, kCleanStage, last);
   return store;
 }
 
@@ -63,6 +66,32 @@ TEST(InputReleaseTest, PruneReleasesTheDiagramAndNeverReadsItAfter) {
       << "prune read the diagram after releasing it";
 }
 
+TEST(InputReleaseTest, CutFreesTheEdgesOfAGraphHandedOverAndLeavesOneThatIsNot) {
+  const proto::PipelineOptions options;
+  const auto store = StoreUpToVoronoi(options, kPruneStage);
+  const auto map = ReadHeadArtifact<proto::CleanedMap>(*store, "m", kCleanStage);
+  const auto topology = ReadHeadArtifact<proto::TopologyGraph>(*store, "m", kPruneStage);
+  ASSERT_GT(topology.edges_size(), 1);
+  const std::string expected = BuildCutGraph(topology, map, options.cut()).SerializeAsString();
+
+  for (const bool handed_over : {false, true}) {
+    auto input = std::make_shared<proto::TopologyGraph>(topology);
+    int takes = 0;
+    const InputRelease release([](size_t) {},
+                               [&](size_t i) -> std::shared_ptr<google::protobuf::Message> {
+                                 ++takes;
+                                 EXPECT_EQ(i, 0u);
+                                 return handed_over ? input : nullptr;
+                               });
+    const MessagePtr cut = StageOf(kCutStage).compute({input.get(), &map}, release, options);
+    EXPECT_EQ(takes, 1);
+    EXPECT_TRUE(cut->SerializeAsString() == expected) << "handed_over = " << handed_over;
+    int emptied = 0;
+    for (const proto::GraphEdge& edge : input->edges()) emptied += edge.ByteSizeLong() == 0;
+    EXPECT_EQ(emptied, handed_over ? topology.edges_size() : 0) << "handed_over = " << handed_over;
+  }
+}
+
 TEST(InputReleaseTest, TheLastReaderFreesTheMemosArtifactAndOthersLeaveIt) {
   const proto::PipelineOptions options;
   for (const bool last_read : {false, true}) {
@@ -78,6 +107,29 @@ TEST(InputReleaseTest, TheLastReaderFreesTheMemosArtifactAndOthersLeaveIt) {
     EXPECT_FALSE(run.cache_hit);
     EXPECT_EQ(watch.expired(), last_read) << "last_read = " << last_read;
     EXPECT_EQ(memo.Acquire(kVoronoiStage.name, key) == nullptr, last_read);
+  }
+}
+
+TEST(InputReleaseTest, CutTakesTheMemosGraphOnlyAsItsLastReader) {
+  const proto::PipelineOptions options;
+  for (const bool last_read : {false, true}) {
+    const auto store = StoreUpToVoronoi(options, kPruneStage);
+    std::string key;
+    const auto topology = ReadHeadArtifact<proto::TopologyGraph>(*store, "m", kPruneStage, &key);
+    auto kept = std::make_shared<proto::TopologyGraph>(topology);
+    const std::weak_ptr<const google::protobuf::Message> watch = kept;
+    ArtifactMemo memo;
+    memo.Keep(kPruneStage.name, key, std::move(kept));
+    if (last_read) memo.MarkLastRead(kPruneStage.name);
+    const StageRun run = RunStageOnHeads(*store, "m", StageOf(kCutStage), options, false, &memo);
+    EXPECT_FALSE(run.cache_hit);
+    EXPECT_EQ(watch.expired(), last_read) << "last_read = " << last_read;
+    if (!last_read) {
+      const auto shared = memo.Acquire(kPruneStage.name, key);
+      ASSERT_NE(shared, nullptr);
+      EXPECT_TRUE(shared->SerializeAsString() == topology.SerializeAsString())
+          << "cut changed a graph that others still read";
+    }
   }
 }
 
