@@ -121,7 +121,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   proto::AreaGraph out;
   out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  AddAreasAndPassages(graph, plan, raster, options, &out);
+  // Without a caller for the raster, its labels (4 bytes a cell) go before
+  // the borders are simplified.
+  AddAreasAndPassages(graph, plan, raster, options, &out, [&] {
+    if (raster_out == nullptr) raster.labels.release();
+  });
   out.set_components(CountComponents(out));
   out.set_dropped_parts(graph.dropped_parts());
   out.set_dropped_area_m2(graph.dropped_area_m2());

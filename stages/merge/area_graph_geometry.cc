@@ -41,14 +41,14 @@ std::pair<double, Eigen::Vector2d> AreaAndCentroid(const AreaOutline& outline) {
 
 void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
                          const AreaRaster& raster, const proto::MergeOptions& options,
-                         proto::AreaGraph* out) {
+                         proto::AreaGraph* out, const std::function<void()>& labels_done) {
   const int area_count = static_cast<int>(plan.areas.size());
   const MapTransform transform(out->frame());
   const double resolution_m = transform.resolution_m();
   const PlanarPartition partition = BuildPlanarPartition(raster.labels, area_count);
   const PartitionOutlines outlines =
       SimplifiedOutlines(partition, raster.labels, options.outline_tolerance_m() / resolution_m,
-                         options.min_hole_m2() / (resolution_m * resolution_m));
+                         options.min_hole_m2() / (resolution_m * resolution_m), labels_done);
 
   std::vector<int> area_id(area_count, -1);
   std::vector<int> label_of_area;

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
 #include "stages/merge/area_assignment.h"
@@ -14,9 +16,10 @@ namespace areagraph {
 // is made of borders it shares with its neighbours. The passages found at
 // graph vertices (FindPassages) are put on the borders they open
 // (PlacePassagesOnBorders): their end points are vertices of both areas.
-// Areas without cells are left out; ids are consecutive.
+// Areas without cells are left out; ids are consecutive. `labels_done` is
+// called once raster.labels is read no more (see SimplifiedOutlines).
 void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
                          const AreaRaster& raster, const proto::MergeOptions& options,
-                         proto::AreaGraph* out);
+                         proto::AreaGraph* out, const std::function<void()>& labels_done = {});
 
 }  // namespace areagraph

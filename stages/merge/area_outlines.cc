@@ -56,8 +56,9 @@ struct RingRoles {
 }  // namespace
 
 PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv::Mat& labels,
-                                     double tolerance_px, double min_hole_px2) {
-  const std::vector<PointList> traced = ChainPoints(partition);
+                                     double tolerance_px, double min_hole_px2,
+                                     const std::function<void()>& labels_done) {
+  std::vector<PointList> traced = ChainPoints(partition);
   const size_t area_count = partition.rings.size();
   PartitionOutlines result;
   std::vector<RingRoles> roles(area_count);
@@ -95,6 +96,7 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
       if (obstacle) sized_holes.emplace_back(static_cast<int>(k), static_cast<int>(i));
     }
   }
+  if (labels_done) labels_done();
   // A ring simplified within t loses at most t times its perimeter of area:
   // a thin obstacle that this could shrink below the minimum gets half a
   // cell, or keeps every point.
@@ -114,7 +116,7 @@ PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv:
   for (size_t c = 0; c < traced.size(); ++c) {
     if (dropped[c]) continue;
     kept.push_back(static_cast<int>(c));
-    borders.push_back(traced[c]);
+    borders.push_back(std::move(traced[c]));
     tolerances.push_back(tolerance[c]);
   }
   std::vector<PointList> simplified = SimplifyBorders(borders, tolerances);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -33,8 +34,11 @@ struct PartitionOutlines {
 // (SimplifyBorders with `tolerance_px`), so neighbours keep sharing their
 // borders and junctions, and no two borders cross. A kept hole that this
 // could shrink below the minimum (a thin obstacle) is simplified within half
-// a cell instead, or not at all.
+// a cell instead, or not at all. `labels_done`, when given, is called once
+// `labels` is read no more (before the simplification, which takes memory of
+// its own), so that the caller may free the raster.
 PartitionOutlines SimplifiedOutlines(const PlanarPartition& partition, const cv::Mat& labels,
-                                     double tolerance_px, double min_hole_px2);
+                                     double tolerance_px, double min_hole_px2,
+                                     const std::function<void()>& labels_done = {});
 
 }  // namespace areagraph
