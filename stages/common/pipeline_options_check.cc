@@ -95,6 +95,7 @@ void CheckCutOptions(const proto::CutOptions& options) {
   RequirePositive(options.room_width_m(), "cut.room_width_m", "metres");
   RequireNotNegative(options.room_island_max_m(), "cut.room_island_max_m", "metres");
   RequireNotNegative(options.room_width_door_margin_m(), "cut.room_width_door_margin_m", "metres");
+  RequireNotNegative(options.close_wall_gaps_max_m(), "cut.close_wall_gaps_max_m", "metres");
 }
 
 void CheckMergeOptions(const proto::MergeOptions& options) {

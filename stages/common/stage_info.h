@@ -27,7 +27,8 @@ inline constexpr StageInfo kPruneStage{"prune", 2};
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
 // cut 5: doors with wall jambs closed for the room disk (cut.close_wall_doors).
-inline constexpr StageInfo kCutStage{"cut", 5};
+// cut 6: gaps beside thin wall ends closed too (cut.close_wall_gaps_max_m).
+inline constexpr StageInfo kCutStage{"cut", 6};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

@@ -90,6 +90,11 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
         DoorClosingSites(room_width, map.cells(), grid.width(), grid.height(), grid.resolution_m());
     sites.insert(sites.end(), closing.begin(), closing.end());
   }
+  if (options.close_wall_gaps_max_m() > 0) {
+    const PointList gaps = WallGapSites(topology, map.cells(), grid.width(), grid.height(),
+                                        grid.resolution_m(), options.close_wall_gaps_max_m());
+    sites.insert(sites.end(), gaps.begin(), gaps.end());
+  }
   SiteAlphaShape shape(std::move(sites), room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);

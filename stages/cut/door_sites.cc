@@ -5,6 +5,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/cut/width_estimate.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -80,7 +81,179 @@ bool WallRunsOn(const WallStructure& walls, const Eigen::Vector2d& jamb,
   return samples == 0 || non_free >= kJambRunShare * samples;
 }
 
+// Sites along the line from `a` to `b`, about one per pixel, ends excluded.
+void AddLineSites(const Eigen::Vector2d& a, const Eigen::Vector2d& b, PointList* sites) {
+  const int steps = static_cast<int>(std::ceil((b - a).norm()));
+  for (int k = 1; k < steps; ++k) sites->push_back(a + (b - a) * (static_cast<double>(k) / steps));
+}
+
+// How far non-free cells run from `from` in `direction` (px, whole steps),
+// or -1 when they still run at `limit_px` (no free cell within reach).
+double NonFreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
+                  const Eigen::Vector2d& direction, double limit_px) {
+  for (double t = 0; t <= limit_px; t += 0.5) {
+    if (walls.LabelAt(from + t * direction) == 0) return t;
+  }
+  return -1;
+}
+
+// Whether the wall at `probe` is at most `max_thickness_px` thick across
+// `outward` with free cells on both sides.
+bool IsThinAt(const WallStructure& walls, const Eigen::Vector2d& probe,
+              const Eigen::Vector2d& outward, double max_thickness_px) {
+  if (walls.LabelAt(probe) == 0) return false;
+  const Eigen::Vector2d across(-outward.y(), outward.x());
+  const double one = NonFreeRun(walls, probe, across, max_thickness_px);
+  const double other = NonFreeRun(walls, probe, -across, max_thickness_px);
+  return one > 0 && other > 0 && one + other <= max_thickness_px;
+}
+
+// Whether `jamb` is the end of a thin wall running on away from the gap in
+// `outward`: thin (IsThinAt) from the jamb on for kJambRunM and at least
+// `min_run_px` (a short stub in a room is no door's jamb; a partition wall
+// meeting a corridor's wall beside a door is thick at the jamb).
+bool IsThinWallEnd(const WallStructure& walls, const Eigen::Vector2d& jamb,
+                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px,
+                   double min_run_px) {
+  for (double t = 1; t <= std::max(run_px, min_run_px); t += 1) {
+    if (!IsThinAt(walls, jamb + t * outward, outward, max_thickness_px)) return false;
+  }
+  return true;
+}
+
+// The Topology Graph's edges with the arc length (px) at each path point,
+// and the edges that meet at each vertex.
+struct EdgeArcs {
+  explicit EdgeArcs(const proto::TopologyGraph& topology) : incident(topology.vertices_size()) {
+    for (int e = 0; e < topology.edges_size(); ++e) {
+      const proto::GraphEdge& edge = topology.edges(e);
+      std::vector<double> arc(edge.path_size(), 0.0);
+      for (int i = 1; i < edge.path_size(); ++i) {
+        arc[i] = arc[i - 1] + std::hypot(edge.path(i).x() - edge.path(i - 1).x(),
+                                         edge.path(i).y() - edge.path(i - 1).y());
+      }
+      arcs.push_back(std::move(arc));
+      for (const int v : {edge.source(), edge.target()}) {
+        if (v >= 0 && v < topology.vertices_size()) incident[v].push_back(e);
+      }
+    }
+  }
+  std::vector<std::vector<double>> arcs;
+  std::vector<std::vector<int>> incident;
+};
+
+// Free width (px) for a clearance (px) measured from obstacle cell centres.
+double FreeWidthPx(double clearance_px) { return std::max(0.0, 2 * clearance_px - 1); }
+
+// The widest free width (px) along `edge` within arc [low, high], sampled
+// about every pixel: a point of a Voronoi segment is as far from the
+// segment's site as its clearance.
+double WidestOnEdge(const proto::GraphEdge& edge, const std::vector<double>& arc, double low,
+                    double high) {
+  double widest = 0;
+  const int segments = std::min({edge.path_size() - 1, edge.left_sites_size()});
+  for (int s = 0; s < segments; ++s) {
+    if (arc[s + 1] < low || arc[s] > high) continue;
+    const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
+    const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
+    const Eigen::Vector2d site(edge.left_sites(s).x(), edge.left_sites(s).y());
+    const double length = arc[s + 1] - arc[s];
+    const int steps = std::max(1, static_cast<int>(std::ceil(length)));
+    for (int k = 0; k <= steps; ++k) {
+      const double at = arc[s] + length * k / steps;
+      if (at < low || at > high) continue;
+      const Eigen::Vector2d point = p + (q - p) * (static_cast<double>(k) / steps);
+      widest = std::max(widest, FreeWidthPx((point - site).norm()));
+    }
+  }
+  return widest;
+}
+
+// The widest free width (px) within `reach_px` of vertex `vertex` on the
+// edges that meet there, except edge `except`.
+double WidestNearVertex(const proto::TopologyGraph& topology, const EdgeArcs& arcs, int vertex,
+                        int except, double reach_px) {
+  double widest = 0;
+  if (vertex < 0 || vertex >= topology.vertices_size()) return widest;
+  widest = FreeWidthPx(topology.vertices(vertex).clearance_px());
+  for (const int e : arcs.incident[vertex]) {
+    if (e == except) continue;
+    const proto::GraphEdge& edge = topology.edges(e);
+    const std::vector<double>& arc = arcs.arcs[e];
+    if (edge.source() == vertex) widest = std::max(widest, WidestOnEdge(edge, arc, 0, reach_px));
+    if (edge.target() == vertex) {
+      widest = std::max(widest, WidestOnEdge(edge, arc, arc.back() - reach_px, arc.back()));
+    }
+  }
+  return widest;
+}
+
+// Whether the free width (px) along edge `e` grows clearly above `gap_px`
+// (IsConstriction's rise) within `reach_px` of arc `at_px` on at least one
+// side, looking past the edge's ends into the edges that meet there: a door
+// opens into a wider space, while a cross-section of a corridor (between
+// two doors facing each other) has the corridor's width on both sides.
+bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs, int e,
+                     double at_px, double gap_px, double reach_px, double rise_px) {
+  const proto::GraphEdge& edge = topology.edges(e);
+  const std::vector<double>& arc = arcs.arcs[e];
+  double before = WidestOnEdge(edge, arc, at_px - reach_px, at_px);
+  double after = WidestOnEdge(edge, arc, at_px, at_px + reach_px);
+  if (at_px < reach_px) {
+    before = std::max(before, WidestNearVertex(topology, arcs, edge.source(), e, reach_px - at_px));
+  }
+  if (arc.back() - at_px < reach_px) {
+    after = std::max(
+        after, WidestNearVertex(topology, arcs, edge.target(), e, reach_px - (arc.back() - at_px)));
+  }
+  const double needed = gap_px + std::max(rise_px, kDoorRiseRatio * gap_px);
+  return before >= needed || after >= needed;
+}
+
 }  // namespace
+
+PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& cells, int width,
+                       int height, double resolution_m, double max_gap_m) {
+  PointList sites;
+  if (max_gap_m <= 0) return sites;
+  const WallStructure walls(cells, width, height, kMinWallRegionM / resolution_m);
+  const double run_px = kJambRunM / resolution_m;
+  const double reach_px = kDoorReachM / resolution_m, rise_px = kDoorRiseM / resolution_m;
+  const double max_thickness_px = kMaxTipWallM / resolution_m;
+  const double max_gap_px = max_gap_m / resolution_m + 1, min_gap_px = kMinGapM / resolution_m + 1;
+  const EdgeArcs arcs(topology);
+  for (int e = 0; e < topology.edges_size(); ++e) {
+    const proto::GraphEdge& edge = topology.edges(e);
+    const std::vector<double>& arc = arcs.arcs[e];
+    const int segments =
+        std::min({edge.path_size() - 1, edge.left_sites_size(), edge.right_sites_size()});
+    for (int s = 0; s < segments; ++s) {
+      const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
+      const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
+      const double span = (b - a).norm();
+      if (span > max_gap_px || span < min_gap_px) continue;
+      // The gap's middle must lie on this segment: its narrowest crossing.
+      const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
+      const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
+      const double length2 = (q - p).squaredNorm();
+      if (length2 <= 0) continue;
+      const double t = (0.5 * (a + b) - p).dot(q - p) / length2;
+      if (t < 0 || t > 1) continue;
+      if (!walls.IsStructure(walls.LabelAt(a)) || !walls.IsStructure(walls.LabelAt(b))) continue;
+      const Eigen::Vector2d along = (b - a) / span;
+      if (!WallRunsOn(walls, a, -along, run_px) || !WallRunsOn(walls, b, along, run_px)) continue;
+      const double min_run_px = kMinTipRunGaps * span;
+      if (!IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px) &&
+          !IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px)) {
+        continue;
+      }
+      const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
+      if (!WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px)) continue;
+      AddLineSites(a, b, &sites);
+    }
+  }
+  return sites;
+}
 
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate, const std::string& cells,
                            int width, int height, double resolution_m) {
@@ -99,8 +272,7 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate, const std::
     if (span < 1) continue;
     const Eigen::Vector2d along = (b - a) / span;
     if (!WallRunsOn(walls, a, -along, run_px) || !WallRunsOn(walls, b, along, run_px)) continue;
-    const int steps = static_cast<int>(std::ceil(span));
-    for (int k = 1; k < steps; ++k) sites.push_back(a + (b - a) * (static_cast<double>(k) / steps));
+    AddLineSites(a, b, &sites);
   }
   return sites;
 }

@@ -23,6 +23,33 @@ namespace areagraph {
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate, const std::string& cells,
                            int width, int height, double resolution_m);
 
+// Doors found from the jambs alone (cut.close_wall_gaps), for doors that
+// the width estimate misses because the space beyond them does not widen on
+// both sides (a door wider than its corridor, a cabinet beside a doorway):
+// every segment of the Topology Graph's edges whose two sites (the nearest
+// obstacle cells on its left and right) are at most `max_gap_m` apart, and
+// whose bisector crosses the line between them within the segment, is a
+// candidate gap. It is closed from site to site when both sites are wall
+// structure and line up with a wall (as above), at least one of them is the
+// end of a thin wall (from the site on, for kJambRunM and kMinTipRunGaps
+// times the gap, the non-free cells across the line span at most
+// kMaxTipWallM, with free cells on both sides), and the free width along
+// the edge grows clearly (IsConstriction's rise) within kDoorReachM on at
+// least one side. A room's cross-section ends in the face of a wall (or of
+// a cabinet standing against one), which is long across the line; a
+// corridor's cross-section between two doors facing each other does not
+// widen on either side.
+PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& cells, int width,
+                       int height, double resolution_m, double max_gap_m);
+
+// A wall end is at most this thick across the door's line (metres).
+inline constexpr double kMaxTipWallM = 0.6;
+// The thin wall runs on for at least this many times the gap's width: a
+// door is a short break in a long wall, a short stub in a room is no jamb.
+inline constexpr double kMinTipRunGaps = 0.25;
+// Gaps narrower than this are no doors (metres).
+inline constexpr double kMinGapM = 0.5;
+
 // Obstacle regions at least this long (metres, bounding box) are structure.
 inline constexpr double kMinWallRegionM = 4.0;
 // How far the wall must run on past each jamb along the door's line (m).

@@ -77,6 +77,47 @@ TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
   EXPECT_FALSE(Sites(plan, OneDoor(2.5, 2.45, 0.9)).empty());
 }
 
+// WallGapSites on the pruned Topology Graph of a plan.
+PointList GapSites(const FloorPlan& plan, double max_gap_m) {
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
+  const AreaStages stages = RunAreaStages(map);
+  return WallGapSites(stages.topology, map.cells(), map.frame().width_px(), map.frame().height_px(),
+                      kResolutionM, max_gap_m);
+}
+
+// A 6 x 4 m room whose wall at x = 3 m runs up from the bottom wall to
+// y = 2.2 m (m from the top), leaving a 1.7 m gap to the top wall.
+FloorPlan PartialWall() {
+  FloorPlan plan(7, 5, kResolutionM);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 4});
+  floorplan::DrawFurniture(plan, {2.95, 2.2, 0.1, 2.3});
+  return plan;
+}
+
+TEST(DoorSitesTest, GapBetweenAThinWallEndAndAWallIsClosedAlongTheWall) {
+  const PointList sites = GapSites(PartialWall(), 2.5);
+  ASSERT_GE(sites.size(), 10u);
+  for (const Eigen::Vector2d& site : sites) {
+    EXPECT_NEAR(site.x() * kResolutionM, 3.0, 0.2);
+    EXPECT_GT(site.y() * kResolutionM, 0.5);
+    EXPECT_LT(site.y() * kResolutionM, 2.25);
+  }
+  // Wider than the limit: left open.
+  EXPECT_TRUE(GapSites(PartialWall(), 1.5).empty());
+  EXPECT_TRUE(GapSites(PartialWall(), 0).empty());
+}
+
+TEST(DoorSitesTest, GapBesideACabinetAgainstAWallIsNoWallGap) {
+  // The same room without the wall, with a 1.5 x 0.8 m cabinet against the
+  // bottom wall: the gap above it ends in the cabinet's face, which is wide
+  // across the gap's line, and a corridor-like room's cross-sections end in
+  // wall faces.
+  FloorPlan plan(7, 5, kResolutionM);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 4});
+  floorplan::DrawFurniture(plan, {2.25, 2.9, 1.5, 1.6});
+  EXPECT_TRUE(GapSites(plan, 3.0).empty());
+}
+
 TEST(DoorSitesTest, NoDoorsNoSites) {
   EXPECT_TRUE(Sites(TwoRooms(), proto::RoomWidthEstimate()).empty());
 }

@@ -62,8 +62,62 @@ TEST(LocalDoorsTest, WithOneGlobalWTheOfficeLeaksIntoTheCorridor) {
   // The paper's single W: the room disk passes the wide door.
   proto::PipelineOptions options;
   options.mutable_cut()->set_close_wall_doors(false);
+  options.mutable_cut()->set_close_wall_gaps_max_m(0);
   const WideDoorAreas found = RunOffices(options);
   EXPECT_LT(found.room_width_m, kWideDoorWidth);
+  EXPECT_EQ(found.office, found.corridor);
+}
+
+// Ten 4 x 4 m offices on both sides of a corridor 1.4 m between wall
+// centres (1.3 m free), each opening into it through a 0.9 m door, except
+// the third office on top, whose door is 1.8 m wide: wider than the corridor,
+// so the space does not widen on the corridor's side of it and the width
+// estimate finds no door there (cut.close_wall_gaps_max_m must close it).
+constexpr double kNarrowCorridorHeight = 1.4, kWiderThanCorridorDoor = 1.8;
+
+floorplan::FloorPlan OfficesAlongANarrowCorridor() {
+  floorplan::FloorPlan plan(21, 10);
+  const double below = kCorridorY + kNarrowCorridorHeight;
+  for (int i = 0; i < 5; ++i) {
+    floorplan::DrawRoom(plan, {0.5 + 4 * i, 0.5, 4, 4});
+    floorplan::DrawRoom(plan, {0.5 + 4 * i, below, 4, 4});
+  }
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kNarrowCorridorHeight});
+  for (int i = 0; i < 5; ++i) {
+    const double x = 2.5 + 4 * i;
+    floorplan::DrawDoor(plan, x, kCorridorY, x == kWideDoorX ? kWiderThanCorridorDoor : 0.9,
+                        WallDirection::kHorizontal);
+    floorplan::DrawDoor(plan, x, below, 0.9, WallDirection::kHorizontal);
+  }
+  return plan;
+}
+
+// The cut stage's division is what is tested: merge.join_rooms_without_doors
+// joins two rooms whose opening is nearly as wide as the wider space beside
+// it, and this door is (a merge-stage rule, turned off here).
+WideDoorAreas RunNarrowCorridor(proto::PipelineOptions options) {
+  options.mutable_merge()->set_join_rooms_without_doors(false);
+  const proto::CleanedMap map = CleanDrawnMap(OfficesAlongANarrowCorridor().image());
+  const AreaStages stages = RunAreaStages(map, options);
+  WideDoorAreas found;
+  found.room_width_m = stages.cut.room_width().room_width_m();
+  found.office = AreaAt(stages.areas, kWideDoorX, 2.5);
+  found.corridor = AreaAt(stages.areas, kWideDoorX, kCorridorY + kNarrowCorridorHeight / 2);
+  return found;
+}
+
+TEST(LocalDoorsTest, DoorWiderThanItsCorridorDividesOfficeFromCorridor) {
+  const WideDoorAreas found = RunNarrowCorridor({});
+  EXPECT_LT(found.room_width_m, kNarrowCorridorHeight);
+  ASSERT_NE(found.office, -1);
+  ASSERT_NE(found.corridor, -1);
+  EXPECT_NE(found.office, found.corridor);
+}
+
+TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_close_wall_gaps_max_m(0);
+  const WideDoorAreas found = RunNarrowCorridor(options);
   EXPECT_EQ(found.office, found.corridor);
 }
 
