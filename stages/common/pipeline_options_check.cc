@@ -111,6 +111,8 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
   RequireNotNegative(options.passage_max_shift_m(), "match.passage_max_shift_m", "metres");
   RequireNotNegative(options.fold_fragments_below_m2(), "match.fold_fragments_below_m2",
                      "square metres");
+  RequireNotNegative(options.split_joins_below_m2(), "match.split_joins_below_m2",
+                     "square metres");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

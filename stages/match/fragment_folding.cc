@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "stages/geometry/disjoint_sets.h"
+#include "stages/match/graph_assembly.h"
 #include "stages/match/polygon_union.h"
 
 namespace areagraph {
@@ -77,36 +77,22 @@ proto::AreaGraph FoldAreas(const proto::AreaGraph& graph, const std::vector<Area
   }
   if (folded != nullptr) *folded = done;
 
-  proto::AreaGraph out = graph;
-  out.clear_areas();
-  out.clear_passages();
   std::vector<int> index(areas.size(), -1);  // old index -> new index
+  std::vector<proto::Area> kept_areas;
   for (size_t i = 0; i < areas.size(); ++i) {
     if (owner[i] != static_cast<int>(i)) continue;
-    index[i] = out.areas_size();
-    proto::Area* area = out.add_areas();
-    *area = std::move(areas[i]);
-    area->set_id(index[i]);
-    area->clear_passage_ids();
+    index[i] = static_cast<int>(kept_areas.size());
+    kept_areas.push_back(std::move(areas[i]));
   }
+  std::vector<proto::Passage> passages;
   for (const proto::Passage& passage : graph.passages()) {
     const int a = index[owner[passage.area_a()]], b = index[owner[passage.area_b()]];
     if (a == b) continue;  // the border it opened is inside one area now
-    proto::Passage* kept = out.add_passages();
-    *kept = passage;
-    kept->set_id(out.passages_size() - 1);
-    kept->set_area_a(a);
-    kept->set_area_b(b);
-    out.mutable_areas(a)->add_passage_ids(kept->id());
-    out.mutable_areas(b)->add_passage_ids(kept->id());
+    passages.push_back(passage);
+    passages.back().set_area_a(a);
+    passages.back().set_area_b(b);
   }
-  DisjointSets components(out.areas_size());
-  int count = out.areas_size();
-  for (const proto::Passage& passage : out.passages()) {
-    if (components.Union(passage.area_a(), passage.area_b())) --count;
-  }
-  out.set_components(count);
-  return out;
+  return AssembleGraph(graph, std::move(kept_areas), std::move(passages));
 }
 
 }  // namespace areagraph
