@@ -70,9 +70,10 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
     std::vector<int> ids =
         MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
     if (!fold) return ids;
-    if (options.fold_fragments_below_m2() > 0) {
-      const std::vector<AreaFold> folds = FindNoiseFragments(
-          current, previous, ids, after, overlaps, options.fold_fragments_below_m2());
+    if (options.fold_fragments_below_m2() > 0 || options.fold_fragments_below_share() > 0) {
+      const std::vector<AreaFold> folds =
+          FindNoiseFragments(current, previous, ids, after, overlaps,
+                             options.fold_fragments_below_m2(), options.fold_fragments_below_share());
       int folded = 0;
       if (!folds.empty()) current = FoldAreas(current, folds, &folded);
       if (folded > 0) continue;

@@ -11,7 +11,8 @@ namespace areagraph {
 std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
                                          const proto::AreaGraph& previous,
                                          const std::vector<int>& ids, const AreaCells& cells,
-                                         const std::vector<AreaOverlap>& overlaps, double max_m2) {
+                                         const std::vector<AreaOverlap>& overlaps, double max_m2,
+                                         double max_share) {
   // The previous area holding most of each current area's cells.
   std::vector<int> best(current.areas_size(), -1);
   std::vector<int64_t> best_cells(current.areas_size(), 0);
@@ -27,10 +28,14 @@ std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
   }
   std::vector<AreaFold> folds;
   for (int i = 0; i < current.areas_size(); ++i) {
-    if (ids[i] >= 0 || best[i] < 0 || current.areas(i).area_m2() >= max_m2) continue;
+    if (ids[i] >= 0 || best[i] < 0) continue;
     if (best_cells[i] < kFragmentInsideShare * cells.cells[i]) continue;
     const auto parent = area_of_id.find(previous.areas(best[i]).stable_id());
     if (parent == area_of_id.end()) continue;
+    const double area_m2 = current.areas(i).area_m2();
+    if (area_m2 >= max_m2 && area_m2 >= max_share * current.areas(parent->second).area_m2()) {
+      continue;
+    }
     proto::Polygon joined;
     if (!UnionOfNeighbours(current.areas(parent->second).polygon_m(), current.areas(i).polygon_m(),
                            &joined)) {

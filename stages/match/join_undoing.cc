@@ -46,6 +46,11 @@ proto::Polygon ToPolygon(const std::vector<std::vector<Point>>& rings) {
   return polygon;
 }
 
+double Distance2(const Point& a, const Point& b) {
+  const double dx = a.first - b.first, dy = a.second - b.second;
+  return dx * dx + dy * dy;
+}
+
 // Whether p lies on the segment u-v, strictly between its ends (within a
 // nanometre of the line).
 bool OnSegment(const Point& p, const Point& u, const Point& v) {
@@ -58,9 +63,21 @@ bool OnSegment(const Point& p, const Point& u, const Point& v) {
   return along > 0 && along < length2;
 }
 
-double Distance2(const Point& a, const Point& b) {
-  const double dx = a.first - b.first, dy = a.second - b.second;
-  return dx * dx + dy * dy;
+// Distance from p to the nearest edge of the rings.
+double DistanceToRings(const Point& p, const std::vector<std::vector<Point>>& rings) {
+  double best = INFINITY;
+  for (const auto& ring : rings) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point& u = ring[i];
+      const Point& v = ring[(i + 1) % ring.size()];
+      const double dx = v.first - u.first, dy = v.second - u.second;
+      const double length2 = dx * dx + dy * dy;
+      double t = length2 > 0 ? ((p.first - u.first) * dx + (p.second - u.second) * dy) / length2 : 0;
+      t = std::clamp(t, 0.0, 1.0);
+      best = std::min(best, Distance2(p, {u.first + t * dx, u.second + t * dy}));
+    }
+  }
+  return std::sqrt(best);
 }
 
 // Signed area and centroid of polygon rings (holes run against the outer ring).
@@ -279,7 +296,13 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     for (const proto::Point2& p : passage.border_m()) {
       in_rest = in_rest && rest_vertices.count(ToPoint(p)) > 0;
     }
-    if (in_piece == in_rest) return false;  // no border, or one on the cut
+    if (passage.border_m_size() == 0) {
+      // An older graph's passage: by the piece nearer to where it crosses.
+      const Point at = ToPoint(passage.point_m());
+      in_piece = DistanceToRings(at, inside_m) < DistanceToRings(at, rest_m);
+      in_rest = !in_piece;
+    }
+    if (in_piece == in_rest) return false;  // its border runs along the cut
     if (!in_piece) continue;
     if (passage.area_a() == joined_index) passage.set_area_a(piece_index);
     if (passage.area_b() == joined_index) passage.set_area_b(piece_index);
@@ -304,17 +327,25 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   SetPoint(border.back(), between.mutable_segment_m()->mutable_b());
   SetPoint(border[border.size() / 2], between.mutable_point_m());
   between.set_width_m(std::sqrt(Distance2(border.front(), border.back())));
-  const int kept_id = previous.areas(kept).stable_id();
-  const int swallowed_id = previous.areas(swallowed).stable_id();
+  // The previous passage between the two; the opening it was must not have
+  // grown much (a wall removed is a real join, not noise).
+  double opening_m = 0;
   for (const proto::Passage& old : previous.passages()) {
-    const int a = previous.areas(old.area_a()).stable_id();
-    const int b = previous.areas(old.area_b()).stable_id();
-    if ((a == kept_id && b == swallowed_id) || (a == swallowed_id && b == kept_id)) {
-      *between.mutable_point_m() = old.point_m();
-      between.set_width_m(old.width_m());
-      break;
+    const bool between_them = (old.area_a() == kept && old.area_b() == swallowed) ||
+                              (old.area_a() == swallowed && old.area_b() == kept);
+    if (!between_them) continue;
+    *between.mutable_point_m() = old.point_m();
+    between.set_width_m(old.width_m());
+    double border_m = 0;
+    for (int i = 0; i + 1 < old.border_m_size(); ++i) {
+      border_m += std::sqrt(Distance2(ToPoint(old.border_m(i)), ToPoint(old.border_m(i + 1))));
     }
+    opening_m = std::max(old.width_m(), border_m);
+    break;
   }
+  double cut_m = 0;
+  for (size_t i = 0; i + 1 < chain.size(); ++i) cut_m += std::sqrt(Distance2(chain[i], chain[i + 1]));
+  if (cut_m > kMaxCutPerOpening * opening_m) return false;
   moved.push_back(std::move(between));
   areas = std::move(updated);
   passages = std::move(moved);

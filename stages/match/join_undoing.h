@@ -12,6 +12,13 @@ namespace areagraph {
 // tuning maps (tools/bench-match-tuning.sh; see docs/performance.md).
 inline constexpr double kJoinedInsideShare = 0.9;
 
+// A join is cut apart only where the cut is at most this many times as long
+// as the opening (passage border or width) the two areas shared before: a
+// longer cut means the wall between them went (a real join). Chosen on the
+// constructed maps of tests/stages/match (a doorway against a wall removed),
+// not tuned.
+inline constexpr double kMaxCutPerOpening = 2.0;
+
 // A join to undo: current area `area`, which took the id of previous area
 // `kept`, swallowed previous area `previous`.
 struct AreaUnjoin {
@@ -42,7 +49,9 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
 // passages go to the piece whose ring holds their border, and a new passage
 // (where the previous version's passage between the two was, as wide) joins
 // the two pieces along their shared border. A join whose cut would cross a
-// passage's border, or does not give two simple pieces, stays as it is.
+// passage's border, does not give two simple pieces, or is longer than
+// kMaxCutPerOpening times the opening the previous passage had, stays as it
+// is.
 // `done` (optional) counts the joins undone.
 proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current,
                                   const proto::AreaGraph& previous,
