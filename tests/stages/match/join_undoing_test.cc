@@ -136,11 +136,11 @@ TEST(JoinUndoingTest, OffByDefaultAboveTheLimitAndForOtherOptions) {
 }
 
 TEST(JoinUndoingTest, AWallRemovedIsARealJoin) {
-  // Before, a 0.9 m door; now the whole 3 m border is open: the cut would be
+  // Before, a 0.6 m door; now the whole 3 m border is open: the cut would be
   // more than kMaxCutPerOpening times the opening, so the join stands.
-  const proto::AreaGraph previous = PreviousVersion(0.9);
+  const proto::AreaGraph previous = PreviousVersion(0.6);
   EXPECT_EQ(AreaIds(MatchAfter(JoinedUpdate(), &previous, SplitBelow(20))), (Ids{0, 2}));
-  // Up to twice the opening is noise moving merge's room joining.
+  // Up to four times the opening is noise moving merge's room joining.
   const proto::AreaGraph wider = PreviousVersion(1.5);
   EXPECT_EQ(AreaIds(MatchAfter(JoinedUpdate(), &wider, SplitBelow(20))), (Ids{0, 2, 1}));
 }
