@@ -71,17 +71,17 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
         MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
     if (!fold) return ids;
     if (options.fold_fragments_below_m2() > 0 || options.fold_fragments_below_share() > 0) {
-      const std::vector<AreaFold> folds =
-          FindNoiseFragments(current, previous, ids, after, overlaps,
-                             options.fold_fragments_below_m2(), options.fold_fragments_below_share());
+      const std::vector<AreaFold> folds = FindNoiseFragments(
+          current, previous, ids, after, overlaps, options.fold_fragments_below_m2(),
+          options.fold_fragments_below_share());
       int folded = 0;
       if (!folds.empty()) current = FoldAreas(current, folds, &folded);
       if (folded > 0) continue;
     }
     if (joins_undone) return ids;
     joins_undone = true;
-    const std::vector<AreaUnjoin> unjoins = FindUndoableJoins(
-        previous, ids, before, overlaps, options.split_joins_below_m2());
+    const std::vector<AreaUnjoin> unjoins =
+        FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2());
     int split = 0;
     if (!unjoins.empty()) current = SplitJoinedAreas(current, previous, unjoins, &split);
     if (split == 0) return ids;

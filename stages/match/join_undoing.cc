@@ -72,7 +72,8 @@ double DistanceToRings(const Point& p, const std::vector<std::vector<Point>>& ri
       const Point& v = ring[(i + 1) % ring.size()];
       const double dx = v.first - u.first, dy = v.second - u.second;
       const double length2 = dx * dx + dy * dy;
-      double t = length2 > 0 ? ((p.first - u.first) * dx + (p.second - u.second) * dy) / length2 : 0;
+      double t =
+          length2 > 0 ? ((p.first - u.first) * dx + (p.second - u.second) * dy) / length2 : 0;
       t = std::clamp(t, 0.0, 1.0);
       best = std::min(best, Distance2(p, {u.first + t * dx, u.second + t * dy}));
     }
@@ -171,7 +172,8 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
       const Point& from = ring[i];
       const Point& to = ring[(i + 1) % ring.size()];
       out_m.push_back(from);
-      if (r < rings_px.size() && rings_px[r].size() == ring.size()) out_px.push_back(rings_px[r][i]);
+      if (r < rings_px.size() && rings_px[r].size() == ring.size())
+        out_px.push_back(rings_px[r][i]);
       const auto found = on_edge.find({from, to});
       if (found == on_edge.end()) continue;
       if (r >= rings_px.size() || rings_px[r].size() != ring.size()) return false;
@@ -344,7 +346,8 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     break;
   }
   double cut_m = 0;
-  for (size_t i = 0; i + 1 < chain.size(); ++i) cut_m += std::sqrt(Distance2(chain[i], chain[i + 1]));
+  for (size_t i = 0; i + 1 < chain.size(); ++i)
+    cut_m += std::sqrt(Distance2(chain[i], chain[i + 1]));
   if (cut_m > kMaxCutPerOpening * opening_m) return false;
   moved.push_back(std::move(between));
   areas = std::move(updated);
@@ -356,8 +359,7 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
 
 std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
                                           const std::vector<int>& ids, const AreaCells& before,
-                                          const std::vector<AreaOverlap>& overlaps,
-                                          double max_m2) {
+                                          const std::vector<AreaOverlap>& overlaps, double max_m2) {
   const std::set<int> taken(ids.begin(), ids.end());
   std::vector<int> best(previous.areas_size(), -1);
   std::vector<int64_t> best_cells(previous.areas_size(), 0);
@@ -392,8 +394,7 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
   return unjoins;
 }
 
-proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current,
-                                  const proto::AreaGraph& previous,
+proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::AreaGraph& previous,
                                   const std::vector<AreaUnjoin>& unjoins, int* done) {
   std::vector<proto::Area> areas(current.areas().begin(), current.areas().end());
   std::vector<proto::Passage> passages(current.passages().begin(), current.passages().end());

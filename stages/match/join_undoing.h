@@ -39,8 +39,7 @@ struct AreaUnjoin {
 // from one update to the next, and each join cost the smaller area's id.
 std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
                                           const std::vector<int>& ids, const AreaCells& before,
-                                          const std::vector<AreaOverlap>& overlaps,
-                                          double max_m2);
+                                          const std::vector<AreaOverlap>& overlaps, double max_m2);
 
 // `current` with each join cut apart again along the previous area's border
 // (SplitPolygonByGuide): the piece inside the previous area becomes an area
@@ -55,8 +54,7 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
 // kMaxCutPerOpening times the opening the previous passage had, stays as it
 // is.
 // `done` (optional) counts the joins undone.
-proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current,
-                                  const proto::AreaGraph& previous,
+proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::AreaGraph& previous,
                                   const std::vector<AreaUnjoin>& unjoins, int* done = nullptr);
 
 }  // namespace areagraph

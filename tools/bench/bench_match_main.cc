@@ -6,12 +6,13 @@
 // stability of tools/bench-live.sh (same exploration, seeds and noise) and
 // the MCC of the published graphs against the ground truth seen so far. A
 // benchmark for choosing match's constants: it checks nothing.
+#include <google/protobuf/text_format.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <google/protobuf/text_format.h>
 #include <iostream>
 
 #include "common/error.h"
@@ -61,7 +62,8 @@ proto::AreaGraph MergedGraph(const proto::GridMap& grid) {
     if (stage.compute == nullptr) continue;  // import and match
     std::vector<const google::protobuf::Message*> inputs;
     for (const StageInfo& input : stage.inputs) inputs.push_back(artifacts.at(input.name).get());
-    artifacts[stage.info.name] = stage.compute(inputs, [](size_t) {}, options);
+    artifacts[stage.info.name] = stage.compute(
+        inputs, [](size_t) {}, options);
     if (std::string(stage.info.name) == kMergeStage.name) {
       return static_cast<const proto::AreaGraph&>(*artifacts[stage.info.name]);
     }
@@ -107,8 +109,7 @@ std::vector<Update> ExploreAndSegment(const MatchBenchFlags& flags, const Explor
     update.seen_gt = SeenGroundTruth(map, truth.rooms);
     update.noise_only = step > flags.steps;
     updates.push_back(std::move(update));
-    std::cerr << "ag-bench-match: " << flags.name << ": step " << step << " segmented"
-              << std::endl;
+    std::cerr << "ag-bench-match: " << flags.name << ": step " << step << " segmented" << std::endl;
   }
   return updates;
 }
@@ -143,11 +144,10 @@ void ExplainLosses(const proto::AreaGraph& before, const GroundTruthView& before
                  before.areas(b).area_m2(), room->second);
     if (best >= 0) {
       const proto::Area& into = after.areas(best);
-      const bool old_id = index_of_id.count(into.stable_id()) > 0 &&
-                          std::any_of(before.areas().begin(), before.areas().end(),
-                                      [&](const proto::Area& a) {
-                                        return a.stable_id() == into.stable_id();
-                                      });
+      const bool old_id =
+          index_of_id.count(into.stable_id()) > 0 &&
+          std::any_of(before.areas().begin(), before.areas().end(),
+                      [&](const proto::Area& a) { return a.stable_id() == into.stable_id(); });
       std::fprintf(stderr, ": %.0f %% of it in id %d (%.1f m2, %s)",
                    100.0 * best_cells / std::max<int64_t>(1, old_cells.cells[b]), into.stable_id(),
                    into.area_m2(), old_id ? "an old id: joined" : "a new id");
@@ -202,8 +202,7 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
   std::printf("| %s | %s | %s | %s | %.3f | %.3f | %d |\n", flags.name.c_str(),
               variant_text.empty() ? "(defaults)" : variant_text.c_str(),
               Percent(explored.kept, explored.tracked).c_str(),
-              Percent(noise.kept, noise.tracked).c_str(), mccs.back(), mean,
-              previous.areas_size());
+              Percent(noise.kept, noise.tracked).c_str(), mccs.back(), mean, previous.areas_size());
   std::fflush(stdout);
 }
 

@@ -71,8 +71,8 @@ TEST(PolygonSplitTest, PiecesRunLikeTheWhole) {
 TEST(PolygonSplitTest, RefusesWhatCannotBeSplit) {
   proto::Polygon inside, rest;
   // A bow tie is not simple.
-  EXPECT_FALSE(
-      SplitPolygonByGuide(Ring({{0, 0}, {4, 4}, {4, 0}, {0, 4}}), Box(2, -1, 6, 5), &inside, &rest));
+  EXPECT_FALSE(SplitPolygonByGuide(Ring({{0, 0}, {4, 4}, {4, 0}, {0, 4}}), Box(2, -1, 6, 5),
+                                   &inside, &rest));
   // A guide that misses the polygon.
   EXPECT_FALSE(SplitPolygonByGuide(Box(0, 0, 4, 4), Box(5, 5, 6, 6), &inside, &rest));
   // A guide that covers the whole leaves no rest; the outputs stay alone.

@@ -111,11 +111,11 @@ TEST(JoinUndoingTest, PassagesGoToTheirPieceAndTheOldPassageComesBack) {
     EXPECT_EQ(before, now);
   }
   // The passage between the pieces runs along their shared border.
-  const auto between = std::find_if(
-      matched.passages().begin(), matched.passages().end(), [&](const proto::Passage& p) {
-        return matched.areas(p.area_a()).stable_id() != 2 &&
-               matched.areas(p.area_b()).stable_id() != 2;
-      });
+  const auto between = std::find_if(matched.passages().begin(), matched.passages().end(),
+                                    [&](const proto::Passage& p) {
+                                      return matched.areas(p.area_a()).stable_id() != 2 &&
+                                             matched.areas(p.area_b()).stable_id() != 2;
+                                    });
   ASSERT_NE(between, matched.passages().end());
   ASSERT_EQ(between->border_m_size(), 2);
   EXPECT_EQ(between->border_m(0).x(), 4);
