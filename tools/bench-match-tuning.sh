@@ -9,13 +9,13 @@
 #
 # Usage: tools/bench-match-tuning.sh [--no-build] [--build-dir DIR] [--data DIR]
 #          [--cache DIR] [--variant TEXT]... [--report-maps]
-#   --variant      match options in text format (repeat; default: defaults,
-#                  no folding, no join splitting)
+#   --variant      match options in text format (repeat; default: the defaults,
+#                  neither folding nor join splitting, folding alone)
 #   --report-maps  the report maps instead (freiburg_building79, lab_e)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench_name=bench-match-tuning
-bench_help_lines=2,17
+bench_help_lines=2,14
 source tools/bench-common.sh
 data=../shared/data
 cache=""
