@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Does match's folding of small pieces (match.fold_fragments_below_m2) make
-# the live graph worse than a fresh segmentation? Runs the simulated
-# explorations of tools/bench-live.sh (ag-bench-live --no-cold --dump, same
-# maps, seeds and noise) twice through an ag-live with a new store: with the
-# default options (folding) and with match.fold_fragments_below_m2=0 (no
-# folding); then runs every grid sent cold with ag-run, each as a map of its
+# Does match holding the segmentation still (folding small pieces back,
+# match.fold_fragments_below_m2, and cutting joins apart,
+# match.split_joins_below_m2) make the live graph worse than a fresh
+# segmentation? Runs the simulated explorations of tools/bench-live.sh
+# (ag-bench-live --no-cold --dump, same maps, seeds and noise) twice through
+# an ag-live with a new store: with the default options and with both set to
+# 0 (merge's areas as they are); then runs every grid sent cold with ag-run, each as a map of its
 # own in one new store (no predecessor to match, no cache key shared). Checks
 # that both explorations sent the same grids. Every graph is scored by ag-eval
 # (MAORIS' MCC variant, as tools/bench-quality.sh uses it) against the ground
@@ -17,7 +18,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bench_name=bench-live-mcc
-bench_help_lines=2,16
+bench_help_lines=2,17
 source tools/bench-common.sh
 data=../shared/data
 only=""
@@ -66,9 +67,10 @@ for entry in "${maps[@]}"; do
   say "$name, folding"
   # shellcheck disable=SC2086
   live "$name" "$work/$name/fold" -- $args
-  say "$name, no folding"
+  say "$name, neither folding nor join splitting"
   # shellcheck disable=SC2086
-  live "$name" "$work/$name/nofold" --set match.fold_fragments_below_m2=0 -- $args
+  live "$name" "$work/$name/nofold" --set match.fold_fragments_below_m2=0 \
+    --set match.split_joins_below_m2=0 -- $args
   say "$name, cold runs"
   mkdir -p "$work/$name/cold"
   "$bin/ag-run" --store "$work/$name/cold.db" "$work/$name/fold/grid" >"$work/$name/cold.log" 2>&1 ||
@@ -88,7 +90,7 @@ for entry in "${maps[@]}"; do
   fi
   echo "#### $name"
   echo
-  echo "| update | MCC live, folding (a) | live, no folding (b) | cold (c) | (a) - (c) | (b) - (c) |"
+  echo "| update | MCC live, defaults (a) | live, no folding or join splitting (b) | cold (c) | (a) - (c) | (b) - (c) |"
   echo "|---|---|---|---|---|---|"
   join -t $'\t' <(mcc "$work/$name/fold/live" "$gt" | sort) \
     <(mcc "$work/$name/nofold/live" "$gt" | sort) |

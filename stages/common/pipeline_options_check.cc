@@ -112,6 +112,11 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
   RequireNotNegative(options.passage_max_shift_m(), "match.passage_max_shift_m", "metres");
   RequireNotNegative(options.fold_fragments_below_m2(), "match.fold_fragments_below_m2",
                      "square metres");
+  RequireNotNegative(options.split_joins_below_m2(), "match.split_joins_below_m2", "square metres");
+  Require(
+      options.fold_fragments_below_share() >= 0 && options.fold_fragments_below_share() <= 1,
+      "match.fold_fragments_below_share = " + FormatNumber(options.fold_fragments_below_share()) +
+          " must be between 0 and 1 (a share of the area it would join)");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

@@ -37,7 +37,8 @@ inline constexpr StageInfo kCutStage{"cut", 6};
 // merge 7: areas in every part's boundary, components and dropped parts counted (issue 13).
 inline constexpr StageInfo kMergeStage{"merge", 7};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
-inline constexpr StageInfo kMatchStage{"match", 2};
+// match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
+inline constexpr StageInfo kMatchStage{"match", 3};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {

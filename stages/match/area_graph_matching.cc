@@ -12,6 +12,7 @@
 #include "stages/common/pipeline_options.h"
 #include "stages/match/area_cells.h"
 #include "stages/match/fragment_folding.h"
+#include "stages/match/join_undoing.h"
 #include "store/digest.h"
 
 namespace areagraph {
@@ -54,23 +55,36 @@ std::vector<int> MatchAreas(const proto::AreaGraph& current, const proto::AreaGr
 // Matches the areas of `current` to `previous`, first folding the pieces
 // that noise split off a previous area back into it (FindNoiseFragments;
 // again while folds make more of them, as when a piece only borders another
-// piece): `current` becomes the graph that is published, and the result is
-// its areas' previous ids (or -1).
+// piece), then cutting apart the joins of two previous areas
+// (FindUndoableJoins, once; the pieces are matched and folded again):
+// `current` becomes the graph that is published, and the result is its
+// areas' previous ids (or -1).
 std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
                                             const proto::AreaGraph& previous,
                                             const proto::MatchOptions& options, bool fold) {
   const AreaCells before = RasterizeAreas(previous, current.frame());
+  bool joins_undone = !fold || options.split_joins_below_m2() <= 0;
   while (true) {
     const AreaCells after = RasterizeAreas(current, current.frame());
     const std::vector<AreaOverlap> overlaps = CountOverlaps(before, after);
     std::vector<int> ids =
         MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
-    if (!fold || options.fold_fragments_below_m2() <= 0) return ids;
-    const std::vector<AreaFold> folds = FindNoiseFragments(current, previous, ids, after, overlaps,
-                                                           options.fold_fragments_below_m2());
-    int folded = 0;
-    if (!folds.empty()) current = FoldAreas(current, folds, &folded);
-    if (folded == 0) return ids;
+    if (!fold) return ids;
+    if (options.fold_fragments_below_m2() > 0 || options.fold_fragments_below_share() > 0) {
+      const std::vector<AreaFold> folds = FindNoiseFragments(
+          current, previous, ids, after, overlaps, options.fold_fragments_below_m2(),
+          options.fold_fragments_below_share());
+      int folded = 0;
+      if (!folds.empty()) current = FoldAreas(current, folds, &folded);
+      if (folded > 0) continue;
+    }
+    if (joins_undone) return ids;
+    joins_undone = true;
+    const std::vector<AreaUnjoin> unjoins =
+        FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2());
+    int split = 0;
+    if (!unjoins.empty()) current = SplitJoinedAreas(current, previous, unjoins, &split);
+    if (split == 0) return ids;
   }
 }
 

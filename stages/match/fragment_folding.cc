@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <map>
 
-#include "stages/geometry/disjoint_sets.h"
+#include "stages/match/graph_assembly.h"
 #include "stages/match/polygon_union.h"
 
 namespace areagraph {
@@ -11,7 +11,8 @@ namespace areagraph {
 std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
                                          const proto::AreaGraph& previous,
                                          const std::vector<int>& ids, const AreaCells& cells,
-                                         const std::vector<AreaOverlap>& overlaps, double max_m2) {
+                                         const std::vector<AreaOverlap>& overlaps, double max_m2,
+                                         double max_share) {
   // The previous area holding most of each current area's cells.
   std::vector<int> best(current.areas_size(), -1);
   std::vector<int64_t> best_cells(current.areas_size(), 0);
@@ -27,10 +28,14 @@ std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
   }
   std::vector<AreaFold> folds;
   for (int i = 0; i < current.areas_size(); ++i) {
-    if (ids[i] >= 0 || best[i] < 0 || current.areas(i).area_m2() >= max_m2) continue;
+    if (ids[i] >= 0 || best[i] < 0) continue;
     if (best_cells[i] < kFragmentInsideShare * cells.cells[i]) continue;
     const auto parent = area_of_id.find(previous.areas(best[i]).stable_id());
     if (parent == area_of_id.end()) continue;
+    const double area_m2 = current.areas(i).area_m2();
+    if (area_m2 >= max_m2 && area_m2 >= max_share * current.areas(parent->second).area_m2()) {
+      continue;
+    }
     proto::Polygon joined;
     if (!UnionOfNeighbours(current.areas(parent->second).polygon_m(), current.areas(i).polygon_m(),
                            &joined)) {
@@ -77,36 +82,22 @@ proto::AreaGraph FoldAreas(const proto::AreaGraph& graph, const std::vector<Area
   }
   if (folded != nullptr) *folded = done;
 
-  proto::AreaGraph out = graph;
-  out.clear_areas();
-  out.clear_passages();
   std::vector<int> index(areas.size(), -1);  // old index -> new index
+  std::vector<proto::Area> kept_areas;
   for (size_t i = 0; i < areas.size(); ++i) {
     if (owner[i] != static_cast<int>(i)) continue;
-    index[i] = out.areas_size();
-    proto::Area* area = out.add_areas();
-    *area = std::move(areas[i]);
-    area->set_id(index[i]);
-    area->clear_passage_ids();
+    index[i] = static_cast<int>(kept_areas.size());
+    kept_areas.push_back(std::move(areas[i]));
   }
+  std::vector<proto::Passage> passages;
   for (const proto::Passage& passage : graph.passages()) {
     const int a = index[owner[passage.area_a()]], b = index[owner[passage.area_b()]];
     if (a == b) continue;  // the border it opened is inside one area now
-    proto::Passage* kept = out.add_passages();
-    *kept = passage;
-    kept->set_id(out.passages_size() - 1);
-    kept->set_area_a(a);
-    kept->set_area_b(b);
-    out.mutable_areas(a)->add_passage_ids(kept->id());
-    out.mutable_areas(b)->add_passage_ids(kept->id());
+    passages.push_back(passage);
+    passages.back().set_area_a(a);
+    passages.back().set_area_b(b);
   }
-  DisjointSets components(out.areas_size());
-  int count = out.areas_size();
-  for (const proto::Passage& passage : out.passages()) {
-    if (components.Union(passage.area_a(), passage.area_b())) --count;
-  }
-  out.set_components(count);
-  return out;
+  return AssembleGraph(graph, std::move(kept_areas), std::move(passages));
 }
 
 }  // namespace areagraph

@@ -23,12 +23,12 @@
 #include "runner/live/live_map_server.h"
 #include "stages/common/command_line.h"
 #include "stages/common/png_file.h"
+#include "tools/bench/exploration_truth.h"
 #include "tools/bench/id_stability.h"
 #include "tools/bench/median_timer.h"
 #include "tools/eval/label_image.h"
 #include "tools/eval/map_evaluation.h"
 #include "tools/example_maps/exploration.h"
-#include "tools/example_maps/random_floor_plan.h"
 #include "tools/export/area_label_image.h"
 
 namespace areagraph {
@@ -50,49 +50,6 @@ struct BenchFlags {
   std::string dump_dir;
   floorplan::ExplorationSettings exploration;
 };
-
-// The whole map's cells and its ground-truth rooms (CV_32S).
-struct Truth {
-  cv::Mat cells;
-  cv::Mat rooms;
-};
-
-Truth LoadTruth(const BenchFlags& flags) {
-  Truth truth;
-  if (flags.generated_m > 0) {
-    floorplan::FloorPlan closed(1, 1);
-    const floorplan::FloorPlan plan =
-        floorplan::LargeOfficePlan(flags.generated_m, flags.generated_m, flags.seed, &closed);
-    truth.cells = floorplan::ClassifyGrey(plan.image());
-    cv::connectedComponents(closed.image() == floorplan::kFreeGrey, truth.rooms, 4, CV_32S);
-    DropSmallSegments(&truth.rooms, 100);
-    return truth;
-  }
-  truth.cells = floorplan::ClassifyGrey(ToGrey8(ReadImageFile(flags.map_path)));
-  GroundTruthStyle style = GroundTruthStyle::kAuto;
-  truth.rooms = ReadGroundTruthLabels(flags.gt_path, &style);
-  if (truth.rooms.size() != truth.cells.size()) {
-    throw InputError("the ground truth is " + std::to_string(truth.rooms.cols) + "x" +
-                     std::to_string(truth.rooms.rows) + ", the map " +
-                     std::to_string(truth.cells.cols) + "x" + std::to_string(truth.cells.rows));
-  }
-  return truth;
-}
-
-// A cropped exploration map as the GridMap a SLAM node would send: the whole
-// map's bottom-left corner is the world origin.
-proto::GridMap ToGridMap(const floorplan::ExplorationMap& map, int whole_height) {
-  proto::GridMap grid;
-  grid.set_format_version(kGridMapFormatVersion);
-  proto::MapFrame* frame = grid.mutable_frame();
-  frame->set_resolution_m(0.05);
-  frame->set_origin_x_m(map.crop.x * 0.05);
-  frame->set_origin_y_m((whole_height - map.crop.y - map.crop.height) * 0.05);
-  frame->set_width_px(map.cells.cols);
-  frame->set_height_px(map.cells.rows);
-  grid.set_cells(std::string(reinterpret_cast<const char*>(map.cells.data), map.cells.total()));
-  return grid;
-}
 
 int64_t MicrosecondsNow() {
   return std::chrono::duration_cast<std::chrono::microseconds>(
@@ -191,8 +148,7 @@ void DumpStep(const std::string& dir, const std::string& name, int step,
   WritePngFile(dir + "/grid" + file, grey);
   WritePngFile(dir + "/live" + file, AreaLabelImage(published));
   cv::Mat gt;
-  gt_rooms(map.crop).convertTo(gt, CV_16U);
-  gt.setTo(0, map.seen(map.crop) == 0);
+  SeenGroundTruth(map, gt_rooms).convertTo(gt, CV_16U);
   WritePngFile(dir + "/gt" + file, gt);
 }
 
@@ -214,7 +170,8 @@ int RunBench(const BenchFlags& flags) {
       std::filesystem::create_directories(flags.dump_dir + sub);
     }
   }
-  const Truth truth = LoadTruth(flags);
+  const ExplorationTruth truth =
+      LoadExplorationTruth(flags.map_path, flags.gt_path, flags.generated_m, flags.seed);
   floorplan::ExplorationSettings settings = flags.exploration;
   settings.steps = flags.steps;
   settings.seed = flags.seed;
@@ -242,7 +199,7 @@ int RunBench(const BenchFlags& flags) {
     const floorplan::ExplorationMap map = step <= flags.steps
                                               ? exploration.MapAfter(step, noise_seed)
                                               : exploration.MapAgain(noise_seed);
-    const proto::GridMap grid = ToGridMap(map, truth.cells.rows);
+    const proto::GridMap grid = ExplorationGridMap(map, truth.cells.rows);
     const int64_t utime = MicrosecondsNow();
     const areagraph_lcm::grid_map_t message = ToLcmGridMap(flags.name, utime, grid);
     const auto sent = std::chrono::steady_clock::now();

@@ -1,0 +1,266 @@
+// ag-bench-match: how stable ag-match keeps the ids of a simulated
+// exploration under several sets of match options, without LCM and without
+// re-running the segmentation: the merge graph of each update is computed
+// once (or read from --cache), then each variant's chain of match versions
+// is replayed in process. Prints one Markdown row per variant: the id
+// stability of tools/bench-live.sh (same exploration, seeds and noise) and
+// the MCC of the published graphs against the ground truth seen so far. A
+// benchmark for choosing match's constants: it checks nothing.
+#include <google/protobuf/text_format.h>
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "common/error.h"
+#include "stages/common/command_line.h"
+#include "stages/common/stage_info.h"
+#include "stages/common/stage_table.h"
+#include "stages/match/area_cells.h"
+#include "stages/match/area_graph_matching.h"
+#include "tools/bench/exploration_truth.h"
+#include "tools/bench/id_stability.h"
+#include "tools/eval/label_image.h"
+#include "tools/eval/map_evaluation.h"
+#include "tools/export/area_label_image.h"
+
+namespace areagraph {
+namespace {
+
+struct MatchBenchFlags {
+  std::string name;
+  std::string map_path;
+  std::string gt_path;
+  double generated_m = 0;
+  uint32_t seed = 1;
+  int steps = 20;
+  int noise_steps = 3;
+  std::string cache_dir;
+  std::vector<std::string> variants;
+  bool per_step = false;
+  floorplan::ExplorationSettings exploration;
+};
+
+// One update of the exploration: what match needs and what it is scored on.
+struct Update {
+  proto::AreaGraph merged;
+  cv::Mat seen;     // whole map, as ExplorationMap::seen
+  cv::Mat seen_gt;  // SeenGroundTruth
+  bool noise_only = false;
+};
+
+// The merge artifact of `grid` with default options, every stage before
+// match run in memory through the stage table, as ag-live runs them.
+proto::AreaGraph MergedGraph(const proto::GridMap& grid) {
+  const proto::PipelineOptions options;
+  std::map<std::string, MessagePtr> artifacts;
+  artifacts[kImportStage.name] = std::make_unique<proto::GridMap>(grid);
+  for (const StageDefinition& stage : StageTable()) {
+    if (stage.compute == nullptr) continue;  // import and match
+    std::vector<const google::protobuf::Message*> inputs;
+    for (const StageInfo& input : stage.inputs) inputs.push_back(artifacts.at(input.name).get());
+    artifacts[stage.info.name] = stage.compute(
+        inputs, [](size_t) {}, options);
+    if (std::string(stage.info.name) == kMergeStage.name) {
+      return static_cast<const proto::AreaGraph&>(*artifacts[stage.info.name]);
+    }
+  }
+  throw Error("the stage table has no merge stage");
+}
+
+// The merge graph of one update, from the cache folder when it holds it.
+proto::AreaGraph CachedMergedGraph(const MatchBenchFlags& flags, int step,
+                                   const proto::GridMap& grid) {
+  std::string path;
+  if (!flags.cache_dir.empty()) {
+    char file[300];
+    std::snprintf(file, sizeof(file), "/%s-seed%u-merge%d-%02d.pb", flags.name.c_str(), flags.seed,
+                  kMergeStage.version, step);
+    path = flags.cache_dir + file;
+    std::ifstream in(path, std::ios::binary);
+    proto::AreaGraph graph;
+    if (in && graph.ParseFromIstream(&in)) return graph;
+  }
+  proto::AreaGraph graph = MergedGraph(grid);
+  if (!path.empty()) {
+    std::ofstream out(path, std::ios::binary);
+    graph.SerializeToOstream(&out);
+  }
+  return graph;
+}
+
+std::vector<Update> ExploreAndSegment(const MatchBenchFlags& flags, const ExplorationTruth& truth) {
+  floorplan::ExplorationSettings settings = flags.exploration;
+  settings.steps = flags.steps;
+  settings.seed = flags.seed;
+  floorplan::Exploration exploration(truth.cells, settings);
+  std::vector<Update> updates;
+  for (int step = 1; step <= flags.steps + flags.noise_steps; ++step) {
+    const uint32_t noise_seed = flags.seed * 1000 + static_cast<uint32_t>(step);
+    const floorplan::ExplorationMap map = step <= flags.steps
+                                              ? exploration.MapAfter(step, noise_seed)
+                                              : exploration.MapAgain(noise_seed);
+    Update update;
+    update.merged = CachedMergedGraph(flags, step, ExplorationGridMap(map, truth.cells.rows));
+    update.seen = map.seen.clone();
+    update.seen_gt = SeenGroundTruth(map, truth.rooms);
+    update.noise_only = step > flags.steps;
+    updates.push_back(std::move(update));
+    std::cerr << "ag-bench-match: " << flags.name << ": step " << step << " segmented" << std::endl;
+  }
+  return updates;
+}
+
+// Says on stderr where the areas of `before` went that lost their id in
+// `after` although their ground-truth room was seen in both (--per-step).
+void ExplainLosses(const proto::AreaGraph& before, const GroundTruthView& before_view,
+                   const proto::AreaGraph& after, const GroundTruthView& after_view, int step) {
+  const AreaCells old_cells = RasterizeAreas(before, after.frame());
+  const AreaCells new_cells = RasterizeAreas(after, after.frame());
+  const std::vector<AreaOverlap> overlaps = CountOverlaps(old_cells, new_cells);
+  std::map<int, int> index_of_id;
+  for (int i = 0; i < after.areas_size(); ++i) index_of_id[after.areas(i).stable_id()] = i;
+  for (int b = 0; b < before.areas_size(); ++b) {
+    const int id = before.areas(b).stable_id();
+    const auto room = before_view.room_of_area.find(id);
+    if (room == before_view.room_of_area.end() || before_view.seen_rooms.count(room->second) == 0 ||
+        after_view.seen_rooms.count(room->second) == 0) {
+      continue;
+    }
+    const auto now = after_view.room_of_area.find(id);
+    if (now != after_view.room_of_area.end() && now->second == room->second) continue;
+    int best = -1;
+    int64_t best_cells = 0;
+    for (const AreaOverlap& pair : overlaps) {
+      if (pair.before == b && pair.cells > best_cells) {
+        best = pair.after;
+        best_cells = pair.cells;
+      }
+    }
+    std::fprintf(stderr, "  step %d: id %d (%.1f m2, room %d) lost", step, id,
+                 before.areas(b).area_m2(), room->second);
+    if (best >= 0) {
+      const proto::Area& into = after.areas(best);
+      const bool old_id =
+          index_of_id.count(into.stable_id()) > 0 &&
+          std::any_of(before.areas().begin(), before.areas().end(),
+                      [&](const proto::Area& a) { return a.stable_id() == into.stable_id(); });
+      std::fprintf(stderr, ": %.0f %% of it in id %d (%.1f m2, %s)",
+                   100.0 * best_cells / std::max<int64_t>(1, old_cells.cells[b]), into.stable_id(),
+                   into.area_m2(), old_id ? "an old id: joined" : "a new id");
+    }
+    std::fprintf(stderr, "\n");
+  }
+}
+
+std::string Percent(int part, int whole) {
+  if (whole == 0) return "-";
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.1f %% (%d / %d)", 100.0 * part / whole, part, whole);
+  return text;
+}
+
+// Replays the updates through match with `options` and prints its row.
+void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& updates,
+                   const cv::Mat& rooms, const std::string& variant_text) {
+  proto::MatchOptions options;
+  if (!google::protobuf::TextFormat::ParseFromString(variant_text, &options)) {
+    throw OptionsError("--variant '" + variant_text + "' is not MatchOptions in text format");
+  }
+  proto::AreaGraph previous;
+  GroundTruthView previous_view;
+  IdStability explored, noise;
+  std::vector<double> mccs;
+  for (size_t i = 0; i < updates.size(); ++i) {
+    VersionLink link;
+    if (i > 0) link = {"version-" + std::to_string(i), static_cast<int64_t>(i + 1)};
+    const proto::AreaGraph matched =
+        MatchAreaGraph(updates[i].merged, i > 0 ? &previous : nullptr, link, options, "bench");
+    const GroundTruthView view = ViewAgainstGroundTruth(matched, rooms, updates[i].seen);
+    if (i > 0) {
+      const IdStability step = CompareViews(previous_view, view);
+      IdStability& total = updates[i].noise_only ? noise : explored;
+      total.tracked += step.tracked;
+      total.kept += step.kept;
+      total.ids_before += step.ids_before;
+      total.ids_kept += step.ids_kept;
+      if (flags.per_step && step.kept < step.tracked) {
+        ExplainLosses(previous, previous_view, matched, view, static_cast<int>(i + 1));
+      }
+    }
+    cv::Mat labels;
+    AreaLabelImage(matched).convertTo(labels, CV_32S);
+    mccs.push_back(ScoreLabelImages(labels, updates[i].seen_gt, MccVariant::kMaoris).mcc);
+    previous = matched;
+    previous_view = view;
+  }
+  double mean = 0;
+  for (double mcc : mccs) mean += mcc / mccs.size();
+  std::printf("| %s | %s | %s | %s | %.3f | %.3f | %d |\n", flags.name.c_str(),
+              variant_text.empty() ? "(defaults)" : variant_text.c_str(),
+              Percent(explored.kept, explored.tracked).c_str(),
+              Percent(noise.kept, noise.tracked).c_str(), mccs.back(), mean, previous.areas_size());
+  std::fflush(stdout);
+}
+
+int RunBench(MatchBenchFlags flags) {
+  if (flags.name.empty()) throw OptionsError("--name is required");
+  if ((flags.generated_m > 0) == !flags.map_path.empty()) {
+    throw OptionsError("give either --map and --gt, or --generated");
+  }
+  if (!flags.map_path.empty() && flags.gt_path.empty()) throw OptionsError("--map needs --gt");
+  if (!flags.cache_dir.empty()) std::filesystem::create_directories(flags.cache_dir);
+  if (flags.variants.empty()) flags.variants.push_back("");
+  const ExplorationTruth truth =
+      LoadExplorationTruth(flags.map_path, flags.gt_path, flags.generated_m, flags.seed);
+  std::cerr << "ag-bench-match: " << flags.name << ": " << truth.cells.cols << "x"
+            << truth.cells.rows << " px, " << CountSegments(truth.rooms) << " ground-truth rooms"
+            << std::endl;
+  const std::vector<Update> updates = ExploreAndSegment(flags, truth);
+  for (const std::string& variant : flags.variants) {
+    ReplayVariant(flags, updates, truth.rooms, variant);
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace areagraph
+
+int main(int argc, char** argv) {
+  using namespace areagraph;
+  CLI::App app{
+      "Replays the simulated exploration of ag-bench-live (same maps, seeds and noise) through "
+      "ag-match under each --variant of the match options, in process and without LCM: the "
+      "stages up to merge run once per update (or come from --cache), match runs once per "
+      "variant and update. Prints a Markdown row per variant: of the areas whose ground-truth "
+      "room was fully seen in two consecutive updates, how many kept their id, over the "
+      "exploration and over the noise-only updates (as tools/bench-live.sh counts them), and the "
+      "MCC (MAORIS variant) of the published graphs against the ground truth seen so far, at "
+      "the last update and the mean over all. For choosing match's constants; checks nothing."};
+  MatchBenchFlags flags;
+  app.add_option("--name", flags.name, "map name (labels the rows and the cache files)")
+      ->required();
+  app.add_option("--map", flags.map_path, "map image (the whole building)");
+  app.add_option("--gt", flags.gt_path, "its ground truth (colour or line style, as ag-eval)");
+  app.add_option("--generated", flags.generated_m,
+                 "instead of --map: a generated office floor this many metres square");
+  app.add_option("--seed", flags.seed, "seed of the generated floor and of the noise")
+      ->capture_default_str();
+  app.add_option("--steps", flags.steps, "growing maps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--noise-steps", flags.noise_steps, "noise-only maps after the last step")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+  app.add_option("--cache", flags.cache_dir,
+                 "folder that keeps each update's merge graph between runs (by name, seed, merge "
+                 "version and step; delete it when the stages before match change)");
+  app.add_option("--variant", flags.variants,
+                 "match options in text format, e.g. 'fold_fragments_below_m2: 0'; repeat for "
+                 "more rows (default: one row with the defaults)");
+  app.add_flag("--per-step", flags.per_step, "print each update that lost ids on stderr");
+  return RunCommand("ag-bench-match", app, argc, argv, [&] { return RunBench(flags); });
+}
