@@ -29,8 +29,9 @@ const AbsurdNumber kAbsurdNumbers[] = {{"nan", ".nan"}, {"-inf", "-.inf"}, {"1e3
 class Fixture {
  public:
   static const Fixture& Get() {
-    static const Fixture* fixture = new Fixture();
-    return *fixture;
+    // An object, not a leaked pointer: its TempDir is removed at exit.
+    static const Fixture fixture;
+    return fixture;
   }
   std::string store() const { return dir_.File("s.db"); }
   std::string image() const { return dir_.File("two_rooms.png"); }

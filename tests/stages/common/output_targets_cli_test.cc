@@ -28,8 +28,9 @@ namespace {
 class PipelineStore {
  public:
   static const PipelineStore& Get() {
-    static const PipelineStore* store = new PipelineStore();
-    return *store;
+    // An object, not a leaked pointer: its TempDir is removed at exit.
+    static const PipelineStore store;
+    return store;
   }
   std::string store() const { return dir_.File("s.db"); }
   std::string labels() const { return dir_.File("labels.png"); }
