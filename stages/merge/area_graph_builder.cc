@@ -15,6 +15,7 @@
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
+#include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
 
@@ -108,6 +109,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   AreaPlan plan = AssignAreas(graph);
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
   if (options.join_rooms_without_doors()) JoinRoomsWithoutDoors(graph, grid.resolution_m(), &plan);
+  if (options.join_furniture_gaps()) {
+    JoinAreasAtFurnitureGaps(graph, FurnitureIslandCells(map), grid.resolution_m(), &plan);
+  }
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
