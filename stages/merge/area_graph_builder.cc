@@ -15,6 +15,7 @@
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
+#include "stages/merge/corridor_labels.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
@@ -117,6 +118,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);
+  if (options.label_corridors_by_shape()) {
+    LabelCorridorsByShape(raster, grid.resolution_m(), &plan);
+  }
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
     throw InputError("no Area Graph: no free cell lies inside the map's boundary");

@@ -11,16 +11,10 @@
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/ring_simplicity.h"
 #include "stages/geometry/wall_thickness.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
-
-// An area's narrowest opening at a vertex: the two sites beside its edge ends
-// there.
-struct Opening {
-  double width_px = 0;
-  Eigen::Vector2d left, right;
-};
 
 // Whether the cell under a site (a cell centre), or one of its 8 neighbours,
 // belongs to an island.
@@ -35,28 +29,6 @@ bool OnIsland(const cv::Mat& islands, const Eigen::Vector2d& site) {
     }
   }
   return false;
-}
-
-// Every area's narrowest opening at every vertex it reaches: per vertex, area -> opening.
-std::vector<std::map<int, Opening>> OpeningsAtVertices(const proto::CutGraph& graph,
-                                                       const AreaPlan& plan) {
-  std::vector<std::map<int, Opening>> openings(graph.vertices_size());
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    const proto::GraphEdge& edge = graph.edges(e);
-    const int segments = edge.left_sites_size();
-    if (segments == 0 || edge.right_sites_size() != segments) continue;
-    for (const bool at_target : {false, true}) {
-      const int i = at_target ? segments - 1 : 0;
-      Opening opening;
-      opening.left = FromProtoPoint(edge.left_sites(i));
-      opening.right = FromProtoPoint(edge.right_sites(i));
-      opening.width_px = (opening.left - opening.right).norm();
-      const int vertex = at_target ? edge.target() : edge.source();
-      auto [it, added] = openings[vertex].emplace(plan.area_of_edge[e], opening);
-      if (!added && opening.width_px < it->second.width_px) it->second = opening;
-    }
-  }
-  return openings;
 }
 
 // The size (m2) of each area's edge polygons.
@@ -90,12 +62,7 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
   }
   std::vector<int> root(area_count);
   for (int k = 0; k < area_count; ++k) root[k] = groups.Find(k);
-  for (int k = area_count - 1; k >= 0; --k) {
-    const auto first = std::find(root.begin(), root.begin() + k, root[k]);
-    if (first == root.begin() + k) continue;
-    plan->MergeInto(k, static_cast<int>(first - root.begin()));
-    root.erase(root.begin() + k);
-  }
+  plan->MergeGroups(root);
 }
 
 }  // namespace
@@ -113,9 +80,9 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map) {
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
   const cv::Mat depth = ObstacleDepth(obstacle);
-  const double min_thickness_px =
-      std::max(kMinFurnitureThicknessM / resolution_m,
-               kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
+  const double min_thickness_px = std::max(
+      kMinFurnitureThicknessM / resolution_m,
+      kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
   std::vector<float> deepest(count, 0);
   for (int r = 0; r < height; ++r) {
     const int* row = labels.ptr<int>(r);
@@ -162,10 +129,10 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islan
   // any other opening.
   std::vector<std::pair<int, int>> gaps;
   std::vector<bool> enclosed(area_count, true);
-  for (const std::map<int, Opening>& at : OpeningsAtVertices(graph, *plan)) {
+  for (const std::map<int, VertexOpening>& at : OpeningsAtVertices(graph, *plan)) {
     for (auto a = at.begin(); a != at.end(); ++a) {
       for (auto b = std::next(a); b != at.end(); ++b) {
-        const Opening& narrower =
+        const VertexOpening& narrower =
             a->second.width_px <= b->second.width_px ? a->second : b->second;
         if (OnIsland(islands, narrower.left) || OnIsland(islands, narrower.right)) {
           if (std::min(size_m2[a->first], size_m2[b->first]) <= kMaxFurnitureGapPieceM2) {
