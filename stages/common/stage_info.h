@@ -35,7 +35,8 @@ inline constexpr StageInfo kCutStage{"cut", 6};
 // merge 5: polygons are a simplified planar partition, passages lie on shared borders.
 // merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
 // merge 7: areas in every part's boundary, components and dropped parts counted (issue 13).
-inline constexpr StageInfo kMergeStage{"merge", 7};
+// merge 8: areas join at furniture gaps; corridor-shaped rooms are labelled corridors (issue 12).
+inline constexpr StageInfo kMergeStage{"merge", 8};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 inline constexpr StageInfo kMatchStage{"match", 3};

@@ -38,6 +38,15 @@ void AreaPlan::MergeInto(int from, int into) {
   }
 }
 
+void AreaPlan::MergeGroups(std::vector<int> group) {
+  for (int k = static_cast<int>(group.size()) - 1; k >= 0; --k) {
+    const auto first = std::find(group.begin(), group.begin() + k, group[k]);
+    if (first == group.begin() + k) continue;
+    MergeInto(k, static_cast<int>(first - group.begin()));
+    group.erase(group.begin() + k);
+  }
+}
+
 AreaPlan AssignAreas(const proto::CutGraph& graph) {
   const int edge_count = graph.edges_size();
   DisjointSets groups(edge_count);
@@ -95,6 +104,17 @@ AreaPlan AssignAreas(const proto::CutGraph& graph) {
                                   : (dead_end ? proto::AREA_DEAD_END : proto::AREA_CORRIDOR);
   }
   return plan;
+}
+
+double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area) {
+  std::vector<double> clearance;
+  for (int e : area.edges) {
+    const auto& samples = graph.edges(e).clearance_px();
+    clearance.insert(clearance.end(), samples.begin(), samples.end());
+  }
+  if (clearance.empty()) return 0;
+  std::nth_element(clearance.begin(), clearance.begin() + clearance.size() / 2, clearance.end());
+  return 2 * clearance[clearance.size() / 2];
 }
 
 }  // namespace areagraph

@@ -21,6 +21,9 @@ struct AreaPlan {
   // Moves all edges of area `from` to area `into` and removes `from`
   // (indices of later areas shift down by one).
   void MergeInto(int from, int into);
+  // Merges every area into the first area of its group (areas j and k are
+  // in one group when group[j] == group[k]), keeping that area's kind.
+  void MergeGroups(std::vector<int> group);
 };
 
 // The areas of a CutGraph: all edges of one room form one room area; every
@@ -31,5 +34,9 @@ struct AreaPlan {
 // joins the longest other room-less edge at its junction (or, when there is
 // none, the longest edge there, so that it becomes part of that room).
 AreaPlan AssignAreas(const proto::CutGraph& graph);
+
+// Median free width (px) of an area: twice the median clearance along its
+// edges (0 without clearances).
+double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area);
 
 }  // namespace areagraph

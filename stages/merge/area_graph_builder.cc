@@ -15,6 +15,8 @@
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
+#include "stages/merge/corridor_labels.h"
+#include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
 
@@ -108,11 +110,17 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   AreaPlan plan = AssignAreas(graph);
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
   if (options.join_rooms_without_doors()) JoinRoomsWithoutDoors(graph, grid.resolution_m(), &plan);
+  if (options.join_furniture_gaps()) {
+    JoinAreasAtFurnitureGaps(graph, FurnitureIslandCells(map), grid.resolution_m(), &plan);
+  }
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster);
+  if (options.label_corridors_by_shape()) {
+    LabelCorridorsByShape(raster, grid.resolution_m(), &plan);
+  }
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
     throw InputError("no Area Graph: no free cell lies inside the map's boundary");

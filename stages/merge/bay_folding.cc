@@ -9,18 +9,6 @@
 namespace areagraph {
 namespace {
 
-// Median free width (px) of an area: twice the median clearance along its edges.
-double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area) {
-  std::vector<double> clearance;
-  for (int e : area.edges) {
-    const auto& samples = graph.edges(e).clearance_px();
-    clearance.insert(clearance.end(), samples.begin(), samples.end());
-  }
-  if (clearance.empty()) return 0;
-  std::nth_element(clearance.begin(), clearance.begin() + clearance.size() / 2, clearance.end());
-  return 2 * clearance[clearance.size() / 2];
-}
-
 // The narrowest free width (px) along `edge` within `reach_px` of one end.
 double NarrowestNearEnd(const proto::GraphEdge& edge, bool at_target, double reach_px) {
   const int n = edge.clearance_px_size();

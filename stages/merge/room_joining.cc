@@ -106,21 +106,10 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m, Ar
       }
     }
   }
-  // Every room folds into the first room of its group; later indices shift.
+  // Every room folds into the first room of its group.
   std::vector<int> root(area_count);
   for (int k = 0; k < area_count; ++k) root[k] = rooms.Find(k);
-  for (int k = area_count - 1; k >= 0; --k) {
-    int first = k;
-    for (int j = 0; j < k; ++j) {
-      if (root[j] == root[k]) {
-        first = j;
-        break;
-      }
-    }
-    if (first == k) continue;
-    plan->MergeInto(k, first);
-    root.erase(root.begin() + k);
-  }
+  plan->MergeGroups(root);
 }
 
 }  // namespace areagraph

@@ -126,17 +126,24 @@ TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
 
 TEST(AreaStagesTest, NarrowerRoomWidthStrategyMakesTheCorridorARoom) {
   // Door 0.9 < corridor 1.6: W = 1.0 m. The corridor still holds the disk,
-  // so the result matches the fixed W of 1.25 m.
+  // so the result matches the fixed W of 1.25 m: four room shapes. Its
+  // length makes the corridor's area a corridor again
+  // (merge.label_corridors_by_shape); without that all four are rooms.
   const FloorPlan plan = CorridorWithThreeRooms();
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
   options.mutable_cut()->set_door_width_m(0.9);
   options.mutable_cut()->set_corridor_width_m(1.6);
-  const AreaStages stages = RunAreaStages(map, options);
-  ExpectAreaGraphInvariants(stages, map);
-  EXPECT_EQ(stages.areas.areas_size(), 4);
-  EXPECT_EQ(stages.areas.passages_size(), 3);
-  for (const proto::Area& area : stages.areas.areas()) EXPECT_EQ(area.kind(), proto::AREA_ROOM);
+  for (const bool by_shape : {true, false}) {
+    options.mutable_merge()->set_label_corridors_by_shape(by_shape);
+    const AreaStages stages = RunAreaStages(map, options);
+    ExpectAreaGraphInvariants(stages, map);
+    EXPECT_EQ(stages.areas.areas_size(), 4);
+    EXPECT_EQ(stages.areas.passages_size(), 3);
+    int rooms = 0;
+    for (const proto::Area& area : stages.areas.areas()) rooms += area.kind() == proto::AREA_ROOM;
+    EXPECT_EQ(rooms, by_shape ? 3 : 4);
+  }
 }
 
 TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {

@@ -38,6 +38,8 @@ struct WideDoorAreas {
   double room_width_m = 0;
   int office = -1;
   int corridor = -1;
+  proto::AreaKind office_kind = proto::AREA_CORRIDOR;
+  proto::AreaKind corridor_kind = proto::AREA_ROOM;
 };
 
 WideDoorAreas RunOffices(const proto::PipelineOptions& options) {
@@ -47,6 +49,8 @@ WideDoorAreas RunOffices(const proto::PipelineOptions& options) {
   found.room_width_m = stages.cut.room_width().room_width_m();
   found.office = AreaAt(stages.areas, kWideDoorX, 2.5);
   found.corridor = AreaAt(stages.areas, kWideDoorX, kCorridorY + kCorridorHeight / 2);
+  if (found.office >= 0) found.office_kind = stages.areas.areas(found.office).kind();
+  if (found.corridor >= 0) found.corridor_kind = stages.areas.areas(found.corridor).kind();
   return found;
 }
 
@@ -119,6 +123,24 @@ TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
   options.mutable_cut()->set_close_wall_gaps_max_m(0);
   const WideDoorAreas found = RunNarrowCorridor(options);
   EXPECT_EQ(found.office, found.corridor);
+}
+
+TEST(LocalDoorsTest, CorridorWiderThanWIsLabelledACorridor) {
+  // The room disk (W about 1 m) fits in the 1.85 m corridor, but the
+  // corridor is ten times as long as it is wide: merge.label_corridors_by_shape.
+  const WideDoorAreas found = RunOffices({});
+  ASSERT_NE(found.office, -1);
+  ASSERT_NE(found.corridor, -1);
+  EXPECT_EQ(found.corridor_kind, proto::AREA_CORRIDOR);
+  EXPECT_EQ(found.office_kind, proto::AREA_ROOM);
+}
+
+TEST(LocalDoorsTest, WithoutTheShapeCueTheWideCorridorIsARoom) {
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_label_corridors_by_shape(false);
+  const WideDoorAreas found = RunOffices(options);
+  ASSERT_NE(found.corridor, -1);
+  EXPECT_EQ(found.corridor_kind, proto::AREA_ROOM);
 }
 
 }  // namespace

@@ -1,0 +1,63 @@
+#include "stages/merge/corridor_labels.h"
+
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace areagraph {
+
+namespace {
+
+// The shape of the non-zero cells of `mask` (CV_8U, a margin of zeros all
+// round), with holes filled. Changes `mask`.
+AreaShape ShapeOfMask(cv::Mat& mask) {
+  std::vector<std::vector<cv::Point>> outer;
+  cv::findContours(mask.clone(), outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+  cv::drawContours(mask, outer, -1, cv::Scalar(255), cv::FILLED);
+  cv::Mat distance;
+  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  double deepest = 0;
+  cv::minMaxLoc(distance, nullptr, &deepest);
+  return {2 * deepest, static_cast<double>(cv::countNonZero(mask))};
+}
+
+AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
+  if (box.area() == 0) return {};
+  // The area's cells with a free margin of one cell, so that the distance
+  // transform sees its outline all round.
+  cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
+  for (int r = 0; r < box.height; ++r) {
+    const int* row = raster.labels.ptr<int>(box.y + r);
+    for (int c = 0; c < box.width; ++c) {
+      if (row[box.x + c] == k + 1) mask.at<uint8_t>(r + 1, c + 1) = 255;
+    }
+  }
+  return ShapeOfMask(mask);
+}
+
+}  // namespace
+
+std::vector<AreaShape> AreaShapes(const AreaRaster& raster) {
+  const std::vector<cv::Rect> boxes = AreaBoxes(raster);
+  std::vector<AreaShape> shapes;
+  for (size_t k = 0; k < boxes.size(); ++k) {
+    shapes.push_back(ShapeOfArea(raster, static_cast<int>(k), boxes[k]));
+  }
+  return shapes;
+}
+
+bool IsCorridorShaped(const AreaShape& shape, double resolution_m) {
+  return shape.width_px > 0 && shape.width_px <= kMaxCorridorWidthM / resolution_m &&
+         shape.area_px >= kMinCorridorElongation * shape.width_px * shape.width_px;
+}
+
+void LabelCorridorsByShape(const AreaRaster& raster, double resolution_m, AreaPlan* plan) {
+  const std::vector<AreaShape> shapes = AreaShapes(raster);
+  for (size_t k = 0; k < plan->areas.size() && k < shapes.size(); ++k) {
+    AreaPlan::Area& area = plan->areas[k];
+    if (area.kind == proto::AREA_ROOM && IsCorridorShaped(shapes[k], resolution_m)) {
+      area.kind = proto::AREA_CORRIDOR;
+    }
+  }
+}
+
+}  // namespace areagraph

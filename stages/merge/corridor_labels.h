@@ -1,0 +1,37 @@
+#pragma once
+
+#include <vector>
+
+#include "stages/merge/area_assignment.h"
+#include "stages/merge/area_raster.h"
+
+namespace areagraph {
+
+// A corridor is at most this wide (metres): "an indoor corridor is hardly
+// wider than 4 m" (the paper, on the range of W); wider areas are halls.
+inline constexpr double kMaxCorridorWidthM = 4.0;
+// A corridor is at least this many times as long as it is wide: its area is
+// at least this many squares of its width. Rooms and halls are squarer.
+inline constexpr double kMinCorridorElongation = 4.0;
+
+// The shape of an area: the width of its widest free disk and its area, both
+// measured with its holes (furniture, pillars) filled.
+struct AreaShape {
+  double width_px = 0;
+  double area_px = 0;
+};
+
+// The shape of every area of `raster` (zero for an area without cells).
+std::vector<AreaShape> AreaShapes(const AreaRaster& raster);
+
+// Whether a shape is a corridor's (see LabelCorridorsByShape).
+bool IsCorridorShaped(const AreaShape& shape, double resolution_m);
+
+// Relabels room areas shaped like corridors as corridors: long (area at least
+// kMinCorridorElongation squares of the width) and at most kMaxCorridorWidthM
+// wide. The room disk makes every area it fits in a room, so a corridor
+// wider than W came out as a room; its length tells it apart. Dead ends and
+// corridors keep their kind.
+void LabelCorridorsByShape(const AreaRaster& raster, double resolution_m, AreaPlan* plan);
+
+}  // namespace areagraph

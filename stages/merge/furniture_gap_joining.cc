@@ -1,0 +1,168 @@
+#include "stages/merge/furniture_gap_joining.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <opencv2/imgproc.hpp>
+#include <set>
+#include <vector>
+
+#include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_simplicity.h"
+#include "stages/geometry/wall_thickness.h"
+#include "stages/merge/vertex_openings.h"
+
+namespace areagraph {
+namespace {
+
+// Whether the cell under a site (a cell centre), or one of its 8 neighbours,
+// belongs to an island.
+bool OnIsland(const cv::Mat& islands, const Eigen::Vector2d& site) {
+  const int col = static_cast<int>(std::floor(site.x()));
+  const int row = static_cast<int>(std::floor(site.y()));
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) {
+      const int c = col + dc, r = row + dr;
+      if (c < 0 || r < 0 || c >= islands.cols || r >= islands.rows) continue;
+      if (islands.at<uint8_t>(r, c)) return true;
+    }
+  }
+  return false;
+}
+
+// The size (m2) of each area's edge polygons.
+std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& plan,
+                                double resolution_m) {
+  std::vector<double> size(plan.areas.size(), 0);
+  const double cell_m2 = resolution_m * resolution_m;
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    double& area = size[plan.area_of_edge[e]];
+    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
+    for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
+      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
+    }
+  }
+  return size;
+}
+
+// Folds every group of `groups` into its lowest area; a group with a room
+// becomes that room.
+void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
+  const int area_count = static_cast<int>(plan->areas.size());
+  std::map<int, int> room_of_group;
+  for (int k = 0; k < area_count; ++k) {
+    if (plan->areas[k].kind == proto::AREA_ROOM) room_of_group.emplace(groups.Find(k), k);
+  }
+  for (int k = 0; k < area_count; ++k) {
+    const auto it = room_of_group.find(groups.Find(k));
+    if (it == room_of_group.end()) continue;
+    plan->areas[k].kind = proto::AREA_ROOM;
+    plan->areas[k].room_id = plan->areas[it->second].room_id;
+  }
+  std::vector<int> root(area_count);
+  for (int k = 0; k < area_count; ++k) root[k] = groups.Find(k);
+  plan->MergeGroups(root);
+}
+
+}  // namespace
+
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map) {
+  const int width = map.frame().width_px(), height = map.frame().height_px();
+  const double resolution_m = map.frame().resolution_m();
+  // What cleaning removed is still no free space: a wall it broke stays one.
+  cv::Mat obstacle = ObstacleMask(map.cells(), width, height);
+  for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
+    for (const int index : *list) {
+      if (index >= 0 && index < width * height) obstacle.data[index] = 255;
+    }
+  }
+  cv::Mat labels, stats, centroids;
+  const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
+  const cv::Mat depth = ObstacleDepth(obstacle);
+  const double min_thickness_px = std::max(
+      kMinFurnitureThicknessM / resolution_m,
+      kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
+  std::vector<float> deepest(count, 0);
+  for (int r = 0; r < height; ++r) {
+    const int* row = labels.ptr<int>(r);
+    const float* d = depth.ptr<float>(r);
+    for (int c = 0; c < width; ++c) deepest[row[c]] = std::max(deepest[row[c]], d[c]);
+  }
+  const double max_px = kMaxFurnitureIslandM / resolution_m;
+  std::vector<uint8_t> island(count, 0);
+  for (int k = 1; k < count; ++k) {
+    const int x = stats.at<int>(k, cv::CC_STAT_LEFT), y = stats.at<int>(k, cv::CC_STAT_TOP);
+    const int w = stats.at<int>(k, cv::CC_STAT_WIDTH), h = stats.at<int>(k, cv::CC_STAT_HEIGHT);
+    const bool border = x == 0 || y == 0 || x + w == width || y + h == height;
+    island[k] = !border && std::max(w, h) <= max_px && 2 * deepest[k] >= min_thickness_px;
+  }
+  // Candidates must fill most of their smallest enclosing rectangle.
+  std::vector<std::vector<cv::Point>> points(count);
+  for (int r = 0; r < height; ++r) {
+    const int* row = labels.ptr<int>(r);
+    for (int c = 0; c < width; ++c) {
+      if (island[row[c]]) points[row[c]].emplace_back(c, r);
+    }
+  }
+  for (int k = 1; k < count; ++k) {
+    if (!island[k]) continue;
+    const cv::RotatedRect box = cv::minAreaRect(points[k]);
+    const double box_cells = (box.size.width + 1) * (box.size.height + 1);
+    island[k] = stats.at<int>(k, cv::CC_STAT_AREA) >= kMinFurnitureSolidity * box_cells;
+  }
+  cv::Mat out(height, width, CV_8U);
+  for (int r = 0; r < height; ++r) {
+    const int* row = labels.ptr<int>(r);
+    uint8_t* target = out.ptr<uint8_t>(r);
+    for (int c = 0; c < width; ++c) target[c] = island[row[c]];
+  }
+  return out;
+}
+
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
+                              double resolution_m, AreaPlan* plan) {
+  const int area_count = static_cast<int>(plan->areas.size());
+  const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
+  // Pairs of areas that meet at a vertex where the opening (the narrower of
+  // their two sides) has an island for a jamb, and room-less areas that have
+  // any other opening.
+  std::vector<std::pair<int, int>> gaps;
+  std::vector<bool> enclosed(area_count, true);
+  for (const std::map<int, VertexOpening>& at : OpeningsAtVertices(graph, *plan)) {
+    for (auto a = at.begin(); a != at.end(); ++a) {
+      for (auto b = std::next(a); b != at.end(); ++b) {
+        const VertexOpening& narrower =
+            a->second.width_px <= b->second.width_px ? a->second : b->second;
+        if (OnIsland(islands, narrower.left) || OnIsland(islands, narrower.right)) {
+          if (std::min(size_m2[a->first], size_m2[b->first]) <= kMaxFurnitureGapPieceM2) {
+            gaps.emplace_back(a->first, b->first);
+          }
+        } else {
+          enclosed[a->first] = enclosed[b->first] = false;
+        }
+      }
+    }
+  }
+  const auto is_room = [&](int k) { return plan->areas[k].kind == proto::AREA_ROOM; };
+  DisjointSets groups(area_count);
+  // Rooms with rooms, and room-less areas that open only through gaps with
+  // rooms and with each other.
+  for (const auto& [a, b] : gaps) {
+    if ((is_room(a) || enclosed[a]) && (is_room(b) || enclosed[b])) groups.Union(a, b);
+  }
+  // Then room-less areas with each other (clutter in a corridor), unless one
+  // of them is part of a room by now.
+  std::set<int> groups_with_rooms;
+  for (int k = 0; k < area_count; ++k) {
+    if (is_room(k)) groups_with_rooms.insert(groups.Find(k));
+  }
+  for (const auto& [a, b] : gaps) {
+    if (!groups_with_rooms.count(groups.Find(a)) && !groups_with_rooms.count(groups.Find(b))) {
+      groups.Union(a, b);
+    }
+  }
+  ApplyGroups(groups, plan);
+}
+
+}  // namespace areagraph

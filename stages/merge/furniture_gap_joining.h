@@ -1,0 +1,48 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "proto/artifacts.pb.h"
+#include "stages/merge/area_assignment.h"
+
+namespace areagraph {
+
+// Obstacle regions (8-connected non-free cells) that touch no image border
+// and whose bounding box is at most this long (metres) are islands: desks,
+// cabinets, shelves and tables standing free. The building's walls are one
+// region with the map's outside, or longer.
+inline constexpr double kMaxFurnitureIslandM = 4.0;
+// Islands are at least this thick (metres; twice the depth of their deepest
+// cell) and kFurnitureWallRatio times the map's typical wall: noise specks
+// and pieces of wall between two doors are thinner.
+inline constexpr double kMinFurnitureThicknessM = 0.3;
+inline constexpr double kFurnitureWallRatio = 2.0;
+// Islands fill at least this share of their smallest enclosing rectangle: a
+// piece of wall with a T or a cabinet against it does not.
+inline constexpr double kMinFurnitureSolidity = 0.75;
+
+// Which obstacle cells belong to an island, as CV_8U the map's size (1 on
+// island cells). Cells that cleaning removed count as obstacles, so that a
+// wall it broke stays one region.
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map);
+
+// The smaller of two areas at a gap is at most this big (m2, its edges'
+// polygons): a room cut off by a row of blocks with openings between them
+// (a glass wall on pillars) is bigger than the strip beside a desk.
+inline constexpr double kMaxFurnitureGapPieceM2 = 20.0;
+
+// Joins areas that meet at a graph vertex where the opening between them has
+// an island for a jamb: a door is cut into a wall, so a gap between a desk
+// and a wall, or between two desks, is no door but furniture standing in one
+// room. Two rooms are joined at such a gap; a room-less area (a strip between
+// desks that the room disk could not enter) is joined only when every one of
+// its openings is such a gap, so that a corridor whose door has a desk beside
+// it stays a corridor; room-less areas are joined with each other at gaps
+// (clutter in a corridor) unless one of them is part of a room by then. The
+// smaller of the two areas must be at most kMaxFurnitureGapPieceM2. A joined
+// area is a room when one of its parts was.
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
+                              double resolution_m, AreaPlan* plan);
+
+}  // namespace areagraph

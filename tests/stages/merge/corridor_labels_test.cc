@@ -1,0 +1,83 @@
+// LabelCorridorsByShape and FurnitureIslandCells on drawn rasters.
+#include "stages/merge/corridor_labels.h"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgproc.hpp>
+
+#include "stages/merge/furniture_gap_joining.h"
+#include "tests/stages/merge/hand_made_cut_graph.h"
+
+namespace areagraph::testing {
+namespace {
+
+// A raster of rectangles, area k + 1 on rects[k], at 0.05 m/px.
+AreaRaster RasterOf(const std::vector<cv::Rect>& rects) {
+  AreaRaster raster;
+  raster.labels = cv::Mat::zeros(400, 600, CV_32S);
+  for (size_t k = 0; k < rects.size(); ++k) {
+    raster.labels(rects[k]).setTo(static_cast<int>(k + 1));
+    raster.cell_count.push_back(rects[k].area());
+  }
+  return raster;
+}
+
+AreaPlan RoomsOnly(int count) {
+  AreaPlan plan;
+  for (int k = 0; k < count; ++k) plan.areas.push_back({AREA_ROOM, k, {k}});
+  return plan;
+}
+
+TEST(CorridorLabelsTest, LongNarrowRoomBecomesACorridor) {
+  // 2 x 10 m, 4 x 5 m with a 1 x 1 m desk in it (a hole), 5 x 25 m (a hall
+  // wider than a corridor), and an L of two 1.5 m wide arms 6 m long.
+  AreaRaster raster =
+      RasterOf({{0, 0, 200, 40}, {0, 50, 100, 80}, {0, 140, 500, 100}, {520, 0, 30, 120}});
+  raster.labels(cv::Rect(40, 80, 20, 20)).setTo(0);
+  raster.labels(cv::Rect(430, 90, 90, 30)).setTo(4);
+  AreaPlan plan = RoomsOnly(4);
+  LabelCorridorsByShape(raster, 0.05, &plan);
+  EXPECT_EQ(plan.areas[0].kind, AREA_CORRIDOR);
+  EXPECT_EQ(plan.areas[1].kind, AREA_ROOM);
+  EXPECT_EQ(plan.areas[2].kind, AREA_ROOM);
+  EXPECT_EQ(plan.areas[3].kind, AREA_CORRIDOR);
+}
+
+TEST(CorridorLabelsTest, DeadEndsKeepTheirKind) {
+  AreaRaster raster = RasterOf({{0, 0, 200, 40}});
+  AreaPlan plan = RoomsOnly(1);
+  plan.areas[0].kind = AREA_DEAD_END;
+  LabelCorridorsByShape(raster, 0.05, &plan);
+  EXPECT_EQ(plan.areas[0].kind, AREA_DEAD_END);
+}
+
+// A map 8 x 6 m at 0.05 m/px, free inside a 0.15 m wall one cell in from
+// the image border (the walls are the map's typical wall).
+proto::CleanedMap WalledMap(const std::vector<cv::Rect>& obstacles) {
+  cv::Mat cells(120, 160, CV_8U, cv::Scalar(proto::CELL_FREE));
+  std::vector<cv::Rect> walls{{2, 2, 156, 3}, {2, 115, 156, 3}, {2, 2, 3, 116}, {155, 2, 3, 116}};
+  walls.insert(walls.end(), obstacles.begin(), obstacles.end());
+  for (const cv::Rect& rect : walls) cells(rect).setTo(proto::CELL_OCCUPIED);
+  proto::CleanedMap map;
+  map.mutable_frame()->set_width_px(cells.cols);
+  map.mutable_frame()->set_height_px(cells.rows);
+  map.mutable_frame()->set_resolution_m(0.05);
+  map.set_cells(std::string(cells.datastart, cells.dataend));
+  return map;
+}
+
+TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
+  // A desk (1.6 x 0.8 m), a piece of wall (3 m x 0.15 m), a speck (2 cells),
+  // a cabinet against the outer wall and a free block 5 m long.
+  const cv::Mat islands = FurnitureIslandCells(WalledMap(
+      {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}));
+  EXPECT_EQ(islands.at<uint8_t>(25, 30), 1);
+  EXPECT_EQ(islands.at<uint8_t>(21, 100), 0);
+  EXPECT_EQ(islands.at<uint8_t>(60, 30), 0);
+  EXPECT_EQ(islands.at<uint8_t>(95, 10), 0);  // joined to the wall
+  EXPECT_EQ(islands.at<uint8_t>(110, 60), 0);
+  EXPECT_EQ(islands.at<uint8_t>(60, 60), 0);  // free space
+}
+
+}  // namespace
+}  // namespace areagraph::testing
