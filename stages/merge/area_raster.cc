@@ -62,9 +62,10 @@ void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
 constexpr int kVisited = 1 << 30;
 
 // Visits the 4-connected piece of cells equal to `value` around `start`
-// (breadth first), sets each to `mark` and calls visit(cell) on it.
-template <typename Visit>
-void WalkPiece(int start, int value, int mark, int cols, int rows, int* label, Visit visit) {
+// (breadth first), sets each to `mark` and calls visit(cell) on it. For the
+// int labels and the byte core mask alike.
+template <typename Cell, typename Visit>
+void WalkPiece(int start, Cell value, Cell mark, int cols, int rows, Cell* label, Visit visit) {
   std::deque<int> queue(1, start);
   label[start] = mark;
   int neighbours[4];
@@ -159,20 +160,7 @@ void MarkUnreachedCores(cv::Mat core, double min_gap_px, cv::Mat* labels) {
   enum : uint8_t { kCore = 1, kSeen = 2, kDone = 3 };
   // Walks the piece of `from` cells around `start`, marking them `to`.
   auto walk = [&](int start, uint8_t from, uint8_t to, auto visit) {
-    std::deque<int> queue(1, start);
-    cell[start] = to;
-    int neighbours[4];
-    while (!queue.empty()) {
-      const int p = queue.front();
-      queue.pop_front();
-      visit(p);
-      Neighbours(p, cols, rows, neighbours);
-      for (int q : neighbours) {
-        if (q < 0 || cell[q] != from) continue;
-        cell[q] = to;
-        queue.push_back(q);
-      }
-    }
+    WalkPiece<uint8_t>(start, from, to, cols, rows, cell, visit);
   };
   for (int start = 0; start < cols * rows; ++start) {
     if (cell[start] != kCore) continue;
