@@ -35,13 +35,7 @@ namespace areagraph {
 namespace {
 
 struct BenchFlags {
-  std::string name;
-  std::string map_path;
-  std::string gt_path;
-  double generated_m = 0;
-  uint32_t seed = 1;
-  int steps = 20;
-  int noise_steps = 3;
+  ExplorationRun run;
   std::string url = kDefaultLcmUrl;
   std::string live_log;
   std::string scratch_dir = "/tmp";
@@ -160,27 +154,28 @@ std::string Percent(int part, int whole) {
 }
 
 int RunBench(const BenchFlags& flags) {
-  if (flags.name.empty()) throw OptionsError("--name is required");
-  if ((flags.generated_m > 0) == !flags.map_path.empty()) {
+  if (flags.run.name.empty()) throw OptionsError("--name is required");
+  if ((flags.run.generated_m > 0) == !flags.run.map_path.empty()) {
     throw OptionsError("give either --map and --gt, or --generated");
   }
-  if (!flags.map_path.empty() && flags.gt_path.empty()) throw OptionsError("--map needs --gt");
+  if (!flags.run.map_path.empty() && flags.run.gt_path.empty())
+    throw OptionsError("--map needs --gt");
   if (!flags.dump_dir.empty()) {
     for (const char* sub : {"/grid", "/live", "/gt"}) {
       std::filesystem::create_directories(flags.dump_dir + sub);
     }
   }
-  const ExplorationTruth truth =
-      LoadExplorationTruth(flags.map_path, flags.gt_path, flags.generated_m, flags.seed);
+  const ExplorationTruth truth = LoadExplorationTruth(flags.run.map_path, flags.run.gt_path,
+                                                      flags.run.generated_m, flags.run.seed);
   floorplan::ExplorationSettings settings = flags.exploration;
-  settings.steps = flags.steps;
-  settings.seed = flags.seed;
-  std::cerr << "ag-bench-live: " << flags.name << ": " << truth.cells.cols << "x"
+  settings.steps = flags.run.steps;
+  settings.seed = flags.run.seed;
+  std::cerr << "ag-bench-live: " << flags.run.name << ": " << truth.cells.cols << "x"
             << truth.cells.rows << " px, " << CountSegments(truth.rooms)
             << " ground-truth rooms; planning the exploration" << std::endl;
   floorplan::Exploration exploration(truth.cells, settings);
-  std::cerr << "ag-bench-live: " << flags.name << ": " << exploration.scans() << " scans in "
-            << flags.steps << " steps, then " << flags.noise_steps << " noise-only updates"
+  std::cerr << "ag-bench-live: " << flags.run.name << ": " << exploration.scans() << " scans in "
+            << flags.run.steps << " steps, then " << flags.run.noise_steps << " noise-only updates"
             << std::endl;
 
   const std::string url = ReceivingLcmUrl(flags.url);
@@ -194,17 +189,18 @@ int RunBench(const BenchFlags& flags) {
   IdStability explored_total, noise_total;
   std::vector<double> ratios;
   const double free_cells = cv::countNonZero(truth.cells == floorplan::kFreeCell);
-  for (int step = 1; step <= flags.steps + flags.noise_steps; ++step) {
-    const uint32_t noise_seed = flags.seed * 1000 + static_cast<uint32_t>(step);
-    const floorplan::ExplorationMap map = step <= flags.steps
+  for (int step = 1; step <= flags.run.steps + flags.run.noise_steps; ++step) {
+    const uint32_t noise_seed = flags.run.seed * 1000 + static_cast<uint32_t>(step);
+    const floorplan::ExplorationMap map = step <= flags.run.steps
                                               ? exploration.MapAfter(step, noise_seed)
                                               : exploration.MapAgain(noise_seed);
     const proto::GridMap grid = ExplorationGridMap(map, truth.cells.rows);
     const int64_t utime = MicrosecondsNow();
-    const areagraph_lcm::grid_map_t message = ToLcmGridMap(flags.name, utime, grid);
+    const areagraph_lcm::grid_map_t message = ToLcmGridMap(flags.run.name, utime, grid);
     const auto sent = std::chrono::steady_clock::now();
     if (lcm->publish(kGridMapChannel, &message) != 0) throw Error("cannot publish on MAP");
-    const areagraph_lcm::area_graph_t published = waiter.Wait(flags.name, utime, flags.timeout_s);
+    const areagraph_lcm::area_graph_t published =
+        waiter.Wait(flags.run.name, utime, flags.timeout_s);
     const double round_trip =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count();
     const double live_ms = ReceiptToPublicationMs(flags.live_log, published.artifact_key);
@@ -212,12 +208,12 @@ int RunBench(const BenchFlags& flags) {
     const proto::AreaGraph published_graph = AreaGraphFromLcm(published);
     const GroundTruthView view = ViewAgainstGroundTruth(published_graph, truth.rooms, map.seen);
     if (!flags.dump_dir.empty()) {
-      DumpStep(flags.dump_dir, flags.name, step, map, published_graph, truth.rooms);
+      DumpStep(flags.dump_dir, flags.run.name, step, map, published_graph, truth.rooms);
     }
     std::string tracked = "-", kept = "-";
     if (step > 1) {
       const IdStability stability = CompareViews(previous, view);
-      IdStability& total = step <= flags.steps ? explored_total : noise_total;
+      IdStability& total = step <= flags.run.steps ? explored_total : noise_total;
       total.tracked += stability.tracked;
       total.kept += stability.kept;
       total.ids_before += stability.ids_before;
@@ -234,20 +230,20 @@ int RunBench(const BenchFlags& flags) {
     }
     std::printf(
         "| %d%s | %.0f %% | %dx%d | %d | %lld | %.0f | %.0f | %.0f | %s | %s | %s |\n", step,
-        step > flags.steps ? " (noise)" : "",
+        step > flags.run.steps ? " (noise)" : "",
         100.0 * cv::countNonZero(map.seen & (truth.cells == floorplan::kFreeCell)) / free_cells,
         grid.frame().width_px(), grid.frame().height_px(), published.num_areas,
         static_cast<long long>(published.version), live_ms, round_trip, cold_ms, ratio.c_str(),
         tracked.c_str(), kept.c_str());
     std::fflush(stdout);
-    std::cerr << "ag-bench-live: " << flags.name << ": step " << step << " done" << std::endl;
+    std::cerr << "ag-bench-live: " << flags.run.name << ": step " << step << " done" << std::endl;
     previous = view;
   }
   std::printf(
       "\n%s: over the exploration, %s of the areas whose ground-truth room was fully seen in "
       "both updates kept their id (%d of %d); over the noise-only updates %s (%d of %d), and "
       "%s of all ids stayed. Update / cold: median %.2f, max %.2f.\n\n",
-      flags.name.c_str(), Percent(explored_total.kept, explored_total.tracked).c_str(),
+      flags.run.name.c_str(), Percent(explored_total.kept, explored_total.tracked).c_str(),
       explored_total.kept, explored_total.tracked,
       Percent(noise_total.kept, noise_total.tracked).c_str(), noise_total.kept, noise_total.tracked,
       Percent(noise_total.ids_kept, noise_total.ids_before).c_str(), Median(ratios),
@@ -270,19 +266,7 @@ int main(int argc, char** argv) {
       "ground-truth room was fully seen in both updates kept their id. Run it through "
       "tools/bench-live.sh."};
   BenchFlags flags;
-  app.add_option("--name", flags.name, "map name sent to ag-live")->required();
-  app.add_option("--map", flags.map_path, "map image (the whole building)");
-  app.add_option("--gt", flags.gt_path, "its ground truth (colour or line style, as ag-eval)");
-  app.add_option("--generated", flags.generated_m,
-                 "instead of --map: a generated office floor this many metres square");
-  app.add_option("--seed", flags.seed, "seed of the generated floor and of the noise")
-      ->capture_default_str();
-  app.add_option("--steps", flags.steps, "growing maps")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
-  app.add_option("--noise-steps", flags.noise_steps, "noise-only maps after the last step")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1000));
+  AddExplorationRunOptions(app, flags.run, "map name sent to ag-live");
   app.add_option("--wall-noise", flags.exploration.wall_noise,
                  "chance that a free cell next to a wall turns occupied, per map")
       ->capture_default_str();

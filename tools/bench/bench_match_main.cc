@@ -31,13 +31,7 @@ namespace areagraph {
 namespace {
 
 struct MatchBenchFlags {
-  std::string name;
-  std::string map_path;
-  std::string gt_path;
-  double generated_m = 0;
-  uint32_t seed = 1;
-  int steps = 20;
-  int noise_steps = 3;
+  ExplorationRun run;
   std::string cache_dir;
   std::vector<std::string> variants;
   bool per_step = false;
@@ -77,8 +71,8 @@ proto::AreaGraph CachedMergedGraph(const MatchBenchFlags& flags, int step,
   std::string path;
   if (!flags.cache_dir.empty()) {
     char file[300];
-    std::snprintf(file, sizeof(file), "/%s-seed%u-merge%d-%02d.pb", flags.name.c_str(), flags.seed,
-                  kMergeStage.version, step);
+    std::snprintf(file, sizeof(file), "/%s-seed%u-merge%d-%02d.pb", flags.run.name.c_str(),
+                  flags.run.seed, kMergeStage.version, step);
     path = flags.cache_dir + file;
     std::ifstream in(path, std::ios::binary);
     proto::AreaGraph graph;
@@ -94,22 +88,23 @@ proto::AreaGraph CachedMergedGraph(const MatchBenchFlags& flags, int step,
 
 std::vector<Update> ExploreAndSegment(const MatchBenchFlags& flags, const ExplorationTruth& truth) {
   floorplan::ExplorationSettings settings = flags.exploration;
-  settings.steps = flags.steps;
-  settings.seed = flags.seed;
+  settings.steps = flags.run.steps;
+  settings.seed = flags.run.seed;
   floorplan::Exploration exploration(truth.cells, settings);
   std::vector<Update> updates;
-  for (int step = 1; step <= flags.steps + flags.noise_steps; ++step) {
-    const uint32_t noise_seed = flags.seed * 1000 + static_cast<uint32_t>(step);
-    const floorplan::ExplorationMap map = step <= flags.steps
+  for (int step = 1; step <= flags.run.steps + flags.run.noise_steps; ++step) {
+    const uint32_t noise_seed = flags.run.seed * 1000 + static_cast<uint32_t>(step);
+    const floorplan::ExplorationMap map = step <= flags.run.steps
                                               ? exploration.MapAfter(step, noise_seed)
                                               : exploration.MapAgain(noise_seed);
     Update update;
     update.merged = CachedMergedGraph(flags, step, ExplorationGridMap(map, truth.cells.rows));
     update.seen = map.seen.clone();
     update.seen_gt = SeenGroundTruth(map, truth.rooms);
-    update.noise_only = step > flags.steps;
+    update.noise_only = step > flags.run.steps;
     updates.push_back(std::move(update));
-    std::cerr << "ag-bench-match: " << flags.name << ": step " << step << " segmented" << std::endl;
+    std::cerr << "ag-bench-match: " << flags.run.name << ": step " << step << " segmented"
+              << std::endl;
   }
   return updates;
 }
@@ -199,7 +194,7 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
   }
   double mean = 0;
   for (double mcc : mccs) mean += mcc / mccs.size();
-  std::printf("| %s | %s | %s | %s | %.3f | %.3f | %d |\n", flags.name.c_str(),
+  std::printf("| %s | %s | %s | %s | %.3f | %.3f | %d |\n", flags.run.name.c_str(),
               variant_text.empty() ? "(defaults)" : variant_text.c_str(),
               Percent(explored.kept, explored.tracked).c_str(),
               Percent(noise.kept, noise.tracked).c_str(), mccs.back(), mean, previous.areas_size());
@@ -207,16 +202,17 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
 }
 
 int RunBench(MatchBenchFlags flags) {
-  if (flags.name.empty()) throw OptionsError("--name is required");
-  if ((flags.generated_m > 0) == !flags.map_path.empty()) {
+  if (flags.run.name.empty()) throw OptionsError("--name is required");
+  if ((flags.run.generated_m > 0) == !flags.run.map_path.empty()) {
     throw OptionsError("give either --map and --gt, or --generated");
   }
-  if (!flags.map_path.empty() && flags.gt_path.empty()) throw OptionsError("--map needs --gt");
+  if (!flags.run.map_path.empty() && flags.run.gt_path.empty())
+    throw OptionsError("--map needs --gt");
   if (!flags.cache_dir.empty()) std::filesystem::create_directories(flags.cache_dir);
   if (flags.variants.empty()) flags.variants.push_back("");
-  const ExplorationTruth truth =
-      LoadExplorationTruth(flags.map_path, flags.gt_path, flags.generated_m, flags.seed);
-  std::cerr << "ag-bench-match: " << flags.name << ": " << truth.cells.cols << "x"
+  const ExplorationTruth truth = LoadExplorationTruth(flags.run.map_path, flags.run.gt_path,
+                                                      flags.run.generated_m, flags.run.seed);
+  std::cerr << "ag-bench-match: " << flags.run.name << ": " << truth.cells.cols << "x"
             << truth.cells.rows << " px, " << CountSegments(truth.rooms) << " ground-truth rooms"
             << std::endl;
   const std::vector<Update> updates = ExploreAndSegment(flags, truth);
@@ -241,20 +237,7 @@ int main(int argc, char** argv) {
       "MCC (MAORIS variant) of the published graphs against the ground truth seen so far, at "
       "the last update and the mean over all. For choosing match's constants; checks nothing."};
   MatchBenchFlags flags;
-  app.add_option("--name", flags.name, "map name (labels the rows and the cache files)")
-      ->required();
-  app.add_option("--map", flags.map_path, "map image (the whole building)");
-  app.add_option("--gt", flags.gt_path, "its ground truth (colour or line style, as ag-eval)");
-  app.add_option("--generated", flags.generated_m,
-                 "instead of --map: a generated office floor this many metres square");
-  app.add_option("--seed", flags.seed, "seed of the generated floor and of the noise")
-      ->capture_default_str();
-  app.add_option("--steps", flags.steps, "growing maps")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
-  app.add_option("--noise-steps", flags.noise_steps, "noise-only maps after the last step")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1000));
+  AddExplorationRunOptions(app, flags.run, "map name (labels the rows and the cache files)");
   app.add_option("--cache", flags.cache_dir,
                  "folder that keeps each update's merge graph between runs (by name, seed, merge "
                  "version and step; delete it when the stages before match change)");

@@ -1,5 +1,6 @@
 #include "tools/bench/exploration_truth.h"
 
+#include <CLI/CLI.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "common/error.h"
@@ -10,6 +11,22 @@
 #include "tools/example_maps/random_floor_plan.h"
 
 namespace areagraph {
+
+void AddExplorationRunOptions(CLI::App& app, ExplorationRun& run, const std::string& name_help) {
+  app.add_option("--name", run.name, name_help)->required();
+  app.add_option("--map", run.map_path, "map image (the whole building)");
+  app.add_option("--gt", run.gt_path, "its ground truth (colour or line style, as ag-eval)");
+  app.add_option("--generated", run.generated_m,
+                 "instead of --map: a generated office floor this many metres square");
+  app.add_option("--seed", run.seed, "seed of the generated floor and of the noise")
+      ->capture_default_str();
+  app.add_option("--steps", run.steps, "growing maps")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  app.add_option("--noise-steps", run.noise_steps, "noise-only maps after the last step")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1000));
+}
 
 ExplorationTruth LoadExplorationTruth(const std::string& map_path, const std::string& gt_path,
                                       double generated_m, uint32_t seed) {

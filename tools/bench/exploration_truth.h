@@ -7,7 +7,28 @@
 #include "proto/artifacts.pb.h"
 #include "tools/example_maps/exploration.h"
 
+namespace CLI {
+class App;
+}
+
 namespace areagraph {
+
+// What an exploration benchmark replays: the map (real, or generated), its
+// name and how many growing and noise-only updates. ag-bench-live and
+// ag-bench-match take the same options for it.
+struct ExplorationRun {
+  std::string name;
+  std::string map_path;
+  std::string gt_path;
+  double generated_m = 0;
+  uint32_t seed = 1;
+  int steps = 20;
+  int noise_steps = 3;
+};
+
+// Declares --name (with `name_help`), --map, --gt, --generated, --seed,
+// --steps and --noise-steps on `app`, filling `run`.
+void AddExplorationRunOptions(CLI::App& app, ExplorationRun& run, const std::string& name_help);
 
 // The whole map an exploration runs on: its cells (floorplan cell classes)
 // and its ground-truth rooms (CV_32S, 0 none).
