@@ -13,6 +13,8 @@
 #include <list>
 #include <utility>
 
+#include "stages/geometry/ring_area.h"
+
 namespace areagraph {
 namespace {
 
@@ -107,16 +109,6 @@ std::list<PolygonWithHoles> PiecesOf(const PolygonSet& set) {
   return pieces;
 }
 
-double SignedArea(const proto::Ring& ring) {
-  double sum = 0;
-  for (int i = 0; i < ring.points_size(); ++i) {
-    const proto::Point2& p = ring.points(i);
-    const proto::Point2& q = ring.points((i + 1) % ring.points_size());
-    sum += p.x() * q.y() - q.x() * p.y();
-  }
-  return sum / 2;
-}
-
 }  // namespace
 
 bool SplitPolygonByGuide(const proto::Polygon& whole, const proto::Polygon& guide,
@@ -146,7 +138,7 @@ bool SplitPolygonByGuide(const proto::Polygon& whole, const proto::Polygon& guid
   cut_off.difference(kept);
   const std::list<PolygonWithHoles> inside_pieces = PiecesOf(cut_off);
   if (inside_pieces.size() != 1) return false;
-  const bool counterclockwise = SignedArea(whole.outer()) >= 0;
+  const bool counterclockwise = TwiceSignedArea(whole.outer()) >= 0;
   *inside = ToProto(inside_pieces.front(), counterclockwise);
   *rest = ToProto(kept, counterclockwise);
   return true;

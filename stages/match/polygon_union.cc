@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "stages/geometry/ring_area.h"
+
 namespace areagraph {
 namespace {
 
@@ -31,7 +33,7 @@ void AppendEdges(const proto::Polygon& polygon, std::vector<Edge>* edges) {
   for (const proto::Ring& hole : polygon.holes()) add_ring(hole);
 }
 
-// Twice the signed area (shoelace) of a closed ring.
+// Twice the signed area (shoelace) of a closed ring of traced points.
 double TwiceSignedArea(const std::vector<Point>& ring) {
   double sum = 0;
   for (size_t i = 0; i < ring.size(); ++i) {
@@ -40,12 +42,6 @@ double TwiceSignedArea(const std::vector<Point>& ring) {
     sum += p.first * q.second - q.first * p.second;
   }
   return sum;
-}
-
-double TwiceSignedArea(const proto::Ring& ring) {
-  std::vector<Point> points;
-  for (const proto::Point2& p : ring.points()) points.emplace_back(p.x(), p.y());
-  return TwiceSignedArea(points);
 }
 
 proto::Ring ToRing(const std::vector<Point>& points) {

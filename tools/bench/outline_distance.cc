@@ -6,6 +6,7 @@
 #include <limits>
 #include <vector>
 
+#include "stages/geometry/ring_area.h"
 #include "tools/export/area_polygons.h"
 
 namespace areagraph {

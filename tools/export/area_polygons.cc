@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "stages/common/map_frame.h"
+#include "stages/geometry/ring_area.h"
 
 namespace areagraph {
 
@@ -45,17 +46,6 @@ proto::Polygon AreaPolygonPixels(const proto::AreaGraph& graph, const proto::Are
   const MapTransform transform(graph.frame());
   return ConvertPolygon(area.polygon_m(),
                         [&](const Eigen::Vector2d& p) { return transform.WorldToPixel(p); });
-}
-
-double TwiceSignedArea(const proto::Ring& ring) {
-  double sum = 0;
-  const int n = ring.points_size();
-  for (int i = 0; i < n; ++i) {
-    const proto::Point2& a = ring.points(i);
-    const proto::Point2& b = ring.points((i + 1) % n);
-    sum += a.x() * b.y() - b.x() * a.y();
-  }
-  return sum;
 }
 
 std::vector<proto::Point2> OrientedRing(const proto::Ring& ring, bool counter_clockwise) {

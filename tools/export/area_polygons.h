@@ -14,10 +14,6 @@ proto::Polygon AreaPolygonMetres(const proto::AreaGraph& graph, const proto::Are
 // The area's polygon in pixels: polygon_px, or polygon_m converted back.
 proto::Polygon AreaPolygonPixels(const proto::AreaGraph& graph, const proto::Area& area);
 
-// Twice the signed area of a ring (shoelace): positive when counter-clockwise
-// in a y-up frame such as world metres.
-double TwiceSignedArea(const proto::Ring& ring);
-
 // The ring's points, reversed if needed so that the ring runs
 // counter-clockwise (in a y-up frame) when `counter_clockwise`, else clockwise.
 std::vector<proto::Point2> OrientedRing(const proto::Ring& ring, bool counter_clockwise);

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "stages/geometry/ring_area.h"
+
 namespace areagraph {
 namespace {
 
@@ -27,15 +29,7 @@ proto::Polygon Box(double x0, double y0, double x1, double y1) {
   return Ring({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}});
 }
 
-double SignedArea(const proto::Ring& ring) {
-  double sum = 0;
-  for (int i = 0; i < ring.points_size(); ++i) {
-    const proto::Point2& p = ring.points(i);
-    const proto::Point2& q = ring.points((i + 1) % ring.points_size());
-    sum += p.x() * q.y() - q.x() * p.y();
-  }
-  return sum / 2;
-}
+double SignedArea(const proto::Ring& ring) { return TwiceSignedArea(ring) / 2; }
 
 std::set<std::pair<double, double>> Vertices(const proto::Polygon& polygon) {
   std::set<std::pair<double, double>> vertices;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stages/geometry/ring_area.h"
 #include "stages/match/area_graph_matching.h"
 #include "stages/match/polygon_union.h"
 #include "tests/stages/match/synthetic_graphs.h"
@@ -23,16 +24,8 @@ using testing::PassageIds;
 using testing::RectGraph;
 using Ids = std::vector<int>;
 
-// Twice the shoelace area of a ring, and of a polygon (outer minus holes).
-double RingArea(const proto::Ring& ring) {
-  double sum = 0;
-  for (int i = 0; i < ring.points_size(); ++i) {
-    const proto::Point2& p = ring.points(i);
-    const proto::Point2& q = ring.points((i + 1) % ring.points_size());
-    sum += p.x() * q.y() - q.x() * p.y();
-  }
-  return std::abs(sum) / 2;
-}
+// The area of a ring, and of a polygon (outer minus holes).
+double RingArea(const proto::Ring& ring) { return std::abs(TwiceSignedArea(ring)) / 2; }
 double PolygonArea(const proto::Polygon& polygon) {
   double area = RingArea(polygon.outer());
   for (const proto::Ring& hole : polygon.holes()) area -= RingArea(hole);
