@@ -7,6 +7,7 @@
 #include "proto/artifacts.pb.h"
 #include "stages/clean/clean_stage.h"
 #include "stages/common/grid_cells.h"
+#include "stages/common/voronoi_arrays.h"
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/match/area_graph_matching.h"
 #include "stages/merge/area_graph_builder.h"
@@ -58,8 +59,8 @@ std::string SummarizeCleanedMap(const Message& artifact) {
 
 std::string SummarizeVoronoiDiagram(const Message& artifact) {
   const auto& diagram = static_cast<const proto::VoronoiDiagram&>(artifact);
-  return Printf("%d sites, %d vertices, %d edges", diagram.sites_size(), diagram.vertices_size(),
-                diagram.edges_size());
+  return Printf("%d sites, %d vertices, %d edges", VoronoiSiteCount(diagram),
+                VoronoiVertexCount(diagram), VoronoiEdgeCount(diagram));
 }
 
 std::string SummarizeTopologyGraph(const Message& artifact) {

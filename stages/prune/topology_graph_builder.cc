@@ -12,6 +12,7 @@
 #include "common/text.h"
 #include "stages/common/pipeline_options_check.h"
 #include "stages/common/stage_info.h"
+#include "stages/common/voronoi_arrays.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/site_alpha_shape.h"
@@ -52,21 +53,31 @@ struct PlainVoronoi {
   std::vector<double> clearances;
   std::vector<Edge> edges;
 
-  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram)
-      : sites(ToPointList(diagram.sites())) {
-    positions.reserve(diagram.vertices_size());
-    clearances.reserve(diagram.vertices_size());
-    for (const proto::VoronoiVertex& vertex : diagram.vertices()) {
-      positions.push_back(FromProtoPoint(vertex.position()));
-      clearances.push_back(vertex.clearance_px());
+  // `diagram` holds arrays (PackedVoronoi).
+  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram) {
+    sites.reserve(diagram.site_x_size());
+    for (int s = 0; s < diagram.site_x_size(); ++s) {
+      sites.emplace_back(diagram.site_x(s), diagram.site_y(s));
     }
-    edges.reserve(diagram.edges_size());
-    for (const proto::VoronoiEdge& edge : diagram.edges()) {
-      edges.push_back(
-          {edge.source(), edge.target(), edge.left_site(), edge.right_site(), edge.clearance_px()});
+    positions.reserve(diagram.vertex_x_size());
+    for (int v = 0; v < diagram.vertex_x_size(); ++v) {
+      positions.emplace_back(diagram.vertex_x(v), diagram.vertex_y(v));
+    }
+    clearances.assign(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end());
+    edges.reserve(diagram.edge_source_size());
+    for (int e = 0; e < diagram.edge_source_size(); ++e) {
+      edges.push_back({diagram.edge_source(e), diagram.edge_target(e), diagram.edge_left_site(e),
+                       diagram.edge_right_site(e), diagram.edge_clearance_px(e)});
     }
   }
 };
+
+// The numbers of a diagram of either format (a format-1 one is converted
+// first and the conversion dropped).
+PlainVoronoi PlainVoronoiOf(const proto::VoronoiDiagram& diagram) {
+  proto::VoronoiDiagram converted;
+  return PlainVoronoi(PackedVoronoi(diagram, &converted));
+}
 
 // The Voronoi edges that survive the boundary, free-cell and clearance
 // filters as one-segment chains, the enclosed region of each chain vertex,
@@ -260,12 +271,12 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                        " is larger than the whole map");
   }
 
-  if (diagram.sites_size() < 3) {
-    throw InputError("no Topology Graph: the map has " + std::to_string(diagram.sites_size()) +
+  const PlainVoronoi plain = PlainVoronoiOf(diagram);
+  if (diagram_done) diagram_done();  // `diagram` may be gone from here on
+  if (plain.sites.size() < 3) {
+    throw InputError("no Topology Graph: the map has " + std::to_string(plain.sites.size()) +
                      " obstacle cells next to free space, too few to enclose any");
   }
-  const PlainVoronoi plain(diagram);
-  if (diagram_done) diagram_done();  // `diagram` may be gone from here on
   // Held by pointer: FilteredVoronoiGraph frees it before the chains are
   // built (on large maps it is a good part of the stage's peak memory).
   auto boundary_shape =

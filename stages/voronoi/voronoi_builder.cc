@@ -40,11 +40,6 @@ DisjointSets MergeCocircularFaces(const SiteDelaunay& dt, int face_count) {
   return sets;
 }
 
-void SetPoint(const Eigen::Vector2d& p, proto::Point2* out) {
-  out->set_x(p.x());
-  out->set_y(p.y());
-}
-
 // Smallest distance from the part of the bisector between `from` and `to` to
 // the two sites: half their distance when their midpoint lies on that part,
 // else the nearer end's clearance. The part is from + t * direction for t in
@@ -59,36 +54,15 @@ double EdgeClearance(const Eigen::Vector2d& from, const Eigen::Vector2d& directi
   return std::min(from_clearance, to_clearance);
 }
 
-// One Voronoi edge before it becomes a message.
-struct PlainEdge {
-  int source;
-  int target;
-  int left_site;
-  int right_site;
-  double clearance_px;
-  // Index into PlainDiagram::ray_directions, or -1 for a segment.
-  int ray;
-};
-
-// The diagram as plain arrays: the triangulation is gone before the messages
-// are made, so that on a big map (a million sites) the two never take memory
-// at the same time.
-struct PlainDiagram {
-  bool has_faces = false;
-  std::vector<Eigen::Vector2d> positions;
-  std::vector<double> clearances;
-  std::vector<PlainEdge> edges;
-  std::vector<Eigen::Vector2d> ray_directions;
-};
-
-// The dual of the sites' Delaunay triangulation (see BuildVoronoiDiagram).
-PlainDiagram DualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
-                                 const VoronoiBuildOptions& options) {
-  PlainDiagram plain;
+// Fills the diagram's vertex and edge arrays with the dual of the sites'
+// Delaunay triangulation (see BuildVoronoiDiagram). The arrays take about
+// the memory of the plain structs the messages of format 1 were made from,
+// so the triangulation and the diagram are never more than that together.
+void AddDualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
+                            const VoronoiBuildOptions& options, proto::VoronoiDiagram* diagram) {
   const auto indexed = cgal::IndexedPoints(sites);
   SiteDelaunay dt(indexed.begin(), indexed.end());
-  if (dt.dimension() < 2) return plain;
-  plain.has_faces = true;
+  if (dt.dimension() < 2) return;
 
   const int face_count = NumberFaces(dt);
   int vertex_count = 0;
@@ -96,22 +70,32 @@ PlainDiagram DualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
       MergeCocircularFaces(dt, face_count).DenseLabels(&vertex_count);
 
   // One Voronoi vertex per circle, placed at the first face's circumcentre.
-  std::vector<Eigen::Vector2d>& positions = plain.positions;
-  std::vector<double>& clearances = plain.clearances;
-  positions.resize(vertex_count);
-  clearances.assign(vertex_count, -1.0);
+  auto& xs = *diagram->mutable_vertex_x();
+  auto& ys = *diagram->mutable_vertex_y();
+  auto& clearances = *diagram->mutable_vertex_clearance_px();
+  xs.Resize(vertex_count, 0.0);
+  ys.Resize(vertex_count, 0.0);
+  clearances.Resize(vertex_count, -1.0);
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     const int vertex = vertex_of_face[f->info()];
     if (clearances[vertex] >= 0) continue;
     const auto centre = dt.circumcenter(f);
-    positions[vertex] = cgal::ToEigen(centre);
+    xs[vertex] = centre.x();
+    ys[vertex] = centre.y();
     clearances[vertex] = std::sqrt(CGAL::squared_distance(centre, f->vertex(0)->point()));
   }
+  auto position = [&](int vertex) { return Eigen::Vector2d(xs[vertex], ys[vertex]); };
 
   // Each Delaunay edge once, from its finite face with the lower number
   // towards the other face. (CGAL's edge iterator picks the side by comparing
   // face addresses, which would make the output depend on the heap's history.)
-  plain.edges.reserve(dt.number_of_vertices() + face_count);
+  // Sized once: on a large map, doubling would hold two copies for a moment.
+  const int most_edges = static_cast<int>(dt.number_of_vertices()) + face_count;
+  for (auto* field : {diagram->mutable_edge_source(), diagram->mutable_edge_target(),
+                      diagram->mutable_edge_left_site(), diagram->mutable_edge_right_site()}) {
+    field->Reserve(most_edges);
+  }
+  diagram->mutable_edge_clearance_px()->Reserve(most_edges);
   for (auto face = dt.finite_faces_begin(); face != dt.finite_faces_end(); ++face) {
     for (int i = 0; i < 3; ++i) {
       const Face other = face->neighbor(i);
@@ -130,60 +114,42 @@ PlainDiagram DualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
       const Eigen::Vector2d left_site = cgal::ToEigen(left->point());
       const Eigen::Vector2d right_site = cgal::ToEigen(right->point());
 
-      PlainEdge edge{source, target, left->info(), right->info(), 0, -1};
+      double clearance;
       if (is_ray) {
         // Perpendicular to the hull edge, pointing away from the face: the
         // face is on the CGAL-left of left_site -> right_site, so take its
         // right normal.
         const Eigen::Vector2d along = right_site - left_site;
         const Eigen::Vector2d direction = Eigen::Vector2d(along.y(), -along.x()).normalized();
-        edge.ray = static_cast<int>(plain.ray_directions.size());
-        plain.ray_directions.push_back(direction);
-        edge.clearance_px =
-            EdgeClearance(positions[source], direction, INFINITY, clearances[source],
-                          clearances[source], left_site, right_site);
+        diagram->add_ray_direction_x(direction.x());
+        diagram->add_ray_direction_y(direction.y());
+        clearance = EdgeClearance(position(source), direction, INFINITY, clearances[source],
+                                  clearances[source], left_site, right_site);
       } else {
-        edge.clearance_px =
-            EdgeClearance(positions[source], positions[target] - positions[source], 1.0,
-                          clearances[source], clearances[target], left_site, right_site);
+        clearance = EdgeClearance(position(source), position(target) - position(source), 1.0,
+                                  clearances[source], clearances[target], left_site, right_site);
       }
-      plain.edges.push_back(edge);
+      diagram->add_edge_source(source);
+      diagram->add_edge_target(target);
+      diagram->add_edge_left_site(left->info());
+      diagram->add_edge_right_site(right->info());
+      diagram->add_edge_clearance_px(clearance);
     }
   }
-  return plain;
 }
 
 }  // namespace
 
 proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
                                           const VoronoiBuildOptions& options) {
-  PlainDiagram plain = DualOfTriangulation(sites, options);
   proto::VoronoiDiagram diagram;
-  diagram.mutable_sites()->Reserve(int(sites.size()));
-  for (const Eigen::Vector2d& site : sites) SetPoint(site, diagram.add_sites());
-  if (!plain.has_faces) return diagram;
-
-  diagram.mutable_vertices()->Reserve(int(plain.positions.size()));
-  for (size_t v = 0; v < plain.positions.size(); ++v) {
-    proto::VoronoiVertex* vertex = diagram.add_vertices();
-    SetPoint(plain.positions[v], vertex->mutable_position());
-    vertex->set_clearance_px(plain.clearances[v]);
+  diagram.mutable_site_x()->Reserve(int(sites.size()));
+  diagram.mutable_site_y()->Reserve(int(sites.size()));
+  for (const Eigen::Vector2d& site : sites) {
+    diagram.add_site_x(site.x());
+    diagram.add_site_y(site.y());
   }
-  std::vector<Eigen::Vector2d>().swap(plain.positions);
-  std::vector<double>().swap(plain.clearances);
-
-  diagram.mutable_edges()->Reserve(int(plain.edges.size()));
-  for (const PlainEdge& plain_edge : plain.edges) {
-    proto::VoronoiEdge* edge = diagram.add_edges();
-    edge->set_source(plain_edge.source);
-    edge->set_target(plain_edge.target);
-    edge->set_left_site(plain_edge.left_site);
-    edge->set_right_site(plain_edge.right_site);
-    if (plain_edge.ray >= 0) {
-      SetPoint(plain.ray_directions[plain_edge.ray], edge->mutable_ray_direction());
-    }
-    edge->set_clearance_px(plain_edge.clearance_px);
-  }
+  AddDualOfTriangulation(sites, options, &diagram);
   return diagram;
 }
 

@@ -14,8 +14,9 @@ struct VoronoiBuildOptions {
 };
 
 // The Voronoi diagram of `sites` (pixel coordinates), as the dual of their
-// Delaunay triangulation. Fills sites, vertices and edges of the result; the
-// caller sets format_version and frame.
+// Delaunay triangulation. Fills the site, vertex and edge arrays of the result
+// (format 2, stages/common/voronoi_arrays.h); the caller sets format_version
+// and frame.
 //
 // - Vertices are circumcentres of finite Delaunay faces. Faces whose
 //   circumcircles coincide (co-circular sites, everywhere on a pixel grid)

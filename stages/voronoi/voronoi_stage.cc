@@ -4,6 +4,7 @@
 
 #include "common/error.h"
 #include "stages/common/stage_info.h"
+#include "stages/common/voronoi_arrays.h"
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/obstacle_sites.h"
 #include "stages/voronoi/voronoi_builder.h"
@@ -25,7 +26,7 @@ proto::VoronoiDiagram ComputeVoronoiStage(const proto::CleanedMap& map,
   VoronoiBuildOptions build_options;
   build_options.keep_rays = options.keep_rays();
   proto::VoronoiDiagram diagram = BuildVoronoiDiagram(sites, build_options);
-  if (diagram.vertices_size() == 0) {
+  if (VoronoiVertexCount(diagram) == 0) {
     throw InputError("the map has too few obstacle cells for a Voronoi diagram (" +
                      std::to_string(sites.size()) + ", all on one line)");
   }

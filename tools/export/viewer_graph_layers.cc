@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "stages/common/voronoi_arrays.h"
 #include "tools/export/clearance_scale.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
@@ -66,16 +67,22 @@ bool ClipToMap(const proto::MapFrame& frame, proto::Point2* a, proto::Point2* b)
 // Chains the edges of one band into polylines: walks start at vertices where
 // an odd number of the band's edges meet (the ends of chains), then at any
 // vertex with edges left, and follow unused edges as far as they go. Edges
-// are clipped to the map.
+// are clipped to the map. `voronoi` holds arrays (PackedVoronoi).
 void ChainEdges(const proto::VoronoiDiagram& voronoi, const std::vector<int>& edges,
                 SvgPathWriter& path) {
-  const int vertex_count = voronoi.vertices_size();
+  const int vertex_count = voronoi.vertex_x_size();
   std::vector<std::vector<int>> incident(vertex_count);
   for (const int e : edges) {
-    incident[voronoi.edges(e).source()].push_back(e);
-    incident[voronoi.edges(e).target()].push_back(e);
+    incident[voronoi.edge_source(e)].push_back(e);
+    incident[voronoi.edge_target(e)].push_back(e);
   }
-  std::vector<bool> used(voronoi.edges_size(), false);
+  auto position = [&](int vertex) {
+    proto::Point2 point;
+    point.set_x(voronoi.vertex_x(vertex));
+    point.set_y(voronoi.vertex_y(vertex));
+    return point;
+  };
+  std::vector<bool> used(voronoi.edge_source_size(), false);
   std::vector<size_t> next(vertex_count, 0);  // first maybe-unused incident edge
   auto take_edge_at = [&](int vertex) -> int {
     while (next[vertex] < incident[vertex].size()) {
@@ -88,10 +95,10 @@ void ChainEdges(const proto::VoronoiDiagram& voronoi, const std::vector<int>& ed
     int e;
     while ((e = take_edge_at(vertex)) >= 0) {
       used[e] = true;
-      proto::Point2 from = voronoi.vertices(vertex).position();
-      const proto::VoronoiEdge& edge = voronoi.edges(e);
-      vertex = edge.source() == vertex ? edge.target() : edge.source();
-      proto::Point2 to = voronoi.vertices(vertex).position();
+      proto::Point2 from = position(vertex);
+      const int source = voronoi.edge_source(e), target = voronoi.edge_target(e);
+      vertex = source == vertex ? target : source;
+      proto::Point2 to = position(vertex);
       if (!ClipToMap(voronoi.frame(), &from, &to)) continue;
       path.ContinueAt(from.x(), from.y());
       path.LineTo(to.x(), to.y());
@@ -128,16 +135,18 @@ void AddVertices(const google::protobuf::RepeatedPtrField<proto::GraphVertex>& v
 
 }  // namespace
 
-viewer::VoronoiLayer VoronoiLayerOf(const proto::VoronoiDiagram& voronoi) {
+viewer::VoronoiLayer VoronoiLayerOf(const proto::VoronoiDiagram& diagram) {
+  proto::VoronoiDiagram converted;
+  const proto::VoronoiDiagram& voronoi = PackedVoronoi(diagram, &converted);
   const double resolution = voronoi.frame().resolution_m();
+  const int vertex_count = voronoi.vertex_x_size();
   std::vector<std::vector<int>> band_edges(ClearanceBands().size());
-  for (int e = 0; e < voronoi.edges_size(); ++e) {
-    const proto::VoronoiEdge& edge = voronoi.edges(e);
-    if (edge.target() < 0 || edge.source() < 0 || edge.source() >= voronoi.vertices_size() ||
-        edge.target() >= voronoi.vertices_size()) {
+  for (int e = 0; e < voronoi.edge_source_size(); ++e) {
+    const int source = voronoi.edge_source(e), target = voronoi.edge_target(e);
+    if (target < 0 || source < 0 || source >= vertex_count || target >= vertex_count) {
       continue;  // rays, and indices a damaged artifact might hold
     }
-    band_edges[ClearanceBandOf(edge.clearance_px(), resolution)].push_back(e);
+    band_edges[ClearanceBandOf(voronoi.edge_clearance_px(e), resolution)].push_back(e);
   }
   BandPaths paths;
   for (size_t band = 0; band < band_edges.size(); ++band) {
@@ -146,9 +155,9 @@ viewer::VoronoiLayer VoronoiLayerOf(const proto::VoronoiDiagram& voronoi) {
   viewer::VoronoiLayer layer;
   paths.AddTo(layer.mutable_buckets(), 1);
   if (!paths[0].empty()) *layer.mutable_hugging() = paths.Bucket(0);
-  layer.set_vertices(voronoi.vertices_size());
-  layer.set_edges(voronoi.edges_size());
-  layer.set_sites(voronoi.sites_size());
+  layer.set_vertices(vertex_count);
+  layer.set_edges(voronoi.edge_source_size());
+  layer.set_sites(voronoi.site_x_size());
   return layer;
 }
 

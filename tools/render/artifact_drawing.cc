@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stages/common/map_frame.h"
+#include "stages/common/voronoi_arrays.h"
 
 namespace areagraph {
 namespace {
@@ -77,32 +78,41 @@ void DrawCleanedMap(const proto::CleanedMap& cleaned, Canvas& canvas) {
   }
 }
 
-void DrawVoronoiDiagram(const proto::VoronoiDiagram& voronoi, Canvas& canvas) {
+void DrawVoronoiDiagram(const proto::VoronoiDiagram& diagram, Canvas& canvas) {
+  proto::VoronoiDiagram converted;
+  const proto::VoronoiDiagram& voronoi = PackedVoronoi(diagram, &converted);
+  const auto& clearances = voronoi.edge_clearance_px();
   // Colour by clearance: thin red near obstacles, thick blue in open space.
   double max_clearance = 1;
-  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
-    max_clearance = std::max(max_clearance, edge.clearance_px());
-  }
+  for (const double clearance : clearances) max_clearance = std::max(max_clearance, clearance);
+  // Segments between vertices that exist (rays, and indices a damaged
+  // artifact might hold, are left out).
+  const int vertex_count = voronoi.vertex_x_size();
+  auto drawn = [&](int e) {
+    const int source = voronoi.edge_source(e), target = voronoi.edge_target(e);
+    return source >= 0 && target >= 0 && source < vertex_count && target < vertex_count;
+  };
+  auto at = [&](int vertex) {
+    return cv::Point2d(voronoi.vertex_x(vertex), voronoi.vertex_y(vertex));
+  };
   // Edges that hug the obstacles are the bulk of the diagram but not its
   // skeleton: drawn first, blended half into the map so that walls show
   // through them, and the medial axis stands out on top. At 1 px per cell
   // the skeleton is 1 px wide too (a 2-px line is a filled polygon with
   // round caps, three times the work).
-  std::vector<std::pair<const proto::Point2*, const proto::Point2*>> faint;
-  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
-    if (edge.target() < 0 || edge.clearance_px() >= 2.0) continue;
-    faint.emplace_back(&voronoi.vertices(edge.source()).position(),
-                       &voronoi.vertices(edge.target()).position());
+  std::vector<std::pair<cv::Point2d, cv::Point2d>> faint;
+  for (int e = 0; e < voronoi.edge_source_size(); ++e) {
+    if (!drawn(e) || clearances[e] >= 2.0) continue;
+    faint.emplace_back(at(voronoi.edge_source(e)), at(voronoi.edge_target(e)));
   }
   canvas.FaintLines(faint, cv::Scalar(195, 175, 245), 0.5);
-  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
-    if (edge.target() < 0 || edge.clearance_px() < 2.0) continue;
+  for (int e = 0; e < voronoi.edge_source_size(); ++e) {
+    if (!drawn(e) || clearances[e] < 2.0) continue;
     // 32 steps of clearance: the picture keeps few enough colours for a
     // palette PNG, and 32 shades are more than the eye tells apart.
-    const double t = std::round(std::min(1.0, edge.clearance_px() / max_clearance) * 31) / 31;
-    canvas.Line(voronoi.vertices(edge.source()).position(),
-                voronoi.vertices(edge.target()).position(), cv::Scalar(255 * t, 60, 255 * (1 - t)),
-                std::min(2, canvas.scale()));
+    const double t = std::round(std::min(1.0, clearances[e] / max_clearance) * 31) / 31;
+    canvas.Line(at(voronoi.edge_source(e)), at(voronoi.edge_target(e)),
+                cv::Scalar(255 * t, 60, 255 * (1 - t)), std::min(2, canvas.scale()));
   }
 }
 

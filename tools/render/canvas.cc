@@ -62,12 +62,21 @@ Canvas::Canvas(const std::string& cells, int width, int height, int scale) : sca
 }
 
 cv::Point Canvas::ToCanvas(const proto::Point2& point) const {
+  return ToCanvas(cv::Point2d(point.x(), point.y()));
+}
+
+cv::Point Canvas::ToCanvas(const cv::Point2d& point) const {
   // Sub-pixel precision through cv's fixed-point shift (4 bits).
-  return cv::Point(static_cast<int>(std::lround(point.x() * scale_ * 16)),
-                   static_cast<int>(std::lround(point.y() * scale_ * 16)));
+  return cv::Point(static_cast<int>(std::lround(point.x * scale_ * 16)),
+                   static_cast<int>(std::lround(point.y * scale_ * 16)));
 }
 
 void Canvas::Line(const proto::Point2& a, const proto::Point2& b, const cv::Scalar& colour,
+                  int thickness) {
+  Line(cv::Point2d(a.x(), a.y()), cv::Point2d(b.x(), b.y()), colour, thickness);
+}
+
+void Canvas::Line(const cv::Point2d& a, const cv::Point2d& b, const cv::Scalar& colour,
                   int thickness) {
   cv::line(image_, ToCanvas(a), ToCanvas(b), colour, thickness, kLineType, kShift);
 }
@@ -101,13 +110,12 @@ void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, doubl
   tinted.copyTo(area, mask);
 }
 
-void Canvas::FaintLines(
-    const std::vector<std::pair<const proto::Point2*, const proto::Point2*>>& lines,
-    const cv::Scalar& colour, double alpha) {
+void Canvas::FaintLines(const std::vector<std::pair<cv::Point2d, cv::Point2d>>& lines,
+                        const cv::Scalar& colour, double alpha) {
   if (lines.empty()) return;
   cv::Mat mask = cv::Mat::zeros(image_.size(), CV_8UC1);
   for (const auto& [a, b] : lines) {
-    cv::line(mask, ToCanvas(*a), ToCanvas(*b), cv::Scalar(255), 1, kLineType, kShift);
+    cv::line(mask, ToCanvas(a), ToCanvas(b), cv::Scalar(255), 1, kLineType, kShift);
   }
   cv::Mat tinted;
   cv::addWeighted(image_, 1.0 - alpha, cv::Mat(image_.size(), image_.type(), colour), alpha, 0,

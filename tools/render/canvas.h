@@ -19,15 +19,18 @@ class Canvas {
   cv::Mat& image() { return image_; }
 
   cv::Point ToCanvas(const proto::Point2& point) const;
+  // The same for a point held as two numbers (a Voronoi vertex).
+  cv::Point ToCanvas(const cv::Point2d& point) const;
   void Line(const proto::Point2& a, const proto::Point2& b, const cv::Scalar& colour,
             int thickness);
+  void Line(const cv::Point2d& a, const cv::Point2d& b, const cv::Scalar& colour, int thickness);
   void Dot(const proto::Point2& at, const cv::Scalar& colour, int radius);
   void Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness);
   // Fills a polygon (outer minus holes) blending `colour` with weight `alpha`.
   void Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha);
   // Blends `colour` with weight `alpha` into the pixels of 1-px lines (pairs
   // of points), each pixel once: faint lines through which the map shows.
-  void FaintLines(const std::vector<std::pair<const proto::Point2*, const proto::Point2*>>& lines,
+  void FaintLines(const std::vector<std::pair<cv::Point2d, cv::Point2d>>& lines,
                   const cv::Scalar& colour, double alpha);
   void Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour);
   // Paints whole map cells (flat indices), e.g. removed obstacles.

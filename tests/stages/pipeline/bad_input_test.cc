@@ -70,7 +70,13 @@ TEST(AreaStagesBadInputTest, CorruptArtifactsAreInputErrors) {
 
   const AreaStages stages = RunAreaStages(map);
   proto::VoronoiDiagram diagram = stages.diagram;
-  diagram.mutable_edges(0)->set_source(diagram.vertices_size() + 5);
+  diagram.set_edge_source(0, diagram.vertex_x_size() + 5);
+  EXPECT_NE(PruneError(diagram, map).find("corrupt"), std::string::npos);
+  diagram = stages.diagram;
+  diagram.mutable_edge_clearance_px()->RemoveLast();
+  EXPECT_NE(PruneError(diagram, map).find("corrupt"), std::string::npos);
+  diagram = stages.diagram;
+  diagram.mutable_ray_direction_y()->RemoveLast();
   EXPECT_NE(PruneError(diagram, map).find("corrupt"), std::string::npos);
 
   proto::TopologyGraph topology = stages.topology;

@@ -9,6 +9,7 @@
 #include "stages/import/import_stage.h"
 #include "stages/voronoi/voronoi_stage.h"
 #include "tests/support/test_support.h"
+#include "tests/support/voronoi_messages.h"
 
 namespace areagraph {
 namespace {
@@ -47,7 +48,8 @@ TEST_P(SharedMaps, CleanAndVoronoiGiveSaneResults) {
   }
   EXPECT_LT(double(removed.size()), 0.2 * obstacles) << "removed " << removed.size();
 
-  const proto::VoronoiDiagram d = ComputeVoronoiStage(cleaned, proto::VoronoiOptions());
+  const proto::VoronoiDiagram d =
+      VoronoiAsMessages(ComputeVoronoiStage(cleaned, proto::VoronoiOptions()));
   EXPECT_GT(d.sites_size(), 1000);
   EXPECT_GT(d.vertices_size(), d.sites_size() / 4);
   EXPECT_GT(d.edges_size(), d.vertices_size());

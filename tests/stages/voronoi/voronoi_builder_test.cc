@@ -8,6 +8,7 @@
 #include <set>
 
 #include "stages/geometry/disjoint_sets.h"
+#include "tests/support/voronoi_messages.h"
 
 namespace areagraph {
 namespace {
@@ -27,7 +28,7 @@ Eigen::Vector2d Direction(const proto::VoronoiDiagram& d, const proto::VoronoiEd
 
 TEST(VoronoiBuilder, FourSitesInASquareMeetAtTheCentre) {
   const std::vector<Eigen::Vector2d> sites = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
-  const proto::VoronoiDiagram d = BuildVoronoiDiagram(sites);
+  const proto::VoronoiDiagram d = VoronoiAsMessages(BuildVoronoiDiagram(sites));
   ASSERT_EQ(d.sites_size(), 4);
   ASSERT_EQ(d.vertices_size(), 1);  // two co-circular triangles, one vertex
   EXPECT_NEAR(d.vertices(0).position().x(), 5, 1e-9);
@@ -60,7 +61,7 @@ TEST(VoronoiBuilder, CorridorCentreLineHasTheClearanceAndCorrectSides) {
     sites.emplace_back(x, 0);
     sites.emplace_back(x, 20);
   }
-  const proto::VoronoiDiagram d = BuildVoronoiDiagram(sites);
+  const proto::VoronoiDiagram d = VoronoiAsMessages(BuildVoronoiDiagram(sites));
   int centre_edges = 0;
   double centre_length = 0;
   for (const proto::VoronoiEdge& e : d.edges()) {
@@ -105,7 +106,7 @@ TEST(VoronoiBuilder, RandomGridSitesSatisfyTheDefinition) {
   while (cells.size() < 400) cells.insert({coordinate(random), coordinate(random)});
   std::vector<Eigen::Vector2d> sites;
   for (const auto& [col, row] : cells) sites.emplace_back(col + 0.5, row + 0.5);
-  const proto::VoronoiDiagram d = BuildVoronoiDiagram(sites);
+  const proto::VoronoiDiagram d = VoronoiAsMessages(BuildVoronoiDiagram(sites));
   ASSERT_GT(d.vertices_size(), 100);
 
   auto nearest = [&](const Eigen::Vector2d& p) {
@@ -148,7 +149,8 @@ TEST(VoronoiBuilder, RandomGridSitesSatisfyTheDefinition) {
 }
 
 TEST(VoronoiBuilder, CollinearSitesGiveNoVertices) {
-  const proto::VoronoiDiagram d = BuildVoronoiDiagram({{0, 0}, {1, 1}, {2, 2}, {5, 5}});
+  const proto::VoronoiDiagram d =
+      VoronoiAsMessages(BuildVoronoiDiagram({{0, 0}, {1, 1}, {2, 2}, {5, 5}}));
   EXPECT_EQ(d.sites_size(), 4);
   EXPECT_EQ(d.vertices_size(), 0);
   EXPECT_EQ(d.edges_size(), 0);
@@ -158,7 +160,7 @@ TEST(VoronoiBuilder, RaysCanBeLeftOut) {
   VoronoiBuildOptions options;
   options.keep_rays = false;
   const proto::VoronoiDiagram d =
-      BuildVoronoiDiagram({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 3}}, options);
+      VoronoiAsMessages(BuildVoronoiDiagram({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 3}}, options));
   EXPECT_GT(d.edges_size(), 0);
   for (const proto::VoronoiEdge& e : d.edges()) EXPECT_GE(e.target(), 0);
 }

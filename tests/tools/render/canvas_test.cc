@@ -74,6 +74,25 @@ TEST(Canvas, VoronoiEdgesAreDrawnInTheirExactColours) {
     colours.insert((*it)[0] | (*it)[1] << 8 | (*it)[2] << 16);
   }
   EXPECT_EQ(colours.size(), 3u);
+
+  // The same diagram as format 2 (packed arrays, voronoi 3) draws the same
+  // picture; the test above drew format 1, as older stores hold it.
+  proto::VoronoiDiagram packed;
+  for (const proto::VoronoiVertex& vertex : voronoi.vertices()) {
+    packed.add_vertex_x(vertex.position().x());
+    packed.add_vertex_y(vertex.position().y());
+    packed.add_vertex_clearance_px(1);
+  }
+  for (const proto::VoronoiEdge& edge : voronoi.edges()) {
+    packed.add_edge_source(edge.source());
+    packed.add_edge_target(edge.target());
+    packed.add_edge_left_site(0);
+    packed.add_edge_right_site(0);
+    packed.add_edge_clearance_px(edge.clearance_px());
+  }
+  Canvas packed_canvas(std::string(40 * 20, static_cast<char>(proto::CELL_FREE)), 40, 20, 2);
+  DrawVoronoiDiagram(packed, packed_canvas);
+  EXPECT_EQ(cv::norm(packed_canvas.image(), canvas.image(), cv::NORM_INF), 0);
 }
 
 TEST(Canvas, DefaultScaleKeepsThePictureNearTheMapsOwnSize) {
