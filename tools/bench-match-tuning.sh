@@ -54,8 +54,8 @@ fi
 
 echo "### ag-match variants on simulated explorations, $(date -u +%Y-%m-%d)"
 echo
-echo "| map | match options | GT-tracked areas kept, exploration | noise-only | MCC last | MCC mean | areas last |"
-echo "|---|---|---|---|---|---|---|"
+echo "| map | match options | GT-tracked areas kept, exploration | noise-only | exploration, same-room test | noise-only, same-room test | MCC last | MCC mean | areas last |"
+echo "|---|---|---|---|---|---|---|---|---|"
 for entry in "${maps[@]}"; do
   IFS='|' read -r name map gt <<<"$entry"
   say "$name"

@@ -117,6 +117,14 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
       options.fold_fragments_below_share() >= 0 && options.fold_fragments_below_share() <= 1,
       "match.fold_fragments_below_share = " + FormatNumber(options.fold_fragments_below_share()) +
           " must be between 0 and 1 (a share of the area it would join)");
+  Require(options.split_joins_inside_share() > 0 && options.split_joins_inside_share() <= 1,
+          "match.split_joins_inside_share = " + FormatNumber(options.split_joins_inside_share()) +
+              " must be above 0 and at most 1 (a share of the previous area's cells)");
+  RequireNotNegative(options.split_joins_wall_margin_m(), "match.split_joins_wall_margin_m",
+                     "metres");
+  Require(options.split_joins_rounds() >= 0 && options.split_joins_rounds() <= 100,
+          "match.split_joins_rounds = " + std::to_string(options.split_joins_rounds()) +
+              " must be between 0 and 100");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

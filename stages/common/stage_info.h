@@ -41,7 +41,8 @@ inline constexpr StageInfo kCutStage{"cut", 6};
 inline constexpr StageInfo kMergeStage{"merge", 8};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
-inline constexpr StageInfo kMatchStage{"match", 3};
+// match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).
+inline constexpr StageInfo kMatchStage{"match", 4};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {

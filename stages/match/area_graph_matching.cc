@@ -56,14 +56,16 @@ std::vector<int> MatchAreas(const proto::AreaGraph& current, const proto::AreaGr
 // that noise split off a previous area back into it (FindNoiseFragments;
 // again while folds make more of them, as when a piece only borders another
 // piece), then cutting apart the joins of two previous areas
-// (FindUndoableJoins, once; the pieces are matched and folded again):
+// (FindUndoableJoins, up to options.split_joins_rounds() times, since each
+// round cuts one previous area out of each joined area; the pieces are
+// matched and folded again):
 // `current` becomes the graph that is published, and the result is its
 // areas' previous ids (or -1).
 std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
                                             const proto::AreaGraph& previous,
                                             const proto::MatchOptions& options, bool fold) {
   const AreaCells before = RasterizeAreas(previous, current.frame());
-  bool joins_undone = !fold || options.split_joins_below_m2() <= 0;
+  int rounds_left = !fold || options.split_joins_below_m2() <= 0 ? 0 : options.split_joins_rounds();
   while (true) {
     const AreaCells after = RasterizeAreas(current, current.frame());
     const std::vector<AreaOverlap> overlaps = CountOverlaps(before, after);
@@ -78,12 +80,15 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
       if (!folds.empty()) current = FoldAreas(current, folds, &folded);
       if (folded > 0) continue;
     }
-    if (joins_undone) return ids;
-    joins_undone = true;
+    if (rounds_left <= 0) return ids;
+    --rounds_left;
     const std::vector<AreaUnjoin> unjoins =
-        FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2());
+        FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2(),
+                          options.split_joins_inside_share());
     int split = 0;
-    if (!unjoins.empty()) current = SplitJoinedAreas(current, previous, unjoins, &split);
+    if (!unjoins.empty()) {
+      current = SplitJoinedAreas(current, previous, unjoins, options, &split);
+    }
     if (split == 0) return ids;
   }
 }

@@ -10,11 +10,12 @@
 #include "stages/common/map_frame.h"
 #include "stages/geometry/polygon_split.h"
 #include "stages/match/graph_assembly.h"
+#include "stages/match/passage_cutting.h"
 
 namespace areagraph {
 namespace {
 
-using Point = std::pair<double, double>;
+using Point = BorderPoint;
 
 Point ToPoint(const proto::Point2& p) { return {p.x(), p.y()}; }
 
@@ -51,18 +52,6 @@ double Distance2(const Point& a, const Point& b) {
   return dx * dx + dy * dy;
 }
 
-// Whether p lies on the segment u-v, strictly between its ends (within a
-// nanometre of the line).
-bool OnSegment(const Point& p, const Point& u, const Point& v) {
-  const double dx = v.first - u.first, dy = v.second - u.second;
-  const double length2 = dx * dx + dy * dy;
-  if (length2 == 0 || p == u || p == v) return false;
-  const double cross = dx * (p.second - u.second) - dy * (p.first - u.first);
-  if (std::abs(cross) > 1e-9 * std::sqrt(length2)) return false;
-  const double along = dx * (p.first - u.first) + dy * (p.second - u.second);
-  return along > 0 && along < length2;
-}
-
 // Distance from p to the nearest edge of the rings.
 double DistanceToRings(const Point& p, const std::vector<std::vector<Point>>& rings) {
   double best = INFINITY;
@@ -79,6 +68,29 @@ double DistanceToRings(const Point& p, const std::vector<std::vector<Point>>& ri
     }
   }
   return std::sqrt(best);
+}
+
+// The length of a cut (`chain`) through an area with rings `joined`, leaving
+// out the stretches that run within `margin_m` of those rings all along:
+// where noise moved a wall by a cell, the previous border runs beside the
+// new one and the cut follows it, which is no longer opening.
+double CutLengthOffWalls(const std::vector<Point>& chain,
+                         const std::vector<std::vector<Point>>& joined, double margin_m) {
+  double length = 0;
+  for (size_t i = 0; i + 1 < chain.size(); ++i) {
+    const Point& a = chain[i];
+    const Point& b = chain[i + 1];
+    const double segment = std::sqrt(Distance2(a, b));
+    const int samples = 1 + static_cast<int>(std::ceil(segment / 0.025));
+    bool along_wall = margin_m > 0;
+    for (int k = 0; k <= samples && along_wall; ++k) {
+      const double t = static_cast<double>(k) / samples;
+      const Point p{a.first + t * (b.first - a.first), a.second + t * (b.second - a.second)};
+      along_wall = DistanceToRings(p, joined) <= margin_m;
+    }
+    if (!along_wall) length += segment;
+  }
+  return length;
 }
 
 // Signed area and centroid of polygon rings (holes run against the outer ring).
@@ -199,9 +211,11 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
 
 // One join cut apart (see SplitJoinedAreas), on `areas` and `passages`.
 // `kept` is the previous area whose id the joined area holds.
+// `cut_passages`: a cut may cross a passage's border; `wall_margin_m`: see
+// CutLengthOffWalls (MatchOptions).
 bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed, int kept,
-              const MapTransform& transform, std::vector<proto::Area>& areas,
-              std::vector<proto::Passage>& passages) {
+              bool cut_passages, double wall_margin_m, const MapTransform& transform,
+              std::vector<proto::Area>& areas, std::vector<proto::Passage>& passages) {
   const proto::Area& joined = areas[joined_index];
   proto::Polygon inside, rest;
   if (!SplitPolygonByGuide(joined.polygon_m(), previous.areas(swallowed).polygon_m(), &inside,
@@ -221,16 +235,19 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   for (const auto& [vertex, px] : px_of) {
     if (inside_vertices.count(vertex) == 0 && rest_vertices.count(vertex) == 0) return false;
   }
-  // Border edges of the joined area's passages: the cut must not cross them.
-  std::set<std::pair<Point, Point>> passage_edges;
-  for (const proto::Passage& passage : passages) {
+  // Border edges of the joined area's passages (-> passage index): a cut
+  // that crosses one cuts the passage too (CutPassage), or is refused.
+  std::map<std::pair<Point, Point>, int> passage_edges;
+  for (size_t j = 0; j < passages.size(); ++j) {
+    const proto::Passage& passage = passages[j];
     if (passage.area_a() != joined_index && passage.area_b() != joined_index) continue;
     for (int i = 0; i + 1 < passage.border_m_size(); ++i) {
       const Point a = ToPoint(passage.border_m(i)), b = ToPoint(passage.border_m(i + 1));
-      passage_edges.insert({a, b});
-      passage_edges.insert({b, a});
+      passage_edges[{a, b}] = static_cast<int>(j);
+      passage_edges[{b, a}] = static_cast<int>(j);
     }
   }
+  std::map<int, std::vector<Point>> crossed;  // passage index -> cut points on its border
   std::vector<BorderInsertion> insertions;
   std::set<Point> cut_vertices = inside_vertices;
   cut_vertices.insert(rest_vertices.begin(), rest_vertices.end());
@@ -241,7 +258,11 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
         const Point& u = ring[i];
         const Point& v = ring[(i + 1) % ring.size()];
         if (!OnSegment(p, u, v)) continue;
-        if (passage_edges.count({u, v}) > 0) return false;
+        const auto passage = passage_edges.find({u, v});
+        if (passage != passage_edges.end()) {
+          if (!cut_passages) return false;
+          crossed[passage->second].push_back(p);
+        }
         insertions.push_back({u, v, p});
       }
     }
@@ -287,7 +308,17 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   const int piece_index = static_cast<int>(updated.size());
   updated.push_back(std::move(piece));
 
-  std::vector<proto::Passage> moved = passages;
+  std::vector<proto::Passage> moved;
+  for (size_t j = 0; j < passages.size(); ++j) {
+    const auto cut = crossed.find(static_cast<int>(j));
+    if (cut == crossed.end()) {
+      moved.push_back(passages[j]);
+      continue;
+    }
+    std::vector<proto::Passage> pieces = CutPassage(passages[j], cut->second);
+    if (pieces.empty()) return false;
+    moved.insert(moved.end(), pieces.begin(), pieces.end());
+  }
   for (proto::Passage& passage : moved) {
     if (passage.area_a() != joined_index && passage.area_b() != joined_index) continue;
     bool in_piece = passage.border_m_size() > 0;
@@ -345,10 +376,9 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     opening_m = std::max(old.width_m(), border_m);
     break;
   }
-  double cut_m = 0;
-  for (size_t i = 0; i + 1 < chain.size(); ++i)
-    cut_m += std::sqrt(Distance2(chain[i], chain[i + 1]));
-  if (cut_m > kMaxCutPerOpening * opening_m) return false;
+  if (CutLengthOffWalls(chain, joined_m, wall_margin_m) > kMaxCutPerOpening * opening_m) {
+    return false;
+  }
   moved.push_back(std::move(between));
   areas = std::move(updated);
   passages = std::move(moved);
@@ -359,7 +389,8 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
 
 std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
                                           const std::vector<int>& ids, const AreaCells& before,
-                                          const std::vector<AreaOverlap>& overlaps, double max_m2) {
+                                          const std::vector<AreaOverlap>& overlaps, double max_m2,
+                                          double inside_share) {
   const std::set<int> taken(ids.begin(), ids.end());
   std::vector<int> best(previous.areas_size(), -1);
   std::vector<int64_t> best_cells(previous.areas_size(), 0);
@@ -381,7 +412,7 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
     const int k = best[b];
     if (k < 0 || taken.count(previous.areas(b).stable_id()) > 0) continue;
     if (previous.areas(b).area_m2() >= max_m2) continue;
-    if (best_cells[b] < kJoinedInsideShare * before.cells[b] || ids[k] < 0) continue;
+    if (best_cells[b] < inside_share * before.cells[b] || ids[k] < 0) continue;
     const auto kept = previous_of_id.find(ids[k]);
     if (kept == previous_of_id.end() || linked.count({kept->second, b}) == 0) continue;
     auto& entry = chosen[k];
@@ -395,13 +426,16 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
 }
 
 proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::AreaGraph& previous,
-                                  const std::vector<AreaUnjoin>& unjoins, int* done) {
+                                  const std::vector<AreaUnjoin>& unjoins,
+                                  const proto::MatchOptions& options, int* done) {
   std::vector<proto::Area> areas(current.areas().begin(), current.areas().end());
   std::vector<proto::Passage> passages(current.passages().begin(), current.passages().end());
   const MapTransform transform(current.frame());
   int count = 0;
   for (const AreaUnjoin& unjoin : unjoins) {
-    if (SplitOne(previous, unjoin.area, unjoin.previous, unjoin.kept, transform, areas, passages)) {
+    if (SplitOne(previous, unjoin.area, unjoin.previous, unjoin.kept,
+                 options.split_joins_across_passages(), options.split_joins_wall_margin_m(),
+                 transform, areas, passages)) {
       ++count;
     }
   }

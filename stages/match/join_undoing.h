@@ -3,14 +3,10 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "proto/pipeline_options.pb.h"
 #include "stages/match/area_cells.h"
 
 namespace areagraph {
-
-// A previous area counts as swallowed by a current area when at least this
-// share of its cells lie in it. Chosen on the simulated explorations of the
-// tuning maps (tools/bench-match-tuning.sh; see docs/performance.md).
-inline constexpr double kJoinedInsideShare = 0.9;
 
 // A join is cut apart only where the cut is at most this many times as long
 // as the opening (passage border or width) the two areas shared before: a
@@ -31,15 +27,16 @@ struct AreaUnjoin {
 
 // The joins of `current` that ag-merge made of two areas of `previous` that
 // were apart: a previous area smaller than `max_m2` whose id no area of
-// `current` took (`ids`, see MatchAreaGraph), with kJoinedInsideShare of its
-// cells (`before`: previous's cells on current's grid; `overlaps` from
-// CountOverlaps(before, current's cells)) inside one current area that took
+// `current` took (`ids`, see MatchAreaGraph), with `inside_share`
+// (MatchOptions.split_joins_inside_share) of its cells (`before`: previous's cells on current's
+// grid; `overlaps` from CountOverlaps(before, current's cells)) inside one current area that took
 // the id of a previous area with a passage to it. At most one per current
 // area (the largest). Scan noise moves merge's room joining back and forth
 // from one update to the next, and each join cost the smaller area's id.
 std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
                                           const std::vector<int>& ids, const AreaCells& before,
-                                          const std::vector<AreaOverlap>& overlaps, double max_m2);
+                                          const std::vector<AreaOverlap>& overlaps, double max_m2,
+                                          double inside_share);
 
 // `current` with each join cut apart again along the previous area's border
 // (SplitPolygonByGuide): the piece inside the previous area becomes an area
@@ -49,12 +46,18 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
 // neighbours still share their border vertex for vertex; the joined area's
 // passages go to the piece whose ring holds their border, and a new passage
 // (where the previous version's passage between the two was, as wide) joins
-// the two pieces along their shared border. A join whose cut would cross a
-// passage's border, does not give two simple pieces, or is longer than
-// kMaxCutPerOpening times the opening the previous passage had, stays as it
-// is.
+// the two pieces along their shared border. Where the cut crosses the border
+// of a passage to a third area, that passage is cut too (CutPassage): the
+// longest stretch keeps it, each other stretch of at least kMinCutPassageM
+// is a new passage from its piece; with options.split_joins_across_passages()
+// false such a join stays. A join whose cut does not give two simple pieces,
+// or is longer than kMaxCutPerOpening times the opening the previous passage
+// had, stays as it is; the stretches of the cut that run within
+// options.split_joins_wall_margin_m() of the joined area's outline (along a
+// wall that noise moved) do not count as its length.
 // `done` (optional) counts the joins undone.
 proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::AreaGraph& previous,
-                                  const std::vector<AreaUnjoin>& unjoins, int* done = nullptr);
+                                  const std::vector<AreaUnjoin>& unjoins,
+                                  const proto::MatchOptions& options, int* done = nullptr);
 
 }  // namespace areagraph

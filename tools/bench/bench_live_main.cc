@@ -214,10 +214,7 @@ int RunBench(const BenchFlags& flags) {
     if (step > 1) {
       const IdStability stability = CompareViews(previous, view);
       IdStability& total = step <= flags.run.steps ? explored_total : noise_total;
-      total.tracked += stability.tracked;
-      total.kept += stability.kept;
-      total.ids_before += stability.ids_before;
-      total.ids_kept += stability.ids_kept;
+      total += stability;
       tracked = std::to_string(stability.kept) + " / " + std::to_string(stability.tracked);
       kept = Percent(stability.ids_kept, stability.ids_before);
     }
@@ -242,11 +239,14 @@ int RunBench(const BenchFlags& flags) {
   std::printf(
       "\n%s: over the exploration, %s of the areas whose ground-truth room was fully seen in "
       "both updates kept their id (%d of %d); over the noise-only updates %s (%d of %d), and "
-      "%s of all ids stayed. Update / cold: median %.2f, max %.2f.\n\n",
+      "%s of all ids stayed (by the earlier test that also wants the id's area still to have "
+      "half of its cells in the room: %s and %s). Update / cold: median %.2f, max %.2f.\n\n",
       flags.run.name.c_str(), Percent(explored_total.kept, explored_total.tracked).c_str(),
       explored_total.kept, explored_total.tracked,
       Percent(noise_total.kept, noise_total.tracked).c_str(), noise_total.kept, noise_total.tracked,
-      Percent(noise_total.ids_kept, noise_total.ids_before).c_str(), Median(ratios),
+      Percent(noise_total.ids_kept, noise_total.ids_before).c_str(),
+      Percent(explored_total.kept_same_room, explored_total.tracked).c_str(),
+      Percent(noise_total.kept_same_room, noise_total.tracked).c_str(), Median(ratios),
       ratios.empty() ? 0 : *std::max_element(ratios.begin(), ratios.end()));
   return 0;
 }

@@ -17,15 +17,18 @@
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
+#include "stages/common/png_file.h"
 #include "stages/common/stage_info.h"
 #include "stages/common/stage_table.h"
 #include "stages/match/area_cells.h"
 #include "stages/match/area_graph_matching.h"
+#include "stages/match/join_undoing.h"
 #include "tools/bench/exploration_truth.h"
 #include "tools/bench/id_stability.h"
 #include "tools/eval/label_image.h"
 #include "tools/eval/map_evaluation.h"
 #include "tools/export/area_label_image.h"
+#include "tools/render/artifact_drawing.h"
 
 namespace areagraph {
 namespace {
@@ -35,6 +38,7 @@ struct MatchBenchFlags {
   std::string cache_dir;
   std::vector<std::string> variants;
   bool per_step = false;
+  std::string dump_dir;
   floorplan::ExplorationSettings exploration;
 };
 
@@ -44,6 +48,7 @@ struct Update {
   cv::Mat seen;     // whole map, as ExplorationMap::seen
   cv::Mat seen_gt;  // SeenGroundTruth
   bool noise_only = false;
+  proto::GridMap grid;  // only with --dump
 };
 
 // The merge artifact of `grid` with default options, every stage before
@@ -102,6 +107,7 @@ std::vector<Update> ExploreAndSegment(const MatchBenchFlags& flags, const Explor
     update.seen = map.seen.clone();
     update.seen_gt = SeenGroundTruth(map, truth.rooms);
     update.noise_only = step > flags.run.steps;
+    if (!flags.dump_dir.empty()) update.grid = ExplorationGridMap(map, truth.cells.rows);
     updates.push_back(std::move(update));
     std::cerr << "ag-bench-match: " << flags.run.name << ": step " << step << " segmented"
               << std::endl;
@@ -109,45 +115,100 @@ std::vector<Update> ExploreAndSegment(const MatchBenchFlags& flags, const Explor
   return updates;
 }
 
-// Says on stderr where the areas of `before` went that lost their id in
-// `after` although their ground-truth room was seen in both (--per-step).
+// Why one tracked id was lost (--per-step), counted per variant.
+struct LossCounts {
+  std::map<std::string, int> by_kind;
+};
+
+// The share of an area's cells that lie in `room`, as a percentage.
+double RoomPercent(const GroundTruthView::RoomShare& share) {
+  return 100.0 * share.room_cells / std::max<int64_t>(1, share.cells);
+}
+
+// Says on stderr where the tracked areas of `before` went that lost their id
+// in `after` (`lost`, see CompareViews; --per-step),
+// and counts each kind of loss in `counts`: "id moved" (the id is still
+// there but on an area that holds less than half of the area's cells in its
+// room),
+// "joined" (most of its cells went to an area that kept another old id;
+// with the conditions of match's join undoing: size, share inside, passage),
+// "new id" and "gone".
 void ExplainLosses(const proto::AreaGraph& before, const GroundTruthView& before_view,
-                   const proto::AreaGraph& after, const GroundTruthView& after_view, int step) {
+                   const proto::AreaGraph& after, const GroundTruthView& after_view,
+                   const std::set<int>& lost, const proto::MatchOptions& options, int step,
+                   LossCounts& counts) {
   const AreaCells old_cells = RasterizeAreas(before, after.frame());
   const AreaCells new_cells = RasterizeAreas(after, after.frame());
   const std::vector<AreaOverlap> overlaps = CountOverlaps(old_cells, new_cells);
-  std::map<int, int> index_of_id;
+  std::map<int, int> index_of_id, old_index_of_id;
   for (int i = 0; i < after.areas_size(); ++i) index_of_id[after.areas(i).stable_id()] = i;
-  for (int b = 0; b < before.areas_size(); ++b) {
-    const int id = before.areas(b).stable_id();
-    const auto room = before_view.room_of_area.find(id);
-    if (room == before_view.room_of_area.end() || before_view.seen_rooms.count(room->second) == 0 ||
-        after_view.seen_rooms.count(room->second) == 0) {
+  for (int i = 0; i < before.areas_size(); ++i) old_index_of_id[before.areas(i).stable_id()] = i;
+  std::set<std::pair<int, int>> linked;
+  for (const proto::Passage& passage : before.passages()) {
+    linked.insert({passage.area_a(), passage.area_b()});
+    linked.insert({passage.area_b(), passage.area_a()});
+  }
+  for (int id : lost) {
+    const int b = old_index_of_id.at(id);
+    const int room = before_view.room_of_area.at(id);
+    const GroundTruthView::RoomShare& was = before_view.share_of_area.at(id);
+    std::fprintf(stderr,
+                 "  step %d: id %d (%.1f m2, room %d: %.0f %% of its cells, %.0f %% labelled)",
+                 step, id, before.areas(b).area_m2(), room, RoomPercent(was),
+                 100.0 * was.labelled_cells / std::max<int64_t>(1, was.cells));
+    std::map<int, int64_t> shared;  // index in after -> cells of b
+    for (const AreaOverlap& pair : overlaps) {
+      if (pair.before == b) shared[pair.after] = pair.cells;
+    }
+    const auto same = index_of_id.find(id);
+    if (same != index_of_id.end()) {
+      const GroundTruthView::RoomShare& is = after_view.share_of_area.at(id);
+      std::fprintf(stderr,
+                   " kept its id on %.1f m2 holding only %.0f %% of its cells (largest room %d, "
+                   "%.0f %% of the cells)\n",
+                   after.areas(same->second).area_m2(),
+                   100.0 * shared[same->second] / std::max<int64_t>(1, old_cells.cells[b]), is.room,
+                   RoomPercent(is));
+      ++counts.by_kind["id moved"];
       continue;
     }
-    const auto now = after_view.room_of_area.find(id);
-    if (now != after_view.room_of_area.end() && now->second == room->second) continue;
     int best = -1;
     int64_t best_cells = 0;
-    for (const AreaOverlap& pair : overlaps) {
-      if (pair.before == b && pair.cells > best_cells) {
-        best = pair.after;
-        best_cells = pair.cells;
+    for (const auto& [a, cells] : shared) {
+      if (cells > best_cells) {
+        best = a;
+        best_cells = cells;
       }
     }
-    std::fprintf(stderr, "  step %d: id %d (%.1f m2, room %d) lost", step, id,
-                 before.areas(b).area_m2(), room->second);
-    if (best >= 0) {
-      const proto::Area& into = after.areas(best);
-      const bool old_id =
-          index_of_id.count(into.stable_id()) > 0 &&
-          std::any_of(before.areas().begin(), before.areas().end(),
-                      [&](const proto::Area& a) { return a.stable_id() == into.stable_id(); });
-      std::fprintf(stderr, ": %.0f %% of it in id %d (%.1f m2, %s)",
-                   100.0 * best_cells / std::max<int64_t>(1, old_cells.cells[b]), into.stable_id(),
-                   into.area_m2(), old_id ? "an old id: joined" : "a new id");
+    if (best < 0) {
+      std::fprintf(stderr, " gone\n");
+      ++counts.by_kind["gone"];
+      continue;
     }
-    std::fprintf(stderr, "\n");
+    const proto::Area& into = after.areas(best);
+    const double inside = 100.0 * best_cells / std::max<int64_t>(1, old_cells.cells[b]);
+    const auto kept = old_index_of_id.find(into.stable_id());
+    if (kept == old_index_of_id.end()) {
+      std::fprintf(stderr, " lost: %.0f %% of it in new id %d (%.1f m2)\n", inside,
+                   into.stable_id(), into.area_m2());
+      ++counts.by_kind["new id"];
+      continue;
+    }
+    const bool passage = linked.count({kept->second, b}) > 0;
+    std::fprintf(stderr, " joined: %.0f %% of it in id %d (%.1f m2, was %.1f m2), %s\n", inside,
+                 into.stable_id(), into.area_m2(), before.areas(kept->second).area_m2(),
+                 passage ? "a passage between them" : "no passage between them");
+    std::string kind = "joined";
+    if (!passage) {
+      kind += ", no passage";
+    } else if (inside < 100 * options.split_joins_inside_share()) {
+      kind += ", under the share inside";
+    } else if (before.areas(b).area_m2() >= options.split_joins_below_m2()) {
+      kind += ", too large";
+    } else {
+      kind += ", cut refused";
+    }
+    ++counts.by_kind[kind];
   }
 }
 
@@ -156,6 +217,19 @@ std::string Percent(int part, int whole) {
   char text[32];
   std::snprintf(text, sizeof(text), "%.1f %% (%d / %d)", 100.0 * part / whole, part, whole);
   return text;
+}
+
+// Writes the published graph of one update over its grid (--dump), as
+// ag-render draws a match artifact: areas by stable id, passages in red.
+void DumpGraph(const MatchBenchFlags& flags, const Update& update, const proto::AreaGraph& graph,
+               int step) {
+  const proto::MapFrame& frame = update.grid.frame();
+  Canvas canvas(update.grid.cells(), frame.width_px(), frame.height_px(),
+                DefaultScale(frame.width_px(), frame.height_px()));
+  DrawAreaGraph(graph, canvas);
+  char file[300];
+  std::snprintf(file, sizeof(file), "/%s-%02d.png", flags.run.name.c_str(), step);
+  WritePngFile(flags.dump_dir + file, canvas.image());
 }
 
 // Replays the updates through match with `options` and prints its row.
@@ -168,6 +242,7 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
   proto::AreaGraph previous;
   GroundTruthView previous_view;
   IdStability explored, noise;
+  LossCounts losses;
   std::vector<double> mccs;
   for (size_t i = 0; i < updates.size(); ++i) {
     VersionLink link;
@@ -177,14 +252,14 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
     const GroundTruthView view = ViewAgainstGroundTruth(matched, rooms, updates[i].seen);
     if (i > 0) {
       const IdStability step = CompareViews(previous_view, view);
-      IdStability& total = updates[i].noise_only ? noise : explored;
-      total.tracked += step.tracked;
-      total.kept += step.kept;
-      total.ids_before += step.ids_before;
-      total.ids_kept += step.ids_kept;
-      if (flags.per_step && step.kept < step.tracked) {
-        ExplainLosses(previous, previous_view, matched, view, static_cast<int>(i + 1));
+      (updates[i].noise_only ? noise : explored) += step;
+      if (flags.per_step && !step.lost.empty()) {
+        ExplainLosses(previous, previous_view, matched, view, step.lost, options,
+                      static_cast<int>(i + 1), losses);
       }
+    }
+    if (!flags.dump_dir.empty() && variant_text == flags.variants.front()) {
+      DumpGraph(flags, updates[i], matched, static_cast<int>(i + 1));
     }
     cv::Mat labels;
     AreaLabelImage(matched).convertTo(labels, CV_32S);
@@ -192,12 +267,22 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
     previous = matched;
     previous_view = view;
   }
+  if (flags.per_step) {
+    std::fprintf(stderr,
+                 "  losses of %s:", variant_text.empty() ? "(defaults)" : variant_text.c_str());
+    for (const auto& [kind, count] : losses.by_kind)
+      std::fprintf(stderr, " %s %d;", kind.c_str(), count);
+    std::fprintf(stderr, "\n");
+  }
   double mean = 0;
   for (double mcc : mccs) mean += mcc / mccs.size();
-  std::printf("| %s | %s | %s | %s | %.3f | %.3f | %d |\n", flags.run.name.c_str(),
+  std::printf("| %s | %s | %s | %s | %s | %s | %.3f | %.3f | %d |\n", flags.run.name.c_str(),
               variant_text.empty() ? "(defaults)" : variant_text.c_str(),
               Percent(explored.kept, explored.tracked).c_str(),
-              Percent(noise.kept, noise.tracked).c_str(), mccs.back(), mean, previous.areas_size());
+              Percent(noise.kept, noise.tracked).c_str(),
+              Percent(explored.kept_same_room, explored.tracked).c_str(),
+              Percent(noise.kept_same_room, noise.tracked).c_str(), mccs.back(), mean,
+              previous.areas_size());
   std::fflush(stdout);
 }
 
@@ -209,6 +294,7 @@ int RunBench(MatchBenchFlags flags) {
   if (!flags.run.map_path.empty() && flags.run.gt_path.empty())
     throw OptionsError("--map needs --gt");
   if (!flags.cache_dir.empty()) std::filesystem::create_directories(flags.cache_dir);
+  if (!flags.dump_dir.empty()) std::filesystem::create_directories(flags.dump_dir);
   if (flags.variants.empty()) flags.variants.push_back("");
   const ExplorationTruth truth = LoadExplorationTruth(flags.run.map_path, flags.run.gt_path,
                                                       flags.run.generated_m, flags.run.seed);
@@ -244,6 +330,10 @@ int main(int argc, char** argv) {
   app.add_option("--variant", flags.variants,
                  "match options in text format, e.g. 'fold_fragments_below_m2: 0'; repeat for "
                  "more rows (default: one row with the defaults)");
-  app.add_flag("--per-step", flags.per_step, "print each update that lost ids on stderr");
+  app.add_flag("--per-step", flags.per_step,
+               "print on stderr where each lost id went, and the losses of each kind per variant");
+  app.add_option("--dump", flags.dump_dir,
+                 "folder for a picture of each update's published graph under the first variant "
+                 "(NAME-STEP.png: areas coloured and labelled by stable id, passages red)");
   return RunCommand("ag-bench-match", app, argc, argv, [&] { return RunBench(flags); });
 }

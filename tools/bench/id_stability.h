@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <map>
 #include <opencv2/core.hpp>
 #include <set>
@@ -17,6 +18,21 @@ struct GroundTruthView {
   std::set<int> seen_rooms;
   // Every stable id of the graph.
   std::set<int> ids;
+  // Stable id -> how the area's cells fall on the ground truth: its largest
+  // room, that room's cells, the cells of any room, and all its cells (for
+  // saying why an id counts as lost).
+  struct RoomShare {
+    int room = 0;
+    int64_t room_cells = 0;
+    int64_t labelled_cells = 0;
+    int64_t cells = 0;
+  };
+  std::map<int, RoomShare> share_of_area;
+  // The stable id of the area holding each cell of the whole map (CV_32S, -1
+  // for none), and the ground-truth rooms it was scored on (shared, not
+  // copied): what CompareViews compares cell by cell.
+  cv::Mat id_cells;
+  cv::Mat rooms;
 };
 
 // `graph` (in the frame of a map cropped at `crop` from the whole map, whose
@@ -26,14 +42,29 @@ struct GroundTruthView {
 GroundTruthView ViewAgainstGroundTruth(const proto::AreaGraph& graph, const cv::Mat& gt_labels,
                                        const cv::Mat& seen);
 
-// Of the areas of `before` whose room is fully seen in both graphs, how many
-// keep their id on an area of the same room in `after`.
+// The id stability of one update, or summed over several. An area of
+// `before` is tracked when its room (room_of_area) is fully seen in both
+// graphs: the issue's "areas whose ground-truth room is fully revealed and
+// unchanged". It kept its id when `after` still has the id and the id's area
+// there holds at least half of the cells that the area had in that room:
+// the id still names the same place. `kept_same_room` counts the earlier,
+// stricter test (until 2026-12-02): the id's area must also still have at
+// least half of all its cells in that room, which counts an area at 50 % in
+// its room as lost whenever noise tips it under, and an area that keeps its
+// id while merge joins a piece of newly seen corridor to it as lost as well
+// as the piece it swallowed (docs/performance.md).
 struct IdStability {
   int tracked = 0;
   int kept = 0;
+  int kept_same_room = 0;
   // Of all ids of `before`, how many `after` still has.
   int ids_before = 0;
   int ids_kept = 0;
+  // The tracked ids that were not kept (one update's; += leaves it).
+  std::set<int> lost;
+
+  // Adds the counts of `other`.
+  IdStability& operator+=(const IdStability& other);
 };
 IdStability CompareViews(const GroundTruthView& before, const GroundTruthView& after);
 

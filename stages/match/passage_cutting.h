@@ -1,0 +1,34 @@
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+
+namespace areagraph {
+
+// A point in world metres, compared bit for bit: ring vertices are shared
+// exactly between neighbouring areas.
+using BorderPoint = std::pair<double, double>;
+
+// Whether p lies on the segment u-v, strictly between its ends (within a
+// nanometre of the line).
+bool OnSegment(const BorderPoint& p, const BorderPoint& u, const BorderPoint& v);
+
+// A stretch of passage border shorter than this (metres) that a join's cut
+// leaves on the far side gets no passage of its own: a robot (prune's
+// robot_width_m, 0.5 m by default) would not pass it.
+inline constexpr double kMinCutPassageM = 0.5;
+
+// `passage` cut where a join's cut (see SplitJoinedAreas) crosses its border
+// at `cuts` (points strictly inside its border's edges): the border pieces
+// between the cuts, in order along the border, each a passage like
+// `passage` with border_m, segment_m and width_m of its own (point_m stays
+// where it was for the longest piece and is the middle of the others, which
+// have no stable id). Pieces shorter than
+// kMinCutPassageM are left out, except the longest. Empty when a cut point
+// lies on none of the border's edges.
+std::vector<proto::Passage> CutPassage(const proto::Passage& passage,
+                                       const std::vector<BorderPoint>& cuts);
+
+}  // namespace areagraph
