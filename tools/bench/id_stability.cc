@@ -7,17 +7,18 @@
 namespace areagraph {
 namespace {
 
-// Stable id -> (cells of its area in its room, of those the cells whose area
-// in `after` has the same id), for the tracked areas of `before`.
-std::map<int, std::pair<int64_t, int64_t>> CellsStillHeld(const GroundTruthView& before,
-                                                          const GroundTruthView& after) {
+// Stable id -> how the cells its area had in its room lie in `after`
+// (stable id there, or -1 for none -> cells), for the tracked areas of
+// `before`.
+std::map<int, std::map<int, int64_t>> WhereCellsWent(const GroundTruthView& before,
+                                                     const GroundTruthView& after) {
   std::map<int, int> tracked;  // stable id -> room
   for (const auto& [id, room] : before.room_of_area) {
     if (before.seen_rooms.count(room) > 0 && after.seen_rooms.count(room) > 0) tracked[id] = room;
   }
-  std::map<int, std::pair<int64_t, int64_t>> held;
-  for (const auto& [id, room] : tracked) held[id] = {0, 0};
-  if (tracked.empty()) return held;
+  std::map<int, std::map<int, int64_t>> went;
+  for (const auto& [id, room] : tracked) went[id];
+  if (tracked.empty()) return went;
   for (int y = 0; y < before.id_cells.rows; ++y) {
     const int32_t* was = before.id_cells.ptr<int32_t>(y);
     const int32_t* is = after.id_cells.ptr<int32_t>(y);
@@ -26,12 +27,20 @@ std::map<int, std::pair<int64_t, int64_t>> CellsStillHeld(const GroundTruthView&
       if (was[x] < 0) continue;
       const auto found = tracked.find(was[x]);
       if (found == tracked.end() || found->second != room[x]) continue;
-      auto& counts = held[was[x]];
-      ++counts.first;
-      counts.second += is[x] == was[x];
+      ++went[was[x]][is[x]];
     }
   }
-  return held;
+  return went;
+}
+
+// Whether id holds at least as many of `cells` as any other area.
+bool HoldsMost(int id, const std::map<int, int64_t>& cells) {
+  const auto own = cells.find(id);
+  if (own == cells.end()) return false;
+  for (const auto& [other, count] : cells) {
+    if (other >= 0 && count > own->second) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -102,9 +111,9 @@ IdStability& IdStability::operator+=(const IdStability& other) {
 
 IdStability CompareViews(const GroundTruthView& before, const GroundTruthView& after) {
   IdStability stability;
-  for (const auto& [id, counts] : CellsStillHeld(before, after)) {
+  for (const auto& [id, cells] : WhereCellsWent(before, after)) {
     ++stability.tracked;
-    if (after.ids.count(id) > 0 && 2 * counts.second >= counts.first) {
+    if (HoldsMost(id, cells)) {
       ++stability.kept;
     } else {
       stability.lost.insert(id);

@@ -45,14 +45,16 @@ GroundTruthView ViewAgainstGroundTruth(const proto::AreaGraph& graph, const cv::
 // The id stability of one update, or summed over several. An area of
 // `before` is tracked when its room (room_of_area) is fully seen in both
 // graphs: the issue's "areas whose ground-truth room is fully revealed and
-// unchanged". It kept its id when `after` still has the id and the id's area
-// there holds at least half of the cells that the area had in that room:
-// the id still names the same place. `kept_same_room` counts the earlier,
-// stricter test (until 2026-12-02): the id's area must also still have at
-// least half of all its cells in that room, which counts an area at 50 % in
-// its room as lost whenever noise tips it under, and an area that keeps its
-// id while merge joins a piece of newly seen corridor to it as lost as well
-// as the piece it swallowed (docs/performance.md).
+// unchanged". It kept its id when `after` still has the id on the area that
+// holds the most of the cells the area had in that room (ties count): the
+// id still names the same place, and a split that keeps the id on its
+// largest part keeps it. `kept_same_room` counts the earlier test (until
+// 2026-12-02): the id's area must still have at least half of all its cells
+// in that room, which counts an area at 50 % in its room as lost whenever
+// noise tips it under, and an area that keeps its id while merge joins a
+// piece of newly seen corridor to it as lost as well as the piece it
+// swallowed; it also let an id move to another area of the same room
+// (docs/performance.md).
 struct IdStability {
   int tracked = 0;
   int kept = 0;

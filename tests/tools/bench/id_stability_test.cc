@@ -1,7 +1,7 @@
 // The id stability that tools/bench-live.sh and tools/bench-match-tuning.sh
 // report: an area whose ground-truth room is fully seen in two updates keeps
-// its id when the id still covers at least half of what the area had of
-// that room. Constructed graphs of vertical strips over two rooms.
+// its id when the id is still on the area that holds the most of what the
+// area had of that room. Constructed graphs of vertical strips over two rooms.
 #include "tools/bench/id_stability.h"
 
 #include <gtest/gtest.h>
@@ -71,6 +71,19 @@ TEST(IdStabilityTest, AnIdThatMovedOffItsPlaceIsLost) {
   EXPECT_EQ(stability.kept, 1);
   EXPECT_EQ(stability.kept_same_room, 2);  // the earlier test did not see it
   EXPECT_EQ(stability.lost, std::set<int>{7});
+}
+
+TEST(IdStabilityTest, ASplitKeepsTheIdOnItsLargestPart) {
+  // Area 7 (all of room 1) split in three: 2.4, 1.8 and 1.8 m. The id on the
+  // largest part is kept (though it holds only 40 %); on a smaller part it is not.
+  EXPECT_EQ(Compare(Strips({{7, 0, 6}, {8, 6, 10}}),
+                    Strips({{7, 0, 2.4}, {9, 2.4, 4.2}, {10, 4.2, 6}, {8, 6, 10}}))
+                .kept,
+            2);
+  EXPECT_EQ(Compare(Strips({{7, 0, 6}, {8, 6, 10}}),
+                    Strips({{9, 0, 2.4}, {7, 2.4, 4.2}, {10, 4.2, 6}, {8, 6, 10}}))
+                .lost,
+            std::set<int>{7});
 }
 
 TEST(IdStabilityTest, AJoinLosesTheSwallowedIdOnly) {
