@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <set>
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
@@ -39,6 +40,7 @@ struct MatchBenchFlags {
   std::vector<std::string> variants;
   bool per_step = false;
   std::string dump_dir;
+  bool reuse = false;
   floorplan::ExplorationSettings exploration;
 };
 
@@ -107,7 +109,9 @@ std::vector<Update> ExploreAndSegment(const MatchBenchFlags& flags, const Explor
     update.seen = map.seen.clone();
     update.seen_gt = SeenGroundTruth(map, truth.rooms);
     update.noise_only = step > flags.run.steps;
-    if (!flags.dump_dir.empty()) update.grid = ExplorationGridMap(map, truth.cells.rows);
+    if (!flags.dump_dir.empty() || flags.reuse) {
+      update.grid = ExplorationGridMap(map, truth.cells.rows);
+    }
     updates.push_back(std::move(update));
     std::cerr << "ag-bench-match: " << flags.run.name << ": step " << step << " segmented"
               << std::endl;
@@ -286,6 +290,53 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
   std::fflush(stdout);
 }
 
+// The cells of `grid` in the whole map's frame (CV_8U, 255 where the grid
+// does not reach).
+cv::Mat WholeMapCells(const proto::GridMap& grid, cv::Size whole) {
+  cv::Mat cells(whole, CV_8U, cv::Scalar(255));
+  const proto::MapFrame& frame = grid.frame();
+  const int x0 = static_cast<int>(std::lround(frame.origin_x_m() / frame.resolution_m()));
+  const int y_bottom = static_cast<int>(std::lround(frame.origin_y_m() / frame.resolution_m()));
+  const int y0 = whole.height - y_bottom - frame.height_px();
+  const cv::Mat own(frame.height_px(), frame.width_px(), CV_8U,
+                    const_cast<char*>(grid.cells().data()));
+  own.copyTo(cells(cv::Rect(x0, y0, frame.width_px(), frame.height_px())));
+  return cells;
+}
+
+// The merge areas of `graph` as text (polygon in metres), to find areas that
+// came out bit for bit the same in two updates.
+std::multiset<std::string> AreaPolygons(const proto::AreaGraph& graph) {
+  std::multiset<std::string> polygons;
+  for (const proto::Area& area : graph.areas()) {
+    polygons.insert(area.polygon_m().SerializeAsString());
+  }
+  return polygons;
+}
+
+// --reuse: per update, how much of the previous update a stage could reuse
+// if it recomputed only what changed: the share of the previous grid's cells
+// that are the same, and the share of merge's areas that are bit for bit an
+// area of the previous merge graph. Every changed grid is a full run today.
+void PrintReuse(const std::vector<Update>& updates, cv::Size whole) {
+  std::printf(
+      "\n| step | grid cells as before | merge areas as before (same polygon) |\n"
+      "|---|--:|--:|\n");
+  for (size_t i = 1; i < updates.size(); ++i) {
+    const cv::Mat before = WholeMapCells(updates[i - 1].grid, whole);
+    const cv::Mat after = WholeMapCells(updates[i].grid, whole);
+    const cv::Mat had = before != 255;
+    const int same = cv::countNonZero((before == after) & had);
+    const std::multiset<std::string> old_areas = AreaPolygons(updates[i - 1].merged);
+    int kept = 0;
+    for (const std::string& polygon : AreaPolygons(updates[i].merged))
+      kept += old_areas.count(polygon) > 0;
+    std::printf("| %zu%s | %.1f %% | %d / %d |\n", i + 1, updates[i].noise_only ? " (noise)" : "",
+                100.0 * same / std::max(1, cv::countNonZero(had)), kept,
+                updates[i].merged.areas_size());
+  }
+}
+
 int RunBench(MatchBenchFlags flags) {
   if (flags.run.name.empty()) throw OptionsError("--name is required");
   if ((flags.run.generated_m > 0) == !flags.run.map_path.empty()) {
@@ -305,6 +356,7 @@ int RunBench(MatchBenchFlags flags) {
   for (const std::string& variant : flags.variants) {
     ReplayVariant(flags, updates, truth.rooms, variant);
   }
+  if (flags.reuse) PrintReuse(updates, truth.cells.size());
   return 0;
 }
 
@@ -332,6 +384,9 @@ int main(int argc, char** argv) {
                  "more rows (default: one row with the defaults)");
   app.add_flag("--per-step", flags.per_step,
                "print on stderr where each lost id went, and the losses of each kind per variant");
+  app.add_flag("--reuse", flags.reuse,
+               "also print, per update, the share of grid cells and of merge areas that are as "
+               "in the update before (what a stage that recomputed only changes could reuse)");
   app.add_option("--dump", flags.dump_dir,
                  "folder for a picture of each update's published graph under the first variant "
                  "(NAME-STEP.png: areas coloured and labelled by stable id, passages red)");
