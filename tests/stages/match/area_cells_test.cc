@@ -6,11 +6,8 @@
 
 #include "tests/stages/match/synthetic_graphs.h"
 
-namespace areagraph {
+namespace areagraph::testing {
 namespace {
-
-using testing::Frame;
-using testing::RectGraph;
 
 TEST(AreaCellsTest, CountsTheCellsWhoseCentresLieInside) {
   // 2 m x 1 m and its neighbour: 40 x 20 and 20 x 20 cells, none shared.
@@ -53,4 +50,4 @@ TEST(AreaCellsTest, OverlapsAreCountedOnTheSecondGraphsGrid) {
 }
 
 }  // namespace
-}  // namespace areagraph
+}  // namespace areagraph::testing

@@ -10,13 +10,8 @@
 #include "stages/match/area_graph_matching.h"
 #include "tests/stages/match/synthetic_graphs.h"
 
-namespace areagraph {
+namespace areagraph::testing {
 namespace {
-
-using testing::AddPassage;
-using testing::Frame;
-using testing::RectGraph;
-using Ids = std::vector<int>;
 
 Ids ToIds(const google::protobuf::RepeatedField<int32_t>& ids) {
   return Ids(ids.begin(), ids.end());
@@ -43,7 +38,7 @@ TEST(AreaGraphDiffTest, ReportsSplitsMergesGrowthAndNewSpace) {
   AddPassage(after_graph, 0, 3, 3, 4);    // unchanged
   AddPassage(after_graph, 3, 4, 14, 5);   // new
   const proto::AreaGraph after = Next(after_graph, &before);
-  ASSERT_EQ(testing::AreaIds(after), (Ids{0, 4, 1, 3, 5}));
+  ASSERT_EQ(AreaIds(after), (Ids{0, 4, 1, 3, 5}));
 
   const proto::AreaGraphDiff diff = DiffAreaGraphs(before, after);
   EXPECT_EQ(diff.from_version(), 1);
@@ -129,4 +124,4 @@ TEST(AreaGraphDiffTest, RefusesGraphsWithoutStableIds) {
 }
 
 }  // namespace
-}  // namespace areagraph
+}  // namespace areagraph::testing

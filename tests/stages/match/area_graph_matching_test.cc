@@ -9,16 +9,8 @@
 #include "common/error.h"
 #include "tests/stages/match/synthetic_graphs.h"
 
-namespace areagraph {
+namespace areagraph::testing {
 namespace {
-
-using testing::AddPassage;
-using testing::AreaIds;
-using testing::Frame;
-using testing::MatchAfter;
-using testing::PassageIds;
-using testing::RectGraph;
-using Ids = std::vector<int>;
 
 TEST(AreaGraphMatchingTest, AFirstVersionNumbersAreasAndPassagesInOrder) {
   proto::AreaGraph graph = RectGraph(Frame(200, 100), {{0, 0, 4, 5}, {4, 0, 10, 5}, {0, 0, 1, 1}});
@@ -110,10 +102,9 @@ TEST(AreaGraphMatchingTest, ASmallOverlapIsNoMatch) {
 }
 
 TEST(AreaGraphMatchingTest, IdsFollowTheAreasNotTheirOrder) {
-  const std::vector<testing::WorldRect> rects = {
-      {0, 0, 3, 4}, {3, 0, 7, 4}, {7, 0, 9, 4}, {0, 4, 9, 6}};
+  const std::vector<WorldRect> rects = {{0, 0, 3, 4}, {3, 0, 7, 4}, {7, 0, 9, 4}, {0, 4, 9, 6}};
   const proto::AreaGraph first = MatchAfter(RectGraph(Frame(200, 150), rects), nullptr);
-  std::vector<testing::WorldRect> reversed(rects.rbegin(), rects.rend());
+  std::vector<WorldRect> reversed(rects.rbegin(), rects.rend());
   const proto::AreaGraph second = MatchAfter(RectGraph(Frame(200, 150), reversed), &first);
   EXPECT_EQ(AreaIds(second), (Ids{3, 2, 1, 0}));
 }
@@ -142,4 +133,4 @@ TEST(AreaGraphMatchingTest, RefusesAPreviousVersionWithoutStableIds) {
 }
 
 }  // namespace
-}  // namespace areagraph
+}  // namespace areagraph::testing

@@ -13,16 +13,8 @@
 #include "stages/match/polygon_union.h"
 #include "tests/stages/match/synthetic_graphs.h"
 
-namespace areagraph {
+namespace areagraph::testing {
 namespace {
-
-using testing::AddPassage;
-using testing::AreaIds;
-using testing::Frame;
-using testing::MatchAfter;
-using testing::PassageIds;
-using testing::RectGraph;
-using Ids = std::vector<int>;
 
 // The area of a ring, and of a polygon (outer minus holes).
 double RingArea(const proto::Ring& ring) { return std::abs(TwiceSignedArea(ring)) / 2; }
@@ -49,10 +41,9 @@ TEST(PolygonUnionTest, NeighboursSharingAnEdgeBecomeOneRing) {
 TEST(PolygonUnionTest, RefusesPolygonsThatDoNotShareAnEdge) {
   proto::Polygon joined;
   // Apart, touching at a corner, and along a border without common vertices.
-  for (const auto& rects :
-       std::vector<std::vector<testing::WorldRect>>{{{0, 0, 2, 2}, {5, 0, 7, 2}},
-                                                    {{0, 0, 2, 2}, {2, 2, 4, 4}},
-                                                    {{0, 0, 4, 4}, {4, 1, 6, 3}}}) {
+  for (const auto& rects : std::vector<std::vector<WorldRect>>{{{0, 0, 2, 2}, {5, 0, 7, 2}},
+                                                               {{0, 0, 2, 2}, {2, 2, 4, 4}},
+                                                               {{0, 0, 4, 4}, {4, 1, 6, 3}}}) {
     const proto::AreaGraph graph = RectGraph(Frame(200, 100), rects);
     EXPECT_FALSE(UnionOfNeighbours(MetrePolygon(graph, 0), MetrePolygon(graph, 1), &joined));
   }
@@ -166,4 +157,4 @@ TEST(FragmentFoldingTest, TheFragmentsPassagesMoveToTheAreaItJoins) {
 }
 
 }  // namespace
-}  // namespace areagraph
+}  // namespace areagraph::testing

@@ -10,15 +10,8 @@
 #include "stages/match/join_undoing.h"
 #include "tests/stages/match/synthetic_graphs.h"
 
-namespace areagraph {
+namespace areagraph::testing {
 namespace {
-
-using testing::AddPassage;
-using testing::AreaIds;
-using testing::Frame;
-using testing::MatchAfter;
-using testing::RectGraph;
-using Ids = std::vector<int>;
 
 // A passage between areas a and b along `border` (area a on its left).
 void AddBorderPassage(proto::AreaGraph& graph, int a, int b,
@@ -147,4 +140,4 @@ TEST(JoinUndoingOptionsTest, AnAreaThatSwallowedTwoGivesBothBackInTwoRounds) {
 }
 
 }  // namespace
-}  // namespace areagraph
+}  // namespace areagraph::testing

@@ -13,15 +13,8 @@
 #include "stages/match/polygon_union.h"
 #include "tests/stages/match/synthetic_graphs.h"
 
-namespace areagraph {
+namespace areagraph::testing {
 namespace {
-
-using testing::AddPassage;
-using testing::AreaIds;
-using testing::Frame;
-using testing::MatchAfter;
-using testing::RectGraph;
-using Ids = std::vector<int>;
 
 bool HasVertex(const proto::Ring& ring, double x, double y) {
   return std::any_of(ring.points().begin(), ring.points().end(),
@@ -161,4 +154,4 @@ TEST(JoinUndoingTest, IdenticalMapsGiveIdenticalIdsWithSplitting) {
 }
 
 }  // namespace
-}  // namespace areagraph
+}  // namespace areagraph::testing

@@ -27,6 +27,9 @@ proto::AreaGraph RectGraph(const proto::MapFrame& frame, const std::vector<World
 // Adds a passage between areas a and b (indices) at (x, y) metres, 0.9 m wide.
 void AddPassage(proto::AreaGraph& graph, int a, int b, double x, double y);
 
+// Expected stable ids, written as Ids{...} in the tests.
+using Ids = std::vector<int>;
+
 // The stable ids of the areas in index order, and of the passages.
 std::vector<int> AreaIds(const proto::AreaGraph& graph);
 std::vector<int> PassageIds(const proto::AreaGraph& graph);
