@@ -30,7 +30,8 @@ inline constexpr StageInfo kPruneStage{"prune", 2};
 // cut 4: room detection inside every part's boundary; parts carried to merge.
 // cut 5: doors with wall jambs closed for the room disk (cut.close_wall_doors).
 // cut 6: gaps beside thin wall ends closed too (cut.close_wall_gaps_max_m).
-inline constexpr StageInfo kCutStage{"cut", 6};
+// cut 7: passages on doors and wall gaps closed on purpose are marked (closed_by_cut).
+inline constexpr StageInfo kCutStage{"cut", 7};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
@@ -38,7 +39,8 @@ inline constexpr StageInfo kCutStage{"cut", 6};
 // merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
 // merge 7: areas in every part's boundary, components and dropped parts counted (issue 13).
 // merge 8: areas join at furniture gaps; corridor-shaped rooms are labelled corridors (issue 12).
-inline constexpr StageInfo kMergeStage{"merge", 8};
+// merge 9: room joining keeps rooms apart at doors the cut closed (merge.keep_closed_doors).
+inline constexpr StageInfo kMergeStage{"merge", 9};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).

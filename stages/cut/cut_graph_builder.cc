@@ -7,6 +7,7 @@
 #include "common/error.h"
 #include "stages/common/freed_memory.h"
 #include "stages/common/stage_info.h"
+#include "stages/cut/closed_passages.h"
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
@@ -85,16 +86,17 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   };
   PointList sites = StructureSites(map.cells(), grid.width(), grid.height(), grid.resolution_m(),
                                    options.room_island_max_m());
+  PointList closing;  // the sites that close doors and wall gaps on purpose
   if (options.close_wall_doors()) {
-    const PointList closing =
+    closing =
         DoorClosingSites(room_width, map.cells(), grid.width(), grid.height(), grid.resolution_m());
-    sites.insert(sites.end(), closing.begin(), closing.end());
   }
   if (options.close_wall_gaps_max_m() > 0) {
     const PointList gaps = WallGapSites(topology, map.cells(), grid.width(), grid.height(),
                                         grid.resolution_m(), options.close_wall_gaps_max_m());
-    sites.insert(sites.end(), gaps.begin(), gaps.end());
+    closing.insert(closing.end(), gaps.begin(), gaps.end());
   }
+  sites.insert(sites.end(), closing.begin(), closing.end());
   SiteAlphaShape shape(std::move(sites), room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);
@@ -173,6 +175,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   std::vector<proto::Polygon> outlines = shape.RoomOutlines();
   outlines.resize(room_ids.size());
   for (proto::Polygon& outline : outlines) *out.add_room_shapes() = std::move(outline);
+  MarkClosedPassages(closing, grid.resolution_m(), &out);
   return out;
 }
 

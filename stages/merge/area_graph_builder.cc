@@ -109,7 +109,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
 
   AreaPlan plan = AssignAreas(graph);
   if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
-  if (options.join_rooms_without_doors()) JoinRoomsWithoutDoors(graph, grid.resolution_m(), &plan);
+  if (options.join_rooms_without_doors()) {
+    JoinRoomsWithoutDoors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
+  }
   if (options.join_furniture_gaps()) {
     JoinAreasAtFurnitureGaps(graph, FurnitureIslandCells(map), grid.resolution_m(), &plan);
   }

@@ -68,8 +68,18 @@ double WidestWithin(const proto::CutGraph& graph, const AreaPlan& plan,
 
 }  // namespace
 
-void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m, AreaPlan* plan) {
+void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
+                           bool keep_closed_doors, AreaPlan* plan) {
   const double reach_px = kSideReachM / resolution_m;
+  std::vector<bool> closed(graph.vertices_size(), false);
+  if (keep_closed_doors) {
+    for (const proto::PassagePoint& passage : graph.passage_points()) {
+      if (passage.closed_by_cut() && passage.vertex() >= 0 &&
+          passage.vertex() < graph.vertices_size()) {
+        closed[passage.vertex()] = true;
+      }
+    }
+  }
   std::vector<std::vector<int>> edges_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {
     edges_at[graph.edges(e).source()].push_back(e);
@@ -97,7 +107,9 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m, Ar
   }
   const int area_count = static_cast<int>(plan->areas.size());
   DisjointSets rooms(area_count);
-  for (const std::map<int, Side>& at : sides) {
+  for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
+    if (closed[vertex]) continue;
+    const std::map<int, Side>& at = sides[vertex];
     for (auto a = at.begin(); a != at.end(); ++a) {
       for (auto b = std::next(a); b != at.end(); ++b) {
         const double opening = std::min(a->second.opening_px, b->second.opening_px);

@@ -19,7 +19,10 @@ inline constexpr double kSideReachM = 1.5;
 // rooms it joins. (A second cue, how deep the narrowing is, separated
 // furniture gaps from doors on the generated floors but merged real rooms
 // on the scanned maps, whose doorways are deep: dropped, see
-// docs/quality.md.)
-void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m, AreaPlan* plan);
+// docs/quality.md.) With `keep_closed_doors`, rooms that meet at a cut
+// ag-cut made on a door or wall gap it closed (PassagePoint.closed_by_cut)
+// stay apart: their jambs are walls.
+void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
+                           bool keep_closed_doors, AreaPlan* plan);
 
 }  // namespace areagraph

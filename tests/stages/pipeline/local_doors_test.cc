@@ -96,11 +96,7 @@ floorplan::FloorPlan OfficesAlongANarrowCorridor() {
   return plan;
 }
 
-// The cut stage's division is what is tested: merge.join_rooms_without_doors
-// joins two rooms whose opening is nearly as wide as the wider space beside
-// it, and this door is (a merge-stage rule, turned off here).
-WideDoorAreas RunNarrowCorridor(proto::PipelineOptions options) {
-  options.mutable_merge()->set_join_rooms_without_doors(false);
+WideDoorAreas RunNarrowCorridor(const proto::PipelineOptions& options) {
   const proto::CleanedMap map = CleanDrawnMap(OfficesAlongANarrowCorridor().image());
   const AreaStages stages = RunAreaStages(map, options);
   WideDoorAreas found;
@@ -122,6 +118,17 @@ TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_close_wall_gaps_max_m(0);
   const WideDoorAreas found = RunNarrowCorridor(options);
+  EXPECT_EQ(found.office, found.corridor);
+}
+
+TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
+  // merge.join_rooms_without_doors joins two rooms whose opening is nearly
+  // as wide as the space beside it, and this door is wider than the
+  // corridor; the cut marks it closed (merge.keep_closed_doors).
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_keep_closed_doors(false);
+  const WideDoorAreas found = RunNarrowCorridor(options);
+  ASSERT_NE(found.office, -1);
   EXPECT_EQ(found.office, found.corridor);
 }
 
