@@ -1,11 +1,13 @@
 #include "stages/merge/room_joining.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_area.h"
 
 namespace areagraph {
 namespace {
@@ -66,6 +68,15 @@ double WidestWithin(const proto::CutGraph& graph, const AreaPlan& plan,
   return widest;
 }
 
+// Whether a room area is shaped like a corridor: its room shape's area is
+// at least kCorridorElongation squares of its median free width.
+bool CorridorLike(const proto::CutGraph& graph, const AreaPlan::Area& area) {
+  if (area.room_id < 0 || area.room_id >= graph.room_shapes_size()) return false;
+  const double width = MedianWidthPx(graph, area);
+  const double shape = 0.5 * std::abs(TwiceSignedArea(graph.room_shapes(area.room_id).outer()));
+  return width > 0 && shape >= kCorridorElongation * width * width;
+}
+
 }  // namespace
 
 void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
@@ -108,12 +119,15 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
   const int area_count = static_cast<int>(plan->areas.size());
   DisjointSets rooms(area_count);
   for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
-    if (closed[vertex]) continue;
     const std::map<int, Side>& at = sides[vertex];
     for (auto a = at.begin(); a != at.end(); ++a) {
       for (auto b = std::next(a); b != at.end(); ++b) {
         const double opening = std::min(a->second.opening_px, b->second.opening_px);
         const double narrower_side = std::min(a->second.widest_px, b->second.widest_px);
+        if (closed[vertex] && !(CorridorLike(graph, plan->areas[a->first]) &&
+                                CorridorLike(graph, plan->areas[b->first]))) {
+          continue;
+        }
         if (opening > kDoorWidthShare * narrower_side) rooms.Union(a->first, b->first);
       }
     }

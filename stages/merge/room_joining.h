@@ -12,6 +12,12 @@ inline constexpr double kDoorWidthShare = 0.9;
 // How far into each area the width beside an opening is looked for (metres).
 inline constexpr double kSideReachM = 1.5;
 
+// A room area whose room shape covers at least this many squares of its
+// median free width is shaped like a corridor. Chosen on the real maps and
+// the tuning floors (4 loses Freiburg52_scan furnished again; 6 and 10 the
+// same).
+inline constexpr double kCorridorElongation = 6;
+
 // Joins room areas that meet at a graph vertex without a narrowing between
 // them: the opening there is not narrower than kDoorWidthShare of the space
 // on the narrower side. The room disk stopped there (at a piece of furniture
@@ -21,7 +27,9 @@ inline constexpr double kSideReachM = 1.5;
 // on the scanned maps, whose doorways are deep: dropped, see
 // docs/quality.md.) With `keep_closed_doors`, rooms that meet at a cut
 // ag-cut made on a door or wall gap it closed (PassagePoint.closed_by_cut)
-// stay apart: their jambs are walls.
+// stay apart: their jambs are walls. Not when both rooms are shaped like
+// corridors (kCorridorElongation): the cut's thin wall end is then the
+// corner where one corridor meets another.
 void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
                            bool keep_closed_doors, AreaPlan* plan);
 
