@@ -121,7 +121,7 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map) {
 }
 
 void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
-                              double resolution_m, AreaPlan* plan) {
+                              double resolution_m, bool keep_closed_doors, AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
   const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
   // Pairs of areas that meet at a vertex where the opening (the narrower of
@@ -129,7 +129,12 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islan
   // any other opening.
   std::vector<std::pair<int, int>> gaps;
   std::vector<bool> enclosed(area_count, true);
-  for (const std::map<int, VertexOpening>& at : OpeningsAtVertices(graph, *plan)) {
+  const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
+  const std::vector<bool> closed =
+      keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
+  for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
+    if (closed[vertex]) continue;
+    const std::map<int, VertexOpening>& at = openings[vertex];
     for (auto a = at.begin(); a != at.end(); ++a) {
       for (auto b = std::next(a); b != at.end(); ++b) {
         const VertexOpening& narrower =

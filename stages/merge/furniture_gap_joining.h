@@ -41,8 +41,10 @@ inline constexpr double kMaxFurnitureGapPieceM2 = 20.0;
 // it stays a corridor; room-less areas are joined with each other at gaps
 // (clutter in a corridor) unless one of them is part of a room by then. The
 // smaller of the two areas must be at most kMaxFurnitureGapPieceM2. A joined
-// area is a room when one of its parts was.
+// area is a room when one of its parts was. With `keep_closed_doors`, no
+// areas join at a cut ag-cut made on a door or wall gap it closed
+// (PassagePoint.closed_by_cut): a desk beside such a door is no jamb.
 void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
-                              double resolution_m, AreaPlan* plan);
+                              double resolution_m, bool keep_closed_doors, AreaPlan* plan);
 
 }  // namespace areagraph

@@ -8,6 +8,7 @@
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/ring_area.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
@@ -82,15 +83,8 @@ bool CorridorLike(const proto::CutGraph& graph, const AreaPlan::Area& area) {
 void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
                            bool keep_closed_doors, AreaPlan* plan) {
   const double reach_px = kSideReachM / resolution_m;
-  std::vector<bool> closed(graph.vertices_size(), false);
-  if (keep_closed_doors) {
-    for (const proto::PassagePoint& passage : graph.passage_points()) {
-      if (passage.closed_by_cut() && passage.vertex() >= 0 &&
-          passage.vertex() < graph.vertices_size()) {
-        closed[passage.vertex()] = true;
-      }
-    }
-  }
+  const std::vector<bool> closed =
+      keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
   std::vector<std::vector<int>> edges_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {
     edges_at[graph.edges(e).source()].push_back(e);

@@ -21,4 +21,8 @@ struct VertexOpening {
 std::vector<std::map<int, VertexOpening>> OpeningsAtVertices(const proto::CutGraph& graph,
                                                              const AreaPlan& plan);
 
+// Per graph vertex, whether ag-cut made it on a door or wall gap it closed
+// on purpose (PassagePoint.closed_by_cut).
+std::vector<bool> ClosedVertices(const proto::CutGraph& graph);
+
 }  // namespace areagraph
