@@ -39,7 +39,7 @@ inline constexpr StageInfo kCutStage{"cut", 7};
 // merge 6: rooms meeting without a narrowing join; door stubs no longer stop corridor joining.
 // merge 7: areas in every part's boundary, components and dropped parts counted (issue 13).
 // merge 8: areas join at furniture gaps; corridor-shaped rooms are labelled corridors (issue 12).
-// merge 9: room joining keeps rooms apart at doors the cut closed (merge.keep_closed_doors).
+// merge 9: room and furniture-gap joining keep doors the cut closed (merge.keep_closed_doors).
 inline constexpr StageInfo kMergeStage{"merge", 9};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
