@@ -85,7 +85,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
   };
   PointList sites = StructureSites(map.cells(), grid.width(), grid.height(), grid.resolution_m(),
-                                   options.room_island_max_m());
+                                   options.room_island_max_m(), options.island_end_on_face());
   PointList closing;  // the sites that close doors and wall gaps on purpose
   if (options.close_wall_doors()) {
     closing =

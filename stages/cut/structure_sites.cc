@@ -87,12 +87,13 @@ ObstacleRegions FindRegions(const std::string& cells, int width, int height,
 // within `gap_px`, another obstacle continues the region's line end-on for
 // `run_px` and is about as wide as the region: a wall broken by a door, or a
 // row of blocks that divides a room, rather than furniture standing free.
-bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, double gap_px,
-                    double run_px) {
+// The line is probed at `offset` px beside the region's centre line.
+bool ContinuedEndOnAt(const ObstacleRegions& regions, int region, int direction, double offset,
+                      double gap_px, double run_px) {
   const RegionShape& shape = regions.shapes[region];
   const Eigen::Vector2d along = direction * shape.axis;
   const Eigen::Vector2d across(-along.y(), along.x());
-  const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along;
+  const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along + offset * across;
   // The first obstacle cell of another region past the end.
   double hit = -1;
   for (double t = 0; t <= gap_px; t += 1) {
@@ -118,10 +119,27 @@ bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, d
   return extent <= kEndOnWidthRatio * shape.width;
 }
 
+// ContinuedEndOnAt on the centre line, or (`across_face`) on any line across
+// the region's end face, one per pixel: a wall piece beside a door need not
+// be centred on the region's line.
+bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, double gap_px,
+                    double run_px, bool across_face) {
+  if (ContinuedEndOnAt(regions, region, direction, 0, gap_px, run_px)) return true;
+  if (!across_face) return false;
+  const double half = 0.5 * regions.shapes[region].width - 1;
+  for (double offset = 1; offset <= half; offset += 1) {
+    if (ContinuedEndOnAt(regions, region, direction, offset, gap_px, run_px) ||
+        ContinuedEndOnAt(regions, region, direction, -offset, gap_px, run_px)) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m) {
+                         double max_island_m, bool end_on_across_face) {
   const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
   std::vector<uint8_t> island;
   ObstacleRegions regions;
@@ -139,8 +157,9 @@ PointList StructureSites(const std::string& cells, int width, int height, double
       island[region] = !s.on_border && s.length <= max_island_px && s.thickness >= min_thickness &&
                        s.length <= kMaxIslandElongation * s.width &&
                        s.cells >= kMinIslandSolidity * s.length * s.width;
-      if (island[region] && (ContinuedEndOn(regions, region, 1, gap_px, run_px) ||
-                             ContinuedEndOn(regions, region, -1, gap_px, run_px))) {
+      if (island[region] &&
+          (ContinuedEndOn(regions, region, 1, gap_px, run_px, end_on_across_face) ||
+           ContinuedEndOn(regions, region, -1, gap_px, run_px, end_on_across_face))) {
         island[region] = 0;
       }
     }

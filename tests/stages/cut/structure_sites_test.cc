@@ -1,0 +1,68 @@
+// StructureSites on drawn plans: a free-standing block is an island (its
+// sites are dropped for the room disk); a block that a wall stub continues
+// end-on is a piece of a dividing row and keeps its sites, also when the stub
+// is off the block's centre line (cut.island_end_on_face).
+#include "stages/cut/structure_sites.h"
+
+#include <gtest/gtest.h>
+
+#include "tests/support/area_test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::FloorPlan;
+
+constexpr double kResolutionM = 0.05;
+// The block: 1.0 m wide, 2.0 m long, standing free in a 7 x 6 m room with
+// four narrow rooms beside it (their walls set the map's typical wall).
+constexpr floorplan::RectM kBlock{2.9, 3.3, 1.0, 2.0};
+
+FloorPlan RoomWithBlock() {
+  FloorPlan plan(12.2, 6.2, kResolutionM);
+  floorplan::DrawRoom(plan, {0.1, 0.1, 7, 6});
+  for (int k = 0; k < 4; ++k) floorplan::DrawRoom(plan, {7.1 + 1.25 * k, 0.1, 1.25, 6});
+  floorplan::DrawFurniture(plan, kBlock);
+  return plan;
+}
+
+// How many of the structure sites lie on the block.
+int SitesOnBlock(const FloorPlan& plan, bool end_on_across_face) {
+  const proto::CleanedMap map = CleanDrawnMap(plan.image());
+  const PointList sites =
+      StructureSites(map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM,
+                     /*max_island_m=*/4.0, end_on_across_face);
+  int on_block = 0;
+  for (const Eigen::Vector2d& site : sites) {
+    const double x = site.x() * kResolutionM, y = site.y() * kResolutionM;
+    on_block += x > kBlock.x - 0.05 && x < kBlock.x + kBlock.width + 0.05 && y > kBlock.y - 0.05 &&
+                y < kBlock.y + kBlock.height + 0.05;
+  }
+  return on_block;
+}
+
+TEST(StructureSitesTest, FreeStandingBlockIsAnIsland) {
+  EXPECT_EQ(SitesOnBlock(RoomWithBlock(), true), 0);
+  EXPECT_EQ(SitesOnBlock(RoomWithBlock(), false), 0);
+}
+
+TEST(StructureSitesTest, BlockContinuedByAWallStubBesideItsCentreLineIsStructure) {
+  // A 0.15 m wall stub from the top wall down to y = 2.0 m, 1.3 m above the
+  // block, over the block's left part (x 3.0-3.15 m; the block's centre line
+  // is x = 3.4 m): a row that divides the room, with a gap in it.
+  FloorPlan plan = RoomWithBlock();
+  floorplan::DrawFurniture(plan, {3.0, 0.1, 0.15, 1.9});
+  EXPECT_GT(SitesOnBlock(plan, true), 40);
+  EXPECT_EQ(SitesOnBlock(plan, false), 0);
+}
+
+TEST(StructureSitesTest, BlockWithAStubOnItsCentreLineIsStructureEitherWay) {
+  FloorPlan plan = RoomWithBlock();
+  floorplan::DrawFurniture(plan, {3.325, 0.1, 0.15, 1.9});
+  EXPECT_GT(SitesOnBlock(plan, true), 40);
+  EXPECT_GT(SitesOnBlock(plan, false), 40);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
