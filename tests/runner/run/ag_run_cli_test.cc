@@ -321,7 +321,7 @@ TEST(AgRunPartsTest, TilesOfAMapAreComponentsAndTheSummarySaysSo) {
   // With cut.close_wall_gaps_max_m one tile has an area less (113 against
   // 4 x 28): the tiles' Topology Graphs already differ slightly, and an
   // office of about merge.min_area_m2 folds in one tile only (docs/quality.md,
-  // cut 7), so this test of components and summaries runs without it.
+  // island_end_on_face section), so this test of components and summaries runs without it.
   const std::vector<std::string> options = {"--set", "cut.close_wall_gaps_max_m=0"};
   auto with_options = [&](std::vector<std::string> args) {
     args.insert(args.begin(), options.begin(), options.end());
