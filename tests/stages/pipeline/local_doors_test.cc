@@ -11,25 +11,38 @@ namespace {
 
 using floorplan::WallDirection;
 
-// Ten 4 x 4 m offices on both sides of a corridor 2 m between wall centres,
-// each opening into it through a 0.9 m door, except the third office on top,
-// whose door is 1.3 m wide: W (above the 90th percentile of the doors, the
-// 0.9 m ones) is narrower than it.
-constexpr double kWideDoorX = 10.5, kWideDoorWidth = 1.3;
-constexpr double kCorridorY = 4.5, kCorridorHeight = 2;
+// Ten 4 x 4 m offices on both sides of a corridor, each opening into it
+// through a 0.9 m door, except the third office on top, whose door is wider.
+struct CorridorPlan {
+  double plan_height_m = 0;
+  double corridor_height_m = 0;  // between wall centres
+  double wide_door_m = 0;
+};
+constexpr double kWideDoorX = 10.5, kCorridorY = 4.5;
 
-floorplan::FloorPlan OfficesAlongACorridor() {
-  floorplan::FloorPlan plan(21, 11);
+// The corridor is 2 m between wall centres and the wide door 1.3 m: W (above
+// the 90th percentile of the doors, the 0.9 m ones) is narrower than it.
+constexpr CorridorPlan kWideDoorPlan{11, 2, 1.3};
+
+// The corridor is 1.4 m between wall centres (1.3 m free) and the wide door
+// 1.8 m: wider than the corridor, so the space does not widen on the
+// corridor's side of it and the width estimate finds no door there
+// (cut.close_wall_gaps_max_m must close it).
+constexpr CorridorPlan kNarrowCorridorPlan{10, 1.4, 1.8};
+
+floorplan::FloorPlan OfficesAlongACorridor(const CorridorPlan& shape) {
+  floorplan::FloorPlan plan(21, shape.plan_height_m);
+  const double below = kCorridorY + shape.corridor_height_m;
   for (int i = 0; i < 5; ++i) {
     floorplan::DrawRoom(plan, {0.5 + 4 * i, 0.5, 4, 4});
-    floorplan::DrawRoom(plan, {0.5 + 4 * i, kCorridorY + kCorridorHeight, 4, 4});
+    floorplan::DrawRoom(plan, {0.5 + 4 * i, below, 4, 4});
   }
-  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, shape.corridor_height_m});
   for (int i = 0; i < 5; ++i) {
     const double x = 2.5 + 4 * i;
-    floorplan::DrawDoor(plan, x, kCorridorY, x == kWideDoorX ? kWideDoorWidth : 0.9,
+    floorplan::DrawDoor(plan, x, kCorridorY, x == kWideDoorX ? shape.wide_door_m : 0.9,
                         WallDirection::kHorizontal);
-    floorplan::DrawDoor(plan, x, kCorridorY + kCorridorHeight, 0.9, WallDirection::kHorizontal);
+    floorplan::DrawDoor(plan, x, below, 0.9, WallDirection::kHorizontal);
   }
   return plan;
 }
@@ -42,21 +55,21 @@ struct WideDoorAreas {
   proto::AreaKind corridor_kind = proto::AREA_ROOM;
 };
 
-WideDoorAreas RunOffices(const proto::PipelineOptions& options) {
-  const proto::CleanedMap map = CleanDrawnMap(OfficesAlongACorridor().image());
+WideDoorAreas RunOffices(const CorridorPlan& shape, const proto::PipelineOptions& options) {
+  const proto::CleanedMap map = CleanDrawnMap(OfficesAlongACorridor(shape).image());
   const AreaStages stages = RunAreaStages(map, options);
   WideDoorAreas found;
   found.room_width_m = stages.cut.room_width().room_width_m();
   found.office = AreaAt(stages.areas, kWideDoorX, 2.5);
-  found.corridor = AreaAt(stages.areas, kWideDoorX, kCorridorY + kCorridorHeight / 2);
+  found.corridor = AreaAt(stages.areas, kWideDoorX, kCorridorY + shape.corridor_height_m / 2);
   if (found.office >= 0) found.office_kind = stages.areas.areas(found.office).kind();
   if (found.corridor >= 0) found.corridor_kind = stages.areas.areas(found.corridor).kind();
   return found;
 }
 
 TEST(LocalDoorsTest, DoorWiderThanWStillDividesOfficeFromCorridor) {
-  const WideDoorAreas found = RunOffices({});
-  EXPECT_LT(found.room_width_m, kWideDoorWidth);
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, {});
+  EXPECT_LT(found.room_width_m, kWideDoorPlan.wide_door_m);
   ASSERT_NE(found.office, -1);
   ASSERT_NE(found.corridor, -1);
   EXPECT_NE(found.office, found.corridor);
@@ -67,48 +80,14 @@ TEST(LocalDoorsTest, WithOneGlobalWTheOfficeLeaksIntoTheCorridor) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_close_wall_doors(false);
   options.mutable_cut()->set_close_wall_gaps_max_m(0);
-  const WideDoorAreas found = RunOffices(options);
-  EXPECT_LT(found.room_width_m, kWideDoorWidth);
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, options);
+  EXPECT_LT(found.room_width_m, kWideDoorPlan.wide_door_m);
   EXPECT_EQ(found.office, found.corridor);
 }
 
-// Ten 4 x 4 m offices on both sides of a corridor 1.4 m between wall
-// centres (1.3 m free), each opening into it through a 0.9 m door, except
-// the third office on top, whose door is 1.8 m wide: wider than the corridor,
-// so the space does not widen on the corridor's side of it and the width
-// estimate finds no door there (cut.close_wall_gaps_max_m must close it).
-constexpr double kNarrowCorridorHeight = 1.4, kWiderThanCorridorDoor = 1.8;
-
-floorplan::FloorPlan OfficesAlongANarrowCorridor() {
-  floorplan::FloorPlan plan(21, 10);
-  const double below = kCorridorY + kNarrowCorridorHeight;
-  for (int i = 0; i < 5; ++i) {
-    floorplan::DrawRoom(plan, {0.5 + 4 * i, 0.5, 4, 4});
-    floorplan::DrawRoom(plan, {0.5 + 4 * i, below, 4, 4});
-  }
-  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kNarrowCorridorHeight});
-  for (int i = 0; i < 5; ++i) {
-    const double x = 2.5 + 4 * i;
-    floorplan::DrawDoor(plan, x, kCorridorY, x == kWideDoorX ? kWiderThanCorridorDoor : 0.9,
-                        WallDirection::kHorizontal);
-    floorplan::DrawDoor(plan, x, below, 0.9, WallDirection::kHorizontal);
-  }
-  return plan;
-}
-
-WideDoorAreas RunNarrowCorridor(const proto::PipelineOptions& options) {
-  const proto::CleanedMap map = CleanDrawnMap(OfficesAlongANarrowCorridor().image());
-  const AreaStages stages = RunAreaStages(map, options);
-  WideDoorAreas found;
-  found.room_width_m = stages.cut.room_width().room_width_m();
-  found.office = AreaAt(stages.areas, kWideDoorX, 2.5);
-  found.corridor = AreaAt(stages.areas, kWideDoorX, kCorridorY + kNarrowCorridorHeight / 2);
-  return found;
-}
-
 TEST(LocalDoorsTest, DoorWiderThanItsCorridorDividesOfficeFromCorridor) {
-  const WideDoorAreas found = RunNarrowCorridor({});
-  EXPECT_LT(found.room_width_m, kNarrowCorridorHeight);
+  const WideDoorAreas found = RunOffices(kNarrowCorridorPlan, {});
+  EXPECT_LT(found.room_width_m, kNarrowCorridorPlan.corridor_height_m);
   ASSERT_NE(found.office, -1);
   ASSERT_NE(found.corridor, -1);
   EXPECT_NE(found.office, found.corridor);
@@ -117,7 +96,7 @@ TEST(LocalDoorsTest, DoorWiderThanItsCorridorDividesOfficeFromCorridor) {
 TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_close_wall_gaps_max_m(0);
-  const WideDoorAreas found = RunNarrowCorridor(options);
+  const WideDoorAreas found = RunOffices(kNarrowCorridorPlan, options);
   EXPECT_EQ(found.office, found.corridor);
 }
 
@@ -127,7 +106,7 @@ TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
   // corridor; the cut marks it closed (merge.keep_closed_doors).
   proto::PipelineOptions options;
   options.mutable_merge()->set_keep_closed_doors(false);
-  const WideDoorAreas found = RunNarrowCorridor(options);
+  const WideDoorAreas found = RunOffices(kNarrowCorridorPlan, options);
   ASSERT_NE(found.office, -1);
   EXPECT_EQ(found.office, found.corridor);
 }
@@ -135,7 +114,7 @@ TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
 TEST(LocalDoorsTest, CorridorWiderThanWIsLabelledACorridor) {
   // The room disk (W about 1 m) fits in the 1.85 m corridor, but the
   // corridor is ten times as long as it is wide: merge.label_corridors_by_shape.
-  const WideDoorAreas found = RunOffices({});
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, {});
   ASSERT_NE(found.office, -1);
   ASSERT_NE(found.corridor, -1);
   EXPECT_EQ(found.corridor_kind, proto::AREA_CORRIDOR);
@@ -145,7 +124,7 @@ TEST(LocalDoorsTest, CorridorWiderThanWIsLabelledACorridor) {
 TEST(LocalDoorsTest, WithoutTheShapeCueTheWideCorridorIsARoom) {
   proto::PipelineOptions options;
   options.mutable_merge()->set_label_corridors_by_shape(false);
-  const WideDoorAreas found = RunOffices(options);
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, options);
   ASSERT_NE(found.corridor, -1);
   EXPECT_EQ(found.corridor_kind, proto::AREA_ROOM);
 }
