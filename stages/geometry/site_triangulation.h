@@ -35,11 +35,11 @@ SiteTriangulationPtr TriangulateSites(std::vector<Eigen::Vector2d>&& sites);
 // Bytes the triangulation's vertices and faces take (what keeping it costs).
 size_t SiteTriangulationBytes(const SiteTriangulation& triangulation);
 
-// Largest triangulation that is kept for a later stage: on a big map the
-// triangulation would sit on top of the voronoi write's peak memory (about
-// 170 MB at lab_a tiled 8 x 8), so there prune triangulates again; the
-// areagraph/ maps' triangulations take 2-20 MB. Same bound as
-// ReturnFreedMemory's (stages/common/freed_memory.cc).
+// Largest triangulation that is kept for a later stage (about 176 bytes a
+// site): lab_e's takes 9 MB and lab_a tiled 4 x 4's 43 MB, while lab_a tiled
+// 8 x 8's (about 170 MB) would sit on top of prune's peak memory, so there
+// prune triangulates again. Same bound as ReturnFreedMemory's
+// (stages/common/freed_memory.cc).
 inline constexpr size_t kMaxKeptTriangulationBytes = size_t{64} << 20;
 
 // Keeps `triangulation` of `sites` (inserted in this order) for a later
