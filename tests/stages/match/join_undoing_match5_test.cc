@@ -123,23 +123,10 @@ TEST(JoinUndoingMatch5Test, AJoinIsCutAlongAPreviousOutlineThatTouchesItself) {
 // Rooms A [0,4] and B [4,6], 1.5 m deep, under a corridor C; with a door
 // between A and B `door_m` wide, or none.
 proto::AreaGraph ShallowRooms(double door_m) {
-  proto::AreaGraph merged =
-      RectGraph(Frame(140, 80), {{0, 0, 4, 1.5}, {4, 0, 6, 1.5}, {0, 1.5, 6, 3.5}});
-  AddPassage(merged, 0, 2, 2, 1.5);
-  AddPassage(merged, 1, 2, 5, 1.5);
-  if (door_m > 0) {
-    AddPassage(merged, 0, 1, 4, 0.75);
-    merged.mutable_passages(2)->set_width_m(door_m);
-  }
-  return MatchAfter(merged, nullptr);
+  return MatchAfter(TwoRoomsUnderACorridor(1.5, door_m), nullptr);
 }
 
-proto::AreaGraph ShallowRoomsJoined() {
-  proto::AreaGraph merged = RectGraph(Frame(140, 80), {{0, 0, 6, 1.5}, {0, 1.5, 6, 3.5}});
-  AddPassage(merged, 0, 1, 2, 1.5);
-  AddPassage(merged, 0, 1, 5, 1.5);
-  return merged;
-}
+proto::AreaGraph ShallowRoomsJoined() { return TwoRoomsJoined(1.5); }
 
 TEST(JoinUndoingMatch5Test, ADoorNarrowerThanARobotCountsAsTheLeastOpening) {
   // The door measured 0.3 m: the 1.5 m cut is over 4 x 0.3 m but within
