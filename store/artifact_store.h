@@ -208,6 +208,12 @@ class ArtifactStore {
   // process is reading or writing (its own close folds the log then). Every
   // read-write store does this when it closes.
   virtual bool FoldWriteAheadLog() = 0;
+  // For a process that hands the store to writers coming next (ag-run before
+  // its workers): closing then leaves the write-ahead log for them to append
+  // to instead of folding it, which saves two file syncs there and a new log
+  // (two more) for the next writer. The log stays safe to replay; whoever
+  // closes last with folding on makes the file whole again.
+  virtual void LeaveWriteAheadLogOnClose() = 0;
 
   // Copies the whole store, consistent at one moment even while others
   // write, into a new SQLite file at `path` through SQLite's online backup,

@@ -22,7 +22,8 @@ namespace areagraph {
 class SqliteArtifactStore : public ArtifactStore {
  public:
   SqliteArtifactStore(const std::string& path, StoreMode mode);
-  // A read-write store folds its write-ahead log into the file on close.
+  // A read-write store folds its write-ahead log into the file on close,
+  // unless LeaveWriteAheadLogOnClose said otherwise.
   ~SqliteArtifactStore() override;
 
   std::vector<MapRecord> ReadAllMaps() override;
@@ -55,6 +56,7 @@ class SqliteArtifactStore : public ArtifactStore {
   MaintenanceCounts CollectGarbage() override;
   MaintenanceCounts MergeFrom(const std::string& path) override;
   bool FoldWriteAheadLog() override;
+  void LeaveWriteAheadLogOnClose() override;
   void BackupTo(const std::string& path) override;
 
  private:
@@ -120,7 +122,8 @@ class SqliteArtifactStore : public ArtifactStore {
   const StoreMode mode_;
   const SqliteConnection connection_;  // closes after the statements below
   sqlite3* const db_;
-  int schema_version_ = 0;  // of the open file, after any upgrade
+  int schema_version_ = 0;     // of the open file, after any upgrade
+  bool fold_on_close_ = true;  // false once LeaveWriteAheadLogOnClose ran
 
   std::unique_ptr<SqliteStatement> sql_stmt_begin_;
   std::unique_ptr<SqliteStatement> sql_stmt_commit_;

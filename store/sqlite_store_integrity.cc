@@ -118,7 +118,16 @@ bool SqliteArtifactStore::FoldWriteAheadLog() {
   return true;
 }
 
+void SqliteArtifactStore::LeaveWriteAheadLogOnClose() {
+  if (path_ == kMemoryStorePath || mode_ != StoreMode::kReadWrite) return;
+  // SQLite's own close would fold the log when this is its last connection.
+  CheckSqlite(db_, path_, sqlite3_db_config(db_, SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr),
+              "keeping the write-ahead log on close");
+  fold_on_close_ = false;
+}
+
 SqliteArtifactStore::~SqliteArtifactStore() {
+  if (!fold_on_close_) return;
   try {
     FoldWriteAheadLog();
   } catch (const StoreError&) {

@@ -43,10 +43,8 @@ GraphPublisher MakePublisher(const std::string& url) {
   };
 }
 
-void RecordLeftoverFailures(const std::string& store_path, const RunReport& report) {
-  if (report.UnrecordedFailures().empty()) return;
-  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path);
-  for (const FailureRecord& failure : report.UnrecordedFailures()) store->RecordFailure(failure);
+void RecordLeftoverFailures(ArtifactStore& store, const RunReport& report) {
+  for (const FailureRecord& failure : report.UnrecordedFailures()) store.RecordFailure(failure);
 }
 
 }  // namespace
@@ -57,8 +55,9 @@ int RunCollection(const RunFlags& flags) {
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
-  // closed again because SQLite connections must not cross fork().
-  OpenArtifactStore(settings.store_path).reset();
+  // closed again because SQLite connections must not cross fork(). Its log
+  // stays for the workers: the fold at the end syncs the file once.
+  OpenArtifactStore(settings.store_path)->LeaveWriteAheadLogOnClose();
 
   ProgressDisplay progress(static_cast<int>(tasks.size()), isatty(STDERR_FILENO) == 1);
   RunReport report(tasks, progress);
@@ -86,9 +85,12 @@ int RunCollection(const RunFlags& flags) {
   progress.Finish();
 
   const proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
-  RecordLeftoverFailures(settings.store_path, report);
-  // Workers end without closing their stores; fold their log into the file.
-  OpenArtifactStore(settings.store_path)->FoldWriteAheadLog();
+  {
+    // Workers end without closing their stores; closing this one folds
+    // their log into the file.
+    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(settings.store_path);
+    RecordLeftoverFailures(*store, report);
+  }
   if (flags.json) {
     std::cout << MessageToJson(summary, /*with_defaults=*/true);
   } else {

@@ -62,6 +62,15 @@ TEST(StoreFileTest, AfterAgRunTheFileAloneHoldsEveryArtifact) {
   ExpectFileAloneIsTheStore(store, "21");  // 3 maps, 7 stages
 }
 
+// One worker writes into the log the runner left when it created the store
+// (it no longer folds it before the worker starts); the end still folds.
+TEST(StoreFileTest, AfterAgRunWithOneWorkerTheFileAloneHoldsEveryArtifact) {
+  TempDir dir;
+  const std::string store = dir.File("s.db");
+  RunOk("ag-run", {"--store", store, "--jobs", "1", MapPaths()[0]});
+  ExpectFileAloneIsTheStore(store, "7");
+}
+
 // Every other tool that writes a store, one after another on one store.
 TEST(StoreFileTest, EveryWritingToolLeavesTheFileWhole) {
   TempDir dir;
