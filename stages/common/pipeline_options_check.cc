@@ -100,6 +100,8 @@ void CheckCutOptions(const proto::CutOptions& options) {
 
 void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_area_m2(), "merge.min_area_m2", "square metres");
+  RequireNotNegative(options.fill_furniture_outlines_m(), "merge.fill_furniture_outlines_m",
+                     "metres");
   RequireNotNegative(options.grow_min_gap_m(), "merge.grow_min_gap_m", "metres");
   RequireNotNegative(options.outline_tolerance_m(), "merge.outline_tolerance_m", "metres");
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");

@@ -113,8 +113,8 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     JoinRoomsWithoutDoors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   if (options.join_furniture_gaps()) {
-    JoinAreasAtFurnitureGaps(graph, FurnitureIslandCells(map), grid.resolution_m(),
-                             options.keep_closed_doors(), &plan);
+    JoinAreasAtFurnitureGaps(graph, FurnitureIslandCells(map, options.fill_furniture_outlines_m()),
+                             grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);

@@ -9,6 +9,7 @@
 
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/ring_simplicity.h"
 #include "stages/geometry/wall_thickness.h"
 #include "stages/merge/vertex_openings.h"
@@ -67,7 +68,7 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
 
 }  // namespace
 
-cv::Mat FurnitureIslandCells(const proto::CleanedMap& map) {
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const double resolution_m = map.frame().resolution_m();
   // What cleaning removed is still no free space: a wall it broke stays one.
@@ -77,6 +78,7 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map) {
       if (index >= 0 && index < width * height) obstacle.data[index] = 255;
     }
   }
+  if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
   const cv::Mat depth = ObstacleDepth(obstacle);

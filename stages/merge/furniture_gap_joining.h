@@ -24,8 +24,11 @@ inline constexpr double kMinFurnitureSolidity = 0.75;
 
 // Which obstacle cells belong to an island, as CV_8U the map's size (1 on
 // island cells). Cells that cleaning removed count as obstacles, so that a
-// wall it broke stays one region.
-cv::Mat FurnitureIslandCells(const proto::CleanedMap& map);
+// wall it broke stays one region. Free pockets enclosed by obstacles and at
+// most `fill_pockets_m` long (merge.fill_furniture_outlines_m) count as
+// obstacles too, so that a desk drawn as a closed outline is one solid
+// island; 0 leaves them free.
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m);
 
 // The smaller of two areas at a gap is at most this big (m2, its edges'
 // polygons): a room cut off by a row of blocks with openings between them

@@ -69,8 +69,10 @@ proto::CleanedMap WalledMap(const std::vector<cv::Rect>& obstacles) {
 TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   // A desk (1.6 x 0.8 m), a piece of wall (3 m x 0.15 m), a speck (2 cells),
   // a cabinet against the outer wall and a free block 5 m long.
-  const cv::Mat islands = FurnitureIslandCells(WalledMap(
-      {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}));
+  const cv::Mat islands = FurnitureIslandCells(
+      WalledMap(
+          {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}),
+      /*fill_pockets_m=*/0);
   EXPECT_EQ(islands.at<uint8_t>(25, 30), 1);
   EXPECT_EQ(islands.at<uint8_t>(21, 100), 0);
   EXPECT_EQ(islands.at<uint8_t>(60, 30), 0);

@@ -1,6 +1,8 @@
 // merge.join_furniture_gaps through the whole pipeline: a cabinet standing
 // free across a room, too close to the walls for the room disk to pass, no
-// longer splits the room; a piece of wall between two doors still does.
+// longer splits the room; a piece of wall between two doors still does. With
+// merge.fill_furniture_outlines_m, neither does a cabinet drawn as a closed
+// outline (lab_d's desks).
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
@@ -37,6 +39,16 @@ constexpr RectM kCabinet{3.2, 1.8, 0.6, 2.45};
 // A wall 0.15 m thick in the same place: a wall with a doorway at each end.
 constexpr RectM kWallPiece{3.43, 1.8, 0.15, 2.45};
 
+// kCabinet drawn as a closed outline 2 cells thick, free inside.
+floorplan::FloorPlan RoomWithOutlinedCabinet() {
+  floorplan::FloorPlan plan = RoomWithDivider(kCabinet);
+  const cv::Rect cabinet(plan.ToPixels(kCabinet.x), plan.ToPixels(kCabinet.y),
+                         plan.ToPixels(kCabinet.x + kCabinet.width) - plan.ToPixels(kCabinet.x),
+                         plan.ToPixels(kCabinet.y + kCabinet.height) - plan.ToPixels(kCabinet.y));
+  plan.image()(cabinet - cv::Point(-2, -2) - cv::Size(4, 4)).setTo(floorplan::kFreeGrey);
+  return plan;
+}
+
 struct Sides {
   int left = -1, right = -1, corridor = -1;
 };
@@ -67,6 +79,28 @@ TEST(FurnitureGapsTest, WithoutTheRuleTheCabinetSplitsTheRoom) {
 
 TEST(FurnitureGapsTest, WallPieceBetweenTwoDoorwaysStillDividesTheRoom) {
   const Sides sides = AreasOf(RoomWithDivider(kWallPiece), {});
+  ASSERT_NE(sides.left, -1);
+  ASSERT_NE(sides.right, -1);
+  EXPECT_NE(sides.left, sides.right);
+}
+
+TEST(FurnitureGapsTest, CabinetDrawnAsOutlineDoesNotSplitTheRoom) {
+  const floorplan::FloorPlan plan = RoomWithOutlinedCabinet();
+  // The outline is hollow: its inside is free.
+  const cv::Rect cabinet(plan.ToPixels(kCabinet.x), plan.ToPixels(kCabinet.y), 1, 1);
+  ASSERT_EQ(plan.image().at<uint8_t>(cabinet.y + 10, cabinet.x + 5), floorplan::kFreeGrey);
+  ASSERT_EQ(plan.image().at<uint8_t>(cabinet.y + 10, cabinet.x), floorplan::kWallGrey);
+  const Sides sides = AreasOf(plan, {});
+  ASSERT_NE(sides.left, -1);
+  ASSERT_NE(sides.corridor, -1);
+  EXPECT_EQ(sides.left, sides.right);
+  EXPECT_NE(sides.left, sides.corridor);
+}
+
+TEST(FurnitureGapsTest, WithoutFillingTheOutlineSplitsTheRoom) {
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_fill_furniture_outlines_m(0);
+  const Sides sides = AreasOf(RoomWithOutlinedCabinet(), options);
   ASSERT_NE(sides.left, -1);
   ASSERT_NE(sides.right, -1);
   EXPECT_NE(sides.left, sides.right);
