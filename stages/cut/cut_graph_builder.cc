@@ -93,8 +93,9 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
         DoorClosingSites(room_width, map.cells(), grid.width(), grid.height(), grid.resolution_m());
   }
   if (options.close_wall_gaps_max_m() > 0) {
-    const PointList gaps = WallGapSites(topology, map.cells(), grid.width(), grid.height(),
-                                        grid.resolution_m(), options.close_wall_gaps_max_m());
+    const PointList gaps =
+        WallGapSites(topology, map.cells(), grid.width(), grid.height(), grid.resolution_m(),
+                     options.close_wall_gaps_max_m(), options.close_wall_gaps_short_tips());
     closing.insert(closing.end(), gaps.begin(), gaps.end());
   }
   sites.insert(sites.end(), closing.begin(), closing.end());
