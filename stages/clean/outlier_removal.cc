@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "stages/clean/outlier_candidates.h"
-#include "stages/clean/outlier_points.h"
 #include "stages/geometry/cell_states.h"
 
 namespace areagraph {
@@ -30,21 +29,6 @@ bool CanFree(const CellStates& grid, int col, int row) {
   return runs == 1;
 }
 
-// The candidates and every occupied cell within their reach: the points
-// among which each candidate's nearest neighbours are the same as among all
-// occupied cells. Flat indices, increasing.
-std::vector<int> CandidateNeighbourhoods(const OccupiedRows& occupied,
-                                         const std::vector<OutlierCandidate>& candidates) {
-  std::vector<int> members;
-  for (const OutlierCandidate& candidate : candidates) {
-    occupied.ForEachWithin(candidate.cell % occupied.width(), candidate.cell / occupied.width(),
-                           candidate.reach2, [&](int cell, long) { members.push_back(cell); });
-  }
-  std::sort(members.begin(), members.end());
-  members.erase(std::unique(members.begin(), members.end()), members.end());
-  return members;
-}
-
 }  // namespace
 
 double StraightWallScore(int neighbors) {
@@ -66,24 +50,14 @@ std::vector<int> RemoveOutlierCells(std::string& cells, int width, int height, i
   const double min_score = StraightWallScore(neighbors + 1) * (1 + 1e-9);
   // remove_outliers compares scores with the square of threshold_distance.
   const double threshold = std::sqrt(min_score);
-  const std::vector<OutlierCandidate> candidates =
+  // Each of these scores at or above the threshold exactly as CGAL's
+  // remove_outliers scores it among all occupied cells (integer squared
+  // distances, summed in any order to the same double; compared with CGAL
+  // itself in tests/stages/clean/outlier_candidates_test.cc). Running
+  // remove_outliers on their neighbourhoods as well only confirmed that, for
+  // most of ag-clean's instructions.
+  std::vector<OutlierCandidate> outliers =
       FindOutlierCandidates(occupied, neighbors, threshold * threshold);
-
-  // remove_outliers itself, on the candidates and their neighbourhoods only:
-  // it scores each candidate as it would among all occupied cells, and keeps
-  // those at or above the threshold (the percentage is applied below).
-  const std::vector<int> members = CandidateNeighbourhoods(occupied, candidates);
-  std::vector<Eigen::Vector2d> centres;
-  centres.reserve(members.size());
-  for (const int index : members) centres.push_back(CellCentre(index % width, index / width));
-  std::vector<OutlierCandidate> outliers;
-  size_t next = 0;
-  for (const int point : FindOutlierPoints(centres, neighbors, 100, min_score)) {
-    while (next < candidates.size() && candidates[next].cell < members[point]) ++next;
-    if (next < candidates.size() && candidates[next].cell == members[point]) {
-      outliers.push_back(candidates[next]);
-    }
-  }
   // At most `percent` % of all occupied cells, the highest scores first, as
   // remove_outliers counts them (ties go to the earlier cell).
   const size_t keep = size_t(double(occupied.count()) * ((100.0 - percent) / 100.0));

@@ -6,10 +6,10 @@
 namespace areagraph {
 
 // Step (a) of the paper's preprocessing: CGAL's remove_outliers over the
-// centres of all occupied cells (at most `percent` % of them, k neighbours).
-// Only the cells that can reach the score threshold (FindOutlierCandidates)
-// and their neighbourhoods go through remove_outliers, which scores them
-// exactly as among all occupied cells; when more than `percent` % reach it,
+// centres of all occupied cells (at most `percent` % of them, k neighbours),
+// computed on the grid: FindOutlierCandidates gives exactly the cells whose
+// remove_outliers score reaches the threshold, with that score (tests compare
+// it with CGAL's FindOutlierPoints); when more than `percent` % reach it,
 // the highest scores win, ties going to the earlier cell.
 // What it finds only becomes free where that cannot change the map's
 // structure, checked cell by cell in row-major order on the updated grid:

@@ -66,6 +66,10 @@ int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
     const int exit_code = body();
     FlushStandardOutput();  // a report lost on a full disk is a failure
     return exit_code;
+  } catch (const OptionsError& e) {
+    // A bad option key, value or combination is bad usage, like a bad flag.
+    std::cerr << tool << ": " << e.what() << "\n";
+    return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << tool << ": out of memory\n";
   } catch (const std::exception& e) {

@@ -27,7 +27,8 @@ void AddStageFlags(CLI::App& app, StageCommandLine& flags, bool map_required = t
 proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags);
 
 // Parses the command line and runs `body`, turning every error into one line
-// "<tool>: <message>" on stderr and a non-zero exit: 2 for bad usage, 1 for
+// "<tool>: <message>" on stderr and a non-zero exit: 2 for bad usage (a bad
+// flag, or an OptionsError: a bad option key, value or combination), 1 for
 // everything else. --help prints the help and --version the version
 // (VersionText), each exiting 0. Standard output is flushed and checked after
 // `body`, so a lost report is an error too.

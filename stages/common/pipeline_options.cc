@@ -166,14 +166,14 @@ void CheckOptionNumbers(const proto::PipelineOptions& options) {
 proto::PipelineOptions ReadOptionsFile(const std::string& path) {
   std::error_code error;
   if (std::filesystem::is_directory(path, error)) {
-    throw OptionsError("options file '" + path + "' is a folder; name a .pbtxt file");
+    throw InputError("options file '" + path + "' is a folder; name a .pbtxt file");
   }
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw OptionsError("cannot read options file '" + path + "'");
+  if (!in) throw InputError("cannot read options file '" + path + "'");
   std::stringstream text;
   text << in.rdbuf();
   if (in.bad() || (!in.eof() && in.fail())) {
-    throw OptionsError("cannot read options file '" + path + "'");
+    throw InputError("cannot read options file '" + path + "'");
   }
   proto::PipelineOptions options;
   google::protobuf::TextFormat::Parser parser;

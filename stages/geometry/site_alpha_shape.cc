@@ -1,32 +1,16 @@
 #include "stages/geometry/site_alpha_shape.h"
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-
 #include <deque>
 #include <map>
+
+#include "stages/geometry/site_triangulation_cgal.h"
 
 namespace areagraph {
 namespace {
 
-// Per-face labels. `interior` and `in_complex` (bit i: edge i) are the face's
-// and its edges' places in the alpha complex; `walked` marks boundary edges
-// already put in a ring.
-struct FaceInfo {
-  int filled_region = -1;
-  int room = -1;
-  bool outside = false;
-  bool interior = false;
-  unsigned char in_complex = 0;
-  unsigned char walked = 0;
-};
-
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using FaceBase = CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>;
-using Tds =
-    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<Kernel>, FaceBase>;
-using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+using FaceInfo = SiteFaceInfo;
+using Kernel = site_cgal::Kernel;
+using Delaunay = site_cgal::Delaunay;
 using Face = Delaunay::Face_handle;
 
 Eigen::Vector2d ToVector(const Kernel::Point_2& point) { return {point.x(), point.y()}; }
@@ -63,14 +47,16 @@ proto::Ring ToProtoRing(const PointList& points) {
 }  // namespace
 
 struct SiteAlphaShape::Impl {
-  Delaunay shape;
+  SiteTriangulationPtr triangulation;
+  Delaunay& shape;
   Face hint;
   int enclosed_regions = 0;  // found by FindEnclosedRegions
 
-  // Inserts the points as Alpha_shape_2's constructor does (one range
-  // insert), so the triangulation of co-circular grid points is the same.
-  explicit Impl(const std::vector<Kernel::Point_2>& points, double alpha)
-      : shape(points.begin(), points.end()) {
+  // `triangulation` holds the points inserted as Alpha_shape_2's constructor
+  // does (one range insert), so the triangulation of co-circular grid points
+  // is the same.
+  Impl(SiteTriangulationPtr triangulation, double alpha)
+      : triangulation(std::move(triangulation)), shape(this->triangulation->dt) {
     if (HasFaces()) Classify(alpha);
   }
 
@@ -204,25 +190,15 @@ struct SiteAlphaShape::Impl {
   }
 };
 
-namespace {
-
-std::vector<Kernel::Point_2> KernelPoints(const PointList& sites) {
-  std::vector<Kernel::Point_2> points;
-  points.reserve(sites.size());
-  for (const Eigen::Vector2d& site : sites) points.emplace_back(site.x(), site.y());
-  return points;
-}
-
-}  // namespace
-
 SiteAlphaShape::SiteAlphaShape(const PointList& sites, double alpha_radius_px)
-    : impl_(std::make_unique<Impl>(KernelPoints(sites), alpha_radius_px * alpha_radius_px)) {}
+    : impl_(std::make_unique<Impl>(TriangulateSites(sites), alpha_radius_px * alpha_radius_px)) {}
 
-SiteAlphaShape::SiteAlphaShape(PointList&& sites, double alpha_radius_px) {
-  std::vector<Kernel::Point_2> points = KernelPoints(sites);
-  PointList().swap(sites);
-  impl_ = std::make_unique<Impl>(points, alpha_radius_px * alpha_radius_px);
-}
+SiteAlphaShape::SiteAlphaShape(PointList&& sites, double alpha_radius_px)
+    : impl_(std::make_unique<Impl>(TriangulateSites(std::move(sites)),
+                                   alpha_radius_px * alpha_radius_px)) {}
+
+SiteAlphaShape::SiteAlphaShape(SiteTriangulationPtr triangulation, double alpha_radius_px)
+    : impl_(std::make_unique<Impl>(std::move(triangulation), alpha_radius_px * alpha_radius_px)) {}
 
 SiteAlphaShape::~SiteAlphaShape() = default;
 

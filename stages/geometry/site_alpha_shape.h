@@ -9,6 +9,7 @@
 
 #include "proto/geometry.pb.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/site_triangulation.h"
 
 namespace areagraph {
 
@@ -23,6 +24,10 @@ class SiteAlphaShape {
   // The same, freeing `sites` before it triangulates: on a big map the list
   // (16 bytes a site) need not live beside the triangulation.
   SiteAlphaShape(PointList&& sites, double alpha_radius_px);
+  // On a triangulation of the sites made elsewhere (TriangulateSites, or the
+  // one ag-voronoi kept, TakeSiteTriangulation): the same shape without
+  // triangulating again. Its face labels are overwritten.
+  SiteAlphaShape(SiteTriangulationPtr triangulation, double alpha_radius_px);
   ~SiteAlphaShape();
   SiteAlphaShape(const SiteAlphaShape&) = delete;
   SiteAlphaShape& operator=(const SiteAlphaShape&) = delete;

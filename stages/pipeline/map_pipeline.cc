@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "stages/common/freed_memory.h"
 #include "stages/common/stage_versions.h"
+#include "stages/geometry/site_triangulation.h"
 
 namespace areagraph {
 namespace {
@@ -56,6 +57,11 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
                     ArtifactMemo* memo) {
   ArtifactMemo own_memo;
   if (memo == nullptr) memo = &own_memo;
+  // What voronoi kept for a prune that did not run (cached, failed, --to
+  // voronoi) goes with the run, not with the next map.
+  struct DropKeptTriangulation {
+    ~DropKeptTriangulation() { DropSiteTriangulation(); }
+  } drop_kept_triangulation;
   const std::vector<StageInfo> stages = PipelineStages();
   const size_t end = StepIndex(stages, last) + 1;
   for (size_t i = StepIndex(stages, first); i < end; ++i) {

@@ -278,9 +278,14 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
                      " obstacle cells next to free space, too few to enclose any");
   }
   // Held by pointer: FilteredVoronoiGraph frees it before the chains are
-  // built (on large maps it is a good part of the stage's peak memory).
+  // built (on large maps it is a good part of the stage's peak memory). The
+  // triangulation is the voronoi stage's when this process made the diagram.
+  const double alpha_radius_px = options.boundary_alpha_radius_m() / resolution;
+  SiteTriangulationPtr voronoi_triangulation = TakeSiteTriangulation(plain.sites);
   auto boundary_shape =
-      std::make_unique<SiteAlphaShape>(plain.sites, options.boundary_alpha_radius_m() / resolution);
+      voronoi_triangulation != nullptr
+          ? std::make_unique<SiteAlphaShape>(std::move(voronoi_triangulation), alpha_radius_px)
+          : std::make_unique<SiteAlphaShape>(plain.sites, alpha_radius_px);
   const std::vector<double> region_area = boundary_shape->FindEnclosedRegions();
   if (region_area.empty()) {
     throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +

@@ -4,19 +4,22 @@
 
 #include "stages/geometry/cgal_types.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/site_triangulation_cgal.h"
 
 namespace areagraph {
 namespace {
 
-using cgal::SiteDelaunay;
+using SiteDelaunay = site_cgal::Delaunay;
 using Face = SiteDelaunay::Face_handle;
 
-// Numbers the finite faces (face info, in iteration order; infinite faces
-// get -1).
+// Numbers the finite faces (face info's number, in iteration order;
+// infinite faces get -1).
 int NumberFaces(SiteDelaunay& dt) {
   int count = 0;
-  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) f->info() = count++;
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info().number = -1;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    f->info().number = count++;
+  }
   return count;
 }
 
@@ -29,11 +32,11 @@ DisjointSets MergeCocircularFaces(const SiteDelaunay& dt, int face_count) {
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     for (int i = 0; i < 3; ++i) {
       const Face n = f->neighbor(i);
-      if (n->info() < f->info()) continue;  // infinite, or seen from the other side
+      if (n->info().number < f->info().number) continue;  // infinite, or seen from the other side
       const auto& opposite = n->vertex(n->index(f))->point();
       if (side_of_circle(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point(),
                          opposite) == CGAL::ON_ORIENTED_BOUNDARY) {
-        sets.Union(f->info(), n->info());
+        sets.Union(f->info().number, n->info().number);
       }
     }
   }
@@ -55,13 +58,10 @@ double EdgeClearance(const Eigen::Vector2d& from, const Eigen::Vector2d& directi
 }
 
 // Fills the diagram's vertex and edge arrays with the dual of the sites'
-// Delaunay triangulation (see BuildVoronoiDiagram). The arrays take about
-// the memory of the plain structs the messages of format 1 were made from,
-// so the triangulation and the diagram are never more than that together.
-void AddDualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
-                            const VoronoiBuildOptions& options, proto::VoronoiDiagram* diagram) {
-  const auto indexed = cgal::IndexedPoints(sites);
-  SiteDelaunay dt(indexed.begin(), indexed.end());
+// Delaunay triangulation `dt` (see BuildVoronoiDiagram). The arrays take about
+// the memory of the plain structs the messages of format 1 were made from.
+void AddDualOfTriangulation(SiteDelaunay& dt, const VoronoiBuildOptions& options,
+                            proto::VoronoiDiagram* diagram) {
   if (dt.dimension() < 2) return;
 
   const int face_count = NumberFaces(dt);
@@ -77,7 +77,7 @@ void AddDualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
   ys.Resize(vertex_count, 0.0);
   clearances.Resize(vertex_count, -1.0);
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    const int vertex = vertex_of_face[f->info()];
+    const int vertex = vertex_of_face[f->info().number];
     if (clearances[vertex] >= 0) continue;
     const auto centre = dt.circumcenter(f);
     xs[vertex] = centre.x();
@@ -99,11 +99,13 @@ void AddDualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
   for (auto face = dt.finite_faces_begin(); face != dt.finite_faces_end(); ++face) {
     for (int i = 0; i < 3; ++i) {
       const Face other = face->neighbor(i);
-      const bool is_ray = other->info() < 0;
-      if (!is_ray && other->info() < face->info()) continue;
+      const int number = face->info().number;
+      const int other_number = other->info().number;
+      const bool is_ray = other_number < 0;
+      if (!is_ray && other_number < number) continue;
       if (is_ray && !options.keep_rays) continue;
-      const int source = vertex_of_face[face->info()];
-      const int target = is_ray ? -1 : vertex_of_face[other->info()];
+      const int source = vertex_of_face[number];
+      const int target = is_ray ? -1 : vertex_of_face[other_number];
       if (source == target) continue;
 
       // `face` is counter-clockwise in CGAL's (y up) sense, so moving out of
@@ -142,6 +144,12 @@ void AddDualOfTriangulation(const std::vector<Eigen::Vector2d>& sites,
 
 proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
                                           const VoronoiBuildOptions& options) {
+  return BuildVoronoiDiagram(sites, options, nullptr);
+}
+
+proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
+                                          const VoronoiBuildOptions& options,
+                                          SiteTriangulationPtr* triangulation_out) {
   proto::VoronoiDiagram diagram;
   diagram.mutable_site_x()->Reserve(int(sites.size()));
   diagram.mutable_site_y()->Reserve(int(sites.size()));
@@ -149,7 +157,9 @@ proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& si
     diagram.add_site_x(site.x());
     diagram.add_site_y(site.y());
   }
-  AddDualOfTriangulation(sites, options, &diagram);
+  SiteTriangulationPtr triangulation = TriangulateIndexedSites(sites);
+  AddDualOfTriangulation(triangulation->dt, options, &diagram);
+  if (triangulation_out != nullptr) *triangulation_out = std::move(triangulation);
   return diagram;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/site_triangulation.h"
 
 namespace areagraph {
 
@@ -34,5 +35,10 @@ struct VoronoiBuildOptions {
 // edges.
 proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
                                           const VoronoiBuildOptions& options = {});
+// The same, also giving the Delaunay triangulation it is the dual of (the
+// stage keeps it for prune, KeepSiteTriangulation); null leaves it freed.
+proto::VoronoiDiagram BuildVoronoiDiagram(const std::vector<Eigen::Vector2d>& sites,
+                                          const VoronoiBuildOptions& options,
+                                          SiteTriangulationPtr* triangulation_out);
 
 }  // namespace areagraph

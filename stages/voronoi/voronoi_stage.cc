@@ -20,16 +20,20 @@ proto::VoronoiDiagram ComputeVoronoiStage(const proto::CleanedMap& map,
                    [](char cell) { return cell == proto::CELL_FREE; })) {
     throw InputError("the map has no free space");
   }
-  const std::vector<Eigen::Vector2d> sites = ObstacleSites(map.cells(), width, height);
+  std::vector<Eigen::Vector2d> sites = ObstacleSites(map.cells(), width, height);
   if (sites.empty()) throw InputError("the map has no obstacle cells next to free space");
 
   VoronoiBuildOptions build_options;
   build_options.keep_rays = options.keep_rays();
-  proto::VoronoiDiagram diagram = BuildVoronoiDiagram(sites, build_options);
+  SiteTriangulationPtr triangulation;
+  proto::VoronoiDiagram diagram = BuildVoronoiDiagram(sites, build_options, &triangulation);
   if (VoronoiVertexCount(diagram) == 0) {
     throw InputError("the map has too few obstacle cells for a Voronoi diagram (" +
                      std::to_string(sites.size()) + ", all on one line)");
   }
+  // prune triangulates the diagram's sites again for its boundary shape; in
+  // this process it may take this one (when the map is small enough).
+  KeepSiteTriangulation(std::move(triangulation), std::move(sites));
   diagram.set_format_version(kVoronoiDiagramFormatVersion);
   *diagram.mutable_frame() = map.frame();
   return diagram;

@@ -220,7 +220,7 @@ TEST_F(AgRunTest, BadOptionsOfAnyStageFailBeforeTheStore) {
        {"import.max_pixels=0", "clean.outlier_percent=100", "prune.dead_end_passes=-1",
         "cut.room_width_m=-1", "merge.grow_min_gap_m=nan"}) {
     const CommandResult run = RunTool("ag-run", Args({"--set", bad}));
-    EXPECT_EQ(run.exit_code, 1) << bad;
+    EXPECT_EQ(run.exit_code, 2) << bad;
     EXPECT_EQ(CountLines(run.err), 1) << run.err;
     const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
     EXPECT_NE(run.err.find(key), std::string::npos) << run.err;
@@ -228,7 +228,7 @@ TEST_F(AgRunTest, BadOptionsOfAnyStageFailBeforeTheStore) {
   }
   WriteFile(dir_.File("list.csv"), "path,cut.corridor_width_m\nmaps/map_11.png,1.5\n");
   const CommandResult run = RunTool("ag-run", {"--store", store_, dir_.File("list.csv")});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("set both or neither"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(store_));
 }

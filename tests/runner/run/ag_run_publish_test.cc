@@ -65,7 +65,7 @@ TEST(AgRunPublishTest, PublishIsAFlagAndUrlNeedsIt) {
   EXPECT_NE(run.out.find("ag-run: 2 maps"), std::string::npos) << run.out;
   run = RunTool("ag-run", {"--store", dir.File("t.db"), "--url", "memq://",
                            SourcePath("examples/two_rooms.png")});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("add --publish"), std::string::npos) << run.err;
   EXPECT_FALSE(std::filesystem::exists(dir.File("t.db")));
 }

@@ -107,7 +107,7 @@ TEST(PipelineOptionsTest, BadFileNamesLine) {
   } catch (const OptionsError& e) {
     EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(ReadOptionsFile(dir.File("missing.pbtxt")), OptionsError);
+  EXPECT_THROW(ReadOptionsFile(dir.File("missing.pbtxt")), InputError);
 }
 
 TEST(PipelineOptionsTest, ShippedOptionFilesParse) {
@@ -200,7 +200,7 @@ TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
 
 TEST(PipelineOptionsTest, OptionsFolderIsRefusedNotReadAsDefaults) {
   TempDir dir;
-  EXPECT_EQ(testing::ErrorOf<OptionsError>([&] { ReadOptionsFile(dir.path()); }),
+  EXPECT_EQ(testing::ErrorOf<InputError>([&] { ReadOptionsFile(dir.path()); }),
             "options file '" + dir.path() + "' is a folder; name a .pbtxt file");
 }
 

@@ -52,7 +52,7 @@ TEST_F(StageTools, CleanThenVoronoiComputeOnceAndThenHitTheCache) {
 
 TEST_F(StageTools, BadOptionsAndMissingInputsFailWithOneLine) {
   CommandResult result = Run("ag-clean", {"--set", "clean.outlier_percent=-3"});
-  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.exit_code, 2);  // a bad option is bad usage
   EXPECT_EQ(result.err,
             "ag-clean: option 'clean.outlier_percent' must be a number of percent in [0, 100], got "
             "-3\n");

@@ -281,7 +281,7 @@ TEST_F(AgExportCli, OptionsOfAnotherFormatAreOneLineErrors) {
                                      "house",   "--out",     dir_.File("x")};
     args.insert(args.end(), extra.begin(), extra.end());
     const auto run = RunTool("ag-export", args);
-    EXPECT_EQ(run.exit_code, 1) << extra[2];
+    EXPECT_EQ(run.exit_code, 2) << extra[2];
     EXPECT_EQ(CountLines(run.err), 1) << run.err;
   }
 }

@@ -62,7 +62,7 @@ TEST_F(ViewerCli, KeyPrefixPicksTheRunAndAnUnknownKeyIsOneLine) {
 
 TEST_F(ViewerCli, KeyWithAnotherFormatIsOneLine) {
   const auto run = Export({"--format", "json", "--key", merge_key_.substr(0, 6)});
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(CountLines(run.err), 1) << run.err;
   EXPECT_NE(run.err.find("--format html"), std::string::npos) << run.err;
 }

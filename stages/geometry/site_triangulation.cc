@@ -1,0 +1,101 @@
+#include "stages/geometry/site_triangulation.h"
+
+#include <mutex>
+#include <utility>
+
+#include "stages/geometry/site_triangulation_cgal.h"
+
+namespace areagraph {
+namespace {
+
+// The one kept triangulation of this process and the sites it was made from.
+struct KeptTriangulation {
+  std::mutex mutex;
+  SiteTriangulationPtr triangulation;
+  std::vector<Eigen::Vector2d> sites;
+};
+
+KeptTriangulation& Kept() {
+  static KeptTriangulation kept;
+  return kept;
+}
+
+std::vector<site_cgal::Point> KernelPoints(const std::vector<Eigen::Vector2d>& sites) {
+  std::vector<site_cgal::Point> points;
+  points.reserve(sites.size());
+  for (const Eigen::Vector2d& site : sites) points.emplace_back(site.x(), site.y());
+  return points;
+}
+
+// One spatially sorted range insert (as Alpha_shape_2's constructor does).
+SiteTriangulationPtr TriangulatePoints(std::vector<site_cgal::Point> points) {
+  SiteTriangulationPtr triangulation(new SiteTriangulation);
+  triangulation->dt.insert(points.begin(), points.end());
+  return triangulation;
+}
+
+}  // namespace
+
+void SiteTriangulationDeleter::operator()(SiteTriangulation* triangulation) const {
+  delete triangulation;
+}
+
+size_t SiteTriangulationBytes(const SiteTriangulation& triangulation) {
+  const auto& tds = triangulation.dt.tds();
+  return tds.number_of_vertices() * sizeof(site_cgal::Tds::Vertex) +
+         tds.number_of_faces() * sizeof(site_cgal::Tds::Face);
+}
+
+SiteTriangulationPtr TriangulateIndexedSites(const std::vector<Eigen::Vector2d>& sites) {
+  std::vector<std::pair<site_cgal::Point, int>> indexed;
+  indexed.reserve(sites.size());
+  for (size_t i = 0; i < sites.size(); ++i) {
+    indexed.emplace_back(site_cgal::Point(sites[i].x(), sites[i].y()), static_cast<int>(i));
+  }
+  SiteTriangulationPtr triangulation(new SiteTriangulation);
+  triangulation->dt.insert(indexed.begin(), indexed.end());
+  return triangulation;
+}
+
+SiteTriangulationPtr TriangulateSites(const std::vector<Eigen::Vector2d>& sites) {
+  return TriangulatePoints(KernelPoints(sites));
+}
+
+SiteTriangulationPtr TriangulateSites(std::vector<Eigen::Vector2d>&& sites) {
+  std::vector<site_cgal::Point> points = KernelPoints(sites);
+  std::vector<Eigen::Vector2d>().swap(sites);
+  return TriangulatePoints(std::move(points));
+}
+
+void KeepSiteTriangulation(SiteTriangulationPtr triangulation, std::vector<Eigen::Vector2d> sites) {
+  KeptTriangulation& kept = Kept();
+  const std::lock_guard<std::mutex> lock(kept.mutex);
+  kept.triangulation.reset();
+  kept.sites.clear();
+  kept.sites.shrink_to_fit();
+  if (triangulation == nullptr ||
+      SiteTriangulationBytes(*triangulation) > kMaxKeptTriangulationBytes) {
+    return;
+  }
+  kept.triangulation = std::move(triangulation);
+  kept.sites = std::move(sites);
+}
+
+SiteTriangulationPtr TakeSiteTriangulation(const std::vector<Eigen::Vector2d>& sites) {
+  KeptTriangulation& kept = Kept();
+  const std::lock_guard<std::mutex> lock(kept.mutex);
+  SiteTriangulationPtr taken = std::move(kept.triangulation);
+  const bool same = kept.sites == sites;
+  std::vector<Eigen::Vector2d>().swap(kept.sites);
+  if (!same) taken.reset();
+  return taken;
+}
+
+void DropSiteTriangulation() {
+  KeptTriangulation& kept = Kept();
+  const std::lock_guard<std::mutex> lock(kept.mutex);
+  kept.triangulation.reset();
+  std::vector<Eigen::Vector2d>().swap(kept.sites);
+}
+
+}  // namespace areagraph
