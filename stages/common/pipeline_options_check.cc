@@ -125,6 +125,8 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
               " must be above 0 and at most 1 (a share of the previous area's cells)");
   RequireNotNegative(options.split_joins_wall_margin_m(), "match.split_joins_wall_margin_m",
                      "metres");
+  RequireNotNegative(options.split_joins_min_opening_m(), "match.split_joins_min_opening_m",
+                     "metres");
   Require(options.split_joins_rounds() >= 0 && options.split_joins_rounds() <= 100,
           "match.split_joins_rounds = " + std::to_string(options.split_joins_rounds()) +
               " must be between 0 and 100");

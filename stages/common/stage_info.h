@@ -45,7 +45,9 @@ inline constexpr StageInfo kMergeStage{"merge", 9};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).
-inline constexpr StageInfo kMatchStage{"match", 4};
+// match 5: joins also cut where the id moved to a leftover, without a passage, along pinched
+// outlines, and with a 0.5 m least opening (issue 15, lab_e's noise-only losses).
+inline constexpr StageInfo kMatchStage{"match", 5};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {

@@ -84,7 +84,8 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
     --rounds_left;
     const std::vector<AreaUnjoin> unjoins =
         FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2(),
-                          options.split_joins_inside_share());
+                          options.split_joins_inside_share(), options.split_joins_when_id_moved(),
+                          options.split_joins_without_passage());
     int split = 0;
     if (!unjoins.empty()) {
       current = SplitJoinedAreas(current, previous, unjoins, options, &split);

@@ -11,6 +11,7 @@
 #include "stages/geometry/polygon_split.h"
 #include "stages/match/graph_assembly.h"
 #include "stages/match/passage_cutting.h"
+#include "stages/match/ring_pinches.h"
 
 namespace areagraph {
 namespace {
@@ -120,6 +121,27 @@ std::set<Point> Vertices(const std::vector<std::vector<Point>>& rings) {
   return vertices;
 }
 
+// Whether two polygons share a border edge (vertex for vertex, as
+// neighbouring areas of one graph do).
+bool ShareBorder(const proto::Polygon& a, const proto::Polygon& b) {
+  std::set<std::pair<Point, Point>> edges;
+  for (const auto& ring : Rings(a)) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point& p = ring[i];
+      const Point& q = ring[(i + 1) % ring.size()];
+      edges.insert({std::min(p, q), std::max(p, q)});
+    }
+  }
+  for (const auto& ring : Rings(b)) {
+    for (size_t i = 0; i < ring.size(); ++i) {
+      const Point& p = ring[i];
+      const Point& q = ring[(i + 1) % ring.size()];
+      if (edges.count({std::min(p, q), std::max(p, q)}) > 0) return true;
+    }
+  }
+  return false;
+}
+
 // Where a cut vertex p lies on the border edge u-v of the joined area.
 struct BorderInsertion {
   Point u, v, p;
@@ -211,15 +233,18 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
 
 // One join cut apart (see SplitJoinedAreas), on `areas` and `passages`.
 // `kept` is the previous area whose id the joined area holds.
-// `cut_passages`: a cut may cross a passage's border; `wall_margin_m`: see
-// CutLengthOffWalls (MatchOptions).
+// `options`: whether a cut may cross a passage's border
+// (split_joins_across_passages), the wall margin (CutLengthOffWalls) and the
+// least opening (split_joins_min_opening_m).
 bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed, int kept,
-              bool cut_passages, double wall_margin_m, const MapTransform& transform,
+              const proto::MatchOptions& options, const MapTransform& transform,
               std::vector<proto::Area>& areas, std::vector<proto::Passage>& passages) {
+  const bool cut_passages = options.split_joins_across_passages();
+  const double wall_margin_m = options.split_joins_wall_margin_m();
   const proto::Area& joined = areas[joined_index];
   proto::Polygon inside, rest;
-  if (!SplitPolygonByGuide(joined.polygon_m(), previous.areas(swallowed).polygon_m(), &inside,
-                           &rest)) {
+  if (!SplitPolygonByGuide(joined.polygon_m(),
+                           WithoutPinches(previous.areas(swallowed).polygon_m()), &inside, &rest)) {
     return false;
   }
   const auto joined_m = Rings(joined.polygon_m());
@@ -362,7 +387,9 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   between.set_width_m(std::sqrt(Distance2(border.front(), border.back())));
   // The previous passage between the two; the opening it was must not have
   // grown much (a wall removed is a real join, not noise).
-  double opening_m = 0;
+  // Without a previous passage (split_joins_without_passage) the opening
+  // counts as the least one.
+  double opening_m = options.split_joins_min_opening_m();
   for (const proto::Passage& old : previous.passages()) {
     const bool between_them = (old.area_a() == kept && old.area_b() == swallowed) ||
                               (old.area_a() == swallowed && old.area_b() == kept);
@@ -373,7 +400,7 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     for (int i = 0; i + 1 < old.border_m_size(); ++i) {
       border_m += std::sqrt(Distance2(ToPoint(old.border_m(i)), ToPoint(old.border_m(i + 1))));
     }
-    opening_m = std::max(old.width_m(), border_m);
+    opening_m = std::max({old.width_m(), border_m, options.split_joins_min_opening_m()});
     break;
   }
   if (CutLengthOffWalls(chain, joined_m, wall_margin_m) > kMaxCutPerOpening * opening_m) {
@@ -390,7 +417,8 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
 std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
                                           const std::vector<int>& ids, const AreaCells& before,
                                           const std::vector<AreaOverlap>& overlaps, double max_m2,
-                                          double inside_share) {
+                                          double inside_share, bool when_id_moved,
+                                          bool without_passage) {
   const std::set<int> taken(ids.begin(), ids.end());
   std::vector<int> best(previous.areas_size(), -1);
   std::vector<int64_t> best_cells(previous.areas_size(), 0);
@@ -410,11 +438,19 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
   std::map<int, std::tuple<int64_t, int, int>> chosen;  // current area -> (cells, previous, kept)
   for (int b = 0; b < previous.areas_size(); ++b) {
     const int k = best[b];
-    if (k < 0 || taken.count(previous.areas(b).stable_id()) > 0) continue;
+    // b is joined when its id is on no area, or (when_id_moved) on another
+    // area than the one that holds most of it.
+    if (k < 0 || ids[k] == previous.areas(b).stable_id()) continue;
+    if (!when_id_moved && taken.count(previous.areas(b).stable_id()) > 0) continue;
     if (previous.areas(b).area_m2() >= max_m2) continue;
     if (best_cells[b] < inside_share * before.cells[b] || ids[k] < 0) continue;
     const auto kept = previous_of_id.find(ids[k]);
-    if (kept == previous_of_id.end() || linked.count({kept->second, b}) == 0) continue;
+    if (kept == previous_of_id.end()) continue;
+    if (linked.count({kept->second, b}) == 0 &&
+        (!without_passage ||
+         !ShareBorder(previous.areas(kept->second).polygon_m(), previous.areas(b).polygon_m()))) {
+      continue;
+    }
     auto& entry = chosen[k];
     if (before.cells[b] > std::get<0>(entry)) entry = {before.cells[b], b, kept->second};
   }
@@ -433,9 +469,8 @@ proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::
   const MapTransform transform(current.frame());
   int count = 0;
   for (const AreaUnjoin& unjoin : unjoins) {
-    if (SplitOne(previous, unjoin.area, unjoin.previous, unjoin.kept,
-                 options.split_joins_across_passages(), options.split_joins_wall_margin_m(),
-                 transform, areas, passages)) {
+    if (SplitOne(previous, unjoin.area, unjoin.previous, unjoin.kept, options, transform, areas,
+                 passages)) {
       ++count;
     }
   }

@@ -30,13 +30,18 @@ struct AreaUnjoin {
 // `current` took (`ids`, see MatchAreaGraph), with `inside_share`
 // (MatchOptions.split_joins_inside_share) of its cells (`before`: previous's cells on current's
 // grid; `overlaps` from CountOverlaps(before, current's cells)) inside one current area that took
-// the id of a previous area with a passage to it. At most one per current
+// the id of a previous area with a passage to it. `when_id_moved`
+// (MatchOptions.split_joins_when_id_moved) also counts a previous area whose
+// id went to another area than the one holding most of it; `without_passage`
+// (split_joins_without_passage) also a neighbour it shared only a border
+// with. At most one per current
 // area (the largest). Scan noise moves merge's room joining back and forth
 // from one update to the next, and each join cost the smaller area's id.
 std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
                                           const std::vector<int>& ids, const AreaCells& before,
                                           const std::vector<AreaOverlap>& overlaps, double max_m2,
-                                          double inside_share);
+                                          double inside_share, bool when_id_moved,
+                                          bool without_passage);
 
 // `current` with each join cut apart again along the previous area's border
 // (SplitPolygonByGuide): the piece inside the previous area becomes an area

@@ -277,6 +277,9 @@ void ReplayVariant(const MatchBenchFlags& flags, const std::vector<Update>& upda
     for (const auto& [kind, count] : losses.by_kind)
       std::fprintf(stderr, " %s %d;", kind.c_str(), count);
     std::fprintf(stderr, "\n");
+    std::fprintf(stderr, "  MCC per update:");
+    for (double mcc : mccs) std::fprintf(stderr, " %.3f", mcc);
+    std::fprintf(stderr, "\n");
   }
   double mean = 0;
   for (double mcc : mccs) mean += mcc / mccs.size();

@@ -25,21 +25,11 @@ bool HasVertex(const proto::Ring& ring, double x, double y) {
 // other over `opening_m` of their 3 m border, a corridor C above both,
 // passages A-B, A-C and B-C. Ids 0, 1, 2.
 proto::AreaGraph PreviousVersion(double opening_m = 3) {
-  proto::AreaGraph merged = RectGraph(Frame(140, 120), {{0, 0, 4, 3}, {4, 0, 6, 3}, {0, 3, 6, 5}});
-  AddPassage(merged, 0, 1, 4, 1.5);
-  merged.mutable_passages(0)->set_width_m(opening_m);
-  AddPassage(merged, 0, 2, 2, 3);
-  AddPassage(merged, 1, 2, 5, 3);
-  return MatchAfter(merged, nullptr);
+  return MatchAfter(TwoRoomsUnderACorridor(3, opening_m), nullptr);
 }
 
 // Now merge joined A and B into one area, with both passages to C.
-proto::AreaGraph JoinedUpdate() {
-  proto::AreaGraph merged = RectGraph(Frame(140, 120), {{0, 0, 6, 3}, {0, 3, 6, 5}});
-  AddPassage(merged, 0, 1, 2, 3);
-  AddPassage(merged, 0, 1, 5, 3);
-  return merged;
-}
+proto::AreaGraph JoinedUpdate() { return TwoRoomsJoined(3); }
 
 proto::MatchOptions SplitBelow(double m2) {
   proto::MatchOptions options;

@@ -1,5 +1,7 @@
 #include "tests/stages/match/synthetic_graphs.h"
 
+#include <cmath>
+
 #include "stages/common/map_frame.h"
 #include "stages/match/area_graph_matching.h"
 
@@ -49,6 +51,35 @@ void AddPassage(proto::AreaGraph& graph, int a, int b, double x, double y) {
   passage->set_width_m(0.9);
   graph.mutable_areas(a)->add_passage_ids(passage->id());
   graph.mutable_areas(b)->add_passage_ids(passage->id());
+}
+
+namespace {
+
+proto::MapFrame TwoRoomsFrame(double depth_m) {
+  return Frame(140, static_cast<int>(std::lround((depth_m + 3) / 0.05)));
+}
+
+}  // namespace
+
+proto::AreaGraph TwoRoomsUnderACorridor(double depth_m, double door_m) {
+  proto::AreaGraph merged =
+      RectGraph(TwoRoomsFrame(depth_m),
+                {{0, 0, 4, depth_m}, {4, 0, 6, depth_m}, {0, depth_m, 6, depth_m + 2}});
+  if (door_m > 0) {
+    AddPassage(merged, 0, 1, 4, depth_m / 2);
+    merged.mutable_passages(0)->set_width_m(door_m);
+  }
+  AddPassage(merged, 0, 2, 2, depth_m);
+  AddPassage(merged, 1, 2, 5, depth_m);
+  return merged;
+}
+
+proto::AreaGraph TwoRoomsJoined(double depth_m) {
+  proto::AreaGraph merged =
+      RectGraph(TwoRoomsFrame(depth_m), {{0, 0, 6, depth_m}, {0, depth_m, 6, depth_m + 2}});
+  AddPassage(merged, 0, 1, 2, depth_m);
+  AddPassage(merged, 0, 1, 5, depth_m);
+  return merged;
 }
 
 std::vector<int> AreaIds(const proto::AreaGraph& graph) {

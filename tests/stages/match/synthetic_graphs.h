@@ -27,6 +27,16 @@ proto::AreaGraph RectGraph(const proto::MapFrame& frame, const std::vector<World
 // Adds a passage between areas a and b (indices) at (x, y) metres, 0.9 m wide.
 void AddPassage(proto::AreaGraph& graph, int a, int b, double x, double y);
 
+// Rooms A [0,4] and B [4,6] (x, metres), `depth_m` deep, under a corridor C
+// 2 m deep, in a 140 px wide frame: passages A-B at (4, depth_m / 2),
+// `door_m` wide (none when door_m is 0), then A-C and B-C at the rooms'
+// middles. Areas 0, 1, 2, as ag-merge makes them (no stable ids).
+proto::AreaGraph TwoRoomsUnderACorridor(double depth_m, double door_m);
+
+// The same floor after ag-merge joined A and B: one room [0,6] and C, with
+// both passages to C.
+proto::AreaGraph TwoRoomsJoined(double depth_m);
+
 // Expected stable ids, written as Ids{...} in the tests.
 using Ids = std::vector<int>;
 
