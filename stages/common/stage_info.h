@@ -31,7 +31,8 @@ inline constexpr StageInfo kPruneStage{"prune", 2};
 // cut 5: doors with wall jambs closed for the room disk (cut.close_wall_doors).
 // cut 6: gaps beside thin wall ends closed too (cut.close_wall_gaps_max_m).
 // cut 7: passages on doors and wall gaps closed on purpose are marked (closed_by_cut).
-inline constexpr StageInfo kCutStage{"cut", 7};
+// cut 8: island_end_on_face on (face's middle only); wall gaps up to 3.5 m, short wall tips.
+inline constexpr StageInfo kCutStage{"cut", 8};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

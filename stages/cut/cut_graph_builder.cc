@@ -84,16 +84,18 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
   };
-  PointList sites = StructureSites(map.cells(), grid.width(), grid.height(), grid.resolution_m(),
-                                   options.room_island_max_m(), options.island_end_on_face());
+  PointList sites = StructureSites(
+      map.cells(), grid.width(), grid.height(), grid.resolution_m(), options.room_island_max_m(),
+      options.island_end_on_face() ? options.island_end_on_face_share() : 0);
   PointList closing;  // the sites that close doors and wall gaps on purpose
   if (options.close_wall_doors()) {
     closing =
         DoorClosingSites(room_width, map.cells(), grid.width(), grid.height(), grid.resolution_m());
   }
   if (options.close_wall_gaps_max_m() > 0) {
-    const PointList gaps = WallGapSites(topology, map.cells(), grid.width(), grid.height(),
-                                        grid.resolution_m(), options.close_wall_gaps_max_m());
+    const PointList gaps =
+        WallGapSites(topology, map.cells(), grid.width(), grid.height(), grid.resolution_m(),
+                     options.close_wall_gaps_max_m(), options.close_wall_gaps_short_tips());
     closing.insert(closing.end(), gaps.begin(), gaps.end());
   }
   sites.insert(sites.end(), closing.begin(), closing.end());

@@ -21,6 +21,7 @@ class WallStructure {
     const int count = cv::connectedComponentsWithStats(ObstacleMask(cells, width, height), labels_,
                                                        stats, centroids, 8);
     structure_.assign(count, 0);
+    longest_.assign(count, 0);
     for (int region = 1; region < count; ++region) {
       const int left = stats.at<int>(region, cv::CC_STAT_LEFT);
       const int top = stats.at<int>(region, cv::CC_STAT_TOP);
@@ -28,6 +29,7 @@ class WallStructure {
       const int h = stats.at<int>(region, cv::CC_STAT_HEIGHT);
       const bool on_border = left == 0 || top == 0 || left + w == width || top + h == height;
       structure_[region] = on_border || std::max(w, h) >= min_region_px;
+      longest_[region] = std::max(w, h);
     }
   }
 
@@ -38,12 +40,15 @@ class WallStructure {
     return LabelAt(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
   }
   bool IsStructure(int label) const { return label > 0 && structure_[label] != 0; }
+  // The longer side of the region's bounding box (px); 0 for free cells.
+  int Longest(int label) const { return label > 0 ? longest_[label] : 0; }
 
  private:
   int width_;
   int height_;
   cv::Mat labels_;
   std::vector<uint8_t> structure_;
+  std::vector<int> longest_;
 };
 
 // The nearest non-free cell centre to `p` within `radius` px, optionally only
@@ -213,7 +218,7 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 }  // namespace
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& cells, int width,
-                       int height, double resolution_m, double max_gap_m) {
+                       int height, double resolution_m, double max_gap_m, bool short_tips) {
   PointList sites;
   if (max_gap_m <= 0) return sites;
   const WallStructure walls(cells, width, height, kMinWallRegionM / resolution_m);
@@ -221,6 +226,7 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& 
   const double reach_px = kDoorReachM / resolution_m, rise_px = kDoorRiseM / resolution_m;
   const double max_thickness_px = kMaxTipWallM / resolution_m;
   const double max_gap_px = max_gap_m / resolution_m + 1, min_gap_px = kMinGapM / resolution_m + 1;
+  const double min_tip_px = kMinShortTipM / resolution_m;
   const EdgeArcs arcs(topology);
   for (int e = 0; e < topology.edges_size(); ++e) {
     const proto::GraphEdge& edge = topology.edges(e);
@@ -239,14 +245,21 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& 
       if (length2 <= 0) continue;
       const double t = (0.5 * (a + b) - p).dot(q - p) / length2;
       if (t < 0 || t > 1) continue;
-      if (!walls.IsStructure(walls.LabelAt(a)) || !walls.IsStructure(walls.LabelAt(b))) continue;
+      const int label_a = walls.LabelAt(a), label_b = walls.LabelAt(b);
+      const bool wall_a = walls.IsStructure(label_a), wall_b = walls.IsStructure(label_b);
+      if (!wall_a && !wall_b) continue;
       const Eigen::Vector2d along = (b - a) / span;
       if (!WallRunsOn(walls, a, -along, run_px) || !WallRunsOn(walls, b, along, run_px)) continue;
       const double min_run_px = kMinTipRunGaps * span;
-      if (!IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px) &&
-          !IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px)) {
-        continue;
-      }
+      const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
+      const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
+      if (!tip_a && !tip_b) continue;
+      // With short_tips, a thin wall end facing the structure may be a short
+      // piece of wall (between two doors, a partition, a block of a row).
+      auto jamb = [&](bool wall, bool tip, int label) {
+        return wall || (short_tips && tip && walls.Longest(label) >= min_tip_px);
+      };
+      if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) continue;
       const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
       if (!WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px)) continue;
       AddLineSites(a, b, &sites);

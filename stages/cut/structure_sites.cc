@@ -119,14 +119,14 @@ bool ContinuedEndOnAt(const ObstacleRegions& regions, int region, int direction,
   return extent <= kEndOnWidthRatio * shape.width;
 }
 
-// ContinuedEndOnAt on the centre line, or (`across_face`) on any line across
-// the region's end face, one per pixel: a wall piece beside a door need not
-// be centred on the region's line.
+// ContinuedEndOnAt on the centre line, or on any line across the middle
+// `face_share` of the region's end face, one per pixel: a wall piece of a
+// row need not be centred on the region's line. Lines near the face's edges
+// are left out: there a desk's edge lines up with a cabinet or a door jamb.
 bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, double gap_px,
-                    double run_px, bool across_face) {
+                    double run_px, double face_share) {
   if (ContinuedEndOnAt(regions, region, direction, 0, gap_px, run_px)) return true;
-  if (!across_face) return false;
-  const double half = 0.5 * regions.shapes[region].width - 1;
+  const double half = face_share * (0.5 * regions.shapes[region].width - 1);
   for (double offset = 1; offset <= half; offset += 1) {
     if (ContinuedEndOnAt(regions, region, direction, offset, gap_px, run_px) ||
         ContinuedEndOnAt(regions, region, direction, -offset, gap_px, run_px)) {
@@ -139,7 +139,7 @@ bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, d
 }  // namespace
 
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, bool end_on_across_face) {
+                         double max_island_m, double end_on_face_share) {
   const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
   std::vector<uint8_t> island;
   ObstacleRegions regions;
@@ -158,8 +158,8 @@ PointList StructureSites(const std::string& cells, int width, int height, double
                        s.length <= kMaxIslandElongation * s.width &&
                        s.cells >= kMinIslandSolidity * s.length * s.width;
       if (island[region] &&
-          (ContinuedEndOn(regions, region, 1, gap_px, run_px, end_on_across_face) ||
-           ContinuedEndOn(regions, region, -1, gap_px, run_px, end_on_across_face))) {
+          (ContinuedEndOn(regions, region, 1, gap_px, run_px, end_on_face_share) ||
+           ContinuedEndOn(regions, region, -1, gap_px, run_px, end_on_face_share))) {
         island[region] = 0;
       }
     }

@@ -18,11 +18,13 @@ namespace areagraph {
 // thinner, longer or continued, and stays. The room disk looks
 // only at these sites, so that a room stays one room whatever stands in it;
 // furniture standing against a wall is part of the wall's region and still
-// counts. `max_island_m` <= 0 keeps every site. `end_on_across_face`
-// (cut.island_end_on_face): the other obstacle may continue the region's
-// line anywhere across its end face, not only on its centre line.
+// counts. `max_island_m` <= 0 keeps every site. `end_on_face_share`
+// (cut.island_end_on_face_share, 0 when cut.island_end_on_face is off): the
+// other obstacle may continue the region's line on any line across this
+// share of its end face's width, centred on the face, not only on its centre
+// line.
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, bool end_on_across_face);
+                         double max_island_m, double end_on_face_share);
 
 // Walls are thinner than this (metres); furniture islands are not.
 inline constexpr double kMinIslandThicknessM = 0.8;

@@ -42,18 +42,21 @@ int main(int argc, char** argv) {
       "with its map_server YAML (0.025-0.1 m/px), OUT/gt/floor_<seed>.png (16-bit ground "
       "truth: one label per room, hall and corridor system; 0 = none) and OUT/index.tsv "
       "(layout, resolution, corridor and door widths per floor). The tuning part is seeds 1-30, "
-      "the held-out part seeds 100001-100030; the same seed always gives the same floor."};
+      "the held-out part seeds 100001-100030, the extra tuning part (tuning-extra) seeds "
+      "1001-1100; the same seed always gives the same floor."};
   std::string part_name = kTuningPart.name;
   int count = -1;
   std::string out_dir;
-  app.add_option("--part", part_name, "tuning or held-out")
+  app.add_option("--part", part_name, "tuning, tuning-extra or held-out")
       ->capture_default_str()
-      ->check(CLI::IsMember({kTuningPart.name, kHeldOutPart.name}));
+      ->check(CLI::IsMember({kTuningPart.name, kTuningExtraPart.name, kHeldOutPart.name}));
   app.add_option("--count", count, "only the first COUNT floors of the part")
       ->check(CLI::Range(1, 100000));
   app.add_option("OUT", out_dir, "folder to write to")->required();
   return areagraph::RunCommand("ag-make-benchmark", app, argc, argv, [&] {
-    const BenchmarkPart part = part_name == kTuningPart.name ? kTuningPart : kHeldOutPart;
+    const BenchmarkPart part = part_name == kTuningPart.name        ? kTuningPart
+                               : part_name == kTuningExtraPart.name ? kTuningExtraPart
+                                                                    : kHeldOutPart;
     if (count < 0 || count > part.count) count = part.count;
     const std::filesystem::path out(out_dir);
     std::filesystem::create_directories(out / "maps");

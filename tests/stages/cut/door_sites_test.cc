@@ -1,5 +1,7 @@
 // DoorClosingSites on drawn plans: a door in a wall is closed, a gap between
-// a wall and a free-standing desk or shelf is not.
+// a wall and a free-standing desk or shelf is not. WallGapSites: a gap beside
+// a thin wall end is closed, also when that end is a short piece of wall
+// between two doors (cut.close_wall_gaps_short_tips), not beside a cabinet.
 #include "stages/cut/door_sites.h"
 
 #include <gtest/gtest.h>
@@ -78,11 +80,11 @@ TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
 }
 
 // WallGapSites on the pruned Topology Graph of a plan.
-PointList GapSites(const FloorPlan& plan, double max_gap_m) {
+PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = true) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   const AreaStages stages = RunAreaStages(map);
   return WallGapSites(stages.topology, map.cells(), map.frame().width_px(), map.frame().height_px(),
-                      kResolutionM, max_gap_m);
+                      kResolutionM, max_gap_m, short_tips);
 }
 
 // A 6 x 4 m room whose wall at x = 3 m runs up from the bottom wall to
@@ -116,6 +118,45 @@ TEST(DoorSitesTest, GapBesideACabinetAgainstAWallIsNoWallGap) {
   floorplan::DrawRoom(plan, {0.5, 0.5, 6, 4});
   floorplan::DrawFurniture(plan, {2.25, 2.9, 1.5, 1.6});
   EXPECT_TRUE(GapSites(plan, 3.0).empty());
+}
+
+// A 6 x 5 m room divided at x = 3 m by a wall from the bottom wall up to
+// y = 3.5 m, a 0.9 m door, a free piece of wall `piece_m` long ending at
+// y = 2.6 m, and a second door above it up to the top wall (y = 0.5 m).
+FloorPlan WallWithTwoDoors(double piece_m, double piece_thickness_m = 0.1) {
+  FloorPlan plan(7, 6, kResolutionM);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 5});
+  floorplan::DrawFurniture(plan, {2.95, 3.5, 0.1, 2.0});
+  floorplan::DrawFurniture(
+      plan, {3.0 - 0.5 * piece_thickness_m, 2.6 - piece_m, piece_thickness_m, piece_m});
+  return plan;
+}
+
+// How many of `sites` lie on the wall's line (x = 3 m) within y0-y1 (m).
+int SitesOnTheLine(const PointList& sites, double y0_m, double y1_m) {
+  int count = 0;
+  for (const Eigen::Vector2d& site : sites) {
+    const double x = site.x() * kResolutionM, y = site.y() * kResolutionM;
+    count += std::abs(x - 3.0) < 0.2 && y > y0_m && y < y1_m;
+  }
+  return count;
+}
+
+TEST(DoorSitesTest, ShortPieceOfWallBetweenTwoDoorsIsAJamb) {
+  // A 1 m piece: both doors are closed with short_tips, neither without
+  // (the piece is no structure: it touches no border and is under 4 m).
+  const PointList sites = GapSites(WallWithTwoDoors(1.0), 3.5);
+  EXPECT_GE(SitesOnTheLine(sites, 2.6, 3.5), 10);  // the lower door
+  EXPECT_GE(SitesOnTheLine(sites, 0.5, 1.6), 10);  // the upper door
+  EXPECT_EQ(SitesOnTheLine(sites, 0, 6), static_cast<int>(sites.size()));
+  EXPECT_TRUE(GapSites(WallWithTwoDoors(1.0), 3.5, /*short_tips=*/false).empty());
+}
+
+TEST(DoorSitesTest, DeskOrSpeckInTheWallsLineIsNoJamb) {
+  // A 0.9 m deep desk in the piece's place is no thin wall end, and a
+  // 0.3 m speck is shorter than kMinShortTipM: nothing is closed.
+  EXPECT_TRUE(GapSites(WallWithTwoDoors(1.0, 0.9), 3.5).empty());
+  EXPECT_TRUE(GapSites(WallWithTwoDoors(0.3), 3.5).empty());
 }
 
 TEST(DoorSitesTest, NoDoorsNoSites) {

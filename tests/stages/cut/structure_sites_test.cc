@@ -1,7 +1,9 @@
 // StructureSites on drawn plans: a free-standing block is an island (its
 // sites are dropped for the room disk); a block that a wall stub continues
 // end-on is a piece of a dividing row and keeps its sites, also when the stub
-// is off the block's centre line (cut.island_end_on_face).
+// is just beside the block's centre line (cut.island_end_on_face), but not
+// when only the edge of its face lines up with the stub (a desk beside a door
+// jamb or a cabinet: cut.island_end_on_face_share).
 #include "stages/cut/structure_sites.h"
 
 #include <gtest/gtest.h>
@@ -28,11 +30,11 @@ FloorPlan RoomWithBlock() {
 }
 
 // How many of the structure sites lie on the block.
-int SitesOnBlock(const FloorPlan& plan, bool end_on_across_face) {
+int SitesOnBlock(const FloorPlan& plan, double end_on_face_share) {
   const proto::CleanedMap map = CleanDrawnMap(plan.image());
   const PointList sites =
       StructureSites(map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM,
-                     /*max_island_m=*/4.0, end_on_across_face);
+                     /*max_island_m=*/4.0, end_on_face_share);
   int on_block = 0;
   for (const Eigen::Vector2d& site : sites) {
     const double x = site.x() * kResolutionM, y = site.y() * kResolutionM;
@@ -42,26 +44,44 @@ int SitesOnBlock(const FloorPlan& plan, bool end_on_across_face) {
   return on_block;
 }
 
+// The face shares tried: centre line only (island_end_on_face off), the
+// default middle quarter, and the whole face (cut 7's option).
+constexpr double kCentreLine = 0, kMiddleQuarter = 0.25, kWholeFace = 1;
+
 TEST(StructureSitesTest, FreeStandingBlockIsAnIsland) {
-  EXPECT_EQ(SitesOnBlock(RoomWithBlock(), true), 0);
-  EXPECT_EQ(SitesOnBlock(RoomWithBlock(), false), 0);
+  for (const double share : {kCentreLine, kMiddleQuarter, kWholeFace}) {
+    EXPECT_EQ(SitesOnBlock(RoomWithBlock(), share), 0) << share;
+  }
 }
 
 TEST(StructureSitesTest, BlockContinuedByAWallStubBesideItsCentreLineIsStructure) {
   // A 0.15 m wall stub from the top wall down to y = 2.0 m, 1.3 m above the
-  // block, over the block's left part (x 3.0-3.15 m; the block's centre line
-  // is x = 3.4 m): a row that divides the room, with a gap in it.
+  // block, 0.05 m beside its centre line (x 3.2-3.35 m; the centre line is
+  // x = 3.4 m): a row that divides the room, with a gap in it.
+  FloorPlan plan = RoomWithBlock();
+  floorplan::DrawFurniture(plan, {3.2, 0.1, 0.15, 1.9});
+  EXPECT_GT(SitesOnBlock(plan, kMiddleQuarter), 40);
+  EXPECT_GT(SitesOnBlock(plan, kWholeFace), 40);
+  EXPECT_EQ(SitesOnBlock(plan, kCentreLine), 0);
+}
+
+TEST(StructureSitesTest, BlockWhoseFaceEdgeLinesUpWithAStubStaysAnIsland) {
+  // The same stub over the block's left edge (x 3.0-3.15 m), as a door's
+  // jamb or a cabinet's side lines up with a desk's edge: only the whole
+  // face (cut 7's option) takes the desk for a piece of wall.
   FloorPlan plan = RoomWithBlock();
   floorplan::DrawFurniture(plan, {3.0, 0.1, 0.15, 1.9});
-  EXPECT_GT(SitesOnBlock(plan, true), 40);
-  EXPECT_EQ(SitesOnBlock(plan, false), 0);
+  EXPECT_EQ(SitesOnBlock(plan, kMiddleQuarter), 0);
+  EXPECT_EQ(SitesOnBlock(plan, kCentreLine), 0);
+  EXPECT_GT(SitesOnBlock(plan, kWholeFace), 40);
 }
 
 TEST(StructureSitesTest, BlockWithAStubOnItsCentreLineIsStructureEitherWay) {
   FloorPlan plan = RoomWithBlock();
   floorplan::DrawFurniture(plan, {3.325, 0.1, 0.15, 1.9});
-  EXPECT_GT(SitesOnBlock(plan, true), 40);
-  EXPECT_GT(SitesOnBlock(plan, false), 40);
+  for (const double share : {kCentreLine, kMiddleQuarter, kWholeFace}) {
+    EXPECT_GT(SitesOnBlock(plan, share), 40) << share;
+  }
 }
 
 }  // namespace
