@@ -60,28 +60,36 @@ Sides AreasOf(const floorplan::FloorPlan& plan, const proto::PipelineOptions& op
   return {AreaAt(stages.areas, 2, 3), AreaAt(stages.areas, 5, 3), AreaAt(stages.areas, 5, 5.9)};
 }
 
-TEST(FurnitureGapsTest, CabinetAcrossARoomDoesNotSplitIt) {
-  const Sides sides = AreasOf(RoomWithDivider(kCabinet), {});
+// Both sides of the divider are one area, and not the corridor's.
+void ExpectOneRoomBesideTheCorridor(const Sides& sides) {
   ASSERT_NE(sides.left, -1);
   ASSERT_NE(sides.corridor, -1);
   EXPECT_EQ(sides.left, sides.right);
   EXPECT_NE(sides.left, sides.corridor);
 }
 
-TEST(FurnitureGapsTest, WithoutTheRuleTheCabinetSplitsTheRoom) {
-  proto::PipelineOptions options;
-  options.mutable_merge()->set_join_furniture_gaps(false);
-  const Sides sides = AreasOf(RoomWithDivider(kCabinet), options);
+// The divider splits the room into two areas.
+void ExpectRoomSplit(const Sides& sides) {
   ASSERT_NE(sides.left, -1);
   ASSERT_NE(sides.right, -1);
   EXPECT_NE(sides.left, sides.right);
 }
 
+TEST(FurnitureGapsTest, CabinetAcrossARoomDoesNotSplitIt) {
+  const Sides sides = AreasOf(RoomWithDivider(kCabinet), {});
+  ExpectOneRoomBesideTheCorridor(sides);
+}
+
+TEST(FurnitureGapsTest, WithoutTheRuleTheCabinetSplitsTheRoom) {
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_join_furniture_gaps(false);
+  const Sides sides = AreasOf(RoomWithDivider(kCabinet), options);
+  ExpectRoomSplit(sides);
+}
+
 TEST(FurnitureGapsTest, WallPieceBetweenTwoDoorwaysStillDividesTheRoom) {
   const Sides sides = AreasOf(RoomWithDivider(kWallPiece), {});
-  ASSERT_NE(sides.left, -1);
-  ASSERT_NE(sides.right, -1);
-  EXPECT_NE(sides.left, sides.right);
+  ExpectRoomSplit(sides);
 }
 
 TEST(FurnitureGapsTest, CabinetDrawnAsOutlineDoesNotSplitTheRoom) {
@@ -91,19 +99,14 @@ TEST(FurnitureGapsTest, CabinetDrawnAsOutlineDoesNotSplitTheRoom) {
   ASSERT_EQ(plan.image().at<uint8_t>(cabinet.y + 10, cabinet.x + 5), floorplan::kFreeGrey);
   ASSERT_EQ(plan.image().at<uint8_t>(cabinet.y + 10, cabinet.x), floorplan::kWallGrey);
   const Sides sides = AreasOf(plan, {});
-  ASSERT_NE(sides.left, -1);
-  ASSERT_NE(sides.corridor, -1);
-  EXPECT_EQ(sides.left, sides.right);
-  EXPECT_NE(sides.left, sides.corridor);
+  ExpectOneRoomBesideTheCorridor(sides);
 }
 
 TEST(FurnitureGapsTest, WithoutFillingTheOutlineSplitsTheRoom) {
   proto::PipelineOptions options;
   options.mutable_merge()->set_fill_furniture_outlines_m(0);
   const Sides sides = AreasOf(RoomWithOutlinedCabinet(), options);
-  ASSERT_NE(sides.left, -1);
-  ASSERT_NE(sides.right, -1);
-  EXPECT_NE(sides.left, sides.right);
+  ExpectRoomSplit(sides);
 }
 
 }  // namespace
