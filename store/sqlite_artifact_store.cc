@@ -235,9 +235,8 @@ void SqliteArtifactStore::PrepareStatements() {
   PrepareVersionStatements();
 }
 
-std::unique_ptr<SqliteStatement> SqliteArtifactStore::Prepare(const char* sql,
-                                                              const std::string& action) {
-  return std::make_unique<SqliteStatement>(db_, path_, sql, action);
+LazyStatement SqliteArtifactStore::Prepare(const char* sql, const std::string& action) {
+  return LazyStatement(db_, path_, sql, action);
 }
 
 SqliteTransaction SqliteArtifactStore::BeginTransaction() {

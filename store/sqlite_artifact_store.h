@@ -83,7 +83,8 @@ class SqliteArtifactStore : public ArtifactStore {
   // Schema 5 keeps a codec per payload; older read-only stores are raw.
   bool HasPayloadCodecs() const { return schema_version_ >= 5; }
 
-  std::unique_ptr<SqliteStatement> Prepare(const char* sql, const std::string& action);
+  // The statement, prepared on its first use (LazyStatement).
+  LazyStatement Prepare(const char* sql, const std::string& action);
   SqliteTransaction BeginTransaction();
   MapRecord ReadMapRow(const SqliteStatement& statement) const;
   // Reads the row of a kRead{Artifact,Head,ArtifactSummaries} statement; the
@@ -125,31 +126,31 @@ class SqliteArtifactStore : public ArtifactStore {
   int schema_version_ = 0;     // of the open file, after any upgrade
   bool fold_on_close_ = true;  // false once LeaveWriteAheadLogOnClose ran
 
-  std::unique_ptr<SqliteStatement> sql_stmt_begin_;
-  std::unique_ptr<SqliteStatement> sql_stmt_commit_;
-  std::unique_ptr<SqliteStatement> sql_stmt_rollback_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_all_maps_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_map_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_head_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summaries_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_summary_;
+  LazyStatement sql_stmt_begin_;
+  LazyStatement sql_stmt_commit_;
+  LazyStatement sql_stmt_rollback_;
+  LazyStatement sql_stmt_read_all_maps_;
+  LazyStatement sql_stmt_read_map_;
+  LazyStatement sql_stmt_read_artifact_;
+  LazyStatement sql_stmt_read_head_;
+  LazyStatement sql_stmt_read_artifact_summaries_;
+  LazyStatement sql_stmt_read_artifact_summary_;
   // Null for a store older than schema 3, which is opened read-only.
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_ref_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_artifact_id_;
-  std::unique_ptr<SqliteStatement> sql_stmt_upsert_map_;
-  std::unique_ptr<SqliteStatement> sql_stmt_upsert_artifact_;
-  std::unique_ptr<SqliteStatement> sql_stmt_write_head_;
-  std::unique_ptr<SqliteStatement> sql_stmt_has_artifact_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_head_key_;
+  LazyStatement sql_stmt_read_artifact_ref_;
+  LazyStatement sql_stmt_read_artifact_id_;
+  LazyStatement sql_stmt_upsert_map_;
+  LazyStatement sql_stmt_upsert_artifact_;
+  LazyStatement sql_stmt_write_head_;
+  LazyStatement sql_stmt_has_artifact_;
+  LazyStatement sql_stmt_read_head_key_;
   // Null when !HasFailuresTable().
-  std::unique_ptr<SqliteStatement> sql_stmt_record_failure_;
-  std::unique_ptr<SqliteStatement> sql_stmt_clear_failure_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_failures_;
+  LazyStatement sql_stmt_record_failure_;
+  LazyStatement sql_stmt_clear_failure_;
+  LazyStatement sql_stmt_read_failures_;
   // Null when !HasVersionsTable().
-  std::unique_ptr<SqliteStatement> sql_stmt_insert_version_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_versions_;
-  std::unique_ptr<SqliteStatement> sql_stmt_read_version_;
+  LazyStatement sql_stmt_insert_version_;
+  LazyStatement sql_stmt_read_versions_;
+  LazyStatement sql_stmt_read_version_;
 };
 
 namespace store_internal {

@@ -50,6 +50,11 @@ void CheckSqlite(sqlite3* db, const std::string& store_path, int rc, const std::
   }
 }
 
+SqliteStatement& LazyStatement::operator*() const {
+  if (!statement_) statement_ = std::make_unique<SqliteStatement>(db_, *store_path_, sql_, action_);
+  return *statement_;
+}
+
 SqliteStatement::SqliteStatement(sqlite3* db, const std::string& store_path, const char* sql,
                                  std::string action)
     : db_(db), store_path_(store_path), action_(std::move(action)) {

@@ -3,6 +3,7 @@
 #include <sqlite3.h>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -16,10 +17,9 @@ constexpr int kStoreBusyTimeoutMs = 10000;
 // same way: the store path, SQLite's reason and what the store was doing.
 void CheckSqlite(sqlite3* db, const std::string& store_path, int rc, const std::string& action);
 
-// One statement, prepared once when the store opens and finalized when it
-// closes. `action` names what the statement is for ("reading the head") and
-// ends up in every error it raises. The bind and column helpers check types,
-// so a hand-edited store gives a clear error instead of wrong values.
+// One statement, prepared once and finalized when the store closes. `action` names what the
+// statement is for ("reading the head") and ends up in every error it raises. The bind and column
+// helpers check types, so a hand-edited store gives a clear error instead of wrong values.
 class SqliteStatement {
  public:
   SqliteStatement(sqlite3* db, const std::string& store_path, const char* sql, std::string action);
@@ -73,6 +73,32 @@ class StatementUse {
 
  private:
   SqliteStatement& statement_;
+};
+
+// A statement of the store prepared on its first use, not when the store
+// opens: a process uses a few of the store's two dozen statements (ag-run's
+// runner two or three, ag-render one), and preparing them all cost about
+// 2 M instructions per open. A preparation error is raised at that first use,
+// with the statement's `action`. Empty (false) for a statement that the open
+// store's schema does not have.
+class LazyStatement {
+ public:
+  LazyStatement() = default;
+  LazyStatement(sqlite3* db, const std::string& store_path, const char* sql, std::string action)
+      : db_(db), store_path_(&store_path), sql_(sql), action_(std::move(action)) {}
+
+  explicit operator bool() const { return sql_ != nullptr; }
+  // The statement, prepared now if it was not yet; must not be empty.
+  SqliteStatement& operator*() const;
+  SqliteStatement* operator->() const { return &**this; }
+  bool prepared() const { return statement_ != nullptr; }
+
+ private:
+  sqlite3* db_ = nullptr;
+  const std::string* store_path_ = nullptr;  // the store's, which outlives this
+  const char* sql_ = nullptr;                // a string literal
+  std::string action_;
+  mutable std::unique_ptr<SqliteStatement> statement_;
 };
 
 }  // namespace areagraph

@@ -15,7 +15,7 @@ timed_run() {
     notes+=("$(basename "$1") failed (exit $status): $(tail -1 "$work/series.log")")
     return 1
   fi
-  awk '{ printf "%s %.2f %s\n", $1, $2 + $3, $4 }' "$work/time.txt" >>"$out"
+  awk '{ printf "%s %.3f %s\n", $1, $2 + $3, $4 }' "$work/time.txt" >>"$out"
 }
 
 # The median of the numbers on stdin, one a line ("" for none).
@@ -106,38 +106,64 @@ clutter_table() {
   echo
 }
 
-# ag-render of every stage against that stage's compute time, on lab_a and
-# on lab_a tiled 2 x 2.
+# cpu_ms_per_run N COMMAND...: runs COMMAND N times under one /usr/bin/time
+# and prints the mean CPU milliseconds (user + system) and the mean wall
+# seconds of one run: /usr/bin/time counts in 10-ms steps, too coarse for one
+# render. A failure becomes a note and prints nothing.
+cpu_ms_per_run() {
+  local n=$1 status=0
+  shift
+  /usr/bin/time -f '%e %U %S' -o "$work/time.txt" \
+    bash -c 'n=$1; shift; for ((i = 0; i < n; ++i)); do "$@" >/dev/null 2>&1 || exit 1; done' \
+    _ "$n" "$@" || status=$?
+  if [ "$status" -ne 0 ]; then
+    notes+=("$(basename "$1") failed: $*")
+    return 1
+  fi
+  awk -v n="$n" '{ printf "%.1f %.3f\n", ($2 + $3) * 1000 / n, $1 / n }' "$work/time.txt"
+}
+
+# ag-render of every stage against that stage's compute, on lab_a and on
+# lab_a tiled 2 x 2, in CPU time: the compute is ag-bench-stage's median CPU
+# time of the stage's compute function on the stored inputs, run again in one
+# process (the import: reading and decoding the file); the render is the mean
+# CPU time (user + system) of --runs x 3 whole ag-render processes, start-up
+# included. "start-up" is the same for `ag-render --help` (loading its
+# libraries); the last column is the render without it. The wall columns are
+# the store's elapsed compute time (for the import only the copy into the
+# artifact) and ag-render's mean.
 render_table() {
-  local source="$data/lab_a.png" map name stage ms
+  local source="$data/lab_a.png" map name stage ms repeat=$((3 * runs))
   [ -f "$source" ] || { notes+=("no $source: the render table did not run"); return; }
   echo "#### ag-render of each stage against the stage's compute time"
   echo
-  echo "| map | floor s | stage | compute s | ag-render s | CPU s | render / compute |"
-  echo "|---|--:|---|--:|--:|--:|--:|"
+  local startup_ms
+  startup_ms=$(cpu_ms_per_run "$repeat" "$bin/ag-render" --help | awk '{ print $1 }')
+  echo "ag-render's start-up (\`--help\`): ${startup_ms} ms of CPU (mean of $repeat)."
+  echo
+  echo -n "| map | stage | compute CPU ms | compute wall ms (store) | ag-render wall s"
+  echo " | ag-render CPU ms | CPU render / compute | without start-up |"
+  echo "|---|---|--:|--:|--:|--:|--:|--:|"
   "$bin/ag-bench-tile" --tiles 2 "$source" "$work/lab_a_2x2.png" >/dev/null
   for map in "$source" "$work/lab_a_2x2.png"; do
     name=$(basename "${map%.*}")
     echo "bench-speed: render $name" >&2
-    floor_of "$map"
     rm -f "$work"/series.db*
     "$bin/ag-run" --jobs 1 --store "$work/series.db" "$map" >/dev/null 2>&1 ||
       { notes+=("ag-run failed on $name: no render row"); continue; }
     for stage in import clean voronoi prune cut merge; do
       ms=$("$bin/ag-inspect" --store "$work/series.db" --map "$name" |
         awk -v s="$stage" '$1 == s && $NF == "*" { print $4 }')
-      : >"$work/render.txt"
-      for ((run = 1; run <= runs; ++run)); do
-        timed_run "$work/render.txt" "$bin/ag-render" --store "$work/series.db" --map "$name" \
-          --stage "$stage" --out "$work/render.png" || true
-      done
-      local wall cpu
-      wall=$(column 1 "$work/render.txt")
-      cpu=$(column 2 "$work/render.txt")
-      printf '| %s | %.2f | %s | %.3f | %.2f | %.2f | %s |\n' "$name" \
-        "$(awk -v f="$floor_ms" 'BEGIN { print f / 1000 }')" "$stage" \
-        "$(awk -v m="${ms:-0}" 'BEGIN { print m / 1000 }')" "$wall" "$cpu" \
-        "$(ratio "$wall" "$(awk -v m="${ms:-0}" 'BEGIN { print m / 1000 }')")"
+      local compute_cpu cpu_ms wall
+      compute_cpu=$("$bin/ag-bench-stage" --store "$work/series.db" --map "$name" \
+        --stage "$stage" --repeat "$((2 * runs + 1))" | awk '{ print $4 }')
+      read -r cpu_ms wall < <(cpu_ms_per_run "$repeat" "$bin/ag-render" --store "$work/series.db" \
+        --map "$name" --stage "$stage" --out "$work/render.png")
+      printf '| %s | %s | %.1f | %.1f | %.3f | %.0f | %s | %s |\n' "$name" "$stage" \
+        "${compute_cpu:-0}" "${ms:-0}" "${wall:-0}" "${cpu_ms:-0}" \
+        "$(ratio "$cpu_ms" "$compute_cpu")" \
+        "$(ratio "$(awk -v c="$cpu_ms" -v s="$startup_ms" 'BEGIN { print c - s }')" \
+          "$compute_cpu")"
     done
   done
   echo

@@ -21,10 +21,10 @@
 # included, wall and CPU time): "runs", the 16 maps one by one; "scale",
 # lab_a tiled N x N into one connected map (--tiles, default 1 2 4 6 8);
 # "clutter", rooms of N x N px with 1 % random obstacle cells
-# (--clutter-sizes, default 500 1000 2000); "render",
-# ag-render of every stage of lab_a and of lab_a tiled 2 x 2 against that
-# stage's compute time. --tables picks which tables run (default all:
-# maps runs scale clutter render).
+# (--clutter-sizes, default 500 1000 2000); "render", ag-render of every
+# stage of lab_a and of lab_a tiled 2 x 2 against that stage's compute, in
+# CPU time (ag-bench-stage times the compute). --tables picks which tables
+# run (default all: maps runs scale clutter render).
 #
 # Usage: tools/bench-speed.sh [--runs N] [--floor-repeat R] [--build-dir DIR]
 #                             [--no-build] [--data DIR] [--tables "LIST"]
@@ -68,7 +68,7 @@ if [ "$build" = 1 ]; then
   tools/build.sh >&2
 fi
 bin="$build_dir/bin"
-for tool in ag-import ag-inspect ag-bench-floor ag-run ag-render ag-bench-tile; do
+for tool in ag-import ag-inspect ag-bench-floor ag-bench-stage ag-run ag-render ag-bench-tile; do
   if [ ! -x "$bin/$tool" ]; then
     echo "bench-speed: $bin/$tool is missing; build it first" >&2
     exit 1

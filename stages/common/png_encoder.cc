@@ -84,6 +84,27 @@ bool Encode(WriteStructs& structs, const cv::Mat& image, int compression, int fi
 
 }  // namespace
 
+namespace {
+
+// EncodePngWithLibpng's body: `image` with its palette form, if it has one.
+bool EncodeWithPalette(const cv::Mat& image, const std::optional<PalettePicture>& palette,
+                       int compression, int filters, std::string* png) {
+  WriteStructs structs;
+  structs.png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, LongjmpOnError, IgnoreWarning);
+  if (structs.png == nullptr) return false;
+  structs.info = png_create_info_struct(structs.png);
+  if (structs.info == nullptr) return false;
+  std::vector<png_bytep> rows;
+  if (!Encode(structs, image, compression, filters, palette, &rows, png)) {
+    png->clear();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 bool EncodePngWithLibpng(const cv::Mat& image, int compression, int filters, std::string* png) {
   png->clear();
   const int channels = image.channels();
@@ -91,23 +112,18 @@ bool EncodePngWithLibpng(const cv::Mat& image, int compression, int filters, std
       image.empty()) {
     return false;
   }
-  WriteStructs structs;
-  structs.png =
-      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, LongjmpOnError, IgnoreWarning);
-  if (structs.png == nullptr) return false;
-  structs.info = png_create_info_struct(structs.png);
-  if (structs.info == nullptr) return false;
   // Outside Encode's setjmp frame: a BGR picture of few colours (maps, flat
   // drawings) as palette indices, a third of the bytes or less to filter and
   // deflate, and a smaller file.
   const std::optional<PalettePicture> palette =
       channels == 3 ? ToPalette(image) : std::optional<PalettePicture>();
-  std::vector<png_bytep> rows;
-  if (!Encode(structs, image, compression, filters, palette, &rows, png)) {
-    png->clear();
-    return false;
-  }
-  return true;
+  return EncodeWithPalette(image, palette, compression, filters, png);
+}
+
+bool EncodeGreyAsColourPng(const cv::Mat& grey, int compression, int filters, std::string* png) {
+  png->clear();
+  if (grey.type() != CV_8UC1 || grey.empty()) return false;
+  return EncodeWithPalette(grey, GreyToPalette(grey), compression, filters, png);
 }
 
 }  // namespace areagraph

@@ -16,4 +16,9 @@ namespace areagraph {
 // Returns false, leaving `png` empty, for other depths or channel counts.
 bool EncodePngWithLibpng(const cv::Mat& image, int compression, int filters, std::string* png);
 
+// The PNG that EncodePngWithLibpng writes for the BGR picture whose pixels
+// are the greys of `grey` (CV_8UC1) on all three channels, byte for byte,
+// without making that picture: its palette comes from the greys directly.
+bool EncodeGreyAsColourPng(const cv::Mat& grey, int compression, int filters, std::string* png);
+
 }  // namespace areagraph

@@ -36,4 +36,12 @@ void WritePngFile(const std::string& target, const cv::Mat& image) {
   WriteOutputFile(target, EncodePng(image, 1));
 }
 
+void WriteGreyPngFileAsColour(const std::string& target, const cv::Mat& grey) {
+  std::string png;
+  if (!EncodeGreyAsColourPng(grey, 1, PNG_FILTER_UP, &png)) {
+    throw Error("cannot encode the picture as PNG");
+  }
+  WriteOutputFile(target, png);
+}
+
 }  // namespace areagraph

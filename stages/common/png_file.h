@@ -15,4 +15,8 @@ std::string EncodePng(const cv::Mat& image, int compression);
 // output. Throws InputError naming `target` when it cannot be written.
 void WritePngFile(const std::string& target, const cv::Mat& image);
 
+// WritePngFile of the BGR picture whose pixels are the greys of `grey`
+// (CV_8UC1), the same bytes, without making that picture.
+void WriteGreyPngFileAsColour(const std::string& target, const cv::Mat& grey);
+
 }  // namespace areagraph

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <opencv2/core.hpp>
 
 namespace areagraph {
 namespace {
@@ -65,6 +66,31 @@ std::optional<PalettePicture> ToPalette(const cv::Mat& bgr) {
       target[x] = last_value;
     }
   }
+  return out;
+}
+
+PalettePicture GreyToPalette(const cv::Mat& grey) {
+  CV_Assert(grey.type() == CV_8UC1);
+  // Greys numbered in the order they first appear, as ToPalette numbers the
+  // BGR colours (g, g, g) of the same picture; then one table pass.
+  PalettePicture out;
+  cv::Mat index_of(1, 256, CV_8UC1, cv::Scalar(0));
+  std::array<bool, 256> seen{};
+  const int width = grey.cols;
+  for (int y = 0; y < grey.rows && out.colours.size() < 256; ++y) {
+    const uint8_t* pixel = grey.ptr<uint8_t>(y);
+    // A row like the one above (every row of an upscaled picture has a
+    // twin) has no grey of its own.
+    if (y > 0 && std::memcmp(pixel, grey.ptr<uint8_t>(y - 1), width) == 0) continue;
+    for (int x = 0; x < width; ++x) {
+      const uint8_t value = pixel[x];
+      if (seen[value]) continue;
+      seen[value] = true;
+      index_of.at<uint8_t>(value) = static_cast<uint8_t>(out.colours.size());
+      out.colours.emplace_back(value, value, value);
+    }
+  }
+  cv::LUT(grey, index_of, out.indices);
   return out;
 }
 

@@ -18,6 +18,11 @@ struct PalettePicture {
 // (it stops at the 257th, so a busy picture costs part of one pass).
 std::optional<PalettePicture> ToPalette(const cv::Mat& bgr);
 
+// The palette form of the BGR picture whose pixels are the greys of `grey`
+// (CV_8UC1) on all three channels: the same as ToPalette of that picture,
+// without making it (a grey map is a third of the bytes to look at).
+PalettePicture GreyToPalette(const cv::Mat& grey);
+
 // The fewest PNG bits per index (1, 2, 4 or 8) that hold `colours` colours.
 int PaletteBitDepth(size_t colours);
 

@@ -10,6 +10,7 @@
 #include "common/error.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
+#include "stages/common/page_fault_thrift.h"
 #include "stages/common/png_file.h"
 #include "stages/common/stage.h"
 #include "tools/render/artifact_drawing.h"
@@ -67,6 +68,13 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
   }
+  // A bare map (the import's picture) is written from its greys: the same
+  // file, without a BGR picture to make and scan for its colours.
+  const cv::Mat grey = canvas.UntouchedGrey();
+  if (!grey.empty() && crop.empty() && (width <= 0 || grey.cols <= width)) {
+    WriteGreyPngFileAsColour(out, grey);
+    return;
+  }
   cv::Mat picture = canvas.image();
   if (!crop.empty()) picture = picture(CropWindow(crop, canvas.scale(), picture.size())).clone();
   if (width > 0 && picture.cols > width) {
@@ -80,6 +88,10 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
 }  // namespace areagraph
 
 int main(int argc, char** argv) {
+  // A render writes each of its big buffers (the payloads, their parsed
+  // arrays, the canvas and its masks) once: faulting them in was half of its
+  // CPU time (docs/performance.md, eighth pass).
+  areagraph::UseFaultThriftyHeap(size_t{256} << 20);
   CLI::App app{"Draws the head artifact of one stage over its map as a PNG."};
   std::string store_path = "areagraph.db", map, stage = areagraph::kMergeStage.name, out;
   int scale = 0;

@@ -101,6 +101,7 @@ void DrawVoronoiDiagram(const proto::VoronoiDiagram& diagram, Canvas& canvas) {
   // the skeleton is 1 px wide too (a 2-px line is a filled polygon with
   // round caps, three times the work).
   std::vector<std::pair<cv::Point2d, cv::Point2d>> faint;
+  faint.reserve(voronoi.edge_source_size());  // most edges are faint: no regrowth
   for (int e = 0; e < voronoi.edge_source_size(); ++e) {
     if (!drawn(e) || clearances[e] >= 2.0) continue;
     faint.emplace_back(at(voronoi.edge_source(e)), at(voronoi.edge_target(e)));

@@ -38,9 +38,10 @@ std::vector<cv::Point> RingPoints(const Canvas& canvas, const proto::Ring& ring)
 }  // namespace
 
 Canvas::Canvas(const std::string& cells, int width, int height, int scale) : scale_(scale) {
-  // The map's three states are greys: one table pass over the cells, the
-  // upscaling on one byte per pixel, then grey to BGR (OpenCV's vectorised
-  // loops; a per-cell Mat access cost 40 M instructions at 1.5 megapixels).
+  // The map's three states are greys: one table pass over the cells and the
+  // upscaling on one byte per pixel; grey to BGR once something is drawn
+  // (OpenCV's vectorised loops; a per-cell Mat access cost 40 M
+  // instructions at 1.5 megapixels).
   cv::Mat grey_of(1, 256, CV_8UC1, cv::Scalar(kUnknownGrey));
   grey_of.at<uint8_t>(proto::CELL_FREE) = kFreeGrey;
   grey_of.at<uint8_t>(proto::CELL_OCCUPIED) = kOccupiedGrey;
@@ -52,13 +53,19 @@ Canvas::Canvas(const std::string& cells, int width, int height, int scale) : sca
     states = &padded;
   }
   const cv::Mat state_image(height, width, CV_8UC1, const_cast<char*>(states->data()));
-  cv::Mat grey;
-  cv::LUT(state_image, grey_of, grey);
+  cv::LUT(state_image, grey_of, grey_);
   if (scale > 1) {
-    cv::resize(grey.clone(), grey, cv::Size(width * scale, height * scale), 0, 0,
+    cv::resize(grey_.clone(), grey_, cv::Size(width * scale, height * scale), 0, 0,
                cv::INTER_NEAREST);
   }
-  cv::cvtColor(grey, image_, cv::COLOR_GRAY2BGR);
+}
+
+cv::Mat& Canvas::image() {
+  if (image_.empty()) {
+    cv::cvtColor(grey_, image_, cv::COLOR_GRAY2BGR);
+    grey_.release();
+  }
+  return image_;
 }
 
 cv::Point Canvas::ToCanvas(const proto::Point2& point) const {
@@ -78,17 +85,17 @@ void Canvas::Line(const proto::Point2& a, const proto::Point2& b, const cv::Scal
 
 void Canvas::Line(const cv::Point2d& a, const cv::Point2d& b, const cv::Scalar& colour,
                   int thickness) {
-  cv::line(image_, ToCanvas(a), ToCanvas(b), colour, thickness, kLineType, kShift);
+  cv::line(image(), ToCanvas(a), ToCanvas(b), colour, thickness, kLineType, kShift);
 }
 
 void Canvas::Dot(const proto::Point2& at, const cv::Scalar& colour, int radius) {
-  cv::circle(image_, ToCanvas(at), radius * kSubPixels, colour, cv::FILLED, kLineType, kShift);
+  cv::circle(image(), ToCanvas(at), radius * kSubPixels, colour, cv::FILLED, kLineType, kShift);
 }
 
 void Canvas::Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness) {
   if (ring.points_size() < 2) return;
   const std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, ring)};
-  cv::polylines(image_, rings, true, colour, thickness, kLineType, kShift);
+  cv::polylines(image(), rings, true, colour, thickness, kLineType, kShift);
 }
 
 void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha) {
@@ -96,7 +103,7 @@ void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, doubl
   std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, polygon.outer())};
   // Only the polygon's bounding box (holes lie inside it) is masked and
   // blended: a whole canvas per polygon made big maps take minutes.
-  const cv::Rect box = PixelBox(rings[0]) & cv::Rect(0, 0, image_.cols, image_.rows);
+  const cv::Rect box = PixelBox(rings[0]) & cv::Rect(0, 0, image().cols, image().rows);
   if (box.empty()) return;
   const cv::Point offset(-box.x * kSubPixels, -box.y * kSubPixels);
   cv::Mat mask = cv::Mat::zeros(box.size(), CV_8UC1);
@@ -105,22 +112,22 @@ void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, doubl
     rings = {RingPoints(*this, hole)};
     cv::fillPoly(mask, rings, cv::Scalar(0), cv::LINE_8, kShift, offset);
   }
-  cv::Mat area = image_(box), tinted;
-  cv::addWeighted(area, 1.0 - alpha, cv::Mat(box.size(), image_.type(), colour), alpha, 0, tinted);
+  cv::Mat area = image()(box), tinted;
+  cv::addWeighted(area, 1.0 - alpha, cv::Mat(box.size(), image().type(), colour), alpha, 0, tinted);
   tinted.copyTo(area, mask);
 }
 
 void Canvas::FaintLines(const std::vector<std::pair<cv::Point2d, cv::Point2d>>& lines,
                         const cv::Scalar& colour, double alpha) {
   if (lines.empty()) return;
-  cv::Mat mask = cv::Mat::zeros(image_.size(), CV_8UC1);
+  cv::Mat mask = cv::Mat::zeros(image().size(), CV_8UC1);
   for (const auto& [a, b] : lines) {
     cv::line(mask, ToCanvas(a), ToCanvas(b), cv::Scalar(255), 1, kLineType, kShift);
   }
   cv::Mat tinted;
-  cv::addWeighted(image_, 1.0 - alpha, cv::Mat(image_.size(), image_.type(), colour), alpha, 0,
+  cv::addWeighted(image(), 1.0 - alpha, cv::Mat(image().size(), image().type(), colour), alpha, 0,
                   tinted);
-  tinted.copyTo(image_, mask);
+  tinted.copyTo(image(), mask);
 }
 
 void Canvas::Label(const proto::Point2& at, const std::string& text, const cv::Scalar& colour) {
@@ -129,16 +136,16 @@ void Canvas::Label(const proto::Point2& at, const std::string& text, const cv::S
   const cv::Size size = cv::getTextSize(text, cv::FONT_HERSHEY_SIMPLEX, font_scale, 1, &baseline);
   const cv::Point origin(static_cast<int>(at.x() * scale_) - size.width / 2,
                          static_cast<int>(at.y() * scale_) + size.height / 2);
-  cv::putText(image_, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, cv::Scalar(255, 255, 255),
-              3, cv::LINE_AA);
-  cv::putText(image_, text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, colour, 1, cv::LINE_AA);
+  cv::putText(image(), text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale,
+              cv::Scalar(255, 255, 255), 3, cv::LINE_AA);
+  cv::putText(image(), text, origin, cv::FONT_HERSHEY_SIMPLEX, font_scale, colour, 1, cv::LINE_AA);
 }
 
 void Canvas::PaintCells(const google::protobuf::RepeatedField<int32_t>& cells, int width,
                         const cv::Scalar& colour) {
   for (const int32_t cell : cells) {
     const cv::Rect rect((cell % width) * scale_, (cell / width) * scale_, scale_, scale_);
-    cv::rectangle(image_, rect, colour, cv::FILLED);
+    cv::rectangle(image(), rect, colour, cv::FILLED);
   }
 }
 

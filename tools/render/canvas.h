@@ -16,7 +16,12 @@ class Canvas {
   Canvas(const std::string& cells, int width, int height, int scale);
 
   int scale() const { return scale_; }
-  cv::Mat& image() { return image_; }
+  // The BGR picture, made from the map's greys on first use.
+  cv::Mat& image();
+  // The map's greys (CV_8UC1) while nothing has been drawn (image() was never
+  // called), else an empty Mat: a bare map is written from its greys
+  // (WriteGreyPngFileAsColour), the same file without a BGR picture.
+  cv::Mat UntouchedGrey() const { return image_.empty() ? grey_ : cv::Mat(); }
 
   cv::Point ToCanvas(const proto::Point2& point) const;
   // The same for a point held as two numbers (a Voronoi vertex).
@@ -39,6 +44,7 @@ class Canvas {
 
  private:
   int scale_;
+  cv::Mat grey_;  // until image() makes the BGR picture from it
   cv::Mat image_;
 };
 

@@ -6,6 +6,7 @@
 #include <png.h>
 
 #include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,27 @@ TEST(PngEncoder, EncodePngWritesSixteenBitThroughOpenCv) {
   EXPECT_TRUE(SamePixels(Decode(EncodePng(deep, 1)), deep));
   const cv::Mat colour = Varied(CV_8UC3);
   EXPECT_TRUE(SamePixels(Decode(EncodePng(colour, 1)), colour));
+}
+
+TEST(PngEncoder, AGreyPictureWrittenAsColourIsTheFileOfItsBgrPicture) {
+  // A map's three greys, upscaled (every row has a twin), and a picture of
+  // random greys (many palette entries, the order they first appear in).
+  cv::Mat map(4, 6, CV_8UC1);
+  const uchar greys[] = {200, 255, 40};
+  for (int i = 0; i < map.rows * map.cols; ++i) map.data[i] = greys[(i * 7 + i / 5) % 3];
+  cv::Mat upscaled;
+  cv::resize(map, upscaled, cv::Size(), 3, 3, cv::INTER_NEAREST);
+  cv::Mat random(9, 11, CV_8UC1);
+  cv::randu(random, cv::Scalar::all(0), cv::Scalar::all(256));
+  for (const cv::Mat& grey : {map, upscaled, random}) {
+    cv::Mat bgr;
+    cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
+    std::string from_bgr, from_grey;
+    ASSERT_TRUE(EncodePngWithLibpng(bgr, 1, PNG_FILTER_UP, &from_bgr));
+    ASSERT_TRUE(EncodeGreyAsColourPng(grey, 1, PNG_FILTER_UP, &from_grey));
+    EXPECT_EQ(from_grey, from_bgr);
+    EXPECT_TRUE(SamePixels(Decode(from_grey), bgr));
+  }
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/imgproc.hpp>
 #include <set>
 #include <string>
 #include <utility>
@@ -101,6 +102,24 @@ TEST(Canvas, DefaultScaleKeepsThePictureNearTheMapsOwnSize) {
   EXPECT_EQ(DefaultScale(645, 573), 1);    // lab_a: its own size
   EXPECT_EQ(DefaultScale(1290, 1146), 1);  // never below 1
   EXPECT_EQ(DefaultScale(0, 0), 8);
+}
+
+TEST(Canvas, KeepsTheMapAsGreysUntilSomethingIsDrawn) {
+  const std::string cells = {proto::CELL_FREE, proto::CELL_OCCUPIED, proto::CELL_UNKNOWN,
+                             proto::CELL_FREE};
+  Canvas canvas(cells, 2, 2, 2);
+  const cv::Mat grey = canvas.UntouchedGrey().clone();
+  ASSERT_EQ(grey.type(), CV_8UC1);
+  ASSERT_EQ(grey.size(), cv::Size(4, 4));
+  EXPECT_EQ(grey.at<uchar>(0, 0), 255);
+  EXPECT_EQ(grey.at<uchar>(0, 2), 40);
+  EXPECT_EQ(grey.at<uchar>(3, 1), 200);
+  canvas.Line(At(0, 0), At(1, 1), cv::Scalar(0, 0, 255), 1);
+  EXPECT_TRUE(canvas.UntouchedGrey().empty());  // drawn on: the BGR picture is the picture
+  cv::Mat bgr;
+  cv::cvtColor(grey, bgr, cv::COLOR_GRAY2BGR);
+  EXPECT_EQ(canvas.image().at<cv::Vec3b>(3, 3), bgr.at<cv::Vec3b>(3, 3));
+  EXPECT_EQ(canvas.image().at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 255));
 }
 
 }  // namespace

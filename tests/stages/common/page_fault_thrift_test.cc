@@ -1,0 +1,73 @@
+#include "stages/common/page_fault_thrift.h"
+
+#include <gtest/gtest.h>
+#include <malloc.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace areagraph {
+namespace {
+
+constexpr size_t kMb = size_t{1} << 20;
+
+// The VmFlags line of the mapping that holds `address`, from /proc/self/smaps.
+std::string VmFlagsOf(const void* address) {
+  const auto at = reinterpret_cast<uintptr_t>(address);
+  std::ifstream smaps("/proc/self/smaps");
+  std::string line;
+  bool inside = false;
+  while (std::getline(smaps, line)) {
+    uintptr_t from = 0, to = 0;
+    char dash = 0;
+    std::istringstream range(line);
+    if (range >> std::hex >> from >> dash >> to && dash == '-') {
+      inside = from <= at && at < to;
+    } else if (inside && line.rfind("VmFlags:", 0) == 0) {
+      return line;
+    }
+  }
+  return "";
+}
+
+bool TransparentHugePagesOff() {
+  std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string text;
+  std::getline(mode, text);
+  return text.empty() || text.find("[never]") != std::string::npos;
+}
+
+TEST(PageFaultThriftTest, BuffersOfSeveralMegabytesComeFromTheHeapNotOwnMappings) {
+  UseFaultThriftyHeap(0);
+  const size_t mapped_before = mallinfo2().hblks;
+  // Without the setting glibc maps an 8-MB buffer on its own (and faults it
+  // in afresh each time); with it the buffer is heap memory, reused.
+  void* volatile buffer = malloc(8 * kMb);
+  ASSERT_NE(buffer, nullptr);
+  std::memset(buffer, 1, 8 * kMb);
+  EXPECT_EQ(mallinfo2().hblks, mapped_before);
+  free(buffer);
+  void* volatile again = malloc(8 * kMb);
+  EXPECT_EQ(mallinfo2().hblks, mapped_before);
+  free(again);
+}
+
+TEST(PageFaultThriftTest, TheReservedHeapIsAdvisedForHugePages) {
+  if (TransparentHugePagesOff()) GTEST_SKIP() << "transparent huge pages are off here";
+  ASSERT_TRUE(UseFaultThriftyHeap(64 * kMb));
+  void* volatile buffer = malloc(16 * kMb);
+  ASSERT_NE(buffer, nullptr);
+  std::memset(buffer, 1, 16 * kMb);
+  // Its end lies in the heap's growth (its start may be in free heap from
+  // before the call, which keeps ordinary pages).
+  const std::string flags = VmFlagsOf(static_cast<char*>(buffer) + 15 * kMb);
+  EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
+  free(buffer);
+}
+
+}  // namespace
+}  // namespace areagraph
