@@ -12,24 +12,29 @@
 #include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/ring_simplicity.h"
 #include "stages/geometry/wall_thickness.h"
+#include "stages/merge/room_joining.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
 
 // Whether the cell under a site (a cell centre), or one of its 8 neighbours,
-// belongs to an island.
-bool OnIsland(const cv::Mat& islands, const Eigen::Vector2d& site) {
+// belongs to an island: 1 when one stands free, 2 when one stands only
+// against a wall, 0 otherwise.
+int OnIsland(const cv::Mat& islands, const Eigen::Vector2d& site) {
+  int found = 0;
   const int col = static_cast<int>(std::floor(site.x()));
   const int row = static_cast<int>(std::floor(site.y()));
   for (int dr = -1; dr <= 1; ++dr) {
     for (int dc = -1; dc <= 1; ++dc) {
       const int c = col + dc, r = row + dr;
       if (c < 0 || r < 0 || c >= islands.cols || r >= islands.rows) continue;
-      if (islands.at<uint8_t>(r, c)) return true;
+      const int value = islands.at<uint8_t>(r, c);
+      if (value == 1) return 1;
+      if (value != 0) found = value;
     }
   }
-  return false;
+  return found;
 }
 
 // The size (m2) of each area's edge polygons.
@@ -66,32 +71,22 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
   plan->MergeGroups(root);
 }
 
-}  // namespace
-
-cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m) {
-  const int width = map.frame().width_px(), height = map.frame().height_px();
-  const double resolution_m = map.frame().resolution_m();
-  // What cleaning removed is still no free space: a wall it broke stays one.
-  cv::Mat obstacle = ObstacleMask(map.cells(), width, height);
-  for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
-    for (const int index : *list) {
-      if (index >= 0 && index < width * height) obstacle.data[index] = 255;
-    }
-  }
-  if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
+// Marks (`value` in `out`, where it is still 0) the cells of every 8-connected region of `obstacle`
+// that touches no image border, is at most `max_px` long, at least
+// `min_thickness_px` thick (twice its deepest cell's depth) and fills
+// kMinFurnitureSolidity of its smallest enclosing rectangle.
+void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px, uint8_t value,
+                 cv::Mat* out) {
+  const int width = obstacle.cols, height = obstacle.rows;
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
   const cv::Mat depth = ObstacleDepth(obstacle);
-  const double min_thickness_px = std::max(
-      kMinFurnitureThicknessM / resolution_m,
-      kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
   std::vector<float> deepest(count, 0);
   for (int r = 0; r < height; ++r) {
     const int* row = labels.ptr<int>(r);
     const float* d = depth.ptr<float>(r);
     for (int c = 0; c < width; ++c) deepest[row[c]] = std::max(deepest[row[c]], d[c]);
   }
-  const double max_px = kMaxFurnitureIslandM / resolution_m;
   std::vector<uint8_t> island(count, 0);
   for (int k = 1; k < count; ++k) {
     const int x = stats.at<int>(k, cv::CC_STAT_LEFT), y = stats.at<int>(k, cv::CC_STAT_TOP);
@@ -113,39 +108,91 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m
     const double box_cells = (box.size.width + 1) * (box.size.height + 1);
     island[k] = stats.at<int>(k, cv::CC_STAT_AREA) >= kMinFurnitureSolidity * box_cells;
   }
-  cv::Mat out(height, width, CV_8U);
   for (int r = 0; r < height; ++r) {
     const int* row = labels.ptr<int>(r);
-    uint8_t* target = out.ptr<uint8_t>(r);
-    for (int c = 0; c < width; ++c) target[c] = island[row[c]];
+    uint8_t* target = out->ptr<uint8_t>(r);
+    for (int c = 0; c < width; ++c) {
+      if (island[row[c]] && target[c] == 0) target[c] = value;
+    }
+  }
+}
+
+}  // namespace
+
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
+                             bool against_walls) {
+  const int width = map.frame().width_px(), height = map.frame().height_px();
+  const double resolution_m = map.frame().resolution_m();
+  // What cleaning removed is still no free space: a wall it broke stays one.
+  cv::Mat obstacle = ObstacleMask(map.cells(), width, height);
+  for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
+    for (const int index : *list) {
+      if (index >= 0 && index < width * height) obstacle.data[index] = 255;
+    }
+  }
+  if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
+  const double min_thickness_px =
+      std::max(kMinFurnitureThicknessM / resolution_m,
+               kFurnitureWallRatio * TypicalWallThickness(ObstacleDepth(obstacle),
+                                                          kMaxWallThicknessM / resolution_m));
+  const double max_px = kMaxFurnitureIslandM / resolution_m;
+  cv::Mat out = cv::Mat::zeros(height, width, CV_8U);
+  MarkIslands(obstacle, min_thickness_px, max_px, 1, &out);
+  if (against_walls) {
+    // Only what is at least as thick as an island is left of the obstacles:
+    // walls thinner than that go, and what stood against them is on its own.
+    const int diameter = static_cast<int>(std::ceil(min_thickness_px));
+    const cv::Mat disk = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(diameter, diameter));
+    cv::Mat thick;
+    cv::morphologyEx(obstacle, thick, cv::MORPH_OPEN, disk);
+    MarkIslands(thick, min_thickness_px, max_px, 2, &out);
   }
   return out;
 }
 
 void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
-                              double resolution_m, bool keep_closed_doors, AreaPlan* plan) {
+                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+                              AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
   const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
   // Pairs of areas that meet at a vertex where the opening (the narrower of
   // their two sides) has an island for a jamb, and room-less areas that have
   // any other opening.
   std::vector<std::pair<int, int>> gaps;
+  // Corridor-shaped rooms (CorridorLike) join at a gap whatever their size:
+  // a bin or a cabinet in a corridor does not end it.
+  std::vector<bool> corridor_like(area_count, false);
+  if (corridor_clutter) {
+    for (int k = 0; k < area_count; ++k) {
+      corridor_like[k] =
+          plan->areas[k].kind == proto::AREA_ROOM && CorridorLike(graph, plan->areas[k]);
+    }
+  }
   std::vector<bool> enclosed(area_count, true);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
   const std::vector<bool> closed =
       keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
   for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
-    if (closed[vertex]) continue;
     const std::map<int, VertexOpening>& at = openings[vertex];
     for (auto a = at.begin(); a != at.end(); ++a) {
       for (auto b = std::next(a); b != at.end(); ++b) {
+        const bool corridors = corridor_like[a->first] && corridor_like[b->first];
+        // ag-cut closes a narrowing between two wider spaces whose sides are
+        // structure; a bin against a corridor's wall makes one.
+        if (closed[vertex] && !corridors) continue;
         const VertexOpening& narrower =
             a->second.width_px <= b->second.width_px ? a->second : b->second;
-        if (OnIsland(islands, narrower.left) || OnIsland(islands, narrower.right)) {
-          if (std::min(size_m2[a->first], size_m2[b->first]) <= kMaxFurnitureGapPieceM2) {
-            gaps.emplace_back(a->first, b->first);
-          }
-        } else {
+        const int left = OnIsland(islands, narrower.left);
+        const int right = OnIsland(islands, narrower.right);
+        const bool small =
+            std::min(size_m2[a->first], size_m2[b->first]) <= kMaxFurnitureGapPieceM2;
+        if ((left == 1 || right == 1) && !closed[vertex]) {
+          if (small) gaps.emplace_back(a->first, b->first);
+        } else if ((left == 2 || right == 2) && corridors) {
+          // A bin or a cabinet against a corridor's wall, whatever the
+          // corridor's size and also where ag-cut closed the narrowing.
+          gaps.emplace_back(a->first, b->first);
+        } else if (!closed[vertex]) {
           enclosed[a->first] = enclosed[b->first] = false;
         }
       }

@@ -28,7 +28,14 @@ inline constexpr double kMinFurnitureSolidity = 0.75;
 // most `fill_pockets_m` long (merge.fill_furniture_outlines_m) count as
 // obstacles too, so that a desk drawn as a closed outline is one solid
 // island; 0 leaves them free.
-cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m);
+// Free-standing islands are 1. With `against_walls`
+// (merge.wall_furniture_islands), what stands against a thin wall is marked
+// 2: the same tests on what is left of the obstacles once everything thinner
+// than an island is taken away (a morphological opening with a disk as wide
+// as the least island thickness), so that a bin or a cabinet touching a
+// corridor's wall is no door's jamb.
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
+                             bool against_walls);
 
 // The smaller of two areas at a gap is at most this big (m2, its edges'
 // polygons): a room cut off by a row of blocks with openings between them
@@ -46,8 +53,16 @@ inline constexpr double kMaxFurnitureGapPieceM2 = 20.0;
 // smaller of the two areas must be at most kMaxFurnitureGapPieceM2. A joined
 // area is a room when one of its parts was. With `keep_closed_doors`, no
 // areas join at a cut ag-cut made on a door or wall gap it closed
-// (PassagePoint.closed_by_cut): a desk beside such a door is no jamb.
+// (PassagePoint.closed_by_cut): a desk beside such a door is no jamb. With
+// `corridor_clutter` (merge.join_corridor_clutter), two rooms that are both
+// shaped like corridors (CorridorLike, stages/merge/room_joining.h) join
+// where the opening's jamb stands against a wall (2 in `islands`; elsewhere
+// only free-standing islands count) whatever their size, also at a closed
+// cut (ag-cut closes a narrowing between two wider spaces whose sides are
+// structure, which a bin against a wall makes): a bin in a corridor does
+// not divide it.
 void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
-                              double resolution_m, bool keep_closed_doors, AreaPlan* plan);
+                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+                              AreaPlan* plan);
 
 }  // namespace areagraph

@@ -69,16 +69,14 @@ double WidestWithin(const proto::CutGraph& graph, const AreaPlan& plan,
   return widest;
 }
 
-// Whether a room area is shaped like a corridor: its room shape's area is
-// at least kCorridorElongation squares of its median free width.
+}  // namespace
+
 bool CorridorLike(const proto::CutGraph& graph, const AreaPlan::Area& area) {
   if (area.room_id < 0 || area.room_id >= graph.room_shapes_size()) return false;
   const double width = MedianWidthPx(graph, area);
   const double shape = 0.5 * std::abs(TwiceSignedArea(graph.room_shapes(area.room_id).outer()));
   return width > 0 && shape >= kCorridorElongation * width * width;
 }
-
-}  // namespace
 
 void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
                            bool keep_closed_doors, AreaPlan* plan) {

@@ -18,6 +18,10 @@ inline constexpr double kSideReachM = 1.5;
 // same).
 inline constexpr double kCorridorElongation = 6;
 
+// Whether a room area is shaped like a corridor: its room shape's area is
+// at least kCorridorElongation squares of its median free width.
+bool CorridorLike(const proto::CutGraph& graph, const AreaPlan::Area& area);
+
 // Joins room areas that meet at a graph vertex without a narrowing between
 // them: the opening there is not narrower than kDoorWidthShare of the space
 // on the narrower side. The room disk stopped there (at a piece of furniture

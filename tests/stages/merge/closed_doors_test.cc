@@ -89,7 +89,7 @@ TEST(ClosedDoorsTest, FurnitureGapJoiningKeepsRoomsApartAtAClosedCut) {
   auto rooms = [&](bool closed, bool keep) {
     const proto::CutGraph graph = TwoRooms(20, closed);
     AreaPlan plan = AssignAreas(graph);
-    JoinAreasAtFurnitureGaps(graph, islands, kResolutionM, keep, &plan);
+    JoinAreasAtFurnitureGaps(graph, islands, kResolutionM, keep, /*corridor_clutter=*/true, &plan);
     return plan.areas.size();
   };
   EXPECT_EQ(rooms(false, true), 1u);

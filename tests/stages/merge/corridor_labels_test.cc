@@ -72,13 +72,31 @@ TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   const cv::Mat islands = FurnitureIslandCells(
       WalledMap(
           {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}),
-      /*fill_pockets_m=*/0);
+      /*fill_pockets_m=*/0, /*against_walls=*/false);
   EXPECT_EQ(islands.at<uint8_t>(25, 30), 1);
   EXPECT_EQ(islands.at<uint8_t>(21, 100), 0);
   EXPECT_EQ(islands.at<uint8_t>(60, 30), 0);
   EXPECT_EQ(islands.at<uint8_t>(95, 10), 0);  // joined to the wall
   EXPECT_EQ(islands.at<uint8_t>(110, 60), 0);
   EXPECT_EQ(islands.at<uint8_t>(60, 60), 0);  // free space
+}
+
+TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
+  // The cabinet (1 x 0.5 m) against the outer wall, a desk, a piece of
+  // wall with a 0.5 x 0.5 m cabinet at its end, and a 0.5 m thick piece
+  // of wall 5 m long against the outer wall.
+  const proto::CleanedMap map = WalledMap(
+      {{3, 90, 20, 10}, {20, 20, 32, 16}, {80, 20, 60, 3}, {80, 23, 10, 10}, {60, 5, 10, 100}});
+  const cv::Mat without = FurnitureIslandCells(map, 0, /*against_walls=*/false);
+  const cv::Mat with = FurnitureIslandCells(map, 0, /*against_walls=*/true);
+  EXPECT_EQ(without.at<uint8_t>(95, 10), 0);
+  EXPECT_EQ(with.at<uint8_t>(95, 10), 1);  // the cabinet
+  EXPECT_EQ(with.at<uint8_t>(3, 10), 0);   // the outer wall behind it
+  EXPECT_EQ(with.at<uint8_t>(25, 30), 1);  // the desk, either way
+  EXPECT_EQ(without.at<uint8_t>(28, 85), 0);
+  EXPECT_EQ(with.at<uint8_t>(28, 85), 1);   // the cabinet at the wall's end
+  EXPECT_EQ(with.at<uint8_t>(21, 120), 0);  // the wall piece itself
+  EXPECT_EQ(with.at<uint8_t>(50, 65), 0);   // the thick wall is too long
 }
 
 }  // namespace
