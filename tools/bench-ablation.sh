@@ -52,7 +52,8 @@ STEPS=(
   "+ merge.keep_closed_doors|merge.keep_closed_doors=true"
   "+ cut.island_end_on_face|cut.island_end_on_face=true"
   "+ cut.close_wall_gaps_short_tips|cut.close_wall_gaps_short_tips=true"
-  "+ merge.fill_furniture_outlines_m 4 (= defaults)|merge.fill_furniture_outlines_m=4"
+  "+ merge.fill_furniture_outlines_m 4|merge.fill_furniture_outlines_m=4"
+  "+ merge.wall_furniture_islands and merge.join_corridor_clutter (= defaults)|merge.wall_furniture_islands=true merge.join_corridor_clutter=true"
 )
 
 set_flags=()
