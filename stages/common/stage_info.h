@@ -42,7 +42,9 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // merge 8: areas join at furniture gaps; corridor-shaped rooms are labelled corridors (issue 12).
 // merge 9: room and furniture-gap joining keep doors the cut closed (merge.keep_closed_doors).
 // merge 10: desks drawn as closed outlines are islands (merge.fill_furniture_outlines_m).
-inline constexpr StageInfo kMergeStage{"merge", 10};
+// merge 11: small rooms opening widely into a corridor and another area are
+// corridor pieces and fold into it (merge.fold_corridor_pieces_below_m2).
+inline constexpr StageInfo kMergeStage{"merge", 11};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).
