@@ -53,7 +53,8 @@ STEPS=(
   "+ cut.island_end_on_face|cut.island_end_on_face=true"
   "+ cut.close_wall_gaps_short_tips|cut.close_wall_gaps_short_tips=true"
   "+ merge.fill_furniture_outlines_m 4|merge.fill_furniture_outlines_m=4"
-  "+ merge.wall_furniture_islands and merge.join_corridor_clutter (= defaults)|merge.wall_furniture_islands=true merge.join_corridor_clutter=true"
+  "+ merge.wall_furniture_islands and merge.join_corridor_clutter|merge.wall_furniture_islands=true merge.join_corridor_clutter=true"
+  "+ merge.fold_corridor_pieces_below_m2 20 (= defaults)|merge.fold_corridor_pieces_below_m2=20"
 )
 
 set_flags=()

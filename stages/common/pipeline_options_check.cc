@@ -108,6 +108,8 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.grow_min_gap_m(), "merge.grow_min_gap_m", "metres");
   RequireNotNegative(options.outline_tolerance_m(), "merge.outline_tolerance_m", "metres");
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
+  RequireNotNegative(options.fold_corridor_pieces_below_m2(), "merge.fold_corridor_pieces_below_m2",
+                     "square metres");
 }
 
 void CheckMatchOptions(const proto::MatchOptions& options) {

@@ -45,6 +45,8 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // merge 11: bins and cabinets against thin walls are islands (merge.wall_furniture_islands), and
 // corridor-shaped rooms join at such gaps whatever their size, also at closed cuts
 // (merge.join_corridor_clutter; bormann/ office_h furnished).
+// Also in merge 11 (same session): small rooms opening widely into a corridor and another area
+// are corridor pieces and fold into it (merge.fold_corridor_pieces_below_m2).
 inline constexpr StageInfo kMergeStage{"merge", 11};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).

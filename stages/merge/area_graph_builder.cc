@@ -16,6 +16,7 @@
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/corridor_labels.h"
+#include "stages/merge/corridor_piece_folding.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
@@ -120,6 +121,10 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
                              options.join_corridor_clutter(), &plan);
   }
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
+  if (options.fold_corridor_pieces_below_m2() > 0) {
+    FoldCorridorPieces(graph, grid.resolution_m(), options.fold_corridor_pieces_below_m2(),
+                       options.keep_closed_doors(), &plan);
+  }
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));

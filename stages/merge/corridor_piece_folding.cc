@@ -1,0 +1,94 @@
+#include "stages/merge/corridor_piece_folding.h"
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+#include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_simplicity.h"
+#include "stages/merge/vertex_openings.h"
+
+namespace areagraph {
+namespace {
+
+// The size (m2) of each area's edge polygons.
+std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& plan,
+                                double resolution_m) {
+  std::vector<double> size(plan.areas.size(), 0);
+  const double cell_m2 = resolution_m * resolution_m;
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    double& area = size[plan.area_of_edge[e]];
+    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
+    for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
+      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
+    }
+  }
+  return size;
+}
+
+}  // namespace
+
+void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, double max_m2,
+                        bool keep_closed_doors, AreaPlan* plan) {
+  const int area_count = static_cast<int>(plan->areas.size());
+  const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
+  std::vector<double> typical(area_count);
+  for (int k = 0; k < area_count; ++k) typical[k] = MedianWidthPx(graph, plan->areas[k]);
+  const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
+  const std::vector<bool> closed =
+      keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
+  // Each small room's widest qualifying opening, and the area behind it.
+  std::vector<int> into(area_count, -1);
+  std::vector<double> widest(area_count, 0);
+  std::vector<int> wide_openings(area_count, 0);
+  for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
+    if (closed[vertex]) continue;
+    const std::map<int, VertexOpening>& at = openings[vertex];
+    for (const auto& [k, own] : at) {
+      if (plan->areas[k].kind != proto::AREA_ROOM || size_m2[k] >= max_m2 || typical[k] <= 0) {
+        continue;
+      }
+      for (const auto& [other, theirs] : at) {
+        if (other == k) continue;
+        const double other_width_m = typical[other] * resolution_m;
+        const bool corridor = plan->areas[other].kind != proto::AREA_ROOM ||
+                              size_m2[other] >= kCorridorShape * other_width_m * other_width_m;
+        if (!corridor) continue;
+        const double opening = std::min(own.width_px, theirs.width_px);
+        if (opening < kPieceOpeningShare * typical[k]) continue;
+        ++wide_openings[k];
+        if (opening <= widest[k]) continue;
+        widest[k] = opening;
+        into[k] = other;
+      }
+    }
+  }
+  DisjointSets groups(area_count);
+  std::vector<bool> folded(area_count, false);
+  for (int k = 0; k < area_count; ++k) {
+    if (into[k] < 0 || wide_openings[k] < kMinWideOpenings) continue;
+    groups.Union(k, into[k]);
+    folded[k] = true;
+  }
+  // A group takes the kind (and room) of its biggest area that did not fold
+  // (of its biggest area when all folded into each other).
+  std::map<int, int> lead;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int k = 0; k < area_count; ++k) {
+      if (pass == 0 && folded[k]) continue;
+      auto [it, added] = lead.emplace(groups.Find(k), k);
+      if (!added && pass == 0 && size_m2[k] > size_m2[it->second]) it->second = k;
+    }
+  }
+  std::vector<int> root(area_count);
+  for (int k = 0; k < area_count; ++k) {
+    root[k] = groups.Find(k);
+    const AreaPlan::Area& target = plan->areas[lead[root[k]]];
+    plan->areas[k].kind = target.kind;
+    plan->areas[k].room_id = target.room_id;
+  }
+  plan->MergeGroups(root);
+}
+
+}  // namespace areagraph
