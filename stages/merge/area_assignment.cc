@@ -1,9 +1,12 @@
 #include "stages/merge/area_assignment.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_simplicity.h"
 
 namespace areagraph {
 namespace {
@@ -115,6 +118,20 @@ double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area) {
   if (clearance.empty()) return 0;
   std::nth_element(clearance.begin(), clearance.begin() + clearance.size() / 2, clearance.end());
   return 2 * clearance[clearance.size() / 2];
+}
+
+std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& plan,
+                                double resolution_m) {
+  std::vector<double> size(plan.areas.size(), 0);
+  const double cell_m2 = resolution_m * resolution_m;
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    double& area = size[plan.area_of_edge[e]];
+    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
+    for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
+      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
+    }
+  }
+  return size;
 }
 
 }  // namespace areagraph

@@ -39,4 +39,8 @@ AreaPlan AssignAreas(const proto::CutGraph& graph);
 // edges (0 without clearances).
 double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area);
 
+// The size (m2) of each area of `plan`: its edges' polygons and what they absorbed.
+std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& plan,
+                                double resolution_m);
+
 }  // namespace areagraph

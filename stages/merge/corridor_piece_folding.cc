@@ -10,24 +10,6 @@
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
-namespace {
-
-// The size (m2) of each area's edge polygons.
-std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& plan,
-                                double resolution_m) {
-  std::vector<double> size(plan.areas.size(), 0);
-  const double cell_m2 = resolution_m * resolution_m;
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    double& area = size[plan.area_of_edge[e]];
-    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
-    for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
-      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
-    }
-  }
-  return size;
-}
-
-}  // namespace
 
 void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, double max_m2,
                         bool keep_closed_doors, AreaPlan* plan) {

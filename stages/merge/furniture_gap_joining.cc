@@ -37,21 +37,6 @@ int OnIsland(const cv::Mat& islands, const Eigen::Vector2d& site) {
   return found;
 }
 
-// The size (m2) of each area's edge polygons.
-std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& plan,
-                                double resolution_m) {
-  std::vector<double> size(plan.areas.size(), 0);
-  const double cell_m2 = resolution_m * resolution_m;
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    double& area = size[plan.area_of_edge[e]];
-    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
-    for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
-      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
-    }
-  }
-  return size;
-}
-
 // Folds every group of `groups` into its lowest area; a group with a room
 // becomes that room.
 void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
