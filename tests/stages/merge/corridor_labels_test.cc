@@ -90,11 +90,11 @@ TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
   const cv::Mat without = FurnitureIslandCells(map, 0, /*against_walls=*/false);
   const cv::Mat with = FurnitureIslandCells(map, 0, /*against_walls=*/true);
   EXPECT_EQ(without.at<uint8_t>(95, 10), 0);
-  EXPECT_EQ(with.at<uint8_t>(95, 10), 1);  // the cabinet
+  EXPECT_EQ(with.at<uint8_t>(95, 10), 2);  // the cabinet, an island against a wall
   EXPECT_EQ(with.at<uint8_t>(3, 10), 0);   // the outer wall behind it
   EXPECT_EQ(with.at<uint8_t>(25, 30), 1);  // the desk, either way
   EXPECT_EQ(without.at<uint8_t>(28, 85), 0);
-  EXPECT_EQ(with.at<uint8_t>(28, 85), 1);   // the cabinet at the wall's end
+  EXPECT_EQ(with.at<uint8_t>(28, 85), 2);   // the cabinet at the wall's end
   EXPECT_EQ(with.at<uint8_t>(21, 120), 0);  // the wall piece itself
   EXPECT_EQ(with.at<uint8_t>(50, 65), 0);   // the thick wall is too long
 }
