@@ -1,12 +1,10 @@
 #include "stages/merge/corridor_piece_folding.h"
 
-#include <cmath>
 #include <map>
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/geometry/edge_polygon.h"
-#include "stages/geometry/ring_simplicity.h"
+#include "stages/merge/room_joining.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
@@ -18,8 +16,7 @@ void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, doubl
   std::vector<double> typical(area_count);
   for (int k = 0; k < area_count; ++k) typical[k] = MedianWidthPx(graph, plan->areas[k]);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-  const std::vector<bool> closed =
-      keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
+  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
   // Each small room's widest qualifying opening, and the area behind it.
   std::vector<int> into(area_count, -1);
   std::vector<double> widest(area_count, 0);
@@ -35,7 +32,7 @@ void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, doubl
         if (other == k) continue;
         const double other_width_m = typical[other] * resolution_m;
         const bool corridor = plan->areas[other].kind != proto::AREA_ROOM ||
-                              size_m2[other] >= kCorridorShape * other_width_m * other_width_m;
+                              size_m2[other] >= kCorridorElongation * other_width_m * other_width_m;
         if (!corridor) continue;
         const double opening = std::min(own.width_px, theirs.width_px);
         if (opening < kPieceOpeningShare * typical[k]) continue;

@@ -13,15 +13,12 @@ inline constexpr double kPieceOpeningShare = 0.9;
 // A piece of corridor opens widely to both sides (or more, at a junction);
 // a room with one wide opening is a room with an open front.
 inline constexpr int kMinWideOpenings = 2;
-// A room area counts as a corridor when it covers at least this many squares
-// of its median free width (room_joining.h's kCorridorElongation).
-inline constexpr double kCorridorShape = 6;
 
 // Folds room areas smaller than `max_m2` (their edges' polygons) that have
 // at least kMinWideOpenings openings (at graph vertices) into corridors at
 // least kPieceOpeningShare of their own median free width wide, into the
 // corridor behind the widest one. A corridor here is a room-less area or a
-// room area covering at least kCorridorShape squares of its median free
+// room area covering at least kCorridorElongation squares (room_joining.h) of its median free
 // width. The room disk (W) fits at a corridor's junction or wide spot and
 // makes a small "room" there, which people see as part of the corridor; a
 // real small room has a door narrower than itself, or opens into other rooms

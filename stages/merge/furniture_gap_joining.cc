@@ -155,8 +155,7 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islan
   }
   std::vector<bool> enclosed(area_count, true);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-  const std::vector<bool> closed =
-      keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
+  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
   for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
     const std::map<int, VertexOpening>& at = openings[vertex];
     for (auto a = at.begin(); a != at.end(); ++a) {

@@ -81,8 +81,7 @@ bool CorridorLike(const proto::CutGraph& graph, const AreaPlan::Area& area) {
 void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
                            bool keep_closed_doors, AreaPlan* plan) {
   const double reach_px = kSideReachM / resolution_m;
-  const std::vector<bool> closed =
-      keep_closed_doors ? ClosedVertices(graph) : std::vector<bool>(graph.vertices_size(), false);
+  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
   std::vector<std::vector<int>> edges_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {
     edges_at[graph.edges(e).source()].push_back(e);
