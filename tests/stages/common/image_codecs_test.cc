@@ -51,7 +51,7 @@ TEST(ImageCodecs, RunnerAndImporterDoNotLinkOpenCvCodecs) {
     char buffer[4096];
     for (size_t n; (n = fread(buffer, 1, sizeof(buffer), pipe)) > 0;) libraries.append(buffer, n);
     ASSERT_EQ(pclose(pipe), 0) << command;
-    EXPECT_NE(libraries.find("libopencv_core"), std::string::npos) << tool;
+    EXPECT_NE(libraries.find("libc.so"), std::string::npos) << tool;  // ldd read it
     EXPECT_EQ(libraries.find("libopencv_imgcodecs"), std::string::npos) << tool << ":\n"
                                                                         << libraries;
   }

@@ -2,6 +2,7 @@
 // what is stored.
 #include <gtest/gtest.h>
 
+#include <opencv2/imgcodecs.hpp>
 #include <regex>
 #include <string>
 
@@ -64,6 +65,20 @@ TEST_F(AgImportTest, PrintsOneSummaryLineAndStoresTheGridMap) {
   ASSERT_TRUE(map);
   EXPECT_EQ(map->source_path, image_);
   EXPECT_EQ(map->source_digest, stored.source_digest());
+}
+
+// A BMP goes through libag_image_codecs.so, which brings the shared OpenCV
+// into an ag-import that links OpenCV statically (cmake/FastStart.cmake): the
+// decoded picture crosses from one copy to the other.
+TEST_F(AgImportTest, DecodesABmpThroughTheCodecsModule) {
+  const std::string bmp = dir_.File("two_rooms.bmp");
+  ASSERT_TRUE(cv::imwrite(bmp, cv::imread(image_, cv::IMREAD_UNCHANGED)));
+  const CommandResult run = Import({bmp});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const proto::GridMap stored = ReadHeadGridMap(store_, "two_rooms");
+  const proto::GridMap expected = ImportGridMap(ReadImportSource(image_), proto::ImportOptions());
+  EXPECT_EQ(stored.frame().width_px(), 240);
+  EXPECT_EQ(stored.cells(), expected.cells());
 }
 
 TEST_F(AgImportTest, SecondImportIsCached) {

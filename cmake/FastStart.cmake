@@ -1,0 +1,114 @@
+# Fast start-up for the pipeline's executables (docs/performance.md, issue 14,
+# ninth pass). A map of lab_a's size is drawn or computed in tens of
+# milliseconds, while loading the 28 shared libraries of a stage executable
+# took 40 ms of CPU on the development machine: every library is mapped and
+# relocated (Debian links them with BIND_NOW), each page it writes is a page
+# fault (15-40 us on a virtual machine), and libopencv_imgproc.so alone runs
+# a static initialiser that fills 1 MB of interpolation tables no stage uses.
+#
+# ag_fast_start(TARGET) links an executable
+# - with the static archives that the Debian -dev packages of install-deps.sh
+#   ship (libopencv_core.a, libopencv_imgproc.a, libprotobuf.a,
+#   libsqlite3.a, libcrypto.a, libzstd.a, libpng16.a, libz.a): the linker
+#   takes only the object files used, resolves them at link time, and runs
+#   only their initialisers;
+# - without OpenCV's OpenGL interop (opengl_absent.cc answers its three glX
+#   calls), so libGLX and the six X11 libraries behind it are not loaded;
+# - as a position-dependent executable (-no-pie): a position-independent one
+#   relocates its 0.5 MB of vtables and constant tables at every start, one
+#   copy-on-write page fault per page. The cost: the executable itself is not
+#   placed at a random address (its libraries, heap and stack still are).
+# OpenCV's TBB backend, LAPACK and BLAS, libstdc++ and glibc stay shared.
+#
+# Everything else (the image-codecs module, tests, tools that link
+# libopencv_imgcodecs) keeps the shared libraries: libopencv_imgcodecs.so
+# needs the shared OpenCV core, and two copies of it in one process would
+# share global state half-way. A fast-start executable that still loads the
+# codecs (ag-import on a BMP or PGM, via libag_image_codecs.so) gets a
+# separate, complete shared OpenCV behind that module; cv::Mat crosses the
+# boundary through its allocator's virtual functions, as before.
+#
+# -DAG_FAST_START=OFF links every executable as before.
+option(AG_FAST_START "link the pipeline's executables statically and non-PIE for a fast start-up"
+  ON)
+
+set(_ag_fast "$<BOOL:$<TARGET_PROPERTY:AG_FAST_START>>")
+set(_ag_shared "$<NOT:${_ag_fast}>")
+
+# ag_dependency(NAME SHARED_TARGET STATIC_ARCHIVE [STATIC_EXTRA...]): an
+# interface target that links SHARED_TARGET, or STATIC_ARCHIVE and
+# STATIC_EXTRA in a target marked by ag_fast_start. Its compile-time usage
+# requirements (include directories, definitions) are SHARED_TARGET's.
+function(ag_dependency name shared static)
+  add_library(${name} INTERFACE)
+  target_include_directories(${name} SYSTEM INTERFACE
+    $<TARGET_PROPERTY:${shared},INTERFACE_INCLUDE_DIRECTORIES>)
+  target_compile_definitions(${name} INTERFACE
+    $<TARGET_PROPERTY:${shared},INTERFACE_COMPILE_DEFINITIONS>)
+  set(libraries "$<${_ag_shared}:${shared}>")
+  if(AG_FAST_START)
+    foreach(library ${static} ${ARGN})
+      list(APPEND libraries "$<${_ag_fast}:${library}>")
+    endforeach()
+  endif()
+  target_link_libraries(${name} INTERFACE ${libraries})
+endfunction()
+
+# The static archive beside a shared library's file, e.g. libz.a for
+# libz.so.1.2.13: its path in ${out}, or a fatal error.
+function(ag_static_archive out name)
+  find_library(${out} NAMES lib${name}.a)
+  if(NOT ${out})
+    message(FATAL_ERROR "AG_FAST_START: lib${name}.a not found (its -dev package ships it)")
+  endif()
+  set(${out} ${${out}} PARENT_SCOPE)
+endfunction()
+
+if(AG_FAST_START)
+  foreach(name opencv_core opencv_imgproc protobuf sqlite3 crypto zstd png16 z)
+    string(TOUPPER ${name} upper)
+    ag_static_archive(AG_STATIC_${upper} ${name})
+  endforeach()
+  find_library(AG_TBB_LIBRARY tbb REQUIRED)
+  find_library(AG_LAPACK_LIBRARY lapack REQUIRED)
+  find_library(AG_BLAS_LIBRARY blas REQUIRED)
+  add_library(ag_opengl_absent STATIC ${CMAKE_SOURCE_DIR}/common/opengl_absent.cc)
+endif()
+
+# Static OpenCV is one item for both modules, imgproc before core (the
+# linker takes from an archive only what is already asked for, and CMake does
+# not order raw archive paths): libopencv_imgproc.a adds nothing to a target
+# that uses core only. Then what libopencv_core.a needs beyond itself: TBB
+# (cv::parallel_for_), LAPACK and BLAS (cv::solve and friends), zlib
+# (cv::FileStorage), and the glX answers.
+ag_dependency(opencv_core opencv_core_shared "${AG_STATIC_OPENCV_IMGPROC}"
+  "${AG_STATIC_OPENCV_CORE}" ag_opengl_absent "${AG_TBB_LIBRARY}" "${AG_LAPACK_LIBRARY}"
+  "${AG_BLAS_LIBRARY}" "${AG_STATIC_Z}" ${CMAKE_DL_LIBS} Threads::Threads)
+ag_dependency(opencv_imgproc opencv_imgproc_shared opencv_core)
+ag_dependency(ag_protobuf protobuf::libprotobuf "${AG_STATIC_PROTOBUF}" "${AG_STATIC_Z}"
+  Threads::Threads)
+ag_dependency(ag_sqlite SQLite::SQLite3 "${AG_STATIC_SQLITE3}" ${CMAKE_DL_LIBS} Threads::Threads
+  m)
+ag_dependency(ag_crypto OpenSSL::Crypto "${AG_STATIC_CRYPTO}" ${CMAKE_DL_LIBS} Threads::Threads)
+ag_dependency(ag_zstd zstd::libzstd_shared "${AG_STATIC_ZSTD}")
+ag_dependency(ag_png PNG::PNG "${AG_STATIC_PNG16}" "${AG_STATIC_Z}" m)
+
+# libopencv_imgcodecs.so loads the shared OpenCV core: not in a fast-start
+# executable (see above); the link fails naming this rule.
+add_library(opencv_imgcodecs INTERFACE)
+target_link_libraries(opencv_imgcodecs INTERFACE
+  "$<${_ag_shared}:opencv_imgcodecs_shared>"
+  "$<${_ag_fast}:ag_fast_start_executables_cannot_link_opencv_imgcodecs>")
+target_include_directories(opencv_imgcodecs SYSTEM INTERFACE
+  $<TARGET_PROPERTY:opencv_imgcodecs_shared,INTERFACE_INCLUDE_DIRECTORIES>)
+
+# ag_fast_start(TARGET...): marks executables for the static, non-PIE link.
+function(ag_fast_start)
+  if(NOT AG_FAST_START)
+    return()
+  endif()
+  foreach(target ${ARGN})
+    set_property(TARGET ${target} PROPERTY AG_FAST_START ON)
+    target_link_options(${target} PRIVATE -no-pie)
+  endforeach()
+endfunction()
