@@ -69,9 +69,11 @@ if(AG_FAST_START)
     string(TOUPPER ${name} upper)
     ag_static_archive(AG_STATIC_${upper} ${name})
   endforeach()
+  # The run-time names: libopencv-core406 brings liblapack.so.3 and
+  # libblas.so.3, but not the -dev packages' liblapack.so and libblas.so.
   find_library(AG_TBB_LIBRARY tbb REQUIRED)
-  find_library(AG_LAPACK_LIBRARY lapack REQUIRED)
-  find_library(AG_BLAS_LIBRARY blas REQUIRED)
+  find_library(AG_LAPACK_LIBRARY NAMES liblapack.so.3 lapack REQUIRED)
+  find_library(AG_BLAS_LIBRARY NAMES libblas.so.3 blas REQUIRED)
   add_library(ag_opengl_absent STATIC ${CMAKE_SOURCE_DIR}/common/opengl_absent.cc)
 endif()
 

@@ -1,5 +1,6 @@
 #include "store/digest.h"
 
+#include <openssl/crypto.h>
 #include <openssl/evp.h>
 
 #include <stdexcept>
@@ -8,6 +9,19 @@ namespace areagraph {
 namespace {
 
 EVP_MD_CTX* Ctx(void* p) { return static_cast<EVP_MD_CTX*>(p); }
+
+// OpenSSL's SHA-256, fetched once per process. OpenSSL starts without
+// reading its configuration file (/etc/ssl/openssl.cnf, which names
+// providers and engines a digest of payloads does not need): reading it and
+// an implicit fetch at every digest were 4 ms of a 20-ms ag-render
+// (docs/performance.md, issue 14, ninth pass).
+const EVP_MD* Sha256Method() {
+  static const EVP_MD* const method = [] {
+    OPENSSL_init_crypto(OPENSSL_INIT_NO_LOAD_CONFIG, nullptr);
+    return EVP_MD_fetch(nullptr, "SHA256", nullptr);
+  }();
+  return method;
+}
 
 std::string ToHex(const unsigned char* bytes, unsigned int size) {
   static const char kHex[] = "0123456789abcdef";
@@ -22,7 +36,8 @@ std::string ToHex(const unsigned char* bytes, unsigned int size) {
 }  // namespace
 
 Sha256::Sha256() : ctx_(EVP_MD_CTX_new()) {
-  if (ctx_ == nullptr || EVP_DigestInit_ex(Ctx(ctx_), EVP_sha256(), nullptr) != 1) {
+  if (ctx_ == nullptr || Sha256Method() == nullptr ||
+      EVP_DigestInit_ex(Ctx(ctx_), Sha256Method(), nullptr) != 1) {
     throw std::runtime_error("OpenSSL could not start a SHA-256 digest");
   }
 }

@@ -72,9 +72,11 @@ std::optional<PalettePicture> ToPalette(const cv::Mat& bgr) {
 PalettePicture GreyToPalette(const cv::Mat& grey) {
   CV_Assert(grey.type() == CV_8UC1);
   // Greys numbered in the order they first appear, as ToPalette numbers the
-  // BGR colours (g, g, g) of the same picture; then one table pass.
+  // BGR colours (g, g, g) of the same picture; then one table pass, a plain
+  // loop (cv::LUT would start TBB's worker threads for a big picture: 5 ms
+  // of CPU, more than the pass).
   PalettePicture out;
-  cv::Mat index_of(1, 256, CV_8UC1, cv::Scalar(0));
+  std::array<uint8_t, 256> index_of{};
   std::array<bool, 256> seen{};
   const int width = grey.cols;
   for (int y = 0; y < grey.rows && out.colours.size() < 256; ++y) {
@@ -86,11 +88,16 @@ PalettePicture GreyToPalette(const cv::Mat& grey) {
       const uint8_t value = pixel[x];
       if (seen[value]) continue;
       seen[value] = true;
-      index_of.at<uint8_t>(value) = static_cast<uint8_t>(out.colours.size());
+      index_of[value] = static_cast<uint8_t>(out.colours.size());
       out.colours.emplace_back(value, value, value);
     }
   }
-  cv::LUT(grey, index_of, out.indices);
+  out.indices.create(grey.size(), CV_8UC1);
+  for (int y = 0; y < grey.rows; ++y) {
+    const uint8_t* pixel = grey.ptr<uint8_t>(y);
+    uint8_t* index = out.indices.ptr<uint8_t>(y);
+    for (int x = 0; x < width; ++x) index[x] = index_of[pixel[x]];
+  }
   return out;
 }
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "proto/artifacts.pb.h"
 
@@ -38,31 +40,58 @@ std::vector<cv::Point> RingPoints(const Canvas& canvas, const proto::Ring& ring)
 }  // namespace
 
 Canvas::Canvas(const std::string& cells, int width, int height, int scale) : scale_(scale) {
-  // The map's three states are greys: one table pass over the cells and the
-  // upscaling on one byte per pixel; grey to BGR once something is drawn
-  // (OpenCV's vectorised loops; a per-cell Mat access cost 40 M
-  // instructions at 1.5 megapixels).
-  cv::Mat grey_of(1, 256, CV_8UC1, cv::Scalar(kUnknownGrey));
-  grey_of.at<uint8_t>(proto::CELL_FREE) = kFreeGrey;
-  grey_of.at<uint8_t>(proto::CELL_OCCUPIED) = kOccupiedGrey;
-  std::string padded;  // missing cells (a short artifact) are unknown
-  const std::string* states = &cells;
-  if (cells.size() < static_cast<size_t>(width) * height) {
-    padded = cells;
-    padded.resize(static_cast<size_t>(width) * height, static_cast<char>(proto::CELL_UNKNOWN));
-    states = &padded;
+  // The map's three states are greys, upscaled on one byte per pixel; grey
+  // to BGR once something is drawn. Plain loops, not cv::LUT, cv::resize and
+  // cv::cvtColor: those run on TBB's workers, whose start and spinning were
+  // 5 ms of CPU in a 35-ms picture (docs/performance.md, issue 14, ninth
+  // pass), and ag-render otherwise never starts them.
+  uint8_t grey_of[256];
+  std::fill(std::begin(grey_of), std::end(grey_of), kUnknownGrey);
+  grey_of[proto::CELL_FREE] = kFreeGrey;
+  grey_of[proto::CELL_OCCUPIED] = kOccupiedGrey;
+  const size_t count = static_cast<size_t>(width) * height;
+  cv::Mat grey(height, width, CV_8UC1);
+  uint8_t* out = grey.ptr<uint8_t>();
+  const size_t known = std::min(count, cells.size());  // missing cells are unknown
+  for (size_t i = 0; i < known; ++i) out[i] = grey_of[static_cast<uint8_t>(cells[i])];
+  std::fill(out + known, out + count, grey_of[proto::CELL_UNKNOWN]);
+  grey_ = scale > 1 ? UpscaleNearest(grey, scale) : grey;
+}
+
+cv::Mat UpscaleNearest(const cv::Mat& grey, int scale) {
+  // Source columns and rows as cv::resize's INTER_NEAREST computes them (the
+  // floor of the index times the reciprocal scale), so that the picture
+  // stays byte for byte the same; a row that repeats the one above is
+  // copied.
+  const double inverse = 1.0 / scale;
+  const auto source = [inverse](int index, int size) {
+    return std::min(static_cast<int>(std::floor(index * inverse)), size - 1);
+  };
+  cv::Mat big(grey.rows * scale, grey.cols * scale, CV_8UC1);
+  std::vector<int> source_col(big.cols);
+  for (int x = 0; x < big.cols; ++x) source_col[x] = source(x, grey.cols);
+  int previous_row = -1;
+  for (int y = 0; y < big.rows; ++y) {
+    const int row = source(y, grey.rows);
+    uint8_t* out = big.ptr<uint8_t>(y);
+    if (row == previous_row) {
+      std::copy(big.ptr<uint8_t>(y - 1), big.ptr<uint8_t>(y - 1) + big.cols, out);
+    } else {
+      const uint8_t* in = grey.ptr<uint8_t>(row);
+      for (int x = 0; x < big.cols; ++x) out[x] = in[source_col[x]];
+    }
+    previous_row = row;
   }
-  const cv::Mat state_image(height, width, CV_8UC1, const_cast<char*>(states->data()));
-  cv::LUT(state_image, grey_of, grey_);
-  if (scale > 1) {
-    cv::resize(grey_.clone(), grey_, cv::Size(width * scale, height * scale), 0, 0,
-               cv::INTER_NEAREST);
-  }
+  return big;
 }
 
 cv::Mat& Canvas::image() {
   if (image_.empty()) {
-    cv::cvtColor(grey_, image_, cv::COLOR_GRAY2BGR);
+    image_.create(grey_.size(), CV_8UC3);
+    const size_t count = grey_.total();
+    const uint8_t* in = grey_.ptr<uint8_t>();
+    uint8_t* out = image_.ptr<uint8_t>();
+    for (size_t i = 0; i < count; ++i) out[3 * i] = out[3 * i + 1] = out[3 * i + 2] = in[i];
     grey_.release();
   }
   return image_;

@@ -48,6 +48,11 @@ class Canvas {
   cv::Mat image_;
 };
 
+// `grey` (CV_8UC1) with every pixel repeated `scale` times in both
+// directions: the picture cv::resize makes with INTER_NEAREST, without its
+// worker threads.
+cv::Mat UpscaleNearest(const cv::Mat& grey, int scale);
+
 // Distinct, well separated colours for ids (golden-angle hues).
 cv::Scalar DistinctColour(int id);
 

@@ -22,6 +22,36 @@ proto::Point2 At(double x, double y) {
   return point;
 }
 
+// The canvas upscales and converts with its own loops (no worker threads):
+// they must give OpenCV's pictures byte for byte.
+TEST(Canvas, UpscaleNearestIsCvResizeNearestAtEveryScale) {
+  cv::Mat grey(37, 53, CV_8UC1);
+  cv::randu(grey, 0, 256);
+  for (int scale = 1; scale <= 16; ++scale) {
+    cv::Mat expected;
+    cv::resize(grey, expected, cv::Size(grey.cols * scale, grey.rows * scale), 0, 0,
+               cv::INTER_NEAREST);
+    const cv::Mat upscaled = UpscaleNearest(grey, scale);
+    ASSERT_EQ(upscaled.size(), expected.size()) << scale;
+    EXPECT_EQ(cv::norm(upscaled, expected, cv::NORM_INF), 0) << "scale " << scale;
+  }
+}
+
+TEST(Canvas, ColourPictureIsCvtColorOfTheGreysAndShortCellsAreUnknown) {
+  std::string cells(30, static_cast<char>(proto::CELL_FREE));
+  for (size_t i = 0; i < cells.size(); i += 3) cells[i] = static_cast<char>(proto::CELL_OCCUPIED);
+  Canvas canvas(cells, 7, 5, 2);  // 35 cells, 30 given
+  const cv::Mat grey = canvas.UntouchedGrey().clone();
+  ASSERT_EQ(grey.size(), cv::Size(14, 10));
+  EXPECT_EQ(grey.at<uint8_t>(9, 13), 200);  // cell 34: missing, so unknown
+  EXPECT_EQ(grey.at<uint8_t>(0, 0), 40);
+  EXPECT_EQ(grey.at<uint8_t>(0, 2), 255);
+  cv::Mat expected;
+  cv::cvtColor(grey, expected, cv::COLOR_GRAY2BGR);
+  EXPECT_EQ(cv::norm(canvas.image(), expected, cv::NORM_INF), 0);
+  EXPECT_TRUE(canvas.UntouchedGrey().empty());
+}
+
 TEST(Canvas, DrawsEachCellAsScaleByScalePixelsOfItsStateColour) {
   // 3 x 2 cells: free, occupied, unknown / unknown, free, occupied.
   const std::string cells = {proto::CELL_FREE,    proto::CELL_OCCUPIED, proto::CELL_UNKNOWN,
