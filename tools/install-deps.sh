@@ -8,7 +8,7 @@ PACKAGES=(
   libcgal-dev libeigen3-dev
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libprotobuf-dev protobuf-compiler
-  libsqlite3-dev sqlite3 libzstd-dev libpng-dev
+  libsqlite3-dev sqlite3 libzstd-dev libpng-dev zlib1g-dev  # their .a: cmake/FastStart.cmake
   libssl-dev libyaml-cpp-dev libcli11-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev
