@@ -141,7 +141,7 @@ class Simplifier {
       const int u = nodes_[node].prev, w = nodes_[node].next;
       nodes_[u].next = w;
       nodes_[w].prev = u;
-      vertices_[v].alive = false;
+      bucket_points_[slot_of_vertex_[v]].vertex = -1;
       for (const int n : {u, w}) {
         const int neighbour = nodes_[n].vertex;
         if (!vertices_[neighbour].removable) continue;
@@ -178,7 +178,6 @@ class Simplifier {
     int node = -1;
     int occurrences = 0;
     bool removable = false;
-    bool alive = true;
     // (largest tolerance / its chain's tolerance)^2, infinite for a chain
     // that keeps every point, and the tie-break taken off its cost.
     double factor = 1;
@@ -262,9 +261,12 @@ class Simplifier {
     }
     for (size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
     bucket_start_ = count;
-    bucket_vertices_.resize(vertices_.size());
+    bucket_points_.resize(vertices_.size());
+    slot_of_vertex_.resize(vertices_.size());
     for (size_t v = 0; v < vertices_.size(); ++v) {
-      bucket_vertices_[count[bucket_of[v]]++] = static_cast<int>(v);
+      const int slot = count[bucket_of[v]]++;
+      bucket_points_[slot] = {vertices_[v].point.x(), vertices_[v].point.y(), static_cast<int>(v)};
+      slot_of_vertex_[v] = slot;
     }
   }
 
@@ -314,7 +316,7 @@ class Simplifier {
     return !Joined(u, w);
   }
 
-  // Whether a live vertex other than a, b and c lies in the closed triangle
+  // Whether a vertex still there, other than a, b and c, lies in the closed triangle
   // abc (of orientation `turn`).
   bool AnyVertexInTriangle(const Point& a, const Point& b, const Point& c, CGAL::Orientation turn,
                            int ia, int ib, int ic) const {
@@ -350,10 +352,11 @@ class Simplifier {
       for (int col = c0; col <= c1; ++col) {
         const int bucket = r * columns_ + col;
         for (int k = bucket_start_[bucket]; k < bucket_start_[bucket + 1]; ++k) {
-          const int i = bucket_vertices_[k];
-          if (i == ia || i == ib || i == ic || !vertices_[i].alive) continue;
-          const Point& p = vertices_[i].point;
-          if (p.x() < x0 || p.x() > x1 || p.y() < y0 || p.y() > y1) continue;
+          const BucketPoint& entry = bucket_points_[k];
+          if (entry.x < x0 || entry.x > x1 || entry.y < y0 || entry.y > y1) continue;
+          const int i = entry.vertex;
+          if (i < 0 || i == ia || i == ib || i == ic) continue;
+          const Point p(entry.x, entry.y);
           if (CGAL::orientation(a, b, p) != outside && CGAL::orientation(b, c, p) != outside &&
               CGAL::orientation(c, a, p) != outside) {
             return true;
@@ -372,7 +375,14 @@ class Simplifier {
   double origin_x_ = 0, origin_y_ = 0;
   int columns_ = 1, rows_ = 1;
   std::vector<int> bucket_start_;
-  std::vector<int> bucket_vertices_;
+  // The vertices bucket by bucket, with their points beside them so that a
+  // search reads them in a row; `vertex` is -1 once the vertex is removed.
+  struct BucketPoint {
+    double x, y;
+    int vertex;
+  };
+  std::vector<BucketPoint> bucket_points_;
+  std::vector<int> slot_of_vertex_;
 };
 
 }  // namespace
