@@ -200,10 +200,12 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   cv::Mat domain = boundary_mask.isContinuous() ? boundary_mask : boundary_mask.clone();
   boundary_mask.release();
   AreaRaster raster;
+  const bool keeps_out = !keep_out.empty();
   for (int r = 0; r < size.height; ++r) {
     uint8_t* row = domain.ptr<uint8_t>(r);
+    const uint8_t* out = keeps_out ? keep_out.ptr<uint8_t>(r) : nullptr;
     for (int c = 0; c < size.width; ++c) {
-      const bool kept_out = !keep_out.empty() && keep_out.at<uint8_t>(r, c) != 0;
+      const bool kept_out = keeps_out && out[c] != 0;
       row[c] = row[c] && grid.IsFree(c, r) && !kept_out ? 1 : 0;
       raster.domain_cells += row[c];
     }
