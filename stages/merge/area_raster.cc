@@ -252,14 +252,25 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 }
 
 std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
-  std::vector<cv::Rect> box(raster.cell_count.size());
+  const size_t count = raster.cell_count.size();
+  // Per area: the first and last row, the leftmost and rightmost column.
+  std::vector<int> r0(count, -1), r1(count, -1), c0(count, 0), c1(count, 0);
   for (int r = 0; r < raster.labels.rows; ++r) {
     const int* row = raster.labels.ptr<int>(r);
     for (int c = 0; c < raster.labels.cols; ++c) {
       if (row[c] <= 0) continue;
-      cv::Rect& b = box[row[c] - 1];
-      b = b.area() == 0 ? cv::Rect(c, r, 1, 1) : (b | cv::Rect(c, r, 1, 1));
+      const int k = row[c] - 1;
+      if (r0[k] < 0) {
+        r0[k] = r, c0[k] = c, c1[k] = c;
+      } else {
+        c0[k] = std::min(c0[k], c), c1[k] = std::max(c1[k], c);
+      }
+      r1[k] = r;
     }
+  }
+  std::vector<cv::Rect> box(count);
+  for (size_t k = 0; k < count; ++k) {
+    if (r0[k] >= 0) box[k] = cv::Rect(c0[k], r0[k], c1[k] - c0[k] + 1, r1[k] - r0[k] + 1);
   }
   return box;
 }
