@@ -200,10 +200,12 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   cv::Mat domain = boundary_mask.isContinuous() ? boundary_mask : boundary_mask.clone();
   boundary_mask.release();
   AreaRaster raster;
+  const bool keeps_out = !keep_out.empty();
   for (int r = 0; r < size.height; ++r) {
     uint8_t* row = domain.ptr<uint8_t>(r);
+    const uint8_t* out = keeps_out ? keep_out.ptr<uint8_t>(r) : nullptr;
     for (int c = 0; c < size.width; ++c) {
-      const bool kept_out = !keep_out.empty() && keep_out.at<uint8_t>(r, c) != 0;
+      const bool kept_out = keeps_out && out[c] != 0;
       row[c] = row[c] && grid.IsFree(c, r) && !kept_out ? 1 : 0;
       raster.domain_cells += row[c];
     }
@@ -250,14 +252,25 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 }
 
 std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
-  std::vector<cv::Rect> box(raster.cell_count.size());
+  const size_t count = raster.cell_count.size();
+  // Per area: the first and last row, the leftmost and rightmost column.
+  std::vector<int> r0(count, -1), r1(count, -1), c0(count, 0), c1(count, 0);
   for (int r = 0; r < raster.labels.rows; ++r) {
     const int* row = raster.labels.ptr<int>(r);
     for (int c = 0; c < raster.labels.cols; ++c) {
       if (row[c] <= 0) continue;
-      cv::Rect& b = box[row[c] - 1];
-      b = b.area() == 0 ? cv::Rect(c, r, 1, 1) : (b | cv::Rect(c, r, 1, 1));
+      const int k = row[c] - 1;
+      if (r0[k] < 0) {
+        r0[k] = r, c0[k] = c, c1[k] = c;
+      } else {
+        c0[k] = std::min(c0[k], c), c1[k] = std::max(c1[k], c);
+      }
+      r1[k] = r;
     }
+  }
+  std::vector<cv::Rect> box(count);
+  for (size_t k = 0; k < count; ++k) {
+    if (r0[k] >= 0) box[k] = cv::Rect(c0[k], r0[k], c1[k] - c0[k] + 1, r1[k] - r0[k] + 1);
   }
   return box;
 }

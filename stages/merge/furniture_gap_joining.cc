@@ -5,6 +5,7 @@
 #include <map>
 #include <opencv2/imgproc.hpp>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
@@ -59,13 +60,14 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
 // Marks (`value` in `out`, where it is still 0) the cells of every 8-connected region of `obstacle`
 // that touches no image border, is at most `max_px` long, at least
 // `min_thickness_px` thick (twice its deepest cell's depth) and fills
-// kMinFurnitureSolidity of its smallest enclosing rectangle.
+// kMinFurnitureSolidity of its smallest enclosing rectangle. `depth` is
+// ObstacleDepth(obstacle), when the caller has it already.
 void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px, uint8_t value,
-                 cv::Mat* out) {
+                 cv::Mat* out, cv::Mat depth = cv::Mat()) {
   const int width = obstacle.cols, height = obstacle.rows;
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
-  const cv::Mat depth = ObstacleDepth(obstacle);
+  if (depth.empty()) depth = ObstacleDepth(obstacle);
   std::vector<float> deepest(count, 0);
   for (int r = 0; r < height; ++r) {
     const int* row = labels.ptr<int>(r);
@@ -116,13 +118,14 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m
     }
   }
   if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
-  const double min_thickness_px =
-      std::max(kMinFurnitureThicknessM / resolution_m,
-               kFurnitureWallRatio * TypicalWallThickness(ObstacleDepth(obstacle),
-                                                          kMaxWallThicknessM / resolution_m));
+  // One distance transform of the obstacles for the wall thickness and the islands.
+  cv::Mat depth = ObstacleDepth(obstacle);
+  const double min_thickness_px = std::max(
+      kMinFurnitureThicknessM / resolution_m,
+      kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
   const double max_px = kMaxFurnitureIslandM / resolution_m;
   cv::Mat out = cv::Mat::zeros(height, width, CV_8U);
-  MarkIslands(obstacle, min_thickness_px, max_px, 1, &out);
+  MarkIslands(obstacle, min_thickness_px, max_px, 1, &out, std::move(depth));
   if (against_walls) {
     // Only what is at least as thick as an island is left of the obstacles:
     // walls thinner than that go, and what stood against them is on its own.
