@@ -75,6 +75,7 @@ void CheckPruneOptions(const proto::PruneOptions& options) {
           "prune.dead_end_passes must be between 0 and 1000, got " +
               std::to_string(options.dead_end_passes()));
   RequireNotNegative(options.min_component_m2(), "prune.min_component_m2", "square metres");
+  RequireNotNegative(options.keep_groups_above_m(), "prune.keep_groups_above_m", "metres");
 }
 
 void CheckCutOptions(const proto::CutOptions& options) {

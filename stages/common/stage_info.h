@@ -24,7 +24,9 @@ inline constexpr StageInfo kCleanStage{"clean", 3};
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
 // prune 2: every part of the map above prune.min_component_m2 is kept, not only the biggest.
-inline constexpr StageInfo kPruneStage{"prune", 2};
+// prune 3: long graphs beside a longer one in their part are kept too (prune.keep_groups_above_m;
+// a room behind a gap the graph does not pass got no area, areagraph/ lab_b).
+inline constexpr StageInfo kPruneStage{"prune", 3};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
