@@ -111,6 +111,8 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
   RequireNotNegative(options.fold_corridor_pieces_below_m2(), "merge.fold_corridor_pieces_below_m2",
                      "square metres");
+  RequireNotNegative(options.join_porous_borders_gap_m(), "merge.join_porous_borders_gap_m",
+                     "metres");
 }
 
 void CheckMatchOptions(const proto::MatchOptions& options) {
