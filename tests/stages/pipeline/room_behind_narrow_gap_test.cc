@@ -14,13 +14,13 @@ namespace {
 
 using floorplan::WallDirection;
 
-// A hall 20 x 8 m and, right of it, a room 12 x 8 m behind a 0.25 m gap in
+// A hall 20 x 8 m and, right of it, a room 12 x 8 m behind a 0.15 m gap in
 // the wall between them (x = 20.5 m). The hall's graph is the longer one.
 proto::AreaGraph HallAndRoom(const proto::PipelineOptions& options) {
   floorplan::FloorPlan plan(33, 9);
   floorplan::DrawRoom(plan, {0.5, 0.5, 20, 8});
   floorplan::DrawRoom(plan, {20.5, 0.5, 12, 8});
-  floorplan::DrawDoor(plan, 20.5, 4.5, 0.25, WallDirection::kVertical);
+  floorplan::DrawDoor(plan, 20.5, 4.5, 0.15, WallDirection::kVertical);
   const proto::CleanedMap map = CleanDrawnMap(plan.image());
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map, 0.4);
