@@ -75,6 +75,7 @@ void CheckPruneOptions(const proto::PruneOptions& options) {
           "prune.dead_end_passes must be between 0 and 1000, got " +
               std::to_string(options.dead_end_passes()));
   RequireNotNegative(options.min_component_m2(), "prune.min_component_m2", "square metres");
+  RequireNotNegative(options.keep_groups_above_m(), "prune.keep_groups_above_m", "metres");
 }
 
 void CheckCutOptions(const proto::CutOptions& options) {
@@ -110,6 +111,8 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
   RequireNotNegative(options.fold_corridor_pieces_below_m2(), "merge.fold_corridor_pieces_below_m2",
                      "square metres");
+  RequireNotNegative(options.join_porous_borders_gap_m(), "merge.join_porous_borders_gap_m",
+                     "metres");
 }
 
 void CheckMatchOptions(const proto::MatchOptions& options) {

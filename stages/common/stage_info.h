@@ -24,7 +24,9 @@ inline constexpr StageInfo kCleanStage{"clean", 3};
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
 // prune 2: every part of the map above prune.min_component_m2 is kept, not only the biggest.
-inline constexpr StageInfo kPruneStage{"prune", 2};
+// prune 3: long graphs beside a longer one in their part are kept too (prune.keep_groups_above_m;
+// a room behind a gap the graph does not pass got no area, areagraph/ lab_b).
+inline constexpr StageInfo kPruneStage{"prune", 3};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
@@ -47,7 +49,9 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // (merge.join_corridor_clutter; bormann/ office_h furnished).
 // Also in merge 11 (same session): small rooms opening widely into a corridor and another area
 // are corridor pieces and fold into it (merge.fold_corridor_pieces_below_m2).
-inline constexpr StageInfo kMergeStage{"merge", 11};
+// merge 12: two areas meeting at three or more vertices, one of them a gap too narrow for a door,
+// are one area (merge.join_porous_borders_gap_m; clutter in a room, issue 12).
+inline constexpr StageInfo kMergeStage{"merge", 12};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).

@@ -136,7 +136,8 @@ std::vector<StageDefinition> MakeStageTable() {
       "Prunes a map's head VoronoiDiagram (run ag-voronoi first) into the Topology Graph: "
       "boundary alpha shape, clearance filter, dead-end removal with the polygons joined (the "
       "paper's Alg. 2), the biggest connected part and every other part of at least "
-      "prune.min_component_m2 (the smaller ones are counted). Stores a TopologyGraph.",
+      "prune.min_component_m2 (the smaller ones are counted), and beside a part's longest graph "
+      "every other of at least prune.keep_groups_above_m. Stores a TopologyGraph.",
   });
   table.push_back({
       kCutStage,

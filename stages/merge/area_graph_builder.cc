@@ -18,6 +18,7 @@
 #include "stages/merge/corridor_labels.h"
 #include "stages/merge/corridor_piece_folding.h"
 #include "stages/merge/furniture_gap_joining.h"
+#include "stages/merge/porous_border_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
 
@@ -124,6 +125,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   if (options.fold_corridor_pieces_below_m2() > 0) {
     FoldCorridorPieces(graph, grid.resolution_m(), options.fold_corridor_pieces_below_m2(),
                        options.keep_closed_doors(), &plan);
+  }
+  if (options.join_porous_borders_gap_m() > 0) {
+    JoinAtPorousBorders(graph, grid.resolution_m(),
+                        options.join_porous_borders_gap_m() / grid.resolution_m(),
+                        options.keep_closed_doors(), &plan);
   }
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =

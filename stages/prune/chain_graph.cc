@@ -130,7 +130,8 @@ void ChainGraph::JoinDegreeTwoChains() {
 }
 
 PartSelection ChainGraph::KeepParts(const std::function<int(int vertex)>& part_of,
-                                    const std::vector<int64_t>& part_cells, int64_t min_cells) {
+                                    const std::vector<int64_t>& part_cells, int64_t min_cells,
+                                    double min_group_length_px) {
   PartSelection selection;
   if (vertices.empty()) return selection;
   DisjointSets groups(vertices.size());
@@ -174,6 +175,16 @@ PartSelection ChainGraph::KeepParts(const std::function<int(int vertex)>& part_o
     } else if (part >= 0) {
       ++selection.dropped;
       selection.dropped_cells += part_cells[part];
+    }
+  }
+  // A long group beside a longer one in its part: a room behind a gap the
+  // graph does not pass, which the areas' growth does not pass either.
+  if (min_group_length_px > 0) {
+    for (size_t group = 0; group < vertices.size(); ++group) {
+      if (keep[group] || group_length[group] < min_group_length_px) continue;
+      if (group_part[group] < 0 || part_cells[group_part[group]] < min_cells) continue;
+      keep[group] = 1;
+      ++selection.kept;
     }
   }
   for (ChainEdge& edge : edges) {

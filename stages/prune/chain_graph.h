@@ -54,7 +54,8 @@ struct Incidence {
 
 // What ChainGraph::KeepParts kept and dropped.
 struct PartSelection {
-  // Parts of the free space with a group kept.
+  // Groups kept: one per part of the free space kept, plus the long groups
+  // kept beside a longer one in their part.
   int kept = 0;
   // Parts whose groups were all dropped for the part's size, and their cells.
   int dropped = 0;
@@ -80,9 +81,12 @@ class ChainGraph {
   // edges of the rest. `part_of` gives a vertex's part (-1: none) and
   // `part_cells` each part's size: a group belongs to the part of most of
   // its vertices. Groups in a part that has a longer one are dropped as the
-  // paper drops them (their cells are covered by the part's areas anyway).
+  // paper drops them (their cells are left to the part's areas' growth),
+  // unless their edges are at least `min_group_length_px` long in total
+  // (0: never; prune.keep_groups_above_m).
   PartSelection KeepParts(const std::function<int(int vertex)>& part_of,
-                          const std::vector<int64_t>& part_cells, int64_t min_cells);
+                          const std::vector<int64_t>& part_cells, int64_t min_cells,
+                          double min_group_length_px = 0);
 
   // Drops removed edges (edge indices change; vertex indices do not).
   void CompactEdges();

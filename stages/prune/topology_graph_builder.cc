@@ -310,7 +310,8 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   const FreeSpaceParts free_space = LabelFreeSpace(grid);
   const PartSelection selection = graph.KeepParts(
       [&](int v) { return free_space.PartAt(graph.vertices[v].position); }, free_space.cells,
-      static_cast<int64_t>(std::ceil(options.min_component_m2() / (resolution * resolution))));
+      static_cast<int64_t>(std::ceil(options.min_component_m2() / (resolution * resolution))),
+      options.keep_groups_above_m() / resolution);
   std::vector<proto::Polygon> parts = PartBoundaries(filtered, region_area);
   if (parts.empty()) {
     throw InputError("no Topology Graph: no part of the graph lies inside the boundary");

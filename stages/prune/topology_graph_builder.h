@@ -15,9 +15,11 @@ namespace areagraph {
 // are removed with their polygons absorbed (Alg. 2); close junctions merge;
 // the connected group with the most edge length stays, and so does every
 // other group with at least prune.min_component_m2 of free space (each with
-// the outline of the alpha-shape region around it in part_boundaries); the
-// groups dropped are counted. Throws InputError ("no Topology Graph: ...")
-// when nothing is left, and OptionsError on bad options. Calls
+// the outline of the alpha-shape region around it in part_boundaries), and
+// so does every group whose edges are at least prune.keep_groups_above_m long
+// in total, beside a longer one in its part; the groups dropped are counted.
+// Throws InputError ("no Topology Graph: ...") when nothing is left, and
+// OptionsError on bad options. Calls
 // `diagram_done`, when given, once it reads `diagram` no more (it copies the
 // diagram's numbers first, before the boundary shape is built), so that a
 // caller that owns the diagram can free it while the rest runs.

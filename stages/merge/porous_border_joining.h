@@ -1,0 +1,22 @@
+#pragma once
+
+#include "proto/artifacts.pb.h"
+#include "stages/merge/area_assignment.h"
+
+namespace areagraph {
+
+// A border between two areas is porous when they meet at this many graph
+// vertices or more: a wall between two rooms has a door or two.
+inline constexpr int kPorousMinOpenings = 3;
+
+// Joins two areas that meet at kPorousMinOpenings or more graph vertices, at
+// least one of them an opening narrower than `narrow_gap_px` (one nobody
+// walks through, so no door). Clutter standing in one room (shelves, desks,
+// scanned chair legs) leaves such a border of many openings and the room
+// disk stops at it; a wall with doors does not. Vertices where ag-cut closed
+// a door or wall gap on purpose (`keep_closed_doors`) do not count. A joined
+// group takes the kind of its biggest area.
+void JoinAtPorousBorders(const proto::CutGraph& graph, double resolution_m, double narrow_gap_px,
+                         bool keep_closed_doors, AreaPlan* plan);
+
+}  // namespace areagraph
