@@ -54,7 +54,8 @@ STEPS=(
   "+ cut.close_wall_gaps_short_tips|cut.close_wall_gaps_short_tips=true"
   "+ merge.fill_furniture_outlines_m 4|merge.fill_furniture_outlines_m=4"
   "+ merge.wall_furniture_islands and merge.join_corridor_clutter|merge.wall_furniture_islands=true merge.join_corridor_clutter=true"
-  "+ merge.fold_corridor_pieces_below_m2 20 (= defaults)|merge.fold_corridor_pieces_below_m2=20"
+  "+ merge.fold_corridor_pieces_below_m2 20|merge.fold_corridor_pieces_below_m2=20"
+  "+ merge.join_split_corridors (= defaults)|merge.join_split_corridors=true"
 )
 
 set_flags=()

@@ -47,7 +47,10 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // (merge.join_corridor_clutter; bormann/ office_h furnished).
 // Also in merge 11 (same session): small rooms opening widely into a corridor and another area
 // are corridor pieces and fold into it (merge.fold_corridor_pieces_below_m2).
-inline constexpr StageInfo kMergeStage{"merge", 11};
+// merge 12: pieces of one corridor that the room disk split (an automatic W near the corridor's
+// width) join where they meet straight on without a narrowing (merge.join_split_corridors;
+// issue 12, generated floors against a fixed W = 1.25 m).
+inline constexpr StageInfo kMergeStage{"merge", 12};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).

@@ -20,6 +20,7 @@
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
+#include "stages/merge/split_corridor_joining.h"
 
 namespace areagraph {
 namespace {
@@ -124,6 +125,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   if (options.fold_corridor_pieces_below_m2() > 0) {
     FoldCorridorPieces(graph, grid.resolution_m(), options.fold_corridor_pieces_below_m2(),
                        options.keep_closed_doors(), &plan);
+  }
+  if (options.join_split_corridors()) {
+    JoinSplitCorridors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
