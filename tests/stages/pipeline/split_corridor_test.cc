@@ -1,5 +1,5 @@
-// merge.join_split_corridors through the whole pipeline: a corridor 1.9 m
-// wide narrows to 1.6 m between two short wall stubs, W is 1.8 m (as an
+// merge.join_split_corridors through the whole pipeline: a corridor 2.05 m
+// wide narrows to 1.7 m between two short wall stubs, W is 1.9 m (as an
 // automatic W near the corridor's width comes out), the room disk cannot pass
 // the narrowing and the corridor falls into two room-shaped pieces; they are
 // one corridor again. A room behind a door in line with the corridor stays a
@@ -15,30 +15,32 @@ namespace {
 using floorplan::RectM;
 using floorplan::WallDirection;
 
-// A corridor 30 x 1.9 m under a row of offices 4 m deep (doors 0.9 m).
-constexpr RectM kCorridor{0.5, 4.5, 30, 1.9};
+// A corridor 30 x 2.2 m (2.05 m between its walls) under a row of offices
+// 4 m deep (doors 0.9 m).
+constexpr RectM kCorridor{0.5, 4.5, 30, 2.2};
 constexpr double kCorridorMiddleY = kCorridor.y + kCorridor.height / 2;
 
 proto::PipelineOptions FixedW(bool join_split_corridors) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_auto(false);
-  options.mutable_cut()->set_room_width_m(1.8);
+  options.mutable_cut()->set_room_width_m(1.9);
   options.mutable_merge()->set_join_split_corridors(join_split_corridors);
   return options;
 }
 
 // Offices above the corridor, each with a door into it; two wall stubs
-// 0.15 m deep and 0.3 m long face each other across the corridor at x = 15.5 m.
+// 0.3 m long, reaching 0.175 m out of the walls, face each other across the
+// corridor at x = 15.5 m.
 floorplan::FloorPlan SplitCorridor() {
-  floorplan::FloorPlan plan(31, 7);
+  floorplan::FloorPlan plan(31, 7.5);
   for (int k = 0; k < 6; ++k) {
     const double x = 0.5 + 5 * k;
     floorplan::DrawRoom(plan, {x, 0.5, 5, 4});
     floorplan::DrawDoor(plan, x + 2.5, kCorridor.y, 0.9, WallDirection::kHorizontal);
   }
   floorplan::DrawRoom(plan, kCorridor);
-  floorplan::DrawFurniture(plan, {15.35, kCorridor.y, 0.3, 0.15});
-  floorplan::DrawFurniture(plan, {15.35, kCorridor.y + kCorridor.height - 0.15, 0.3, 0.15});
+  floorplan::DrawFurniture(plan, {15.35, kCorridor.y, 0.3, 0.25});
+  floorplan::DrawFurniture(plan, {15.35, kCorridor.y + kCorridor.height - 0.25, 0.3, 0.25});
   return plan;
 }
 
@@ -74,7 +76,7 @@ TEST(SplitCorridorTest, ARoomBehindADoorInLineStaysApart) {
   // The corridor ends at x = 30.5 m in a wall with a 1.2 m door, centred on
   // the corridor, into a room as wide as the corridor and 6 m long beyond it:
   // together they are as long and narrow as a corridor, but the door narrows.
-  floorplan::FloorPlan plan(38, 7);
+  floorplan::FloorPlan plan(38, 7.5);
   for (int k = 0; k < 6; ++k) {
     const double x = 0.5 + 5 * k;
     floorplan::DrawRoom(plan, {x, 0.5, 5, 4});
