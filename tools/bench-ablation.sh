@@ -56,7 +56,8 @@ STEPS=(
   "+ merge.wall_furniture_islands and merge.join_corridor_clutter|merge.wall_furniture_islands=true merge.join_corridor_clutter=true"
   "+ merge.fold_corridor_pieces_below_m2 20|merge.fold_corridor_pieces_below_m2=20"
   "+ prune.keep_groups_above_m 20|prune.keep_groups_above_m=20"
-  "+ merge.join_porous_borders_gap_m 0.5 (= defaults)|merge.join_porous_borders_gap_m=0.5"
+  "+ merge.join_porous_borders_gap_m 0.5|merge.join_porous_borders_gap_m=0.5"
+  "+ merge.join_split_corridors (= defaults)|merge.join_split_corridors=true"
 )
 
 set_flags=()

@@ -50,7 +50,10 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // Also in merge 11 (same session): small rooms opening widely into a corridor and another area
 // are corridor pieces and fold into it (merge.fold_corridor_pieces_below_m2).
 // merge 12: two areas meeting at three or more vertices, one of them a gap too narrow for a door,
-// are one area (merge.join_porous_borders_gap_m; clutter in a room, issue 12).
+// are one area (merge.join_porous_borders_gap_m; clutter in a room, issue 12); and pieces of one
+// corridor that the room disk split (an automatic W near the corridor's width) join where they
+// meet straight on without a narrowing (merge.join_split_corridors; issue 12, generated floors
+// against a fixed W = 1.25 m). One bump covers both (merged the same day).
 inline constexpr StageInfo kMergeStage{"merge", 12};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).

@@ -21,6 +21,7 @@
 #include "stages/merge/porous_border_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/small_area_folding.h"
+#include "stages/merge/split_corridor_joining.h"
 
 namespace areagraph {
 namespace {
@@ -130,6 +131,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     JoinAtPorousBorders(graph, grid.resolution_m(),
                         options.join_porous_borders_gap_m() / grid.resolution_m(),
                         options.keep_closed_doors(), &plan);
+  }
+  if (options.join_split_corridors()) {
+    JoinSplitCorridors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =

@@ -1,0 +1,53 @@
+#pragma once
+
+#include "proto/artifacts.pb.h"
+#include "stages/merge/area_assignment.h"
+
+namespace areagraph {
+
+// The constants of JoinSplitCorridors, chosen on the generated tuning and
+// tuning-extra floors and the real maps (areagraph/, RobotMap, bormann/;
+// docs/quality.md, merge 12 section).
+struct SplitCorridorParams {
+  // No narrowing between the pieces: the opening at their shared vertex is at
+  // least this share of the wider piece's median free width (a door is
+  // narrower than the corridor it opens from; 0.85 lost tuning-extra 0.006).
+  double opening_share = 0.8;
+  // One corridor is about as wide everywhere: the wider piece's median free
+  // width is at most this many times the narrower's.
+  double width_ratio = 1.3;
+  // The two pieces together cover at least this many squares of the wider
+  // one's median free width: long and narrow, like a corridor
+  // (room_joining.h's kCorridorElongation).
+  double elongation = 6;
+  // The two pieces lie on either side of the vertex: seen from the vertex,
+  // their centroids are at least this many degrees apart (a corridor goes
+  // on; a room across from a side corridor's end is off to the side).
+  double straight_deg = 150;
+  // A piece that is elongated (its major axis' variance at least
+  // axis_ratio times its minor axis') runs along the line between the two
+  // centroids, within this many degrees: a room opening off a corridor
+  // piece's side lies across that piece (areagraph/ lab_c, ratio 2: 0.4
+  // less on floor_1052, NLB and freiburg_building79 than 3).
+  double axis_deg = 30;
+  double axis_ratio = 3;
+  // Both pieces are at least this wide (median free width, metres): rows of
+  // cluttered cubicles 0.9 m wide with a gap in their partition are no
+  // corridor (areagraph/ lab_a 0.721 -> 0.673 without it).
+  double min_width_m = 1.0;
+};
+
+// Joins pairs of areas (rooms or room-less pieces) that meet at a graph
+// vertex which ag-cut did not close as a door or wall gap (with
+// `keep_closed_doors`), where the two are pieces of one corridor by the
+// constants above, repeatedly until no pair joins (a corridor split into
+// three or four pieces). With an automatic W near or above a corridor's
+// width the room disk stops at every slight narrowing and the corridor
+// falls into room-shaped pieces; room-less pieces stay apart where a side
+// corridor or a doorway's stub forks off (JoinCorridorPieces joins only two
+// uniform pieces). A joined area keeps the kind and room of its first piece;
+// LabelCorridorsByShape relabels it afterwards.
+void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool keep_closed_doors,
+                        AreaPlan* plan, const SplitCorridorParams& params = {});
+
+}  // namespace areagraph
