@@ -345,9 +345,12 @@ proto::PipelineOptions PaperMazeOptions() {
   options.mutable_cut()->set_room_width_m(2.0);
   options.mutable_cut()->set_room_width_auto(false);  // a fixed W (auto is the default)
   // Every area kept (the default folds areas below merge.min_area_m2, and the
-  // dead ends hold about 1-3 m2), and no corridor pieces joined.
+  // dead ends hold about 1-3 m2), and no corridor pieces joined (neither two
+  // uniform pieces nor pieces the room disk split: a maze's passages are as
+  // wide as its cells' openings and run straight on).
   options.mutable_merge()->set_min_area_m2(0);
   options.mutable_merge()->set_join_corridor_pieces(false);
+  options.mutable_merge()->set_join_split_corridors(false);
   return options;
 }
 
