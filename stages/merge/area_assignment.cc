@@ -50,6 +50,18 @@ void AreaPlan::MergeGroups(std::vector<int> group) {
   }
 }
 
+void MergeGroupsLedBy(DisjointSets& groups, const std::map<int, int>& lead, AreaPlan* plan) {
+  const int area_count = static_cast<int>(plan->areas.size());
+  std::vector<int> root(area_count);
+  for (int k = 0; k < area_count; ++k) {
+    root[k] = groups.Find(k);
+    const AreaPlan::Area& target = plan->areas[lead.at(root[k])];
+    plan->areas[k].kind = target.kind;
+    plan->areas[k].room_id = target.room_id;
+  }
+  plan->MergeGroups(root);
+}
+
 AreaPlan AssignAreas(const proto::CutGraph& graph) {
   const int edge_count = graph.edges_size();
   DisjointSets groups(edge_count);

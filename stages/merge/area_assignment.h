@@ -1,8 +1,10 @@
 #pragma once
 
+#include <map>
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/disjoint_sets.h"
 
 namespace areagraph {
 
@@ -25,6 +27,10 @@ struct AreaPlan {
   // in one group when group[j] == group[k]), keeping that area's kind.
   void MergeGroups(std::vector<int> group);
 };
+
+// Merges the areas of each group of `groups` (over area indices) into one area, which takes the
+// kind and room of the group's lead (`lead` maps each group's root to its lead area).
+void MergeGroupsLedBy(DisjointSets& groups, const std::map<int, int>& lead, AreaPlan* plan);
 
 // The areas of a CutGraph: all edges of one room form one room area; every
 // room-less edge is an area of its own (a dead end when it ends at a dead

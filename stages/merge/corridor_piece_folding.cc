@@ -60,14 +60,7 @@ void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, doubl
       if (!added && pass == 0 && size_m2[k] > size_m2[it->second]) it->second = k;
     }
   }
-  std::vector<int> root(area_count);
-  for (int k = 0; k < area_count; ++k) {
-    root[k] = groups.Find(k);
-    const AreaPlan::Area& target = plan->areas[lead[root[k]]];
-    plan->areas[k].kind = target.kind;
-    plan->areas[k].room_id = target.room_id;
-  }
-  plan->MergeGroups(root);
+  MergeGroupsLedBy(groups, lead, plan);
 }
 
 }  // namespace areagraph
