@@ -13,6 +13,7 @@
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
 #include "runner/run/worker_events.h"
+#include "runner/run/worker_heap.h"
 #include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
@@ -65,7 +66,11 @@ int RunCollection(const RunFlags& flags) {
   ProcessPool pool(
       flags.jobs,
       [&](int task, EventWriter& events) {
-        if (!worker) worker = std::make_unique<MapWorker>(settings, publish);
+        if (!worker) {
+          // Before the first map: its buffers then come from huge pages.
+          PrepareWorkerHeap();
+          worker = std::make_unique<MapWorker>(settings, publish);
+        }
         PipelineObserver observer;
         observer.on_start = [&](const StageInfo& stage) {
           events.Write(StageStartedEvent(stage));
