@@ -67,8 +67,9 @@ int RunCollection(const RunFlags& flags) {
       flags.jobs,
       [&](int task, EventWriter& events) {
         if (!worker) {
-          // Before the first map: its buffers then come from huge pages.
-          PrepareWorkerHeap();
+          // Before the first map, which decides for the process: a small
+          // map's buffers then come from huge pages.
+          if (GetsHugePageHeap(tasks[task].entry.path)) PrepareWorkerHeap();
           worker = std::make_unique<MapWorker>(settings, publish);
         }
         PipelineObserver observer;

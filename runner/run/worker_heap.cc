@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>  // defines __GLIBC__ where it applies
+#include <exception>
+#include <fstream>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -10,7 +12,26 @@
 #include <unistd.h>
 #endif
 
+#include "stages/import/png_header.h"
+
 namespace areagraph {
+
+bool GetsHugePageHeap(const std::string& map_path) {
+  // The signature and the IHDR chunk: 8 + 4 + 4 + 13 + 4 bytes.
+  constexpr size_t kHeaderBytes = 33;
+  std::ifstream in(map_path, std::ios::binary);
+  std::string bytes(kHeaderBytes, '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(kHeaderBytes)) ||
+      !HasPngSignature(bytes)) {
+    return false;
+  }
+  try {
+    const PngHeader header = ReadPngHeader(bytes, map_path);
+    return int64_t{header.width} * header.height <= kWorkerHugePageMaxPixels;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
 
 #if defined(__GLIBC__)
 namespace {

@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <string>
 
 namespace areagraph {
 
@@ -16,11 +18,26 @@ struct WorkerHeap {
 inline constexpr size_t kWorkerMmapThreshold = size_t{32} << 20;
 inline constexpr size_t kWorkerTrimThreshold = size_t{64} << 20;
 
-// The part of the heap that ag-run's workers back with huge pages: every map of
-// areagraph/ and bormann/ stays within it (lab_b's worker peaks at about
-// 60 MB of heap). Kept under the 64 MB of free heap above which
+// The part of the heap that ag-run's workers back with huge pages: most maps of
+// areagraph/ stay within it, lab_b and bormann's office_g go beyond (ordinary
+// pages from there). Kept under the 64 MB of free heap above which
 // ReturnFreedMemory gives memory back, so that a small map's stages never do.
 inline constexpr size_t kWorkerHugePageReserve = size_t{48} << 20;
+
+// The largest map (pixels of its PNG) whose worker gets the huge-page heap.
+// Chosen on lab_a tiled N x N and bormann's two largest maps
+// (docs/performance.md, 2026-12-02): lab_a 3 x 3 (3.3 Mpx), office_i (3.4)
+// and office_g (4.7) took less CPU with it, fewer faults at the same user
+// time; from lab_a 4 x 4 (5.9 Mpx) on the worker took more user time than it
+// saved in faults (8 x 8: 8-11 s more of 35 s), as the eighth pass found for
+// ag-render's heap, for a reason not found. Every map of areagraph/, bormann/
+// and RobotMap is smaller.
+inline constexpr int64_t kWorkerHugePageMaxPixels = 5'000'000;
+
+// True when `map_path` is a PNG of at most kWorkerHugePageMaxPixels pixels
+// (read from its header). Anything else, a YAML or an unreadable file
+// included, is false: its worker keeps glibc's heap as it is.
+bool GetsHugePageHeap(const std::string& map_path);
 
 // Makes a worker process's heap cheap to fault in, before its first map: on
 // this project's virtual machines every 4-kB page a process touches for the
