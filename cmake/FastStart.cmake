@@ -9,7 +9,7 @@
 # ag_fast_start(TARGET) links an executable
 # - with the static archives that the Debian -dev packages of install-deps.sh
 #   ship (libopencv_core.a, libopencv_imgproc.a, libprotobuf.a,
-#   libsqlite3.a, libcrypto.a, libzstd.a, libpng16.a, libz.a): the linker
+#   libsqlite3.a, libnettle.a, libzstd.a, libpng16.a, libz.a): the linker
 #   takes only the object files used, resolves them at link time, and runs
 #   only their initialisers;
 # - without OpenCV's OpenGL interop (opengl_absent.cc answers its three glX
@@ -65,7 +65,7 @@ function(ag_static_archive out name)
 endfunction()
 
 if(AG_FAST_START)
-  foreach(name opencv_core opencv_imgproc protobuf sqlite3 crypto zstd png16 z)
+  foreach(name opencv_core opencv_imgproc protobuf sqlite3 nettle zstd png16 z)
     string(TOUPPER ${name} upper)
     ag_static_archive(AG_STATIC_${upper} ${name})
   endforeach()
@@ -91,7 +91,7 @@ ag_dependency(ag_protobuf protobuf::libprotobuf "${AG_STATIC_PROTOBUF}" "${AG_ST
   Threads::Threads)
 ag_dependency(ag_sqlite SQLite::SQLite3 "${AG_STATIC_SQLITE3}" ${CMAKE_DL_LIBS} Threads::Threads
   m)
-ag_dependency(ag_crypto OpenSSL::Crypto "${AG_STATIC_CRYPTO}" ${CMAKE_DL_LIBS} Threads::Threads)
+ag_dependency(ag_crypto PkgConfig::NETTLE "${AG_STATIC_NETTLE}")
 ag_dependency(ag_zstd zstd::libzstd_shared "${AG_STATIC_ZSTD}")
 ag_dependency(ag_png PNG::PNG "${AG_STATIC_PNG16}" "${AG_STATIC_Z}" m)
 
