@@ -140,3 +140,20 @@ function(ag_fast_start)
     target_link_options(${target} PRIVATE -no-pie)
   endforeach()
 endfunction()
+
+# ag_fast_start_own_runtime(TARGET...): a fast-start executable that also
+# links libstdc++ and libgcc statically, which saves about 3 ms of every
+# start (resolving libstdc++'s thousands of symbols; docs/performance.md,
+# issue 14, tenth pass). Only for a program that never loads a shared library
+# that brings libstdc++.so: it would hold a second C++ runtime. So the program
+# calls cv::setNumThreads(0) first (OpenCV then never loads TBB) and never
+# reaches the image-codecs module (ag-render: its pictures are 8-bit, which
+# libpng writes directly).
+function(ag_fast_start_own_runtime)
+  if(NOT AG_FAST_START)
+    return()
+  endif()
+  foreach(target ${ARGN})
+    target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc)
+  endforeach()
+endfunction()
