@@ -9,7 +9,7 @@
 # ag_fast_start(TARGET) links an executable
 # - with the static archives that the Debian -dev packages of install-deps.sh
 #   ship (libopencv_core.a, libopencv_imgproc.a, libprotobuf.a,
-#   libsqlite3.a, libcrypto.a, libzstd.a, libpng16.a, libz.a): the linker
+#   libsqlite3.a, libnettle.a, libzstd.a, libpng16.a, libz.a): the linker
 #   takes only the object files used, resolves them at link time, and runs
 #   only their initialisers;
 # - without OpenCV's OpenGL interop (opengl_absent.cc answers its three glX
@@ -18,7 +18,8 @@
 #   relocates its 0.5 MB of vtables and constant tables at every start, one
 #   copy-on-write page fault per page. The cost: the executable itself is not
 #   placed at a random address (its libraries, heap and stack still are).
-# OpenCV's TBB backend, LAPACK and BLAS, libstdc++ and glibc stay shared.
+# OpenCV's TBB backend, LAPACK and BLAS stay shared but are loaded on first
+# use (common/lazy_libraries.cc); libstdc++ and glibc stay shared.
 #
 # Everything else (the image-codecs module, tests, tools that link
 # libopencv_imgcodecs) keeps the shared libraries: libopencv_imgcodecs.so
@@ -65,7 +66,7 @@ function(ag_static_archive out name)
 endfunction()
 
 if(AG_FAST_START)
-  foreach(name opencv_core opencv_imgproc protobuf sqlite3 crypto zstd png16 z)
+  foreach(name opencv_core opencv_imgproc protobuf sqlite3 nettle zstd png16 z)
     string(TOUPPER ${name} upper)
     ag_static_archive(AG_STATIC_${upper} ${name})
   endforeach()
@@ -75,23 +76,60 @@ if(AG_FAST_START)
   find_library(AG_LAPACK_LIBRARY NAMES liblapack.so.3 lapack REQUIRED)
   find_library(AG_BLAS_LIBRARY NAMES libblas.so.3 blas REQUIRED)
   add_library(ag_opengl_absent STATIC ${CMAKE_SOURCE_DIR}/common/opengl_absent.cc)
+  # GMP and MPFR (CGAL's exact numbers; libgmp-dev and libmpfr-dev come with
+  # libcgal-dev) from their archives too: two shared libraries fewer, about
+  # 0.6 ms of every start. CGAL's FindGMP and FindMPFR (in stages/) take
+  # these variables as found and link what they name.
+  find_library(AG_GMP_LIBRARY gmp REQUIRED)
+  find_library(AG_MPFR_LIBRARY mpfr REQUIRED)
+  ag_static_archive(AG_STATIC_GMP gmp)
+  ag_static_archive(AG_STATIC_MPFR mpfr)
+  find_path(GMP_INCLUDE_DIR gmp.h REQUIRED)
+  find_path(MPFR_INCLUDE_DIR mpfr.h REQUIRED)
+  set(GMP_LIBRARIES "$<IF:${_ag_fast},${AG_STATIC_GMP},${AG_GMP_LIBRARY}>")
+  set(MPFR_LIBRARIES "$<IF:${_ag_fast},${AG_STATIC_MPFR},${AG_MPFR_LIBRARY}>")
+  # TBB, LAPACK and BLAS are loaded on first use (common/lazy_libraries.cc):
+  # OpenCV's static core calls them (cv::parallel_for_, cv::solve, cv::gemm),
+  # but most runs of ag-render, ag-inspect and the stages never do, and
+  # loading them (with libgfortran and libquadmath) was 2.5-3 ms of every
+  # start (docs/performance.md, issue 14, tenth pass). lazy_libraries.sh
+  # writes an entry point for each of their functions that the OpenCV
+  # archives call (x86-64 only; elsewhere they are linked as before).
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
+    set(entries ${CMAKE_BINARY_DIR}/lazy_library_entries.cc)
+    execute_process(
+      COMMAND sh ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh ${entries} ${CMAKE_NM}
+        ${AG_STATIC_OPENCV_CORE} ${AG_STATIC_OPENCV_IMGPROC}
+        -- ${AG_TBB_LIBRARY} ${AG_LAPACK_LIBRARY} ${AG_BLAS_LIBRARY}
+      RESULT_VARIABLE status)
+    if(status)
+      message(FATAL_ERROR "AG_FAST_START: cmake/lazy_libraries.sh failed")
+    endif()
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
+      ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh)
+    add_library(ag_lazy_libraries STATIC ${CMAKE_SOURCE_DIR}/common/lazy_libraries.cc ${entries})
+    target_link_libraries(ag_lazy_libraries PRIVATE ${CMAKE_DL_LIBS})
+    set(AG_OPENCV_RUNTIME ag_lazy_libraries)
+  else()
+    set(AG_OPENCV_RUNTIME "${AG_TBB_LIBRARY}" "${AG_LAPACK_LIBRARY}" "${AG_BLAS_LIBRARY}")
+  endif()
 endif()
 
 # Static OpenCV is one item for both modules, imgproc before core (the
 # linker takes from an archive only what is already asked for, and CMake does
 # not order raw archive paths): libopencv_imgproc.a adds nothing to a target
 # that uses core only. Then what libopencv_core.a needs beyond itself: TBB
-# (cv::parallel_for_), LAPACK and BLAS (cv::solve and friends), zlib
-# (cv::FileStorage), and the glX answers.
+# (cv::parallel_for_), LAPACK and BLAS (cv::solve and friends), loaded on
+# first use; zlib (cv::FileStorage), and the glX answers.
 ag_dependency(opencv_core opencv_core_shared "${AG_STATIC_OPENCV_IMGPROC}"
-  "${AG_STATIC_OPENCV_CORE}" ag_opengl_absent "${AG_TBB_LIBRARY}" "${AG_LAPACK_LIBRARY}"
-  "${AG_BLAS_LIBRARY}" "${AG_STATIC_Z}" ${CMAKE_DL_LIBS} Threads::Threads)
+  "${AG_STATIC_OPENCV_CORE}" ag_opengl_absent ${AG_OPENCV_RUNTIME} "${AG_STATIC_Z}"
+  ${CMAKE_DL_LIBS} Threads::Threads)
 ag_dependency(opencv_imgproc opencv_imgproc_shared opencv_core)
 ag_dependency(ag_protobuf protobuf::libprotobuf "${AG_STATIC_PROTOBUF}" "${AG_STATIC_Z}"
   Threads::Threads)
 ag_dependency(ag_sqlite SQLite::SQLite3 "${AG_STATIC_SQLITE3}" ${CMAKE_DL_LIBS} Threads::Threads
   m)
-ag_dependency(ag_crypto OpenSSL::Crypto "${AG_STATIC_CRYPTO}" ${CMAKE_DL_LIBS} Threads::Threads)
+ag_dependency(ag_crypto PkgConfig::NETTLE "${AG_STATIC_NETTLE}")
 ag_dependency(ag_zstd zstd::libzstd_shared "${AG_STATIC_ZSTD}")
 ag_dependency(ag_png PNG::PNG "${AG_STATIC_PNG16}" "${AG_STATIC_Z}" m)
 
@@ -112,5 +150,22 @@ function(ag_fast_start)
   foreach(target ${ARGN})
     set_property(TARGET ${target} PROPERTY AG_FAST_START ON)
     target_link_options(${target} PRIVATE -no-pie)
+  endforeach()
+endfunction()
+
+# ag_fast_start_own_runtime(TARGET...): a fast-start executable that also
+# links libstdc++ and libgcc statically, which saves about 3 ms of every
+# start (resolving libstdc++'s thousands of symbols; docs/performance.md,
+# issue 14, tenth pass). Only for a program that never loads a shared library
+# that brings libstdc++.so: it would hold a second C++ runtime. So the program
+# calls cv::setNumThreads(0) first (OpenCV then never loads TBB) and never
+# reaches the image-codecs module (ag-render: its pictures are 8-bit, which
+# libpng writes directly).
+function(ag_fast_start_own_runtime)
+  if(NOT AG_FAST_START)
+    return()
+  endif()
+  foreach(target ${ARGN})
+    target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc)
   endforeach()
 endfunction()

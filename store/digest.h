@@ -6,7 +6,7 @@
 
 namespace areagraph {
 
-// Lower-case hex SHA-256 of `bytes` (OpenSSL).
+// Lower-case hex SHA-256 of `bytes` (nettle).
 std::string Sha256Hex(std::string_view bytes);
 
 // Incremental SHA-256 for data that arrives in pieces.

@@ -9,7 +9,8 @@ PACKAGES=(
   libopencv-core-dev libopencv-imgproc-dev libopencv-imgcodecs-dev
   libprotobuf-dev protobuf-compiler
   libsqlite3-dev sqlite3 libzstd-dev libpng-dev zlib1g-dev  # their .a: cmake/FastStart.cmake
-  libssl-dev libyaml-cpp-dev libcli11-dev
+  nettle-dev  # SHA-256 of the store (store/digest.cc), without OpenSSL's provider start-up
+  libyaml-cpp-dev libcli11-dev
   liblcm-dev liblcm-bin libglib2.0-dev
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh

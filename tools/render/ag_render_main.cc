@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
@@ -14,26 +15,30 @@
 #include "stages/common/png_file.h"
 #include "stages/common/stage.h"
 #include "tools/render/artifact_drawing.h"
+#include "tools/render/map_png.h"
 
 namespace areagraph {
 namespace {
 
 // The cells to draw under a stage's artifact: the raw map for import and
 // clean (so removed obstacles show), the cleaned map after that.
-Canvas BaseCanvas(ArtifactStore& store, const std::string& map, const StageInfo& stage, int scale) {
+struct BaseMap {
   proto::MapFrame frame;
   std::string cells;
+};
+
+BaseMap ReadBaseMap(ArtifactStore& store, const std::string& map, const StageInfo& stage) {
+  BaseMap base;
   if (SameStage(stage, kImportStage) || SameStage(stage, kCleanStage)) {
-    const auto grid = ReadHeadArtifact<proto::GridMap>(store, map, kImportStage);
-    frame = grid.frame();
-    cells = grid.cells();
+    auto grid = ReadHeadArtifact<proto::GridMap>(store, map, kImportStage);
+    base.frame = grid.frame();
+    base.cells = std::move(*grid.mutable_cells());
   } else {
-    const auto cleaned = ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage);
-    frame = cleaned.frame();
-    cells = cleaned.cells();
+    auto cleaned = ReadHeadArtifact<proto::CleanedMap>(store, map, kCleanStage);
+    base.frame = cleaned.frame();
+    base.cells = std::move(*cleaned.mutable_cells());
   }
-  if (scale <= 0) scale = DefaultScale(frame.width_px(), frame.height_px());
-  return Canvas(cells, frame.width_px(), frame.height_px(), scale);
+  return base;
 }
 
 // The canvas pixels of a window "X,Y,W,H" given in map cells.
@@ -54,9 +59,18 @@ cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
             bool doors, int width, const std::string& crop, const std::string& out) {
   const StageDefinition& definition = FindStage(stage, "--stage");
-  Canvas canvas = BaseCanvas(store, map, definition.info, scale);
-  // The import's GridMap is the canvas itself: not read a second time. The
-  // others are parsed into an arena, which frees tens of thousands of
+  const BaseMap base = ReadBaseMap(store, map, definition.info);
+  const int width_px = base.frame.width_px(), height_px = base.frame.height_px();
+  if (scale <= 0) scale = DefaultScale(width_px, height_px);
+  // The import's picture is the bare map: written from its cells
+  // (EncodeMapPng), without a canvas.
+  if (SameStage(definition.info, kImportStage) && !doors && crop.empty() &&
+      (width <= 0 || width_px * scale <= width)) {
+    WriteOutputFile(out, EncodeMapPng(base.cells, width_px, height_px, scale));
+    return;
+  }
+  Canvas canvas(base.cells, width_px, height_px, scale);
+  // The others are parsed into an arena, which frees tens of thousands of
   // messages (a Voronoi diagram's edges) at once.
   if (!SameStage(definition.info, kImportStage)) {
     google::protobuf::Arena arena;
@@ -68,8 +82,9 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
     const auto cut = ReadHeadArtifact<proto::CutGraph>(store, map, kCutStage);
     DrawDetectedWidths(cut.room_width(), cut.frame().resolution_m(), canvas);
   }
-  // A bare map (the import's picture) is written from its greys: the same
-  // file, without a BGR picture to make and scan for its colours.
+  // A bare map (a cleaned map with nothing removed) is written from its
+  // greys: the same file, without a BGR picture to make and scan for its
+  // colours.
   const cv::Mat grey = canvas.UntouchedGrey();
   if (!grey.empty() && crop.empty() && (width <= 0 || grey.cols <= width)) {
     WriteGreyPngFileAsColour(out, grey);
@@ -92,6 +107,13 @@ int main(int argc, char** argv) {
   // arrays, the canvas and its masks) once: faulting them in was half of its
   // CPU time (docs/performance.md, eighth pass).
   areagraph::UseFaultThriftyHeap(size_t{256} << 20);
+  // OpenCV's functions run on the calling thread: a picture is drawn in
+  // milliseconds, and its parallel loops would load TBB (common/
+  // lazy_libraries.cc) and start its workers, 5 ms of CPU in a 35-ms
+  // picture. 0 (not 1, which starts a TBB arena) skips TBB entirely, which
+  // also keeps ag-render's own libstdc++ the only one in the process
+  // (tools/render/CMakeLists.txt).
+  cv::setNumThreads(0);
   CLI::App app{"Draws the head artifact of one stage over its map as a PNG."};
   std::string store_path = "areagraph.db", map, stage = areagraph::kMergeStage.name, out;
   int scale = 0;

@@ -8,6 +8,10 @@
 
 namespace areagraph {
 
+// The greys a map's cells are drawn in: free, occupied, and unknown (also
+// any other state).
+inline constexpr uint8_t kFreeCellGrey = 255, kOccupiedCellGrey = 40, kUnknownCellGrey = 200;
+
 // A picture of a map, upscaled so that thin lines and labels stay readable,
 // with drawing helpers that take pixel coordinates of the map.
 class Canvas {
@@ -33,6 +37,11 @@ class Canvas {
   void Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness);
   // Fills a polygon (outer minus holes) blending `colour` with weight `alpha`.
   void Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha);
+  // Line for each pair of points, in their order, through one OpenCV call:
+  // the same pixels, without cv::line's per-call cost (a Voronoi diagram has
+  // tens of thousands of edges).
+  void Lines(const std::vector<std::pair<cv::Point2d, cv::Point2d>>& lines,
+             const cv::Scalar& colour, int thickness);
   // Blends `colour` with weight `alpha` into the pixels of 1-px lines (pairs
   // of points), each pixel once: faint lines through which the map shows.
   void FaintLines(const std::vector<std::pair<cv::Point2d, cv::Point2d>>& lines,
@@ -49,8 +58,8 @@ class Canvas {
 };
 
 // `grey` (CV_8UC1) with every pixel repeated `scale` times in both
-// directions: the picture cv::resize makes with INTER_NEAREST, without its
-// worker threads.
+// directions: the picture cv::resize makes with INTER_NEAREST, in less than
+// half of its instructions.
 cv::Mat UpscaleNearest(const cv::Mat& grey, int scale);
 
 // Distinct, well separated colours for ids (golden-angle hues).

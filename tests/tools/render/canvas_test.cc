@@ -22,8 +22,8 @@ proto::Point2 At(double x, double y) {
   return point;
 }
 
-// The canvas upscales and converts with its own loops (no worker threads):
-// they must give OpenCV's pictures byte for byte.
+// The canvas upscales with its own loop (half of cv::resize's work): it must
+// give OpenCV's picture byte for byte.
 TEST(Canvas, UpscaleNearestIsCvResizeNearestAtEveryScale) {
   cv::Mat grey(37, 53, CV_8UC1);
   cv::randu(grey, 0, 256);
@@ -124,6 +124,31 @@ TEST(Canvas, VoronoiEdgesAreDrawnInTheirExactColours) {
   Canvas packed_canvas(std::string(40 * 20, static_cast<char>(proto::CELL_FREE)), 40, 20, 2);
   DrawVoronoiDiagram(packed, packed_canvas);
   EXPECT_EQ(cv::norm(packed_canvas.image(), canvas.image(), cv::NORM_INF), 0);
+}
+
+// Lines (one cv::polylines call for many segments) draws what a cv::line per
+// segment draws, in order: overlapping segments of other colours, thick
+// lines with their round ends, and fractional end points.
+TEST(Canvas, LinesDrawWhatALinePerSegmentDraws) {
+  cv::RNG random(7);
+  std::vector<std::pair<cv::Point2d, cv::Point2d>> segments;
+  for (int i = 0; i < 200; ++i) {
+    segments.emplace_back(cv::Point2d(random.uniform(-2.0, 42.0), random.uniform(-2.0, 22.0)),
+                          cv::Point2d(random.uniform(-2.0, 42.0), random.uniform(-2.0, 22.0)));
+  }
+  const std::string cells(40 * 20, static_cast<char>(proto::CELL_FREE));
+  for (const int thickness : {1, 2, 3}) {
+    Canvas batched(cells, 40, 20, 2), single(cells, 40, 20, 2);
+    for (size_t start = 0; start < segments.size(); start += 50) {
+      const cv::Scalar colour = DistinctColour(static_cast<int>(start));
+      const std::vector<std::pair<cv::Point2d, cv::Point2d>> run(segments.begin() + start,
+                                                                 segments.begin() + start + 50);
+      batched.Lines(run, colour, thickness);
+      for (const auto& [a, b] : run) single.Line(a, b, colour, thickness);
+    }
+    EXPECT_EQ(cv::norm(batched.image(), single.image(), cv::NORM_INF), 0) << thickness;
+    EXPECT_GT(cv::countNonZero(batched.image().reshape(1) != 255), 0);
+  }
 }
 
 TEST(Canvas, DefaultScaleKeepsThePictureNearTheMapsOwnSize) {
