@@ -3,6 +3,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
 
@@ -11,12 +12,13 @@ std::vector<int> FreeUnknownIslands(std::string& cells, int width, int height, d
   if (max_cells <= 0) return freed;
   const int count = width * height;
   cv::Mat unknown(height, width, CV_8U);
+  const auto* state = reinterpret_cast<const uint8_t*>(cells.data());
+  uint8_t* mask = unknown.data;  // a local pointer: the stores may alias `cells`
   for (int index = 0; index < count; ++index) {
-    unknown.data[index] = cells[index] == proto::CELL_UNKNOWN ? 255 : 0;
+    mask[index] = state[index] == proto::CELL_UNKNOWN ? 255 : 0;
   }
-  cv::Mat labels, stats, centroids;
-  const int regions =
-      cv::connectedComponentsWithStats(unknown, labels, stats, centroids, 8, CV_32S);
+  cv::Mat labels, stats;
+  const int regions = LabelRegionsWithBoxes(unknown, 8, &labels, &stats);
   std::vector<uint8_t> island(regions, 0);
   for (int region = 1; region < regions; ++region) {
     const int x = stats.at<int>(region, cv::CC_STAT_LEFT);

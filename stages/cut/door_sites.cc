@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "stages/cut/width_estimate.h"
+#include "stages/geometry/region_boxes.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -17,9 +18,9 @@ class WallStructure {
  public:
   WallStructure(const std::string& cells, int width, int height, double min_region_px)
       : width_(width), height_(height) {
-    cv::Mat stats, centroids;
-    const int count = cv::connectedComponentsWithStats(ObstacleMask(cells, width, height), labels_,
-                                                       stats, centroids, 8);
+    cv::Mat stats;
+    const int count =
+        LabelRegionsWithBoxes(ObstacleMask(cells, width, height), 8, &labels_, &stats);
     structure_.assign(count, 0);
     longest_.assign(count, 0);
     for (int region = 1; region < count; ++region) {

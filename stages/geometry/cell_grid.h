@@ -29,6 +29,11 @@ class CellGrid {
   bool IsFree(int col, int row) const {
     return Contains(col, row) && At(col, row) == proto::CELL_FREE;
   }
+  // The cell states of one row (0 <= row < height), for whole-grid passes
+  // that would otherwise check bounds per cell.
+  const uint8_t* CellRow(int row) const {
+    return reinterpret_cast<const uint8_t*>(cells_->data()) + Index(0, row);
+  }
   // Whether the cell under a point in pixel coordinates is free; nothing
   // outside the map is.
   bool FreeAt(const Eigen::Vector2d& point) const;

@@ -4,14 +4,14 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/geometry/region_boxes.h"
 namespace areagraph {
 
 void FillEnclosedPockets(double max_pocket_px, cv::Mat* obstacle) {
   const int width = obstacle->cols, height = obstacle->rows;
   cv::Mat free_cells = *obstacle == 0;
-  cv::Mat labels, stats, centroids;
-  const int count =
-      cv::connectedComponentsWithStats(free_cells, labels, stats, centroids, 4, CV_32S);
+  cv::Mat labels, stats;
+  const int count = LabelRegionsWithBoxes(free_cells, 4, &labels, &stats);
   std::vector<uint8_t> fill(count, 0);
   for (int k = 1; k < count; ++k) {
     const int x = stats.at<int>(k, cv::CC_STAT_LEFT), y = stats.at<int>(k, cv::CC_STAT_TOP);

@@ -3,11 +3,19 @@
 #include <png.h>
 
 #include <csetjmp>
+#include <cstdint>
 #include <cstring>
 #include <vector>
 
 namespace areagraph {
 namespace {
+
+bool IsLittleEndian() {
+  const uint16_t one = 1;
+  uint8_t first = 0;
+  std::memcpy(&first, &one, 1);
+  return first == 1;
+}
 
 // Feeds libpng from the file's bytes.
 struct ByteReader {
@@ -46,7 +54,9 @@ bool Decode(ReadStructs& structs, ByteReader& reader, cv::Mat* grey, std::vector
   png_read_info(png, info);
   const int bit_depth = png_get_bit_depth(png, info);
   const int color_type = png_get_color_type(png, info);
-  if (bit_depth > 8 || png_get_valid(png, info, PNG_INFO_eXIf)) return false;
+  if (bit_depth > 16 || png_get_valid(png, info, PNG_INFO_eXIf)) return false;
+  // 16-bit samples stay 16-bit (IMREAD_ANYDEPTH), in the host's byte order.
+  if (bit_depth == 16 && IsLittleEndian()) png_set_swap(png);
   png_set_strip_alpha(png);
   if (color_type == PNG_COLOR_TYPE_PALETTE) png_set_palette_to_rgb(png);
   if ((color_type & PNG_COLOR_MASK_COLOR) == 0 && bit_depth < 8) {
@@ -57,8 +67,10 @@ bool Decode(ReadStructs& structs, ByteReader& reader, cv::Mat* grey, std::vector
   png_read_update_info(png, info);
   const png_uint_32 width = png_get_image_width(png, info);
   const png_uint_32 height = png_get_image_height(png, info);
-  if (png_get_channels(png, info) != 1 || png_get_bit_depth(png, info) != 8) return false;
-  grey->create(static_cast<int>(height), static_cast<int>(width), CV_8UC1);
+  const int out_depth = png_get_bit_depth(png, info);
+  if (png_get_channels(png, info) != 1 || out_depth != (bit_depth == 16 ? 16 : 8)) return false;
+  grey->create(static_cast<int>(height), static_cast<int>(width),
+               out_depth == 16 ? CV_16UC1 : CV_8UC1);
   rows->resize(height);
   for (png_uint_32 y = 0; y < height; ++y) (*rows)[y] = grey->ptr<uchar>(static_cast<int>(y));
   png_read_image(png, rows->data());

@@ -133,7 +133,8 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
   cv::Mat cells(domain.size(), CV_8U);
   for (int r = 0; r < cells.rows; ++r) {
     uint8_t* row = cells.ptr<uint8_t>(r);
-    for (int c = 0; c < cells.cols; ++c) row[c] = grid.IsFree(c, r) ? 255 : 0;
+    const uint8_t* state = grid.CellRow(r);
+    for (int c = 0; c < cells.cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
   }
   cv::Mat distance;
   cv::distanceTransform(cells, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
@@ -204,9 +205,10 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   for (int r = 0; r < size.height; ++r) {
     uint8_t* row = domain.ptr<uint8_t>(r);
     const uint8_t* out = keeps_out ? keep_out.ptr<uint8_t>(r) : nullptr;
+    const uint8_t* state = grid.CellRow(r);
     for (int c = 0; c < size.width; ++c) {
       const bool kept_out = keeps_out && out[c] != 0;
-      row[c] = row[c] && grid.IsFree(c, r) && !kept_out ? 1 : 0;
+      row[c] = row[c] && state[c] == proto::CELL_FREE && !kept_out ? 1 : 0;
       raster.domain_cells += row[c];
     }
   }
@@ -255,15 +257,22 @@ std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
   const size_t count = raster.cell_count.size();
   // Per area: the first and last row, the leftmost and rightmost column.
   std::vector<int> r0(count, -1), r1(count, -1), c0(count, 0), c1(count, 0);
+  const int cols = raster.labels.cols;
   for (int r = 0; r < raster.labels.rows; ++r) {
     const int* row = raster.labels.ptr<int>(r);
-    for (int c = 0; c < raster.labels.cols; ++c) {
-      if (row[c] <= 0) continue;
-      const int k = row[c] - 1;
+    // By runs of one label: a run changes a box only at its two ends.
+    int c = 0;
+    while (c < cols) {
+      const int label = row[c];
+      const int first = c;
+      while (++c < cols && row[c] == label) {
+      }
+      if (label <= 0) continue;
+      const int k = label - 1;
       if (r0[k] < 0) {
-        r0[k] = r, c0[k] = c, c1[k] = c;
+        r0[k] = r, c0[k] = first, c1[k] = c - 1;
       } else {
-        c0[k] = std::min(c0[k], c), c1[k] = std::max(c1[k], c);
+        c0[k] = std::min(c0[k], first), c1[k] = std::max(c1[k], c - 1);
       }
       r1[k] = r;
     }

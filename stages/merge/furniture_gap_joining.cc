@@ -11,6 +11,7 @@
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/enclosed_pockets.h"
+#include "stages/geometry/region_boxes.h"
 #include "stages/geometry/ring_simplicity.h"
 #include "stages/geometry/wall_thickness.h"
 #include "stages/merge/room_joining.h"
@@ -65,8 +66,8 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
 void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px, uint8_t value,
                  cv::Mat* out, cv::Mat depth = cv::Mat()) {
   const int width = obstacle.cols, height = obstacle.rows;
-  cv::Mat labels, stats, centroids;
-  const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
+  cv::Mat labels, stats;
+  const int count = LabelRegionsWithBoxes(obstacle, 8, &labels, &stats);
   if (depth.empty()) depth = ObstacleDepth(obstacle);
   std::vector<float> deepest(count, 0);
   for (int r = 0; r < height; ++r) {

@@ -15,6 +15,7 @@
 #include "stages/common/voronoi_arrays.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/region_boxes.h"
 #include "stages/geometry/site_alpha_shape.h"
 #include "stages/prune/chain_graph.h"
 #include "stages/prune/chain_pruning.h"
@@ -182,12 +183,12 @@ FreeSpaceParts LabelFreeSpace(const CellGrid& grid) {
   cv::Mat free_cells(grid.height(), grid.width(), CV_8U);
   for (int r = 0; r < grid.height(); ++r) {
     uint8_t* row = free_cells.ptr<uint8_t>(r);
-    for (int c = 0; c < grid.width(); ++c) row[c] = grid.IsFree(c, r) ? 1 : 0;
+    const uint8_t* state = grid.CellRow(r);
+    for (int c = 0; c < grid.width(); ++c) row[c] = state[c] == proto::CELL_FREE ? 1 : 0;
   }
   FreeSpaceParts parts;
-  cv::Mat stats, centroids;
-  const int count =
-      cv::connectedComponentsWithStats(free_cells, parts.labels, stats, centroids, 4, CV_32S);
+  cv::Mat stats;
+  const int count = LabelRegionsWithBoxes(free_cells, 4, &parts.labels, &stats);
   for (int label = 1; label < count; ++label) {
     parts.cells.push_back(stats.at<int>(label, cv::CC_STAT_AREA));
   }

@@ -1,0 +1,47 @@
+#include "stages/geometry/region_boxes.h"
+
+#include <algorithm>
+#include <climits>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace areagraph {
+
+int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels, cv::Mat* stats) {
+  const int count = cv::connectedComponents(mask, *labels, connectivity, CV_32S);
+  const int width = labels->cols, height = labels->rows;
+  // Per label: leftmost and rightmost column, first and last row, cells.
+  std::vector<int> left(count, INT_MAX), right(count, INT_MIN), top(count, -1), bottom(count, 0);
+  std::vector<int> area(count, 0);
+  for (int r = 0; r < height; ++r) {
+    const int* row = labels->ptr<int>(r);
+    int c = 0;
+    while (c < width) {
+      const int label = row[c];
+      const int start = c;
+      while (++c < width && row[c] == label) {
+      }
+      left[label] = std::min(left[label], start);
+      right[label] = std::max(right[label], c - 1);
+      if (top[label] < 0) top[label] = r;
+      bottom[label] = r;
+      area[label] += c - start;
+    }
+  }
+  stats->create(count, cv::CC_STAT_MAX, CV_32S);
+  for (int label = 0; label < count; ++label) {
+    int* out = stats->ptr<int>(label);
+    if (area[label] == 0) {
+      std::fill(out, out + cv::CC_STAT_MAX, 0);
+      continue;
+    }
+    out[cv::CC_STAT_LEFT] = left[label];
+    out[cv::CC_STAT_TOP] = top[label];
+    out[cv::CC_STAT_WIDTH] = right[label] - left[label] + 1;
+    out[cv::CC_STAT_HEIGHT] = bottom[label] - top[label] + 1;
+    out[cv::CC_STAT_AREA] = area[label];
+  }
+  return count;
+}
+
+}  // namespace areagraph

@@ -1,0 +1,21 @@
+#pragma once
+
+#include <opencv2/core.hpp>
+
+namespace areagraph {
+
+// cv::connectedComponentsWithStats(mask, *labels, *stats, centroids,
+// connectivity, CV_32S) without the centroids: the same labels (CV_32S) and
+// the same CC_STAT_LEFT, TOP, WIDTH, HEIGHT and AREA columns (stats is
+// count x 5, CV_32S; a label without cells, which only the background can
+// be, gets zeros). Returns the number of labels, background included.
+//
+// Why not OpenCV's: its statistics op runs per cell, background included,
+// and sums the centroids in 64 bits; that was 2.5 times the labelling
+// itself (issue 14, docs/performance.md, 2026-12-02). Here the labels come
+// from cv::connectedComponents (the same algorithm, so the same numbering)
+// and one pass over the rows' runs of equal labels gives the boxes.
+// tests/stages/geometry/region_boxes_test.cc holds it to OpenCV's.
+int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels, cv::Mat* stats);
+
+}  // namespace areagraph
