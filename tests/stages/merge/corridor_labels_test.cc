@@ -72,7 +72,7 @@ TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   const cv::Mat islands = FurnitureIslandCells(
       WalledMap(
           {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}),
-      /*fill_pockets_m=*/0, /*against_walls=*/false);
+      /*fill_pockets_m=*/0, /*against_walls=*/false, /*max_elongation=*/0);
   EXPECT_EQ(islands.at<uint8_t>(25, 30), 1);
   EXPECT_EQ(islands.at<uint8_t>(21, 100), 0);
   EXPECT_EQ(islands.at<uint8_t>(60, 30), 0);
@@ -87,8 +87,8 @@ TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
   // of wall 5 m long against the outer wall.
   const proto::CleanedMap map = WalledMap(
       {{3, 90, 20, 10}, {20, 20, 32, 16}, {80, 20, 60, 3}, {80, 23, 10, 10}, {60, 5, 10, 100}});
-  const cv::Mat without = FurnitureIslandCells(map, 0, /*against_walls=*/false);
-  const cv::Mat with = FurnitureIslandCells(map, 0, /*against_walls=*/true);
+  const cv::Mat without = FurnitureIslandCells(map, 0, /*against_walls=*/false, 0);
+  const cv::Mat with = FurnitureIslandCells(map, 0, /*against_walls=*/true, 0);
   EXPECT_EQ(without.at<uint8_t>(95, 10), 0);
   EXPECT_EQ(with.at<uint8_t>(95, 10), 2);  // the cabinet, an island against a wall
   EXPECT_EQ(with.at<uint8_t>(3, 10), 0);   // the outer wall behind it
