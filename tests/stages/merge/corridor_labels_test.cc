@@ -81,6 +81,18 @@ TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   EXPECT_EQ(islands.at<uint8_t>(60, 60), 0);  // free space
 }
 
+TEST(FurnitureIslandsTest, WithAnElongationLimitAThickPieceOfWallIsNoIsland) {
+  // A piece of wall 2.4 x 0.4 m (6 times as long as wide; lab_d's is 2.5 x
+  // 0.3 m) and a desk 1.6 x 0.8 m.
+  const proto::CleanedMap map = WalledMap({{20, 20, 48, 8}, {20, 60, 32, 16}});
+  const cv::Mat any_shape = FurnitureIslandCells(map, 0, /*against_walls=*/false, 0);
+  const cv::Mat limited = FurnitureIslandCells(map, 0, /*against_walls=*/false, 5);
+  EXPECT_EQ(any_shape.at<uint8_t>(24, 40), 1);
+  EXPECT_EQ(limited.at<uint8_t>(24, 40), 0);
+  EXPECT_EQ(any_shape.at<uint8_t>(68, 30), 1);
+  EXPECT_EQ(limited.at<uint8_t>(68, 30), 1);
+}
+
 TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
   // The cabinet (1 x 0.5 m) against the outer wall, a desk, a piece of
   // wall with a 0.5 x 0.5 m cabinet at its end, and a 0.5 m thick piece
