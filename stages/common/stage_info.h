@@ -56,7 +56,7 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // corridor that the room disk split (an automatic W near the corridor's width) join where they
 // meet straight on without a narrowing (merge.join_split_corridors; issue 12, generated floors
 // against a fixed W = 1.25 m). One bump covers both (merged the same day).
-// merge 13: furniture islands are at most 3 times as long as wide, as the cut's are
+// merge 13: furniture islands are at most 5 times as long as wide
 // (merge.furniture_max_elongation; a thick piece of wall between two doors is no desk: areagraph/
 // lab_d, issue 12).
 inline constexpr StageInfo kMergeStage{"merge", 13};
