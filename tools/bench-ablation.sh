@@ -57,7 +57,9 @@ STEPS=(
   "+ merge.fold_corridor_pieces_below_m2 20|merge.fold_corridor_pieces_below_m2=20"
   "+ prune.keep_groups_above_m 20|prune.keep_groups_above_m=20"
   "+ merge.join_porous_borders_gap_m 0.5|merge.join_porous_borders_gap_m=0.5"
-  "+ merge.join_split_corridors (= defaults)|merge.join_split_corridors=true"
+  "+ merge.join_split_corridors|merge.join_split_corridors=true"
+  "+ merge.furniture_max_elongation 5|merge.furniture_max_elongation=5"
+  "+ clean.keep_wall_pieces (= defaults)|clean.keep_wall_pieces=true"
 )
 
 set_flags=()

@@ -2,6 +2,7 @@
 
 #include "proto/geometry.pb.h"
 #include "proto/pipeline_options.pb.h"
+#include "stages/clean/furniture_removal.h"
 
 namespace areagraph {
 
@@ -18,6 +19,10 @@ struct CleanParameters {
   double furniture_max_perimeter_px = 80;
   // Unknown islands of at most this many cells become free.
   double unknown_island_max_cells = 0;
+  // Furniture pieces' regions that are pieces of wall stay
+  // (clean.keep_wall_pieces).
+  bool keep_wall_pieces = false;
+  WallPieceSizes wall_pieces;
 };
 
 // Checks `options` (CheckCleanOptions), then what depends on the map: throws

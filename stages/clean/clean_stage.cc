@@ -29,7 +29,8 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
   const std::vector<int> outliers = RemoveOutlierCells(
       cells, width, height, parameters.outlier_neighbors, parameters.outlier_percent);
   const FurnitureRemoval furniture = RemoveFurniture(
-      cells, width, height, parameters.alpha_radius_px, parameters.furniture_max_perimeter_px);
+      cells, width, height, parameters.alpha_radius_px, parameters.furniture_max_perimeter_px,
+      parameters.keep_wall_pieces ? &parameters.wall_pieces : nullptr);
 
   proto::CleanedMap cleaned;
   cleaned.set_format_version(kCleanedMapFormatVersion);

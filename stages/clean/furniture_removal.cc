@@ -9,6 +9,7 @@
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/near_free_mask.h"
+#include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -99,7 +100,45 @@ proto::Polygon ConvexOutline(const std::vector<int>& cell_indices, int width) {
   return polygon;
 }
 
+// Whether past the end of `region` in `direction` (+1 or -1 along its axis),
+// on its centre line or a line one cell beside it, another region's cell
+// lies within `max_gap_px`.
+bool MeetsObstaclePastEnd(const ObstacleRegions& regions, int region, int direction,
+                          double max_gap_px) {
+  const RegionShape& shape = regions.shapes[region];
+  const Eigen::Vector2d along = direction * shape.axis;
+  const Eigen::Vector2d across(-along.y(), along.x());
+  for (const int offset : {0, -1, 1}) {
+    const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along + offset * across;
+    for (double t = 0; t <= max_gap_px; t += 1) {
+      const int label = regions.LabelAt(end + t * along);
+      if (label != 0 && label != region) return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
+
+std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int height,
+                                      const std::vector<int>& candidate_cells,
+                                      const WallPieceSizes& sizes) {
+  // The rectangles are fitted to the candidates' cells only.
+  const ObstacleRegions regions = FindObstacleRegions(cells, width, height, candidate_cells);
+  const double thinner_than =
+      std::max(sizes.thinner_than_px,
+               kWallPieceWallRatio * TypicalWallThickness(regions.depth, sizes.max_wall_px));
+  std::vector<uint8_t> wall(regions.shapes.size(), 0);
+  for (size_t region = 1; region < regions.shapes.size(); ++region) {
+    const RegionShape& shape = regions.shapes[region];
+    if (shape.on_border || shape.length == 0) continue;
+    wall[region] = shape.thickness < thinner_than && shape.length >= sizes.min_length_px &&
+                   shape.length >= kWallPieceMinElongation * shape.width &&
+                   MeetsObstaclePastEnd(regions, int(region), 1, sizes.max_gap_px) &&
+                   MeetsObstaclePastEnd(regions, int(region), -1, sizes.max_gap_px);
+  }
+  return wall;
+}
 
 double MaxFurnitureRegionCells(double alpha_radius_px, double max_perimeter_px) {
   if (alpha_radius_px < 1) return std::numeric_limits<double>::infinity();
@@ -108,7 +147,7 @@ double MaxFurnitureRegionCells(double alpha_radius_px, double max_perimeter_px) 
 }
 
 FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, double alpha_radius_px,
-                                 double max_perimeter_px) {
+                                 double max_perimeter_px, const WallPieceSizes* wall_pieces) {
   cv::Mat labels;
   const std::vector<uint8_t> outline = LabelObstacleRegions(
       cells, width, height, MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px), &labels);
@@ -148,12 +187,23 @@ FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, doub
 
   // Every cell of a furniture piece's regions becomes free. Regions that are
   // not outline entered the alpha shape in full, so their cells are points.
-  std::vector<std::vector<int>> piece_cells(piece_count);
+  std::vector<int> furniture_cells;
   for (const int index : point_cells) {
     if (outline[label[index]]) continue;
     const int piece = piece_of_component[component_of_region[label[index]]];
     if (is_outline[piece] || perimeter[piece] >= max_perimeter_px) continue;
-    piece_cells[piece].push_back(index);
+    furniture_cells.push_back(index);
+  }
+  // Pieces of wall stay (their labels are those of `labels`: the same
+  // labelling of the same cells).
+  std::vector<uint8_t> wall_piece;
+  if (wall_pieces != nullptr && !furniture_cells.empty()) {
+    wall_piece = WallPieceRegions(cells, width, height, furniture_cells, *wall_pieces);
+  }
+  std::vector<std::vector<int>> piece_cells(piece_count);
+  for (const int index : furniture_cells) {
+    if (!wall_piece.empty() && wall_piece[label[index]]) continue;
+    piece_cells[piece_of_component[component_of_region[label[index]]]].push_back(index);
   }
   for (const std::vector<int>& piece : piece_cells) {
     if (piece.empty()) continue;

@@ -113,6 +113,10 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
                      "square metres");
   RequireNotNegative(options.join_porous_borders_gap_m(), "merge.join_porous_borders_gap_m",
                      "metres");
+  const double elongation = options.furniture_max_elongation();
+  Require(elongation == 0 || (std::isfinite(elongation) && elongation >= 1),
+          "merge.furniture_max_elongation must be 0 (any shape) or at least 1, got " +
+              FormatNumber(elongation));
 }
 
 void CheckMatchOptions(const proto::MatchOptions& options) {

@@ -19,7 +19,9 @@ struct StageInfo {
 
 inline constexpr StageInfo kImportStage{"import", 1};
 // clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
-inline constexpr StageInfo kCleanStage{"clean", 3};
+// clean 4: furniture removal keeps pieces of wall standing between two doors
+// (clean.keep_wall_pieces; issue 12, areagraph/ lab_d_scan_furnitures and bormann/ lab_d_scan).
+inline constexpr StageInfo kCleanStage{"clean", 4};
 // voronoi 2: edges in face order.
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
@@ -54,7 +56,10 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // corridor that the room disk split (an automatic W near the corridor's width) join where they
 // meet straight on without a narrowing (merge.join_split_corridors; issue 12, generated floors
 // against a fixed W = 1.25 m). One bump covers both (merged the same day).
-inline constexpr StageInfo kMergeStage{"merge", 12};
+// merge 13: furniture islands are at most 5 times as long as wide
+// (merge.furniture_max_elongation; a thick piece of wall between two doors is no desk: areagraph/
+// lab_d, issue 12).
+inline constexpr StageInfo kMergeStage{"merge", 13};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).

@@ -7,81 +7,12 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/geometry/cell_states.h"
+#include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/obstacle_sites.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 namespace {
-
-// What decides whether an obstacle region is an island.
-struct RegionShape {
-  bool on_border = false;
-  // Twice the depth of the deepest cell (px).
-  float thickness = 0;
-  int64_t cells = 0;
-  // The smallest rotated rectangle around its site cells: centre, unit
-  // vector along its longer side, and its sides (px).
-  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
-  Eigen::Vector2d axis = Eigen::Vector2d::UnitX();
-  float length = 0;
-  float width = 0;
-};
-
-// The map's non-free cells, their 8-connected regions and their depth.
-struct ObstacleRegions {
-  int width = 0;
-  int height = 0;
-  cv::Mat labels;
-  cv::Mat depth;
-  std::vector<RegionShape> shapes;
-
-  bool NonFree(const Eigen::Vector2d& p) const {
-    const int c = static_cast<int>(std::floor(p.x())), r = static_cast<int>(std::floor(p.y()));
-    return c >= 0 && r >= 0 && c < width && r < height && labels.at<int>(r, c) != 0;
-  }
-  int LabelAt(const Eigen::Vector2d& p) const {
-    const int c = static_cast<int>(std::floor(p.x())), r = static_cast<int>(std::floor(p.y()));
-    return c >= 0 && r >= 0 && c < width && r < height ? labels.at<int>(r, c) : 0;
-  }
-};
-
-ObstacleRegions FindRegions(const std::string& cells, int width, int height,
-                            const std::vector<int>& site_cells) {
-  ObstacleRegions regions;
-  regions.width = width;
-  regions.height = height;
-  const cv::Mat obstacle = ObstacleMask(cells, width, height);
-  const int count = cv::connectedComponents(obstacle, regions.labels, 8, CV_32S);
-  regions.depth = ObstacleDepth(obstacle);
-  std::vector<RegionShape>& shapes = regions.shapes;
-  shapes.resize(count);
-  const int* label = regions.labels.ptr<int>();
-  const float* depth_of = regions.depth.ptr<float>();
-  for (int index = 0; index < width * height; ++index) {
-    RegionShape& shape = shapes[label[index]];
-    shape.thickness = std::max(shape.thickness, 2 * depth_of[index]);
-    ++shape.cells;
-    const int col = index % width, row = index / width;
-    shape.on_border |= col == 0 || row == 0 || col == width - 1 || row == height - 1;
-  }
-  std::vector<std::vector<cv::Point2f>> outline(count);
-  for (const int index : site_cells) {
-    outline[label[index]].emplace_back(index % width + 0.5f, index / width + 0.5f);
-  }
-  for (int region = 1; region < count; ++region) {
-    RegionShape& shape = shapes[region];
-    if (shape.on_border || outline[region].empty()) continue;
-    const cv::RotatedRect rect = cv::minAreaRect(outline[region]);
-    const double angle = rect.angle * M_PI / 180;
-    const Eigen::Vector2d along_width(std::cos(angle), std::sin(angle));
-    const bool wide = rect.size.width >= rect.size.height;
-    shape.centre = {rect.center.x, rect.center.y};
-    shape.axis = wide ? along_width : Eigen::Vector2d(-along_width.y(), along_width.x());
-    shape.length = std::max(rect.size.width, rect.size.height) + 1;
-    shape.width = std::min(rect.size.width, rect.size.height) + 1;
-  }
-  return regions;
-}
 
 // Whether, past one end of `region` along its axis (`direction` +1 or -1),
 // within `gap_px`, another obstacle continues the region's line end-on for
@@ -144,7 +75,7 @@ PointList StructureSites(const std::string& cells, int width, int height, double
   std::vector<uint8_t> island;
   ObstacleRegions regions;
   if (max_island_m > 0) {
-    regions = FindRegions(cells, width, height, site_cells);
+    regions = FindObstacleRegions(cells, width, height, site_cells);
     const double max_island_px = max_island_m / resolution_m;
     const double min_thickness = std::max(
         kMinIslandThicknessM / resolution_m,

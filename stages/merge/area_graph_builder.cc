@@ -116,11 +116,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     JoinRoomsWithoutDoors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   if (options.join_furniture_gaps()) {
-    JoinAreasAtFurnitureGaps(graph,
-                             FurnitureIslandCells(map, options.fill_furniture_outlines_m(),
-                                                  options.wall_furniture_islands()),
-                             grid.resolution_m(), options.keep_closed_doors(),
-                             options.join_corridor_clutter(), &plan);
+    JoinAreasAtFurnitureGaps(
+        graph,
+        FurnitureIslandCells(map, options.fill_furniture_outlines_m(),
+                             options.wall_furniture_islands(), options.furniture_max_elongation()),
+        grid.resolution_m(), options.keep_closed_doors(), options.join_corridor_clutter(), &plan);
   }
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   if (options.fold_corridor_pieces_below_m2() > 0) {

@@ -60,11 +60,13 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
 
 // Marks (`value` in `out`, where it is still 0) the cells of every 8-connected region of `obstacle`
 // that touches no image border, is at most `max_px` long, at least
-// `min_thickness_px` thick (twice its deepest cell's depth) and fills
-// kMinFurnitureSolidity of its smallest enclosing rectangle. `depth` is
-// ObstacleDepth(obstacle), when the caller has it already.
-void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px, uint8_t value,
-                 cv::Mat* out, cv::Mat depth = cv::Mat()) {
+// `min_thickness_px` thick (twice its deepest cell's depth), fills
+// kMinFurnitureSolidity of its smallest enclosing rectangle and, unless
+// `max_elongation` is 0, is at most that many times as long as the
+// rectangle is wide. `depth` is ObstacleDepth(obstacle), when the caller has
+// it already.
+void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px,
+                 double max_elongation, uint8_t value, cv::Mat* out, cv::Mat depth = cv::Mat()) {
   const int width = obstacle.cols, height = obstacle.rows;
   cv::Mat labels, stats;
   const int count = LabelRegionsWithBoxes(obstacle, 8, &labels, &stats);
@@ -95,6 +97,10 @@ void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px
     const cv::RotatedRect box = cv::minAreaRect(points[k]);
     const double box_cells = (box.size.width + 1) * (box.size.height + 1);
     island[k] = stats.at<int>(k, cv::CC_STAT_AREA) >= kMinFurnitureSolidity * box_cells;
+    // A piece of wall between two doors is long and narrow, a desk is not.
+    const double longer = std::max(box.size.width, box.size.height) + 1;
+    const double shorter = std::min(box.size.width, box.size.height) + 1;
+    if (max_elongation > 0 && longer > max_elongation * shorter) island[k] = 0;
   }
   for (int r = 0; r < height; ++r) {
     const int* row = labels.ptr<int>(r);
@@ -108,7 +114,7 @@ void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px
 }  // namespace
 
 cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
-                             bool against_walls) {
+                             bool against_walls, double max_elongation) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const double resolution_m = map.frame().resolution_m();
   // What cleaning removed is still no free space: a wall it broke stays one.
@@ -126,7 +132,7 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m
       kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
   const double max_px = kMaxFurnitureIslandM / resolution_m;
   cv::Mat out = cv::Mat::zeros(height, width, CV_8U);
-  MarkIslands(obstacle, min_thickness_px, max_px, 1, &out, std::move(depth));
+  MarkIslands(obstacle, min_thickness_px, max_px, max_elongation, 1, &out, std::move(depth));
   if (against_walls) {
     // Only what is at least as thick as an island is left of the obstacles:
     // walls thinner than that go, and what stood against them is on its own.
@@ -134,7 +140,7 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m
     const cv::Mat disk = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(diameter, diameter));
     cv::Mat thick;
     cv::morphologyEx(obstacle, thick, cv::MORPH_OPEN, disk);
-    MarkIslands(thick, min_thickness_px, max_px, 2, &out);
+    MarkIslands(thick, min_thickness_px, max_px, max_elongation, 2, &out);
   }
   return out;
 }

@@ -33,9 +33,12 @@ inline constexpr double kMinFurnitureSolidity = 0.75;
 // 2: the same tests on what is left of the obstacles once everything thinner
 // than an island is taken away (a morphological opening with a disk as wide
 // as the least island thickness), so that a bin or a cabinet touching a
-// corridor's wall is no door's jamb.
+// corridor's wall is no door's jamb. Islands are at most `max_elongation`
+// (merge.furniture_max_elongation) times as long as their smallest enclosing
+// rectangle is wide, 0 for any shape: a thick piece of wall between two
+// doors is no desk.
 cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
-                             bool against_walls);
+                             bool against_walls, double max_elongation);
 
 // The smaller of two areas at a gap is at most this big (m2, its edges'
 // polygons): a room cut off by a row of blocks with openings between them

@@ -56,7 +56,8 @@ std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOpti
     }));
     samples[kFurniture].push_back(ElapsedMs([&] {
       RemoveFurniture(cells, width, height, parameters.alpha_radius_px,
-                      parameters.furniture_max_perimeter_px);
+                      parameters.furniture_max_perimeter_px,
+                      parameters.keep_wall_pieces ? &parameters.wall_pieces : nullptr);
     }));
     proto::CleanedMap cleaned;
     samples[kClean].push_back(ElapsedMs([&] { cleaned = CleanGridMap(grid, options.clean()); }));

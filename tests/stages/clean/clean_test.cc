@@ -124,6 +124,51 @@ TEST(Clean, KeepsFurnitureWithinARobotWidthOfAWall) {
   EXPECT_EQ(narrow_cleaned.removed_furniture_cells_size(), 100);
 }
 
+// The room with a wall across it (rows 50-51) with two doors 1 m wide
+// (columns 30-49 and 80-99): the piece between them, 1.5 m long, stands free.
+TestGrid RoomWithTwoDoors() {
+  TestGrid room = Room();
+  room.Fill(10, 50, 29, 51, proto::CELL_OCCUPIED).Fill(50, 50, 79, 51, proto::CELL_OCCUPIED);
+  room.Fill(100, 50, 109, 51, proto::CELL_OCCUPIED);
+  return room;
+}
+
+TEST(Clean, KeepsAPieceOfWallBetweenTwoDoors) {
+  const TestGrid room = RoomWithTwoDoors();
+  const proto::CleanedMap cleaned = CleanGridMap(room.ToGridMap(), proto::CleanOptions());
+  EXPECT_EQ(cleaned.removed_furniture_cells_size(), 0);
+  EXPECT_EQ(At(cleaned, 65, 50), proto::CELL_OCCUPIED);
+  // The paper's step (b) takes it: its perimeter is a desk's.
+  proto::CleanOptions paper;
+  paper.set_keep_wall_pieces(false);
+  const proto::CleanedMap removed = CleanGridMap(room.ToGridMap(), paper);
+  EXPECT_EQ(removed.removed_furniture_cells_size(), 60);
+  EXPECT_EQ(At(removed, 65, 50), proto::CELL_FREE);
+}
+
+TEST(Clean, RemovesThinPiecesThatStandFreeOrAreShortAndThickOnes) {
+  // 1 m long, 2 m from either wall: no door beside it.
+  TestGrid free_standing = Room();
+  free_standing.Fill(50, 50, 69, 51, proto::CELL_OCCUPIED);
+  EXPECT_EQ(
+      CleanGridMap(free_standing.ToGridMap(), proto::CleanOptions()).removed_furniture_cells_size(),
+      40);
+  // 0.4 m long between two doors 0.6 m wide.
+  TestGrid short_piece = Room();
+  short_piece.Fill(10, 50, 43, 51, proto::CELL_OCCUPIED).Fill(56, 50, 63, 51, proto::CELL_OCCUPIED);
+  short_piece.Fill(76, 50, 109, 51, proto::CELL_OCCUPIED);
+  const proto::CleanedMap short_cleaned =
+      CleanGridMap(short_piece.ToGridMap(), proto::CleanOptions());
+  for (int col = 56; col <= 63; ++col) {
+    EXPECT_EQ(At(short_cleaned, col, 50), proto::CELL_FREE) << col;  // outlier or furniture
+  }
+  // A desk 1.2 x 0.5 m between the doors: thicker and shorter than a piece of wall.
+  TestGrid desk = RoomWithTwoDoors();
+  desk.Fill(50, 50, 79, 51, proto::CELL_FREE).Fill(53, 46, 76, 55, proto::CELL_OCCUPIED);
+  EXPECT_EQ(CleanGridMap(desk.ToGridMap(), proto::CleanOptions()).removed_furniture_cells_size(),
+            240);
+}
+
 TEST(Clean, RemovesSmallUnknownIslandsButNeverTheOutline) {
   TestGrid grid(100, 80);
   grid.Fill(0, 0, 99, 0, proto::CELL_OCCUPIED);     // short wall along the border

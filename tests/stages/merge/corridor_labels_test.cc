@@ -72,7 +72,7 @@ TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   const cv::Mat islands = FurnitureIslandCells(
       WalledMap(
           {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}),
-      /*fill_pockets_m=*/0, /*against_walls=*/false);
+      /*fill_pockets_m=*/0, /*against_walls=*/false, /*max_elongation=*/0);
   EXPECT_EQ(islands.at<uint8_t>(25, 30), 1);
   EXPECT_EQ(islands.at<uint8_t>(21, 100), 0);
   EXPECT_EQ(islands.at<uint8_t>(60, 30), 0);
@@ -81,14 +81,26 @@ TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   EXPECT_EQ(islands.at<uint8_t>(60, 60), 0);  // free space
 }
 
+TEST(FurnitureIslandsTest, WithAnElongationLimitAThickPieceOfWallIsNoIsland) {
+  // A piece of wall 2.4 x 0.4 m (6 times as long as wide; lab_d's is 2.5 x
+  // 0.3 m) and a desk 1.6 x 0.8 m.
+  const proto::CleanedMap map = WalledMap({{20, 20, 48, 8}, {20, 60, 32, 16}});
+  const cv::Mat any_shape = FurnitureIslandCells(map, 0, /*against_walls=*/false, 0);
+  const cv::Mat limited = FurnitureIslandCells(map, 0, /*against_walls=*/false, 5);
+  EXPECT_EQ(any_shape.at<uint8_t>(24, 40), 1);
+  EXPECT_EQ(limited.at<uint8_t>(24, 40), 0);
+  EXPECT_EQ(any_shape.at<uint8_t>(68, 30), 1);
+  EXPECT_EQ(limited.at<uint8_t>(68, 30), 1);
+}
+
 TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
   // The cabinet (1 x 0.5 m) against the outer wall, a desk, a piece of
   // wall with a 0.5 x 0.5 m cabinet at its end, and a 0.5 m thick piece
   // of wall 5 m long against the outer wall.
   const proto::CleanedMap map = WalledMap(
       {{3, 90, 20, 10}, {20, 20, 32, 16}, {80, 20, 60, 3}, {80, 23, 10, 10}, {60, 5, 10, 100}});
-  const cv::Mat without = FurnitureIslandCells(map, 0, /*against_walls=*/false);
-  const cv::Mat with = FurnitureIslandCells(map, 0, /*against_walls=*/true);
+  const cv::Mat without = FurnitureIslandCells(map, 0, /*against_walls=*/false, 0);
+  const cv::Mat with = FurnitureIslandCells(map, 0, /*against_walls=*/true, 0);
   EXPECT_EQ(without.at<uint8_t>(95, 10), 0);
   EXPECT_EQ(with.at<uint8_t>(95, 10), 2);  // the cabinet, an island against a wall
   EXPECT_EQ(with.at<uint8_t>(3, 10), 0);   // the outer wall behind it
