@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
@@ -13,28 +14,18 @@
 namespace areagraph {
 namespace {
 
-// Area, first and second moments of a set of rings (each counted with
-// positive orientation).
+// Area, first and second moments of a set of rings, summed over the rings'
+// cv::moments (which counts each ring with positive orientation).
 struct Moments {
   double a = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0;
 
   void AddRing(const google::protobuf::RepeatedPtrField<proto::Point2>& ring) {
-    const int n = ring.size();
-    Moments m;
-    for (int p = 0; p < n; ++p) {
-      const Eigen::Vector2d u = FromProtoPoint(ring[p]);
-      const Eigen::Vector2d w = FromProtoPoint(ring[(p + 1) % n]);
-      const double c = u.x() * w.y() - w.x() * u.y();
-      m.a += c / 2;
-      m.x += (u.x() + w.x()) * c / 6;
-      m.y += (u.y() + w.y()) * c / 6;
-      m.xx += (u.x() * u.x() + u.x() * w.x() + w.x() * w.x()) * c / 12;
-      m.yy += (u.y() * u.y() + u.y() * w.y() + w.y() * w.y()) * c / 12;
-      m.xy += (u.x() * w.y() + 2 * u.x() * u.y() + 2 * w.x() * w.y() + w.x() * u.y()) * c / 24;
-    }
-    const double sign = m.a < 0 ? -1 : 1;
-    a += sign * m.a, x += sign * m.x, y += sign * m.y;
-    xx += sign * m.xx, yy += sign * m.yy, xy += sign * m.xy;
+    std::vector<cv::Point2f> points;
+    points.reserve(ring.size());
+    for (const proto::Point2& p : ring) points.emplace_back(p.x(), p.y());
+    const cv::Moments m = cv::moments(points);
+    a += m.m00, x += m.m10, y += m.m01;
+    xx += m.m20, yy += m.m02, xy += m.m11;
   }
   Eigen::Vector2d Centroid() const { return Eigen::Vector2d(x / a, y / a); }
   // The unit direction of the major axis and the ratio of the major to the
