@@ -57,7 +57,10 @@ STEPS=(
   "+ merge.fold_corridor_pieces_below_m2 20|merge.fold_corridor_pieces_below_m2=20"
   "+ prune.keep_groups_above_m 20|prune.keep_groups_above_m=20"
   "+ merge.join_porous_borders_gap_m 0.5|merge.join_porous_borders_gap_m=0.5"
-  "+ merge.join_split_corridors (= defaults)|merge.join_split_corridors=true"
+  "+ merge.join_split_corridors|merge.join_split_corridors=true"
+  "+ merge.join_one_sided_narrowings|merge.join_one_sided_narrowings=true"
+  "+ merge.join_split_corridor_chains|merge.join_split_corridor_chains=true"
+  "+ merge.join_corridor_stems (= defaults)|merge.join_corridor_stems=true"
 )
 
 set_flags=()
