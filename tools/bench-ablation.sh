@@ -59,7 +59,10 @@ STEPS=(
   "+ merge.join_porous_borders_gap_m 0.5|merge.join_porous_borders_gap_m=0.5"
   "+ merge.join_split_corridors|merge.join_split_corridors=true"
   "+ merge.furniture_max_elongation 5|merge.furniture_max_elongation=5"
-  "+ clean.keep_wall_pieces (= defaults)|clean.keep_wall_pieces=true"
+  "+ clean.keep_wall_pieces|clean.keep_wall_pieces=true"
+  "+ merge.join_one_sided_narrowings|merge.join_one_sided_narrowings=true"
+  "+ merge.join_split_corridor_chains|merge.join_split_corridor_chains=true"
+  "+ merge.join_corridor_stems (= defaults)|merge.join_corridor_stems=true"
 )
 
 set_flags=()

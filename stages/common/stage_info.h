@@ -56,9 +56,13 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // corridor that the room disk split (an automatic W near the corridor's width) join where they
 // meet straight on without a narrowing (merge.join_split_corridors; issue 12, generated floors
 // against a fixed W = 1.25 m). One bump covers both (merged the same day).
-// merge 13: furniture islands are at most 5 times as long as wide
-// (merge.furniture_max_elongation; a thick piece of wall between two doors is no desk: areagraph/
-// lab_d, issue 12).
+// merge 13 (one bump for two branches merged the same day): furniture islands are at most 5 times
+// as long as wide (merge.furniture_max_elongation; a thick piece of wall between two doors is no
+// desk: areagraph/ lab_d, issue 12). also in merge 13: corridor pieces also join at a narrowing
+// with a flat wall on one side (merge.join_one_sided_narrowings), count as long and narrow as a
+// chain (merge.join_split_corridor_chains), and dead-end branches that do not narrow at their mouth
+// join their corridor (merge.join_corridor_stems); issue 12, generated tuning floors lost to a
+// fixed W = 1.25 m (floor_18, floor_6, floor_19).
 inline constexpr StageInfo kMergeStage{"merge", 13};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).

@@ -17,6 +17,7 @@
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/corridor_labels.h"
 #include "stages/merge/corridor_piece_folding.h"
+#include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/porous_border_joining.h"
 #include "stages/merge/room_joining.h"
@@ -133,7 +134,13 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
                         options.keep_closed_doors(), &plan);
   }
   if (options.join_split_corridors()) {
-    JoinSplitCorridors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
+    SplitCorridorParams params;
+    params.chains = options.join_split_corridor_chains();
+    JoinSplitCorridors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan, params,
+                       options.join_one_sided_narrowings() ? &grid : nullptr);
+  }
+  if (options.join_corridor_stems()) {
+    JoinCorridorStems(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =

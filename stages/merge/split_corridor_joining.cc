@@ -7,55 +7,14 @@
 
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/merge/area_moments.h"
 #include "stages/merge/corridor_labels.h"
+#include "stages/merge/one_sided_narrowing.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
-namespace {
-
-// Area, first and second moments of a set of rings (each counted with
-// positive orientation).
-struct Moments {
-  double a = 0, x = 0, y = 0, xx = 0, yy = 0, xy = 0;
-
-  void AddRing(const google::protobuf::RepeatedPtrField<proto::Point2>& ring) {
-    const int n = ring.size();
-    Moments m;
-    for (int p = 0; p < n; ++p) {
-      const Eigen::Vector2d u = FromProtoPoint(ring[p]);
-      const Eigen::Vector2d w = FromProtoPoint(ring[(p + 1) % n]);
-      const double c = u.x() * w.y() - w.x() * u.y();
-      m.a += c / 2;
-      m.x += (u.x() + w.x()) * c / 6;
-      m.y += (u.y() + w.y()) * c / 6;
-      m.xx += (u.x() * u.x() + u.x() * w.x() + w.x() * w.x()) * c / 12;
-      m.yy += (u.y() * u.y() + u.y() * w.y() + w.y() * w.y()) * c / 12;
-      m.xy += (u.x() * w.y() + 2 * u.x() * u.y() + 2 * w.x() * w.y() + w.x() * u.y()) * c / 24;
-    }
-    const double sign = m.a < 0 ? -1 : 1;
-    a += sign * m.a, x += sign * m.x, y += sign * m.y;
-    xx += sign * m.xx, yy += sign * m.yy, xy += sign * m.xy;
-  }
-  Eigen::Vector2d Centroid() const { return Eigen::Vector2d(x / a, y / a); }
-  // The unit direction of the major axis and the ratio of the major to the
-  // minor axis' variance (1 for a disk or a square).
-  std::pair<Eigen::Vector2d, double> Axis() const {
-    const Eigen::Vector2d c = Centroid();
-    const double sxx = xx / a - c.x() * c.x();
-    const double syy = yy / a - c.y() * c.y();
-    const double sxy = xy / a - c.x() * c.y();
-    const double mean = (sxx + syy) / 2;
-    const double spread = std::sqrt(std::max(0.0, (sxx - syy) * (sxx - syy) / 4 + sxy * sxy));
-    const double major = mean + spread, minor = mean - spread;
-    const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
-    return {Eigen::Vector2d(std::cos(angle), std::sin(angle)), minor > 0 ? major / minor : 1e9};
-  }
-};
-
-}  // namespace
-
 void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool keep_closed_doors,
-                        AreaPlan* plan, const SplitCorridorParams& params) {
+                        AreaPlan* plan, const SplitCorridorParams& params, const CellGrid* grid) {
   const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
   const double max_width_px = kMaxCorridorWidthM / resolution_m;
   const double cell_m2 = resolution_m * resolution_m;
@@ -67,12 +26,17 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
     std::vector<double> width(area_count);
     for (int k = 0; k < area_count; ++k) width[k] = MedianWidthPx(graph, plan->areas[k]);
     const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-    std::vector<Moments> moments(area_count);
+    std::vector<AreaMoments> moments(area_count);
     for (int e = 0; e < graph.edges_size(); ++e) {
       moments[plan->area_of_edge[e]].AddRing(graph.edges(e).polygon().outer().points());
     }
-    DisjointSets groups(area_count);
-    bool changed = false;
+    // Pairs that pass every test; `long_enough`: the pair alone covers the
+    // elongation's squares.
+    struct Pair {
+      int i, j;
+      bool long_enough;
+    };
+    std::vector<Pair> pairs;
     for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
       if (closed[vertex]) continue;
       const std::map<int, VertexOpening>& at = openings[vertex];
@@ -83,10 +47,18 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
           const double wide = std::max(width[i], width[j]);
           if (narrow <= 0 || wide > max_width_px || wide > params.width_ratio * narrow) continue;
           if (narrow < params.min_width_m / resolution_m) continue;
-          const double opening = std::min(a->second.width_px, b->second.width_px);
-          if (opening < params.opening_share * wide) continue;
+          const VertexOpening& narrowest =
+              a->second.width_px <= b->second.width_px ? a->second : b->second;
+          const double opening = narrowest.width_px;
+          if (opening < params.opening_share * wide) {
+            if (grid == nullptr || opening < params.one_sided_opening_share * wide ||
+                !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
+              continue;
+            }
+          }
           const double union_px = (size_m2[i] + size_m2[j]) / cell_m2;
-          if (union_px < params.elongation * wide * wide) continue;
+          const bool long_enough = union_px >= params.elongation * wide * wide;
+          if (!long_enough && !params.chains) continue;
           if (moments[i].a <= 0 || moments[j].a <= 0) continue;
           const Eigen::Vector2d vertex_at = FromProtoPoint(graph.vertices(vertex).position());
           const Eigen::Vector2d ci = moments[i].Centroid(), cj = moments[j].Centroid();
@@ -99,9 +71,32 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
             if (ratio >= params.axis_ratio && std::abs(axis.dot(line)) < axis_cos) aligned = false;
           }
           if (!aligned) continue;
-          if (groups.Union(i, j)) changed = true;
+          pairs.push_back({i, j, long_enough});
         }
       }
+    }
+    // With `chains`, a pair too short alone joins when the chain of pairs it
+    // belongs to covers the elongation's squares of the chain's widest piece.
+    std::vector<bool> chain_long(area_count, false);
+    DisjointSets chains(area_count);
+    if (params.chains) {
+      for (const Pair& pair : pairs) chains.Union(pair.i, pair.j);
+      std::vector<double> chain_px(area_count, 0), chain_wide(area_count, 0);
+      for (int k = 0; k < area_count; ++k) {
+        const int root = chains.Find(k);
+        chain_px[root] += size_m2[k] / cell_m2;
+        chain_wide[root] = std::max(chain_wide[root], width[k]);
+      }
+      for (int k = 0; k < area_count; ++k) {
+        const int root = chains.Find(k);
+        chain_long[k] = chain_px[root] >= params.elongation * chain_wide[root] * chain_wide[root];
+      }
+    }
+    DisjointSets groups(area_count);
+    bool changed = false;
+    for (const Pair& pair : pairs) {
+      if (!pair.long_enough && !chain_long[pair.i]) continue;
+      if (groups.Union(pair.i, pair.j)) changed = true;
     }
     if (!changed) break;
     std::vector<int> root(area_count);

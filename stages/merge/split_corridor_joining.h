@@ -1,6 +1,7 @@
 #pragma once
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/cell_grid.h"
 #include "stages/merge/area_assignment.h"
 
 namespace areagraph {
@@ -35,6 +36,15 @@ struct SplitCorridorParams {
   // cluttered cubicles 0.9 m wide with a gap in their partition are no
   // corridor (areagraph/ lab_a 0.721 -> 0.673 without it).
   double min_width_m = 1.0;
+  // With a grid given (merge.join_one_sided_narrowings): an opening
+  // narrower than opening_share joins anyway when it is one-sided (a flat
+  // wall on one side, stages/merge/one_sided_narrowing.h) and at least this
+  // share of the wider piece's median free width.
+  double one_sided_opening_share = 0.5;
+  // merge.join_split_corridor_chains: a pair shorter than `elongation`
+  // squares joins when the chain of pairs that pass the other tests covers
+  // `elongation` squares of its widest piece's median free width.
+  bool chains = false;
 };
 
 // Joins pairs of areas (rooms or room-less pieces) that meet at a graph
@@ -47,7 +57,10 @@ struct SplitCorridorParams {
 // corridor or a doorway's stub forks off (JoinCorridorPieces joins only two
 // uniform pieces). A joined area keeps the kind and room of its first piece;
 // LabelCorridorsByShape relabels it afterwards.
+// `grid`, when given, lets one-sided narrowings join (see
+// one_sided_opening_share).
 void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool keep_closed_doors,
-                        AreaPlan* plan, const SplitCorridorParams& params = {});
+                        AreaPlan* plan, const SplitCorridorParams& params = {},
+                        const CellGrid* grid = nullptr);
 
 }  // namespace areagraph

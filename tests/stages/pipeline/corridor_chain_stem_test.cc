@@ -1,0 +1,169 @@
+// Merge 13's corridor rules through the whole pipeline, each on a drawn
+// corridor that a fixed W splits: a narrowing with a flat wall on one side
+// (merge.join_one_sided_narrowings), a corridor that W cuts into three short
+// pieces (merge.join_split_corridor_chains), and a dead-end branch narrower
+// than W (merge.join_corridor_stems). Each joins with its rule on and stays
+// apart with it off; doors stay doors.
+#include <gtest/gtest.h>
+
+#include "tests/support/area_test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::RectM;
+using floorplan::WallDirection;
+
+// A corridor 2.2 m between wall centres (2.05 m free) at y = 4.5 m under a
+// row of offices 4 m deep with 0.9 m doors (drawn after the corridor, so that
+// its wall does not cover their doors).
+constexpr double kCorridorY = 4.5;
+constexpr double kCorridorHeight = 2.2;
+constexpr double kCorridorMiddleY = kCorridorY + kCorridorHeight / 2;
+
+void DrawOffices(floorplan::FloorPlan& plan, double length_m, double office_m) {
+  for (double x = 0.5; x + office_m <= 0.5 + length_m + 1e-9; x += office_m) {
+    floorplan::DrawRoom(plan, {x, 0.5, office_m, 4});
+    floorplan::DrawDoor(plan, x + office_m / 2, kCorridorY, 0.9, WallDirection::kHorizontal);
+  }
+}
+
+proto::PipelineOptions FixedW(double w) {
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_room_width_auto(false);
+  options.mutable_cut()->set_room_width_m(w);
+  return options;
+}
+
+proto::AreaGraph Areas(const floorplan::FloorPlan& plan, const proto::PipelineOptions& options) {
+  const proto::CleanedMap map = CleanDrawnMap(plan.image());
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map, 0.9);
+  return stages.areas;
+}
+
+// A corridor 20 m long whose top wall has a cabinet 0.6 m deep and 1 m long
+// against it at x = 11-12 m (beside an office's door): 1.45 m stay free
+// beside it, against the flat bottom wall. W = 1.7 m fills the corridor but
+// not the gap.
+floorplan::FloorPlan CabinetCorridor() {
+  floorplan::FloorPlan plan(21, 7.5);
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
+  DrawOffices(plan, 20, 5);
+  floorplan::DrawFurniture(plan, {11, kCorridorY, 1, 0.675});
+  return plan;
+}
+
+TEST(OneSidedNarrowingTest, WithoutTheRuleTheCabinetSplitsTheCorridor) {
+  proto::PipelineOptions options = FixedW(1.7);
+  options.mutable_merge()->set_join_one_sided_narrowings(false);
+  const proto::AreaGraph areas = Areas(CabinetCorridor(), options);
+  const int left = AreaAt(areas, 4, kCorridorMiddleY), right = AreaAt(areas, 17, kCorridorMiddleY);
+  ASSERT_NE(left, -1);
+  ASSERT_NE(right, -1);
+  EXPECT_NE(left, right);
+}
+
+TEST(OneSidedNarrowingTest, ACabinetAgainstOneWallDoesNotSplitTheCorridor) {
+  const proto::AreaGraph areas = Areas(CabinetCorridor(), FixedW(1.7));
+  const int left = AreaAt(areas, 4, kCorridorMiddleY), right = AreaAt(areas, 17, kCorridorMiddleY);
+  ASSERT_NE(left, -1);
+  EXPECT_EQ(left, right);
+  const int office = AreaAt(areas, 8, 2.5);
+  ASSERT_NE(office, -1);
+  EXPECT_NE(office, left);
+}
+
+TEST(OneSidedNarrowingTest, ADoorAcrossTheCorridorStillDividesIt) {
+  // A wall across the corridor at x = 10.5 m with a 1.45 m door in its
+  // middle: the same width as beside the cabinet, but with two jambs.
+  floorplan::FloorPlan plan(21, 7.5);
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 10, kCorridorHeight});
+  floorplan::DrawRoom(plan, {10.5, kCorridorY, 10, kCorridorHeight});
+  DrawOffices(plan, 20, 5);
+  floorplan::DrawDoor(plan, 10.5, kCorridorMiddleY, 1.45, WallDirection::kVertical);
+  const proto::AreaGraph areas = Areas(plan, FixedW(1.7));
+  const int left = AreaAt(areas, 4, kCorridorMiddleY), right = AreaAt(areas, 17, kCorridorMiddleY);
+  ASSERT_NE(left, -1);
+  ASSERT_NE(right, -1);
+  EXPECT_NE(left, right);
+}
+
+// A corridor 13.5 m long narrowed to 1.7 m by pairs of short wall stubs at
+// x = 5 and 9.5 m: W = 1.9 m cuts it into three pieces of about 9 m2, no two
+// of them together 6 squares of the corridor's width (25 m2), all three so.
+floorplan::FloorPlan ThreePieceCorridor() {
+  floorplan::FloorPlan plan(15, 7.5);
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 13.5, kCorridorHeight});
+  DrawOffices(plan, 13.5, 4.5);
+  for (const double x : {5.0, 9.5}) {
+    floorplan::DrawFurniture(plan, {x - 0.15, kCorridorY, 0.3, 0.25});
+    floorplan::DrawFurniture(plan, {x - 0.15, kCorridorY + kCorridorHeight - 0.25, 0.3, 0.25});
+  }
+  return plan;
+}
+
+TEST(SplitCorridorChainTest, WithoutChainsThePiecesAreTooShortToJoin) {
+  proto::PipelineOptions options = FixedW(1.9);
+  options.mutable_merge()->set_join_split_corridor_chains(false);
+  const proto::AreaGraph areas = Areas(ThreePieceCorridor(), options);
+  const int left = AreaAt(areas, 2.5, kCorridorMiddleY);
+  const int right = AreaAt(areas, 12, kCorridorMiddleY);
+  ASSERT_NE(left, -1);
+  ASSERT_NE(right, -1);
+  EXPECT_NE(left, right);
+}
+
+TEST(SplitCorridorChainTest, ThreeShortPiecesOfOneCorridorJoin) {
+  const proto::AreaGraph areas = Areas(ThreePieceCorridor(), FixedW(1.9));
+  const int left = AreaAt(areas, 2.5, kCorridorMiddleY);
+  ASSERT_NE(left, -1);
+  EXPECT_EQ(AreaAt(areas, 7.25, kCorridorMiddleY), left);
+  EXPECT_EQ(AreaAt(areas, 12, kCorridorMiddleY), left);
+  const int office = AreaAt(areas, 7, 2.5);
+  ASSERT_NE(office, -1);
+  EXPECT_NE(office, left);
+}
+
+// A corridor 20 m long with a dead-end branch 1.05 m wide (1.2 m between
+// wall centres) and 5 m long down from its middle, open across its whole width, and a closet 1.2 m
+// wide and 4.5 m deep behind a 0.7 m door further along. W = 1.5 m: the branch and the closet get
+// no room.
+floorplan::FloorPlan CorridorWithStem() {
+  floorplan::FloorPlan plan(21, 12.5);
+  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
+  DrawOffices(plan, 20, 5);
+  const double below = kCorridorY + kCorridorHeight;
+  floorplan::DrawRoom(plan, {6.4, below, 1.2, 5});
+  floorplan::DrawDoor(plan, 7, below, 1.05, WallDirection::kHorizontal);  // no narrowing
+  floorplan::DrawRoom(plan, {15, below, 1.2, 4.5});
+  floorplan::DrawDoor(plan, 15.6, below, 0.7, WallDirection::kHorizontal);
+  return plan;
+}
+
+constexpr double kStemX = 7.0, kStemY = 9.5, kClosetX = 15.6, kClosetY = 9.0;
+
+TEST(CorridorStemTest, WithoutTheRuleTheBranchStaysApart) {
+  proto::PipelineOptions options = FixedW(1.5);
+  options.mutable_merge()->set_join_corridor_stems(false);
+  const proto::AreaGraph areas = Areas(CorridorWithStem(), options);
+  const int corridor = AreaAt(areas, 3, kCorridorMiddleY), stem = AreaAt(areas, kStemX, kStemY);
+  ASSERT_NE(corridor, -1);
+  ASSERT_NE(stem, -1);
+  EXPECT_NE(corridor, stem);
+}
+
+TEST(CorridorStemTest, ADeadEndBranchIsPartOfItsCorridor) {
+  const proto::AreaGraph areas = Areas(CorridorWithStem(), FixedW(1.5));
+  const int corridor = AreaAt(areas, 3, kCorridorMiddleY);
+  ASSERT_NE(corridor, -1);
+  EXPECT_EQ(AreaAt(areas, kStemX, kStemY), corridor);
+  // The closet behind its narrower door stays apart.
+  const int closet = AreaAt(areas, kClosetX, kClosetY);
+  ASSERT_NE(closet, -1);
+  EXPECT_NE(closet, corridor);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
