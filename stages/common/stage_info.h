@@ -58,7 +58,7 @@ inline constexpr StageInfo kCutStage{"cut", 8};
 // against a fixed W = 1.25 m). One bump covers both (merged the same day).
 // merge 13 (one bump for two branches merged the same day): furniture islands are at most 5 times
 // as long as wide (merge.furniture_max_elongation; a thick piece of wall between two doors is no
-// desk: areagraph/ lab_d, issue 12). also in merge 13: corridor pieces also join at a narrowing
+// desk: areagraph/ lab_d, issue 12). Also in merge 13: corridor pieces join at a narrowing
 // with a flat wall on one side (merge.join_one_sided_narrowings), count as long and narrow as a
 // chain (merge.join_split_corridor_chains), and dead-end branches that do not narrow at their mouth
 // join their corridor (merge.join_corridor_stems); issue 12, generated tuning floors lost to a
