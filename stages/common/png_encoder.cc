@@ -7,28 +7,10 @@
 #include <vector>
 
 #include "stages/common/png_palette.h"
+#include "stages/common/png_write_structs.h"
 
 namespace areagraph {
 namespace {
-
-// Appends libpng's output to the string.
-void AppendBytes(png_structp png, png_bytep data, png_size_t count) {
-  static_cast<std::string*>(png_get_io_ptr(png))
-      ->append(reinterpret_cast<const char*>(data), count);
-}
-
-void NoFlush(png_structp) {}
-
-// Errors (out of memory, mostly) end the encoding at Encode's setjmp.
-[[noreturn]] void LongjmpOnError(png_structp png, png_const_charp) { png_longjmp(png, 1); }
-void IgnoreWarning(png_structp, png_const_charp) {}
-
-// libpng's write structures, freed on every path.
-struct WriteStructs {
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  ~WriteStructs() { png_destroy_write_struct(&png, info != nullptr ? &info : nullptr); }
-};
 
 // Declares the picture's palette (as RGB) and its bits per index; libpng
 // packs the one-byte indices into them.
@@ -46,13 +28,13 @@ void SetPalette(png_structp png, png_infop info, const cv::Mat& image,
 // The encoding proper; libpng reports errors by longjmp to here, so nothing
 // with a destructor lives in this frame (the caller owns `rows`, `palette`
 // and `png_out`). A picture with a palette is written as its indices.
-bool Encode(WriteStructs& structs, const cv::Mat& image, int compression, int filters,
+bool Encode(PngWriteStructs& structs, const cv::Mat& image, int compression, int filters,
             const std::optional<PalettePicture>& palette, std::vector<png_bytep>* rows,
             std::string* png_out) {
   png_structp png = structs.png;
   png_infop info = structs.info;
   if (setjmp(png_jmpbuf(png))) return false;
-  png_set_write_fn(png, png_out, AppendBytes, NoFlush);
+  png_set_write_fn(png, png_out, PngAppendBytes, PngNoFlush);
   const int channels = image.channels();
   const int colour_type = channels == 1   ? PNG_COLOR_TYPE_GRAY
                           : channels == 3 ? PNG_COLOR_TYPE_RGB
@@ -89,9 +71,9 @@ namespace {
 // EncodePngWithLibpng's body: `image` with its palette form, if it has one.
 bool EncodeWithPalette(const cv::Mat& image, const std::optional<PalettePicture>& palette,
                        int compression, int filters, std::string* png) {
-  WriteStructs structs;
+  PngWriteStructs structs;
   structs.png =
-      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, LongjmpOnError, IgnoreWarning);
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, PngLongjmpOnError, PngIgnoreWarning);
   if (structs.png == nullptr) return false;
   structs.info = png_create_info_struct(structs.png);
   if (structs.info == nullptr) return false;

@@ -12,24 +12,11 @@
 #include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/png_palette.h"
+#include "stages/common/png_write_structs.h"
 #include "tools/render/canvas.h"
 
 namespace areagraph {
 namespace {
-
-void AppendBytes(png_structp png, png_bytep data, png_size_t count) {
-  static_cast<std::string*>(png_get_io_ptr(png))
-      ->append(reinterpret_cast<const char*>(data), count);
-}
-void NoFlush(png_structp) {}
-[[noreturn]] void LongjmpOnError(png_structp png, png_const_charp) { png_longjmp(png, 1); }
-void IgnoreWarning(png_structp, png_const_charp) {}
-
-struct WriteStructs {
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  ~WriteStructs() { png_destroy_write_struct(&png, info != nullptr ? &info : nullptr); }
-};
 
 // The picture's rows, packed as PNG stores them: `depth` bits per palette
 // index, the first pixel in the highest bits of a byte.
@@ -41,12 +28,12 @@ struct PackedRows {
 
 // libpng reports errors by longjmp to here: nothing with a destructor lives
 // in this frame.
-bool Encode(WriteStructs& structs, const std::vector<png_color>& palette, int width_px,
+bool Encode(PngWriteStructs& structs, const std::vector<png_color>& palette, int width_px,
             PackedRows& packed, std::string* out) {
   png_structp png = structs.png;
   png_infop info = structs.info;
   if (setjmp(png_jmpbuf(png))) return false;
-  png_set_write_fn(png, out, AppendBytes, NoFlush);
+  png_set_write_fn(png, out, PngAppendBytes, PngNoFlush);
   png_set_IHDR(png, info, static_cast<png_uint_32>(width_px),
                static_cast<png_uint_32>(packed.rows.size()), packed.depth, PNG_COLOR_TYPE_PALETTE,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
@@ -146,9 +133,9 @@ std::string EncodeMapPng(const std::string& cells, int width, int height, int sc
   packed.rows.resize(height_px);
   for (int y = 0; y < height_px; ++y) packed.rows[y] = packed.distinct[source(y, height)].data();
 
-  WriteStructs structs;
+  PngWriteStructs structs;
   structs.png =
-      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, LongjmpOnError, IgnoreWarning);
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, PngLongjmpOnError, PngIgnoreWarning);
   if (structs.png != nullptr) structs.info = png_create_info_struct(structs.png);
   std::string png;
   if (structs.info == nullptr || !Encode(structs, palette, width_px, packed, &png)) {
