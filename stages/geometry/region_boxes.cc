@@ -7,20 +7,20 @@
 
 namespace areagraph {
 
-int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels, cv::Mat* stats) {
-  const int count = cv::connectedComponents(mask, *labels, connectivity, CV_32S);
-  const int width = labels->cols, height = labels->rows;
+cv::Mat LabelBoxes(const cv::Mat& labels, int count) {
+  const int width = labels.cols, height = labels.rows;
   // Per label: leftmost and rightmost column, first and last row, cells.
   std::vector<int> left(count, INT_MAX), right(count, INT_MIN), top(count, -1), bottom(count, 0);
   std::vector<int> area(count, 0);
   for (int r = 0; r < height; ++r) {
-    const int* row = labels->ptr<int>(r);
+    const int* row = labels.ptr<int>(r);
     int c = 0;
     while (c < width) {
       const int label = row[c];
       const int start = c;
       while (++c < width && row[c] == label) {
       }
+      if (label < 0 || label >= count) continue;
       left[label] = std::min(left[label], start);
       right[label] = std::max(right[label], c - 1);
       if (top[label] < 0) top[label] = r;
@@ -28,9 +28,9 @@ int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels
       area[label] += c - start;
     }
   }
-  stats->create(count, cv::CC_STAT_MAX, CV_32S);
+  cv::Mat stats(count, cv::CC_STAT_MAX, CV_32S);
   for (int label = 0; label < count; ++label) {
-    int* out = stats->ptr<int>(label);
+    int* out = stats.ptr<int>(label);
     if (area[label] == 0) {
       std::fill(out, out + cv::CC_STAT_MAX, 0);
       continue;
@@ -41,6 +41,12 @@ int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels
     out[cv::CC_STAT_HEIGHT] = bottom[label] - top[label] + 1;
     out[cv::CC_STAT_AREA] = area[label];
   }
+  return stats;
+}
+
+int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels, cv::Mat* stats) {
+  const int count = cv::connectedComponents(mask, *labels, connectivity, CV_32S);
+  *stats = LabelBoxes(*labels, count);
   return count;
 }
 

@@ -18,4 +18,9 @@ namespace areagraph {
 // tests/stages/geometry/region_boxes_test.cc holds it to OpenCV's.
 int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels, cv::Mat* stats);
 
+// The boxes and cell counts of the labels 0 to count - 1 of `labels` (CV_32S;
+// other values are skipped), in the layout of LabelRegionsWithBoxes' stats:
+// one pass over the rows' runs of equal labels.
+cv::Mat LabelBoxes(const cv::Mat& labels, int count);
+
 }  // namespace areagraph

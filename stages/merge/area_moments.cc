@@ -28,4 +28,12 @@ std::pair<Eigen::Vector2d, double> AreaMoments::Axis() const {
   return {Eigen::Vector2d(std::cos(angle), std::sin(angle)), minor > 0 ? major / minor : 1e9};
 }
 
+std::vector<AreaMoments> MomentsOfAreas(const proto::CutGraph& graph, const AreaPlan& plan) {
+  std::vector<AreaMoments> moments(plan.areas.size());
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    moments[plan.area_of_edge[e]].AddRing(graph.edges(e).polygon().outer().points());
+  }
+  return moments;
+}
+
 }  // namespace areagraph

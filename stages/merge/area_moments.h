@@ -4,8 +4,11 @@
 
 #include <Eigen/Core>
 #include <utility>
+#include <vector>
 
+#include "proto/artifacts.pb.h"
 #include "proto/geometry.pb.h"
+#include "stages/merge/area_assignment.h"
 
 namespace areagraph {
 
@@ -20,5 +23,8 @@ struct AreaMoments {
   // minor axis' variance (1 for a disk or a square).
   std::pair<Eigen::Vector2d, double> Axis() const;
 };
+
+// Per area of `plan`: the moments of its edges' outer rings.
+std::vector<AreaMoments> MomentsOfAreas(const proto::CutGraph& graph, const AreaPlan& plan);
 
 }  // namespace areagraph

@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "stages/geometry/polygon_raster.h"
+#include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
 namespace {
@@ -254,32 +255,16 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 }
 
 std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
-  const size_t count = raster.cell_count.size();
-  // Per area: the first and last row, the leftmost and rightmost column.
-  std::vector<int> r0(count, -1), r1(count, -1), c0(count, 0), c1(count, 0);
-  const int cols = raster.labels.cols;
-  for (int r = 0; r < raster.labels.rows; ++r) {
-    const int* row = raster.labels.ptr<int>(r);
-    // By runs of one label: a run changes a box only at its two ends.
-    int c = 0;
-    while (c < cols) {
-      const int label = row[c];
-      const int first = c;
-      while (++c < cols && row[c] == label) {
-      }
-      if (label <= 0) continue;
-      const int k = label - 1;
-      if (r0[k] < 0) {
-        r0[k] = r, c0[k] = first, c1[k] = c - 1;
-      } else {
-        c0[k] = std::min(c0[k], first), c1[k] = std::max(c1[k], c - 1);
-      }
-      r1[k] = r;
-    }
-  }
+  const int count = static_cast<int>(raster.cell_count.size());
+  // Label k + 1 is area k; 0 and below are no area.
+  const cv::Mat stats = LabelBoxes(raster.labels, count + 1);
   std::vector<cv::Rect> box(count);
-  for (size_t k = 0; k < count; ++k) {
-    if (r0[k] >= 0) box[k] = cv::Rect(c0[k], r0[k], c1[k] - c0[k] + 1, r1[k] - r0[k] + 1);
+  for (int k = 0; k < count; ++k) {
+    const int* s = stats.ptr<int>(k + 1);
+    if (s[cv::CC_STAT_AREA] > 0) {
+      box[k] = cv::Rect(s[cv::CC_STAT_LEFT], s[cv::CC_STAT_TOP], s[cv::CC_STAT_WIDTH],
+                        s[cv::CC_STAT_HEIGHT]);
+    }
   }
   return box;
 }

@@ -20,10 +20,7 @@ void JoinCorridorStems(const proto::CutGraph& graph, double resolution_m, bool k
   const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
   std::vector<double> width(area_count);
   for (int k = 0; k < area_count; ++k) width[k] = MedianWidthPx(graph, plan->areas[k]);
-  std::vector<AreaMoments> moments(area_count);
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    moments[plan->area_of_edge[e]].AddRing(graph.edges(e).polygon().outer().points());
-  }
+  const std::vector<AreaMoments> moments = MomentsOfAreas(graph, *plan);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
   // Per area: the one area it meets at open vertices (-1: none, -2: more
   // than one) and its narrowest opening there.

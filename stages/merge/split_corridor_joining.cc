@@ -26,10 +26,7 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
     std::vector<double> width(area_count);
     for (int k = 0; k < area_count; ++k) width[k] = MedianWidthPx(graph, plan->areas[k]);
     const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-    std::vector<AreaMoments> moments(area_count);
-    for (int e = 0; e < graph.edges_size(); ++e) {
-      moments[plan->area_of_edge[e]].AddRing(graph.edges(e).polygon().outer().points());
-    }
+    const std::vector<AreaMoments> moments = MomentsOfAreas(graph, *plan);
     // Pairs that pass every test; `long_enough`: the pair alone covers the
     // elongation's squares.
     struct Pair {

@@ -84,5 +84,22 @@ TEST(RegionBoxes, AMaskWithoutBackground) {
   EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_AREA), 600);
 }
 
+// Labels outside 0 to count - 1 (ag-merge's raster marks cells of no area
+// with -1) count for no box.
+TEST(RegionBoxes, LabelBoxesSkipsLabelsOutsideTheCount) {
+  cv::Mat labels(4, 6, CV_32S, cv::Scalar(-1));
+  labels(cv::Rect(1, 1, 3, 2)).setTo(1);
+  labels.at<int>(3, 5) = 7;
+  const cv::Mat stats = LabelBoxes(labels, 3);
+  ASSERT_EQ(stats.rows, 3);
+  EXPECT_EQ(stats.at<int>(0, cv::CC_STAT_AREA), 0);
+  EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_LEFT), 1);
+  EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_TOP), 1);
+  EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_WIDTH), 3);
+  EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_HEIGHT), 2);
+  EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_AREA), 6);
+  EXPECT_EQ(stats.at<int>(2, cv::CC_STAT_AREA), 0);
+}
+
 }  // namespace
 }  // namespace areagraph
