@@ -8,12 +8,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
+#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "tests/support/test_support.h"
 
 namespace areagraph {
 namespace {
@@ -221,6 +226,104 @@ TEST(ProcessPoolTest, TicksWhileWorkersRun) {
   const PoolLog log = RunPool(1, 1, ReportPid);
   ExpectEndings(log, 1);
   EXPECT_GT(log.ticks, 0);
+}
+
+// Each worker's end hook, as lines of the file `log`: "end", or "last" and
+// whether the workers that wrote before it were all gone by then.
+void AppendWorkerEnd(const std::string& log, bool last) {
+  std::string line = last ? "last" : "end";
+  if (last) {
+    std::ifstream earlier(log);
+    std::string gone = " others gone";
+    for (std::string other; std::getline(earlier, other);) {
+      const pid_t pid = std::stoi(other.substr(other.rfind(' ') + 1));
+      if (kill(pid, 0) == 0 || errno != ESRCH) gone = " others alive";
+    }
+    line += gone;
+  }
+  std::ofstream(log, std::ios::app) << line << " " << getpid() << "\n";
+}
+
+// The hook's lines without their pids.
+std::vector<std::string> WorkerEnds(const std::string& log) {
+  std::vector<std::string> ends;
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) ends.push_back(line.substr(0, line.rfind(' ')));
+  return ends;
+}
+
+PoolLog RunPoolWithEndHook(int jobs, int tasks, ProcessPool::Work work, const std::string& log) {
+  PoolLog pool_log;
+  ProcessPool pool(
+      jobs, std::move(work),
+      [&](int task, const std::string& message) { pool_log.calls[task].push_back(message); },
+      [&](int task, const std::string& crash) { pool_log.calls[task].push_back("end:" + crash); },
+      nullptr, [&](bool last) { AppendWorkerEnd(log, last); });
+  pool.Run(tasks);
+  return pool_log;
+}
+
+TEST(ProcessPoolTest, EveryWorkerEndsOnceAndOneLastAfterTheOthersExited) {
+  testing::TempDir dir;
+  const std::string log = dir.File("ends");
+  const PoolLog pool_log = RunPoolWithEndHook(
+      3, 12,
+      [](int task, EventWriter& events) {
+        ReportPid(task, events);
+        usleep(static_cast<useconds_t>(task % 4) * 3000);
+      },
+      log);
+  ExpectEndings(pool_log, 12);
+  EXPECT_EQ(WorkerEnds(log), (std::vector<std::string>{"end", "end", "last others gone"}));
+}
+
+TEST(ProcessPoolTest, OneWorkerEndsAsTheLast) {
+  testing::TempDir dir;
+  const std::string log = dir.File("ends");
+  ExpectEndings(RunPoolWithEndHook(1, 3, ReportPid, log), 3);
+  EXPECT_EQ(WorkerEnds(log), std::vector<std::string>{"last others gone"});
+}
+
+TEST(ProcessPoolTest, NoWorkerIsLastWhenTheLastTaskCrashesIt) {
+  testing::TempDir dir;
+  const std::string log = dir.File("ends");
+  const PoolLog pool_log = RunPoolWithEndHook(
+      2, 2,
+      [&](int task, EventWriter& events) {
+        ReportPid(task, events);
+        if (task == 0) return;
+        // Crashes only once the other worker has ended.
+        for (int wait = 0; wait < 2000 && WorkerEnds(log).empty(); ++wait) usleep(5000);
+        Segfault();
+      },
+      log);
+  ExpectEndings(pool_log, 2, {{1, "the worker process died of signal 11 (Segmentation fault)"}});
+  EXPECT_EQ(WorkerEnds(log), std::vector<std::string>{"end"});
+}
+
+TEST(ProcessPoolTest, WorkerThatCrashedEarlierLeavesTheLastToItsReplacement) {
+  testing::TempDir dir;
+  const std::string log = dir.File("ends");
+  const PoolLog pool_log = RunPoolWithEndHook(
+      1, 4,
+      [](int task, EventWriter& events) {
+        ReportPid(task, events);
+        if (task == 1) Segfault();
+      },
+      log);
+  ExpectEndings(pool_log, 4, {{1, "the worker process died of signal 11 (Segmentation fault)"}});
+  EXPECT_EQ(WorkerEnds(log), std::vector<std::string>{"last others gone"});
+}
+
+TEST(ProcessPoolTest, WhatTheEndHookThrowsIsDropped) {
+  PoolLog log;
+  ProcessPool pool(
+      2, ReportPid,
+      [&](int task, const std::string& message) { log.calls[task].push_back(message); },
+      [&](int task, const std::string& crash) { log.calls[task].push_back("end:" + crash); },
+      nullptr, [](bool) { throw std::runtime_error("cannot fold"); });
+  pool.Run(5);
+  ExpectEndings(log, 5);
 }
 
 TEST(ProcessPoolTest, WorkersDieWithTheParent) {
