@@ -30,13 +30,14 @@ struct PoolLog {
   int ticks = 0;
 };
 
-PoolLog RunPool(int jobs, int tasks, ProcessPool::Work work) {
+PoolLog RunPool(int jobs, int tasks, ProcessPool::Work work,
+                ProcessPool::OnWorkerEnd on_worker_end = nullptr) {
   PoolLog log;
   ProcessPool pool(
       jobs, std::move(work),
       [&](int task, const std::string& message) { log.calls[task].push_back(message); },
       [&](int task, const std::string& crash) { log.calls[task].push_back("end:" + crash); },
-      [&] { ++log.ticks; });
+      [&] { ++log.ticks; }, std::move(on_worker_end));
   pool.Run(tasks);
   return log;
 }
@@ -252,78 +253,56 @@ std::vector<std::string> WorkerEnds(const std::string& log) {
   return ends;
 }
 
-PoolLog RunPoolWithEndHook(int jobs, int tasks, ProcessPool::Work work, const std::string& log) {
-  PoolLog pool_log;
-  ProcessPool pool(
-      jobs, std::move(work),
-      [&](int task, const std::string& message) { pool_log.calls[task].push_back(message); },
-      [&](int task, const std::string& crash) { pool_log.calls[task].push_back("end:" + crash); },
-      nullptr, [&](bool last) { AppendWorkerEnd(log, last); });
-  pool.Run(tasks);
-  return pool_log;
+PoolLog RunPoolWithEndHook(const std::string& log, int jobs, int tasks, ProcessPool::Work work) {
+  return RunPool(jobs, tasks, std::move(work), [&](bool last) { AppendWorkerEnd(log, last); });
 }
 
-TEST(ProcessPoolTest, EveryWorkerEndsOnceAndOneLastAfterTheOthersExited) {
-  testing::TempDir dir;
-  const std::string log = dir.File("ends");
-  const PoolLog pool_log = RunPoolWithEndHook(
-      3, 12,
-      [](int task, EventWriter& events) {
-        ReportPid(task, events);
-        usleep(static_cast<useconds_t>(task % 4) * 3000);
-      },
-      log);
+const char kSegfaulted[] = "the worker process died of signal 11 (Segmentation fault)";
+
+// Each worker's end hook writes to a file (AppendWorkerEnd).
+class ProcessPoolEndTest : public ::testing::Test {
+ protected:
+  testing::TempDir dir_;
+  const std::string log_ = dir_.File("ends");
+};
+
+TEST_F(ProcessPoolEndTest, EveryWorkerEndsOnceAndOneLastAfterTheOthersExited) {
+  const PoolLog pool_log = RunPoolWithEndHook(log_, 3, 12, [](int task, EventWriter& events) {
+    ReportPid(task, events);
+    usleep(static_cast<useconds_t>(task % 4) * 3000);
+  });
   ExpectEndings(pool_log, 12);
-  EXPECT_EQ(WorkerEnds(log), (std::vector<std::string>{"end", "end", "last others gone"}));
+  EXPECT_EQ(WorkerEnds(log_), (std::vector<std::string>{"end", "end", "last others gone"}));
 }
 
-TEST(ProcessPoolTest, OneWorkerEndsAsTheLast) {
-  testing::TempDir dir;
-  const std::string log = dir.File("ends");
-  ExpectEndings(RunPoolWithEndHook(1, 3, ReportPid, log), 3);
-  EXPECT_EQ(WorkerEnds(log), std::vector<std::string>{"last others gone"});
+TEST_F(ProcessPoolEndTest, OneWorkerEndsAsTheLast) {
+  ExpectEndings(RunPoolWithEndHook(log_, 1, 3, ReportPid), 3);
+  EXPECT_EQ(WorkerEnds(log_), std::vector<std::string>{"last others gone"});
 }
 
-TEST(ProcessPoolTest, NoWorkerIsLastWhenTheLastTaskCrashesIt) {
-  testing::TempDir dir;
-  const std::string log = dir.File("ends");
-  const PoolLog pool_log = RunPoolWithEndHook(
-      2, 2,
-      [&](int task, EventWriter& events) {
-        ReportPid(task, events);
-        if (task == 0) return;
-        // Crashes only once the other worker has ended.
-        for (int wait = 0; wait < 2000 && WorkerEnds(log).empty(); ++wait) usleep(5000);
-        Segfault();
-      },
-      log);
-  ExpectEndings(pool_log, 2, {{1, "the worker process died of signal 11 (Segmentation fault)"}});
-  EXPECT_EQ(WorkerEnds(log), std::vector<std::string>{"end"});
+TEST_F(ProcessPoolEndTest, NoWorkerIsLastWhenTheLastTaskCrashesIt) {
+  const PoolLog pool_log = RunPoolWithEndHook(log_, 2, 2, [this](int task, EventWriter& events) {
+    ReportPid(task, events);
+    if (task == 0) return;
+    // Crashes only once the other worker has ended.
+    for (int wait = 0; wait < 2000 && WorkerEnds(log_).empty(); ++wait) usleep(5000);
+    Segfault();
+  });
+  ExpectEndings(pool_log, 2, {{1, kSegfaulted}});
+  EXPECT_EQ(WorkerEnds(log_), std::vector<std::string>{"end"});
 }
 
-TEST(ProcessPoolTest, WorkerThatCrashedEarlierLeavesTheLastToItsReplacement) {
-  testing::TempDir dir;
-  const std::string log = dir.File("ends");
-  const PoolLog pool_log = RunPoolWithEndHook(
-      1, 4,
-      [](int task, EventWriter& events) {
-        ReportPid(task, events);
-        if (task == 1) Segfault();
-      },
-      log);
-  ExpectEndings(pool_log, 4, {{1, "the worker process died of signal 11 (Segmentation fault)"}});
-  EXPECT_EQ(WorkerEnds(log), std::vector<std::string>{"last others gone"});
+TEST_F(ProcessPoolEndTest, WorkerThatCrashedEarlierLeavesTheLastToItsReplacement) {
+  const PoolLog pool_log = RunPoolWithEndHook(log_, 1, 4, [](int task, EventWriter& events) {
+    ReportPid(task, events);
+    if (task == 1) Segfault();
+  });
+  ExpectEndings(pool_log, 4, {{1, kSegfaulted}});
+  EXPECT_EQ(WorkerEnds(log_), std::vector<std::string>{"last others gone"});
 }
 
 TEST(ProcessPoolTest, WhatTheEndHookThrowsIsDropped) {
-  PoolLog log;
-  ProcessPool pool(
-      2, ReportPid,
-      [&](int task, const std::string& message) { log.calls[task].push_back(message); },
-      [&](int task, const std::string& crash) { log.calls[task].push_back("end:" + crash); },
-      nullptr, [](bool) { throw std::runtime_error("cannot fold"); });
-  pool.Run(5);
-  ExpectEndings(log, 5);
+  ExpectEndings(RunPool(2, 5, ReportPid, [](bool) { throw std::runtime_error("cannot fold"); }), 5);
 }
 
 TEST(ProcessPoolTest, WorkersDieWithTheParent) {
