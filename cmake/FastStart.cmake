@@ -18,8 +18,9 @@
 #   relocates its 0.5 MB of vtables and constant tables at every start, one
 #   copy-on-write page fault per page. The cost: the executable itself is not
 #   placed at a random address (its libraries, heap and stack still are).
-# OpenCV's TBB backend, LAPACK and BLAS stay shared but are loaded on first
-# use (common/lazy_libraries.cc); libstdc++ and glibc stay shared.
+# OpenCV's TBB backend, LAPACK, BLAS and LCM stay shared but are loaded on
+# first use (common/lazy_libraries.cc); yaml-cpp is static too; libstdc++ and
+# glibc stay shared.
 #
 # Everything else (the image-codecs module, tests, tools that link
 # libopencv_imgcodecs) keeps the shared libraries: libopencv_imgcodecs.so
@@ -95,12 +96,17 @@ if(AG_FAST_START)
   # start (docs/performance.md, issue 14, tenth pass). lazy_libraries.sh
   # writes an entry point for each of their functions that the OpenCV
   # archives call (x86-64 only; elsewhere they are linked as before).
+  # LCM too, with an entry point for each of its functions (--all): our own
+  # code calls it, and ag-run only when it publishes; with glib and pcre2
+  # behind it, it was 3 of the 9 libraries ag-run loaded at every start
+  # (docs/performance.md, eleventh pass). Debian ships no liblcm.a.
+  find_library(AG_LCM_LIBRARY NAMES liblcm.so.1 lcm REQUIRED)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
     set(entries ${CMAKE_BINARY_DIR}/lazy_library_entries.cc)
     execute_process(
       COMMAND sh ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh ${entries} ${CMAKE_NM}
         ${AG_STATIC_OPENCV_CORE} ${AG_STATIC_OPENCV_IMGPROC}
-        -- ${AG_TBB_LIBRARY} ${AG_LAPACK_LIBRARY} ${AG_BLAS_LIBRARY}
+        -- ${AG_TBB_LIBRARY} ${AG_LAPACK_LIBRARY} ${AG_BLAS_LIBRARY} --all ${AG_LCM_LIBRARY}
       RESULT_VARIABLE status)
     if(status)
       message(FATAL_ERROR "AG_FAST_START: cmake/lazy_libraries.sh failed")
@@ -110,9 +116,13 @@ if(AG_FAST_START)
     add_library(ag_lazy_libraries STATIC ${CMAKE_SOURCE_DIR}/common/lazy_libraries.cc ${entries})
     target_link_libraries(ag_lazy_libraries PRIVATE ${CMAKE_DL_LIBS})
     set(AG_OPENCV_RUNTIME ag_lazy_libraries)
+    set(AG_LCM_RUNTIME ag_lazy_libraries)
   else()
     set(AG_OPENCV_RUNTIME "${AG_TBB_LIBRARY}" "${AG_LAPACK_LIBRARY}" "${AG_BLAS_LIBRARY}")
+    set(AG_LCM_RUNTIME PkgConfig::LCM)
   endif()
+  # yaml-cpp (ag-import's map_server YAML) from libyaml-cpp-dev's archive.
+  ag_static_archive(AG_STATIC_YAML_CPP yaml-cpp)
 endif()
 
 # Static OpenCV is one item for both modules, imgproc before core (the
@@ -132,6 +142,9 @@ ag_dependency(ag_sqlite SQLite::SQLite3 "${AG_STATIC_SQLITE3}" ${CMAKE_DL_LIBS} 
 ag_dependency(ag_crypto PkgConfig::NETTLE "${AG_STATIC_NETTLE}")
 ag_dependency(ag_zstd zstd::libzstd_shared "${AG_STATIC_ZSTD}")
 ag_dependency(ag_png PNG::PNG "${AG_STATIC_PNG16}" "${AG_STATIC_Z}" m)
+ag_dependency(ag_yaml_cpp yaml-cpp "${AG_STATIC_YAML_CPP}")
+# LCM's C API, loaded on first use (above); glib's headers come with it.
+ag_dependency(ag_lcm PkgConfig::LCM "${AG_LCM_RUNTIME}" ${CMAKE_DL_LIBS})
 
 # libopencv_imgcodecs.so loads the shared OpenCV core: not in a fast-start
 # executable (see above); the link fails naming this rule.

@@ -1,11 +1,15 @@
 #!/bin/sh
-# lazy_libraries.sh OUT NM ARCHIVE... -- LIBRARY...  (NM: binutils' nm; readelf beside it)
+# lazy_libraries.sh OUT NM ARCHIVE... -- LIBRARY... [--all LIBRARY...]
+# (NM: binutils' nm; readelf beside it)
 # Writes OUT, a C++ file of x86-64 assembly for common/lazy_libraries.cc (see
 # cmake/FastStart.cmake): one entry point for every function that a static
-# ARCHIVE calls and a shared LIBRARY defines. An entry point jumps through its
-# slot; the slot first leads to ag_lazy_resolve, which loads the library,
-# points the slot at the real function and jumps there. Exits 1, naming the
-# symbol, when an archive uses a library's variable (only functions can wait).
+# ARCHIVE calls and a shared LIBRARY defines, and for every function that a
+# LIBRARY after --all defines (one that the program's own code calls, e.g.
+# LCM). An entry point jumps through its slot; the slot first leads to
+# ag_lazy_resolve, which loads the library, points the slot at the real
+# function and jumps there. Exits 1, naming the symbol, when an archive uses a
+# library's variable (only functions can wait); an --all library's variables
+# get no entry, so a program that uses one fails to link.
 set -eu
 out=$1 nm=$2
 shift 2
@@ -22,14 +26,28 @@ trap 'rm -rf "$tmp"' EXIT
 : > "$tmp/symbols"
 : > "$tmp/libraries"
 index=0
+all=no
 for library in "$@"; do
+  if [ "$library" = "--all" ]; then
+    all=yes
+    continue
+  fi
   "$nm" -D --defined-only -P "$library" | awk '{ sub(/@.*/, "", $1); print $1, $2 }' |
     sort -u -k1,1 > "$tmp/defined"
-  awk '{ print $1 }' "$tmp/defined" | comm -12 - "$tmp/used" | comm -23 - "$tmp/own" |
-    join - "$tmp/defined" > "$tmp/taken"
+  if [ "$all" = yes ]; then
+    awk '$2 == "T" || $2 == "W" || $2 == "i"' "$tmp/defined" > "$tmp/taken"
+  else
+    awk '{ print $1 }' "$tmp/defined" | comm -12 - "$tmp/used" | comm -23 - "$tmp/own" |
+      join - "$tmp/defined" > "$tmp/taken"
+  fi
   bad=$(awk '$2 != "T" && $2 != "W" && $2 != "i" { print $1; exit }' "$tmp/taken")
   if [ -n "$bad" ]; then
     echo "lazy_libraries.sh: $bad of $library is not a function" >&2
+    exit 1
+  fi
+  twice=$(awk '{ print $1 }' "$tmp/symbols" | sort | join - "$tmp/taken" | head -n 1)
+  if [ -n "$twice" ]; then
+    echo "lazy_libraries.sh: $twice of $library is defined by an earlier library too" >&2
     exit 1
   fi
   awk -v lib="$index" '{ print $1, lib }' "$tmp/taken" >> "$tmp/symbols"

@@ -2,7 +2,8 @@
 // (cmake/FastStart.cmake). OpenCV's static core calls TBB (cv::parallel_for_)
 // and LAPACK and BLAS (cv::solve, cv::gemm); loading them at every start was
 // 2.5-3 ms of CPU, while ag-render, ag-inspect and many stage runs never call
-// them. cmake/lazy_libraries.sh writes an entry point for each such function
+// them. LCM (with glib) is needed by ag-run only when it publishes.
+// cmake/lazy_libraries.sh writes an entry point for each such function
 // (the generated assembly); the first call of one lands here, loads its
 // library with dlopen, points the entry's slot at the real function and goes
 // on to it, so later calls cost one indirect jump.

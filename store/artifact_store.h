@@ -229,6 +229,12 @@ enum class StoreMode { kReadWrite, kReadOnly };
 std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path,
                                                  StoreMode mode = StoreMode::kReadWrite);
 
+// Whether the store file at `path` has a write-ahead log beside it that may
+// hold commits not yet folded into the file: a fold empties the log and the
+// last close removes it. Looks at the file only, without opening the store
+// (which would replay the whole log first); false for ":memory:".
+bool HasWriteAheadLog(const std::string& path);
+
 // The schema version this build writes and the newest it reads. 2 added the
 // failures table, 3 the artifacts' summary line, 4 the versions table (each
 // map's history of Area Graphs), 5 zstd-compressed payloads (a codec per

@@ -5,6 +5,7 @@
 #include <sqlite3.h>
 
 #include <cstdio>
+#include <filesystem>
 
 #include "common/error.h"
 #include "common/text.h"
@@ -102,6 +103,13 @@ void SqliteArtifactStore::CheckMergeSourcePayloads(const std::string& path, int 
                    ") has a corrupt payload (" + find.ColumnText(3, "problem") +
                    "); nothing was merged from it (ag-store verify --store " + path +
                    " lists the problems)");
+}
+
+bool HasWriteAheadLog(const std::string& path) {
+  if (path == kMemoryStorePath) return false;
+  std::error_code missing;
+  const uintmax_t bytes = std::filesystem::file_size(path + "-wal", missing);
+  return !missing && bytes > 0;
 }
 
 bool SqliteArtifactStore::FoldWriteAheadLog() {

@@ -57,7 +57,7 @@ int RunCollection(const RunFlags& flags) {
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork(). Its log
-  // stays for the workers: the fold at the end syncs the file once.
+  // stays for the workers: the last of them folds it, syncing the file once.
   OpenArtifactStore(settings.store_path)->LeaveWriteAheadLogOnClose();
 
   ProgressDisplay progress(static_cast<int>(tasks.size()), isatty(STDERR_FILENO) == 1);
@@ -86,14 +86,19 @@ int RunCollection(const RunFlags& flags) {
       [&](int task, const std::string& crash) {
         if (!crash.empty()) report.MapCrashed(task, crash);
       },
-      [&] { progress.Tick(); });
+      [&] { progress.Tick(); },
+      [&](bool last) {
+        // Workers end without closing their stores; the last one closes its
+        // own, which folds everyone's log into the file.
+        if (last && worker) worker->CloseStore();
+      });
   pool.Run(static_cast<int>(tasks.size()));
   progress.Finish();
 
   const proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
-  {
-    // Workers end without closing their stores; closing this one folds
-    // their log into the file.
+  if (!report.UnrecordedFailures().empty() || HasWriteAheadLog(settings.store_path)) {
+    // A crashed worker's map to record, or a log no worker folded (the last
+    // task crashed, or someone else had the store open): closing folds it.
     const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(settings.store_path);
     RecordLeftoverFailures(*store, report);
   }

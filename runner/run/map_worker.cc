@@ -10,6 +10,11 @@ namespace areagraph {
 MapWorker::MapWorker(RunSettings settings, GraphPublisher publish)
     : settings_(std::move(settings)), publish_(std::move(publish)) {}
 
+void MapWorker::CloseStore() {
+  failures_.reset();
+  store_.reset();
+}
+
 MapOutcome MapWorker::Run(const MapTask& task, const PipelineObserver& observer) {
   if (!store_) {
     try {

@@ -29,6 +29,10 @@ class MapWorker {
  public:
   MapWorker(RunSettings settings, GraphPublisher publish);
   MapOutcome Run(const MapTask& task, const PipelineObserver& observer);
+  // Closes the store connection, which folds the write-ahead log into the
+  // file: the last worker's job (ProcessPool's OnWorkerEnd), while the log's
+  // index is still in its memory.
+  void CloseStore();
 
  private:
   RunSettings settings_;

@@ -20,9 +20,14 @@ constexpr char kTaskDoneFrame = 'D';   // the task ended normally
 constexpr char kTaskThrewFrame = 'X';  // Work threw; the payload is what()
 constexpr size_t kFrameHeader = 5;
 
+// Task numbers that end a worker: the plain end, and the end of the worker
+// that ends last (OnWorkerEnd's `last`).
+constexpr int kEnd = -1;
+constexpr int kEndLast = -2;
+
 struct ProcessPool::Worker {
   pid_t pid = -1;
-  int task_fd = -1;   // parent writes task numbers
+  int task_fd = -1;   // parent writes task numbers; closed once told to end
   int event_fd = -1;  // parent reads event lines
   int task = -1;      // the task in progress, or -1 when idle
   std::string buffer;
@@ -74,17 +79,26 @@ void EventWriter::WriteFrame(char kind, const std::string& payload) {
 }
 
 ProcessPool::ProcessPool(int jobs, Work work, OnEvent on_event, OnTaskEnd on_task_end,
-                         std::function<void()> on_tick)
+                         std::function<void()> on_tick, OnWorkerEnd on_worker_end)
     : jobs_(jobs),
       work_(std::move(work)),
       on_event_(std::move(on_event)),
       on_task_end_(std::move(on_task_end)),
-      on_tick_(std::move(on_tick)) {}
+      on_tick_(std::move(on_tick)),
+      on_worker_end_(std::move(on_worker_end)) {}
 
 void ProcessPool::WorkerLoop(int task_fd, int event_fd) {
   EventWriter events(event_fd);
   int task = 0;
-  while (ReadAll(task_fd, reinterpret_cast<char*>(&task), sizeof(task)) && task >= 0) {
+  while (ReadAll(task_fd, reinterpret_cast<char*>(&task), sizeof(task))) {
+    if (task < 0) {
+      try {
+        if (on_worker_end_) on_worker_end_(task == kEndLast);
+      } catch (...) {
+        // No task to report it on; the caller checks what the hook did.
+      }
+      break;
+    }
     try {
       work_(task, events);
       events.WriteFrame(kTaskDoneFrame, "");
@@ -130,16 +144,50 @@ void ProcessPool::StartWorker(Worker& worker, const std::vector<Worker>& workers
   worker.buffer.clear();
 }
 
+namespace {
+
+// A failed write means the worker died; its closed event pipe reports that.
+void SendTask(int fd, int task) {
+  WriteAll(fd, reinterpret_cast<const char*>(&task), sizeof(task));
+}
+
+// `end` is kEnd or kEndLast; the worker then gets nothing more.
+void SendEnd(int& task_fd, int end) {
+  SendTask(task_fd, end);
+  close(task_fd);
+  task_fd = -1;
+}
+
+}  // namespace
+
 void ProcessPool::Assign(Worker& worker) {
-  int task = -1;
-  if (next_task_ < task_count_) task = next_task_++;
-  worker.task = task;
-  // A failed write means the worker died; its closed event pipe reports that.
-  WriteAll(worker.task_fd, reinterpret_cast<const char*>(&task), sizeof(task));
-  if (task < 0) {
-    close(worker.task_fd);
-    worker.task_fd = -1;
+  worker.task = -1;  // idle when no task is left: EndIdleWorkers ends it
+  if (next_task_ >= task_count_) return;
+  worker.task = next_task_++;
+  SendTask(worker.task_fd, worker.task);
+}
+
+void ProcessPool::EndIdleWorkers(std::vector<Worker>& workers) {
+  if (next_task_ < task_count_) return;
+  int alive = 0;
+  bool busy = false;
+  for (const Worker& worker : workers) {
+    if (worker.pid < 0) continue;
+    ++alive;
+    busy = busy || worker.task >= 0;
   }
+  // With no task running, one idle worker waits until it is the only one
+  // left and then ends as the last; every other idle worker ends now.
+  Worker* last = nullptr;
+  for (Worker& worker : workers) {
+    if (worker.pid < 0 || worker.task >= 0 || worker.task_fd < 0) continue;
+    if (!busy && last == nullptr) {
+      last = &worker;
+      continue;
+    }
+    SendEnd(worker.task_fd, kEnd);
+  }
+  if (last != nullptr && alive == 1) SendEnd(last->task_fd, kEndLast);
 }
 
 bool ProcessPool::ReadEvents(Worker& worker) {
@@ -209,6 +257,7 @@ void ProcessPool::Run(int task_count) {
         Assign(worker);
       }
     }
+    EndIdleWorkers(workers);
   }
 }
 

@@ -36,9 +36,15 @@ class ProcessPool {
   // Runs in the parent when `task` has ended: `crash` is empty when the
   // worker finished it, else what killed the worker or what Work threw.
   using OnTaskEnd = std::function<void(int task, const std::string& crash)>;
+  // Runs in a worker when no task is left for it, before it exits. `last`
+  // is true in the one worker that finished the last task, and only once
+  // every other worker has exited (none does when that task crashed its
+  // worker): work that all workers' results must be in, done once, by a
+  // process that is still warm. What it throws is dropped.
+  using OnWorkerEnd = std::function<void(bool last)>;
 
   ProcessPool(int jobs, Work work, OnEvent on_event, OnTaskEnd on_task_end,
-              std::function<void()> on_tick = nullptr);
+              std::function<void()> on_tick = nullptr, OnWorkerEnd on_worker_end = nullptr);
 
   // Runs every task; returns when all have ended and all workers are gone.
   // Throws Error when a worker cannot be forked at all.
@@ -49,6 +55,8 @@ class ProcessPool {
   void StartWorker(Worker& worker, const std::vector<Worker>& workers);
   [[noreturn]] void WorkerLoop(int task_fd, int event_fd);
   void Assign(Worker& worker);
+  // Tells the workers that have no task left to end (see OnWorkerEnd).
+  void EndIdleWorkers(std::vector<Worker>& workers);
   bool ReadEvents(Worker& worker);
   void Reap(Worker& worker);
 
@@ -57,6 +65,7 @@ class ProcessPool {
   OnEvent on_event_;
   OnTaskEnd on_task_end_;
   std::function<void()> on_tick_;
+  OnWorkerEnd on_worker_end_;
   int next_task_ = 0;
   int task_count_ = 0;
 };

@@ -8,6 +8,7 @@
 
 #include "store/artifact_store.h"
 #include "tests/runner/run/runner_test_support.h"
+#include "tests/support/raw_sqlite.h"
 
 namespace areagraph::testing {
 namespace {
@@ -51,6 +52,25 @@ TEST_F(AgRunTest, SecondRunIsAllCacheHits) {
   const CommandResult text = RunTool("ag-run", Args({}));
   EXPECT_EQ(text.exit_code, 0);
   EXPECT_NE(text.out.find("every stage was a hit"), std::string::npos) << text.out;
+}
+
+// The last worker folds the write-ahead log as it closes its store
+// (ProcessPool's OnWorkerEnd): the file alone then holds every head, and
+// neither the log nor SQLite's shared-memory index is left beside it.
+TEST_F(AgRunTest, RunLeavesEverythingInTheStoreFile) {
+  for (const std::string jobs : {"1", "2", "3"}) {
+    const std::string store = dir_.File("jobs" + jobs + ".db");
+    for (const char* run : {"cold", "warm"}) {
+      const CommandResult result = RunTool("ag-run", {"--store", store, "--jobs", jobs, maps_});
+      ASSERT_EQ(result.exit_code, 0) << result.err;
+      EXPECT_FALSE(HasWriteAheadLog(store)) << jobs << " jobs, " << run;
+      EXPECT_FALSE(std::filesystem::exists(store + "-wal")) << jobs << " jobs, " << run;
+      EXPECT_FALSE(std::filesystem::exists(store + "-shm")) << jobs << " jobs, " << run;
+      const std::vector<std::string> heads = HeadDigests(store);
+      EXPECT_EQ(heads.size(), 3u * 7u);
+      EXPECT_EQ(HeadDigestsOfFileAlone(store), heads) << jobs << " jobs, " << run;
+    }
+  }
 }
 
 TEST_F(AgRunTest, StageExecutablesAgreeWithItsKeys) {

@@ -8,6 +8,7 @@
 
 #include "store/artifact_store.h"
 #include "tests/runner/run/runner_test_support.h"
+#include "tests/support/raw_sqlite.h"
 
 namespace areagraph::testing {
 namespace {
@@ -66,6 +67,23 @@ TEST_F(AgRunFaultTest, CrashingWorkerFailsItsMapOnly) {
   for (const auto& [name, digest] : GraphDigests(store_)) {
     EXPECT_EQ(digest.empty(), name == "map_2") << name;
   }
+}
+
+// No worker is left to fold the log when the last map crashes its worker:
+// the runner then folds it as it records the failure.
+TEST_F(AgRunFaultTest, CrashOnTheLastMapStillLeavesEverythingInTheStoreFile) {
+  WriteRandomMaps(maps_, 3, /*first_seed=*/1);  // run in name order: map_3 last
+  const std::string command = "AG_RUN_FAULT=crash:map_3:cut exec '" + std::string(AG_BIN_DIR) +
+                              "/ag-run' --jobs 1 --store '" + store_ + "' '" + maps_ + "'";
+  const CommandResult run = RunProgram({"sh", "-c", command});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_FALSE(HasWriteAheadLog(store_));
+  const std::vector<std::string> heads = HeadDigests(store_);
+  EXPECT_EQ(heads.size(), 2u * 7u + 4u);  // map_3 up to prune
+  EXPECT_EQ(HeadDigestsOfFileAlone(store_), heads);
+  const auto failures = OpenArtifactStore(store_, StoreMode::kReadOnly)->ReadFailures();
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(failures[0].map_name, "map_3");
 }
 
 TEST_F(AgRunFaultTest, StoreOnReadOnlyFileSystemIsOneLineError) {

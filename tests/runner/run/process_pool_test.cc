@@ -8,12 +8,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <csignal>
+#include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+#include "tests/support/test_support.h"
 
 namespace areagraph {
 namespace {
@@ -25,13 +30,14 @@ struct PoolLog {
   int ticks = 0;
 };
 
-PoolLog RunPool(int jobs, int tasks, ProcessPool::Work work) {
+PoolLog RunPool(int jobs, int tasks, ProcessPool::Work work,
+                ProcessPool::OnWorkerEnd on_worker_end = nullptr) {
   PoolLog log;
   ProcessPool pool(
       jobs, std::move(work),
       [&](int task, const std::string& message) { log.calls[task].push_back(message); },
       [&](int task, const std::string& crash) { log.calls[task].push_back("end:" + crash); },
-      [&] { ++log.ticks; });
+      [&] { ++log.ticks; }, std::move(on_worker_end));
   pool.Run(tasks);
   return log;
 }
@@ -221,6 +227,82 @@ TEST(ProcessPoolTest, TicksWhileWorkersRun) {
   const PoolLog log = RunPool(1, 1, ReportPid);
   ExpectEndings(log, 1);
   EXPECT_GT(log.ticks, 0);
+}
+
+// Each worker's end hook, as lines of the file `log`: "end", or "last" and
+// whether the workers that wrote before it were all gone by then.
+void AppendWorkerEnd(const std::string& log, bool last) {
+  std::string line = last ? "last" : "end";
+  if (last) {
+    std::ifstream earlier(log);
+    std::string gone = " others gone";
+    for (std::string other; std::getline(earlier, other);) {
+      const pid_t pid = std::stoi(other.substr(other.rfind(' ') + 1));
+      if (kill(pid, 0) == 0 || errno != ESRCH) gone = " others alive";
+    }
+    line += gone;
+  }
+  std::ofstream(log, std::ios::app) << line << " " << getpid() << "\n";
+}
+
+// The hook's lines without their pids.
+std::vector<std::string> WorkerEnds(const std::string& log) {
+  std::vector<std::string> ends;
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) ends.push_back(line.substr(0, line.rfind(' ')));
+  return ends;
+}
+
+PoolLog RunPoolWithEndHook(const std::string& log, int jobs, int tasks, ProcessPool::Work work) {
+  return RunPool(jobs, tasks, std::move(work), [&](bool last) { AppendWorkerEnd(log, last); });
+}
+
+const char kSegfaulted[] = "the worker process died of signal 11 (Segmentation fault)";
+
+// Each worker's end hook writes to a file (AppendWorkerEnd).
+class ProcessPoolEndTest : public ::testing::Test {
+ protected:
+  testing::TempDir dir_;
+  const std::string log_ = dir_.File("ends");
+};
+
+TEST_F(ProcessPoolEndTest, EveryWorkerEndsOnceAndOneLastAfterTheOthersExited) {
+  const PoolLog pool_log = RunPoolWithEndHook(log_, 3, 12, [](int task, EventWriter& events) {
+    ReportPid(task, events);
+    usleep(static_cast<useconds_t>(task % 4) * 3000);
+  });
+  ExpectEndings(pool_log, 12);
+  EXPECT_EQ(WorkerEnds(log_), (std::vector<std::string>{"end", "end", "last others gone"}));
+}
+
+TEST_F(ProcessPoolEndTest, OneWorkerEndsAsTheLast) {
+  ExpectEndings(RunPoolWithEndHook(log_, 1, 3, ReportPid), 3);
+  EXPECT_EQ(WorkerEnds(log_), std::vector<std::string>{"last others gone"});
+}
+
+TEST_F(ProcessPoolEndTest, NoWorkerIsLastWhenTheLastTaskCrashesIt) {
+  const PoolLog pool_log = RunPoolWithEndHook(log_, 2, 2, [this](int task, EventWriter& events) {
+    ReportPid(task, events);
+    if (task == 0) return;
+    // Crashes only once the other worker has ended.
+    for (int wait = 0; wait < 2000 && WorkerEnds(log_).empty(); ++wait) usleep(5000);
+    Segfault();
+  });
+  ExpectEndings(pool_log, 2, {{1, kSegfaulted}});
+  EXPECT_EQ(WorkerEnds(log_), std::vector<std::string>{"end"});
+}
+
+TEST_F(ProcessPoolEndTest, WorkerThatCrashedEarlierLeavesTheLastToItsReplacement) {
+  const PoolLog pool_log = RunPoolWithEndHook(log_, 1, 4, [](int task, EventWriter& events) {
+    ReportPid(task, events);
+    if (task == 1) Segfault();
+  });
+  ExpectEndings(pool_log, 4, {{1, kSegfaulted}});
+  EXPECT_EQ(WorkerEnds(log_), std::vector<std::string>{"last others gone"});
+}
+
+TEST(ProcessPoolTest, WhatTheEndHookThrowsIsDropped) {
+  ExpectEndings(RunPool(2, 5, ReportPid, [](bool) { throw std::runtime_error("cannot fold"); }), 5);
 }
 
 TEST(ProcessPoolTest, WorkersDieWithTheParent) {

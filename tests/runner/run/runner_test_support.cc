@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <filesystem>
 
 #include "store/artifact_store.h"
+#include "tests/support/raw_sqlite.h"
 #include "tools/example_maps/random_floor_plan.h"
 
 namespace areagraph::testing {
@@ -44,6 +46,14 @@ std::vector<std::pair<std::string, std::string>> GraphDigests(const std::string&
     digests.emplace_back(map.name, head ? head->payload_digest : "");
   }
   return digests;
+}
+
+std::vector<std::string> HeadDigestsOfFileAlone(const std::string& store_path) {
+  TempDir elsewhere;
+  const std::string copy = elsewhere.File("alone.db");
+  std::filesystem::copy_file(store_path, copy);
+  EXPECT_EQ(QueryColumn(copy, "PRAGMA quick_check"), std::vector<std::string>{"ok"});
+  return HeadDigests(copy);
 }
 
 }  // namespace areagraph::testing

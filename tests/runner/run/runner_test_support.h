@@ -26,4 +26,9 @@ StageCount CountOf(const proto::RunSummary& summary, const std::string& stage);
 // The payload digest of each map's merge head in a store, by map name.
 std::vector<std::pair<std::string, std::string>> GraphDigests(const std::string& store_path);
 
+// HeadDigests (raw_sqlite.h) of a copy of the store's file alone, without its
+// write-ahead log, after SQLite's quick_check of the copy: the same as the
+// store's own once everything is folded into the file.
+std::vector<std::string> HeadDigestsOfFileAlone(const std::string& store_path);
+
 }  // namespace areagraph::testing

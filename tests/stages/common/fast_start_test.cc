@@ -1,12 +1,15 @@
 // The pipeline's executables start without the shared libraries that
-// cmake/FastStart.cmake links statically, and as position-dependent
-// executables (docs/performance.md, issue 14, ninth pass).
+// cmake/FastStart.cmake links statically or loads on first use, and as
+// position-dependent executables (docs/performance.md, issue 14, ninth and
+// eleventh passes).
 #include <elf.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <fstream>
 #include <string>
+
+#include "tests/support/test_support.h"
 
 namespace areagraph::testing {
 namespace {
@@ -34,6 +37,15 @@ int ElfType(const std::string& path) {
   return header.e_type;
 }
 
+// Linked statically, or (x86-64: cmake/lazy_libraries.sh) loaded on first use.
+constexpr const char* kNotLoadedAtStart[] = {
+    "libopencv_", "libprotobuf", "libsqlite3", "libcrypto", "libzstd",
+    "libpng",     "libz.so",     "libGLX",     "libX11",    "libyaml-cpp",
+#if defined(__x86_64__)
+    "libtbb",     "liblapack",   "libblas",    "liblcm",    "libglib",
+#endif
+};
+
 TEST(FastStart, PipelineExecutablesLoadNoneOfTheStaticallyLinkedLibraries) {
 #if !AG_FAST_START
   GTEST_SKIP() << "built with -DAG_FAST_START=OFF";
@@ -42,12 +54,41 @@ TEST(FastStart, PipelineExecutablesLoadNoneOfTheStaticallyLinkedLibraries) {
     const std::string path = std::string(AG_BIN_DIR) + "/" + tool;
     const std::string libraries = Ldd(path);
     ASSERT_NE(libraries.find("libc.so"), std::string::npos) << "ldd " << path << ":\n" << libraries;
-    for (const char* shared : {"libopencv_", "libprotobuf", "libsqlite3", "libcrypto", "libzstd",
-                               "libpng", "libz.so", "libGLX", "libX11"}) {
+    for (const char* shared : kNotLoadedAtStart) {
       EXPECT_EQ(libraries.find(shared), std::string::npos) << tool << " loads " << shared;
     }
     EXPECT_EQ(ElfType(path), ET_EXEC) << tool << " is position-independent";
   }
+}
+
+// The libraries that the dynamic loader reports loading (LD_DEBUG=files)
+// while `command` runs, workers included, one per line.
+std::string LoadedLibraries(const std::string& command) {
+  const CommandResult run = RunProgram({"sh", "-c", "LD_DEBUG=files exec " + command});
+  EXPECT_EQ(run.exit_code, 0) << command;
+  std::string libraries;
+  for (size_t at = run.err.find("file="); at != std::string::npos;
+       at = run.err.find("file=", at + 1)) {
+    libraries += run.err.substr(at, run.err.find_first_of(" \n", at) - at) + "\n";
+  }
+  return libraries;
+}
+
+// ag-run needs LCM only to publish: a run without --publish never loads it
+// (nor glib behind it); with --publish it is loaded on first use and works.
+TEST(FastStart, AgRunLoadsLcmOnlyWhenItPublishes) {
+#if !AG_FAST_START || !defined(__x86_64__)
+  GTEST_SKIP() << "LCM is loaded on first use in fast-start builds for x86-64 only";
+#endif
+  TempDir dir;
+  const std::string run = std::string(AG_BIN_DIR) + "/ag-run --jobs 1 --store " + dir.File("s.db") +
+                          " " + SourcePath("examples/two_rooms.png");
+  const std::string quiet = LoadedLibraries(run);
+  EXPECT_NE(quiet.find("libc.so"), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find("liblcm"), std::string::npos) << quiet;
+  EXPECT_EQ(quiet.find("libglib"), std::string::npos) << quiet;
+  const std::string publishing = LoadedLibraries(run + " --force --publish --url memq://");
+  EXPECT_NE(publishing.find("liblcm.so"), std::string::npos) << publishing;
 }
 
 TEST(FastStart, TestsAndTheCodecsModuleKeepTheSharedLibraries) {
