@@ -157,6 +157,12 @@ int64_t SquaredReach(float reach) {
 
 }  // namespace
 
+bool ComputedExactly(cv::Size size) {
+  // The guard of ColumnDistances with the farthest distance a column can have.
+  const int64_t rows = size.height, cols = size.width;
+  return (rows - 1) * (rows - 1) + (cols - 1) * (cols - 1) < (int64_t(1) << 24);
+}
+
 cv::Mat ExactDistanceTransform(const cv::Mat& mask) {
   CV_Assert(mask.type() == CV_8U);
   const std::vector<uint16_t> columns = ColumnDistances(mask);

@@ -23,4 +23,10 @@ double DeepestDistance(const cv::Mat& mask);
 // 1 where ExactDistanceTransform(mask) >= reach, else 0 (CV_8U).
 cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach);
 
+// Whether ExactDistanceTransform computes every mask of this size itself
+// (OpenCV computes it where its single precision is not exact, and a mask
+// without zero cells): then a distance measured on a part of a mask, with
+// the same nearest zero cells, equals the whole mask's.
+bool ComputedExactly(cv::Size size);
+
 }  // namespace areagraph
