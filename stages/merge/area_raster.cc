@@ -42,10 +42,17 @@ void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
   auto open = [&](int q) { return q >= 0 && inside[q] && label[q] == 0; };
   std::deque<int> queue;
   int neighbours[4];
-  for (int i = 0; i < cols * rows; ++i) {
-    if (label[i] == 0) continue;
-    Neighbours(i, cols, rows, neighbours);
-    if (std::any_of(neighbours, neighbours + 4, open)) queue.push_back(i);
+  // Row by row, so that no cell's row and column are divided out.
+  for (int r = 0; r < rows; ++r) {
+    const int first = r * cols;
+    for (int c = 0; c < cols; ++c) {
+      const int i = first + c;
+      if (label[i] == 0) continue;
+      if ((c + 1 < cols && open(i + 1)) || (c > 0 && open(i - 1)) ||
+          (r + 1 < rows && open(i + cols)) || (r > 0 && open(i - cols))) {
+        queue.push_back(i);
+      }
+    }
   }
   while (!queue.empty()) {
     const int p = queue.front();
