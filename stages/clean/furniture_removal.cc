@@ -121,10 +121,12 @@ bool MeetsObstaclePastEnd(const ObstacleRegions& regions, int region, int direct
 }  // namespace
 
 std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int height,
+                                      const cv::Mat& labels, int label_count,
                                       const std::vector<int>& candidate_cells,
                                       const WallPieceSizes& sizes) {
   // The rectangles are fitted to the candidates' cells only.
-  const ObstacleRegions regions = FindObstacleRegions(cells, width, height, candidate_cells);
+  const ObstacleRegions regions = DescribeObstacleRegions(
+      labels, label_count, ObstacleDepth(ObstacleMask(cells, width, height)), candidate_cells);
   const double thinner_than =
       std::max(sizes.thinner_than_px,
                kWallPieceWallRatio * TypicalWallThickness(regions.depth, sizes.max_wall_px));
@@ -194,11 +196,11 @@ FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, doub
     if (is_outline[piece] || perimeter[piece] >= max_perimeter_px) continue;
     furniture_cells.push_back(index);
   }
-  // Pieces of wall stay (their labels are those of `labels`: the same
-  // labelling of the same cells).
+  // Pieces of wall stay.
   std::vector<uint8_t> wall_piece;
   if (wall_pieces != nullptr && !furniture_cells.empty()) {
-    wall_piece = WallPieceRegions(cells, width, height, furniture_cells, *wall_pieces);
+    wall_piece =
+        WallPieceRegions(cells, width, height, labels, region_count, furniture_cells, *wall_pieces);
   }
   std::vector<std::vector<int>> piece_cells(piece_count);
   for (const int index : furniture_cells) {

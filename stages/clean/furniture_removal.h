@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
@@ -68,10 +69,12 @@ inline constexpr double kWallPieceMaxGapM = 1.6;
 FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, double alpha_radius_px,
                                  double max_perimeter_px, const WallPieceSizes* wall_pieces);
 
-// The obstacle regions (8-connected non-free cells of `cells`, labelled as
-// cv::connectedComponents labels ObstacleMask) among those holding
-// `candidate_cells` that are pieces of wall by `sizes`: 1 per label.
+// The obstacle regions (8-connected non-free cells of `cells`: `labels`, as
+// cv::connectedComponents labels ObstacleMask, `label_count` of them) among
+// those holding `candidate_cells` that are pieces of wall by `sizes`: 1 per
+// label.
 std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int height,
+                                      const cv::Mat& labels, int label_count,
                                       const std::vector<int>& candidate_cells,
                                       const WallPieceSizes& sizes);
 

@@ -10,23 +10,41 @@ namespace areagraph {
 
 ObstacleRegions FindObstacleRegions(const std::string& cells, int width, int height,
                                     const std::vector<int>& site_cells) {
-  ObstacleRegions regions;
-  regions.width = width;
-  regions.height = height;
   const cv::Mat obstacle = ObstacleMask(cells, width, height);
-  const int count = cv::connectedComponents(obstacle, regions.labels, 8, CV_32S);
-  regions.depth = ObstacleDepth(obstacle);
+  cv::Mat labels;
+  const int count = cv::connectedComponents(obstacle, labels, 8, CV_32S);
+  return DescribeObstacleRegions(std::move(labels), count, ObstacleDepth(obstacle), site_cells);
+}
+
+ObstacleRegions DescribeObstacleRegions(cv::Mat labels, int count, cv::Mat depth,
+                                        const std::vector<int>& site_cells) {
+  CV_Assert(labels.type() == CV_32S && depth.type() == CV_32F && labels.size() == depth.size());
+  ObstacleRegions regions;
+  const int width = regions.width = labels.cols;
+  const int height = regions.height = labels.rows;
+  regions.labels = std::move(labels);
+  regions.depth = std::move(depth);
   std::vector<RegionShape>& shapes = regions.shapes;
   shapes.resize(count);
-  const int* label = regions.labels.ptr<int>();
-  const float* depth_of = regions.depth.ptr<float>();
-  for (int index = 0; index < width * height; ++index) {
-    RegionShape& shape = shapes[label[index]];
-    shape.thickness = std::max(shape.thickness, 2 * depth_of[index]);
-    ++shape.cells;
-    const int col = index % width, row = index / width;
-    shape.on_border |= col == 0 || row == 0 || col == width - 1 || row == height - 1;
+  for (int r = 0; r < height; ++r) {
+    const int* label = regions.labels.ptr<int>(r);
+    const float* depth_of = regions.depth.ptr<float>(r);
+    for (int c = 0; c < width; ++c) {
+      RegionShape& shape = shapes[label[c]];
+      ++shape.cells;
+      // Free cells (label 0) have no depth.
+      if (label[c] != 0) shape.thickness = std::max(shape.thickness, 2 * depth_of[c]);
+    }
   }
+  for (int r = 0; r < height; ++r) {
+    const int* label = regions.labels.ptr<int>(r);
+    if (r == 0 || r == height - 1) {
+      for (int c = 0; c < width; ++c) shapes[label[c]].on_border = true;
+    } else {
+      shapes[label[0]].on_border = shapes[label[width - 1]].on_border = true;
+    }
+  }
+  const int* label = regions.labels.ptr<int>();
   std::vector<std::vector<cv::Point2f>> outline(count);
   for (const int index : site_cells) {
     outline[label[index]].emplace_back(index % width + 0.5f, index / width + 0.5f);

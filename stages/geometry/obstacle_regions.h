@@ -50,4 +50,10 @@ struct ObstacleRegions {
 ObstacleRegions FindObstacleRegions(const std::string& cells, int width, int height,
                                     const std::vector<int>& site_cells);
 
+// The same from the regions' labels (`count` of them, as cv::connectedComponents
+// labels ObstacleMask with connectivity 8) and their depth, for a caller that
+// has labelled them already.
+ObstacleRegions DescribeObstacleRegions(cv::Mat labels, int count, cv::Mat depth,
+                                        const std::vector<int>& site_cells);
+
 }  // namespace areagraph

@@ -1,10 +1,10 @@
 #include "stages/geometry/wall_thickness.h"
 
 #include <algorithm>
-#include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/distance_transform.h"
 
 namespace areagraph {
 
@@ -22,9 +22,8 @@ cv::Mat ObstacleMask(const std::string& cells, int width, int height) {
 }
 
 cv::Mat ObstacleDepth(const cv::Mat& obstacle) {
-  cv::Mat depth;
-  cv::distanceTransform(obstacle, depth, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  return depth;
+  // Most cells are free: the exact transform works on the others only.
+  return ExactDistanceTransform(obstacle);
 }
 
 double TypicalWallThickness(const cv::Mat& depth, double max_wall_px) {

@@ -5,6 +5,7 @@
 #include <deque>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/geometry/distance_transform.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/region_boxes.h"
 
@@ -41,10 +42,17 @@ void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
   auto open = [&](int q) { return q >= 0 && inside[q] && label[q] == 0; };
   std::deque<int> queue;
   int neighbours[4];
-  for (int i = 0; i < cols * rows; ++i) {
-    if (label[i] == 0) continue;
-    Neighbours(i, cols, rows, neighbours);
-    if (std::any_of(neighbours, neighbours + 4, open)) queue.push_back(i);
+  // Row by row, so that no cell's row and column are divided out.
+  for (int r = 0; r < rows; ++r) {
+    const int first = r * cols;
+    for (int c = 0; c < cols; ++c) {
+      const int i = first + c;
+      if (label[i] == 0) continue;
+      if ((c + 1 < cols && open(i + 1)) || (c > 0 && open(i - 1)) ||
+          (r + 1 < rows && open(i + cols)) || (r > 0 && open(i - cols))) {
+        queue.push_back(i);
+      }
+    }
   }
   while (!queue.empty()) {
     const int p = queue.front();
@@ -128,8 +136,7 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
 }
 
 // The cores: domain cells at least min_gap_px / 2 from any non-free cell
-// (1, else 0). The distances (4 bytes a cell) live only inside this call,
-// before the labels exist.
+// (1, else 0).
 cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px) {
   cv::Mat cells(domain.size(), CV_8U);
   for (int r = 0; r < cells.rows; ++r) {
@@ -137,16 +144,14 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
     const uint8_t* state = grid.CellRow(r);
     for (int c = 0; c < cells.cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
   }
-  cv::Mat distance;
-  cv::distanceTransform(cells, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  const float reach = static_cast<float>(0.5 * min_gap_px);
-  for (int r = 0; r < cells.rows; ++r) {
-    uint8_t* row = cells.ptr<uint8_t>(r);
-    const float* d = distance.ptr<float>(r);
+  // Only the threshold is asked: no distances.
+  cv::Mat core = DistanceAtLeast(cells, static_cast<float>(0.5 * min_gap_px));
+  for (int r = 0; r < core.rows; ++r) {
+    uint8_t* row = core.ptr<uint8_t>(r);
     const uint8_t* inside = domain.ptr<uint8_t>(r);
-    for (int c = 0; c < cells.cols; ++c) row[c] = d[c] >= reach && inside[c] != 0 ? 1 : 0;
+    for (int c = 0; c < core.cols; ++c) row[c] = row[c] != 0 && inside[c] != 0 ? 1 : 0;
   }
-  return cells;
+  return core;
 }
 
 // Marks kUnreached on the unlabelled cells of the cores (`core`, see

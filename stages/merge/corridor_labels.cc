@@ -3,6 +3,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/geometry/distance_transform.h"
+
 namespace areagraph {
 
 namespace {
@@ -13,10 +15,8 @@ AreaShape ShapeOfMask(cv::Mat& mask) {
   std::vector<std::vector<cv::Point>> outer;
   cv::findContours(mask.clone(), outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
   cv::drawContours(mask, outer, -1, cv::Scalar(255), cv::FILLED);
-  cv::Mat distance;
-  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  double deepest = 0;
-  cv::minMaxLoc(distance, nullptr, &deepest);
+  // Only the deepest cell counts: no distance image.
+  const double deepest = DeepestDistance(mask);
   return {2 * deepest, static_cast<double>(cv::countNonZero(mask))};
 }
 

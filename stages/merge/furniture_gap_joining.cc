@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/distance_transform.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/region_boxes.h"
@@ -58,6 +59,39 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
   plan->MergeGroups(root);
 }
 
+// The depth of each label's deepest cell, read off `depth` (ObstacleDepth).
+std::vector<float> DeepestPerRegion(const cv::Mat& labels, int count, const cv::Mat& depth) {
+  std::vector<float> deepest(count, 0);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* row = labels.ptr<int>(r);
+    const float* d = depth.ptr<float>(r);
+    for (int c = 0; c < labels.cols; ++c) deepest[row[c]] = std::max(deepest[row[c]], d[c]);
+  }
+  return deepest;
+}
+
+// The same for the labels marked in `wanted`, each measured within its box:
+// the cells nearest to a region's cells outside it are free (an 8-connected
+// region does not touch another), and lie within one cell of its box.
+std::vector<float> DeepestPerRegion(const cv::Mat& labels, const cv::Mat& stats,
+                                    const std::vector<uint8_t>& wanted) {
+  std::vector<float> deepest(wanted.size(), 0);
+  for (size_t k = 1; k < wanted.size(); ++k) {
+    if (!wanted[k]) continue;
+    const cv::Rect box(
+        stats.at<int>(int(k), cv::CC_STAT_LEFT), stats.at<int>(int(k), cv::CC_STAT_TOP),
+        stats.at<int>(int(k), cv::CC_STAT_WIDTH), stats.at<int>(int(k), cv::CC_STAT_HEIGHT));
+    cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
+    for (int r = 0; r < box.height; ++r) {
+      const int* row = labels.ptr<int>(box.y + r) + box.x;
+      uint8_t* out = mask.ptr<uint8_t>(r + 1) + 1;
+      for (int c = 0; c < box.width; ++c) out[c] = row[c] == int(k) ? 255 : 0;
+    }
+    deepest[k] = float(DeepestDistance(mask));
+  }
+  return deepest;
+}
+
 // Marks (`value` in `out`, where it is still 0) the cells of every 8-connected region of `obstacle`
 // that touches no image border, is at most `max_px` long, at least
 // `min_thickness_px` thick (twice its deepest cell's depth), fills
@@ -70,19 +104,19 @@ void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px
   const int width = obstacle.cols, height = obstacle.rows;
   cv::Mat labels, stats;
   const int count = LabelRegionsWithBoxes(obstacle, 8, &labels, &stats);
-  if (depth.empty()) depth = ObstacleDepth(obstacle);
-  std::vector<float> deepest(count, 0);
-  for (int r = 0; r < height; ++r) {
-    const int* row = labels.ptr<int>(r);
-    const float* d = depth.ptr<float>(r);
-    for (int c = 0; c < width; ++c) deepest[row[c]] = std::max(deepest[row[c]], d[c]);
-  }
   std::vector<uint8_t> island(count, 0);
   for (int k = 1; k < count; ++k) {
     const int x = stats.at<int>(k, cv::CC_STAT_LEFT), y = stats.at<int>(k, cv::CC_STAT_TOP);
     const int w = stats.at<int>(k, cv::CC_STAT_WIDTH), h = stats.at<int>(k, cv::CC_STAT_HEIGHT);
     const bool border = x == 0 || y == 0 || x + w == width || y + h == height;
-    island[k] = !border && std::max(w, h) <= max_px && 2 * deepest[k] >= min_thickness_px;
+    island[k] = !border && std::max(w, h) <= max_px;
+  }
+  const std::vector<float> deepest =
+      depth.empty() && ComputedExactly(obstacle.size())
+          ? DeepestPerRegion(labels, stats, island)
+          : DeepestPerRegion(labels, count, depth.empty() ? ObstacleDepth(obstacle) : depth);
+  for (int k = 1; k < count; ++k) {
+    island[k] = island[k] && 2 * deepest[k] >= min_thickness_px;
   }
   // Candidates must fill most of their smallest enclosing rectangle.
   std::vector<std::vector<cv::Point>> points(count);

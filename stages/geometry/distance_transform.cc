@@ -1,0 +1,282 @@
+#include "stages/geometry/distance_transform.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <numeric>
+#include <opencv2/imgproc.hpp>
+#include <vector>
+
+namespace areagraph {
+namespace {
+
+// Squared distances along a row: a column without any zero cell has none.
+constexpr int32_t kFar = std::numeric_limits<int32_t>::max();
+// Distances along a column: from here up, the column has no zero cell (a
+// mask at most 32767 cells high counts up to 65535 at most).
+constexpr uint16_t kNoZero = 1 << 15;
+
+bool FitsIntegers(const cv::Mat& mask) { return mask.rows < kNoZero && mask.cols < kNoZero; }
+
+// The distance of every cell to the nearest zero cell of its column
+// (kNoZero or more when the column has none), row by row. Leaves it empty
+// when the result would not be OpenCV's: when the mask has no zero cell
+// (OpenCV then gives its stand-in for infinity), or when OpenCV's
+// single-precision breakpoints, f[q] + q^2 - f[p] - p^2, are not all exact
+// integers (2^24 and above; on masks over 4096 cells wide its distances are
+// then not exact, and differ). Then callers ask OpenCV.
+std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
+  const int rows = mask.rows, cols = mask.cols;
+  if (mask.empty() || !FitsIntegers(mask)) return {};
+  std::vector<uint16_t> distance(size_t(rows) * cols);
+  // Downwards: the distance to the nearest zero cell above or at the cell.
+  for (int c = 0; c < cols; ++c) distance[c] = mask.ptr<uint8_t>(0)[c] == 0 ? 0 : kNoZero;
+  for (int r = 1; r < rows; ++r) {
+    const uint8_t* m = mask.ptr<uint8_t>(r);
+    uint16_t* out = distance.data() + size_t(r) * cols;
+    const uint16_t* above = out - cols;
+    for (int c = 0; c < cols; ++c) out[c] = m[c] == 0 ? 0 : uint16_t(above[c] + 1);
+  }
+  // Upwards: the nearer of that and the one below.
+  std::vector<uint16_t> below(cols, kNoZero);
+  uint16_t farthest = 0;
+  bool any_zero = false;
+  for (int r = rows - 1; r >= 0; --r) {
+    uint16_t* out = distance.data() + size_t(r) * cols;
+    for (int c = 0; c < cols; ++c) {
+      const uint16_t d = std::min<uint16_t>(out[c], below[c] + 1);
+      below[c] = d;
+      out[c] = d;
+    }
+  }
+  for (int c = 0; c < cols; ++c) any_zero |= below[c] < kNoZero;
+  for (const uint16_t d : distance) farthest = std::max<uint16_t>(farthest, d < kNoZero ? d : 0);
+  const int64_t widest = int64_t(cols - 1) * (cols - 1);
+  if (!any_zero || int64_t(farthest) * farthest + widest >= (int64_t(1) << 24)) return {};
+  return distance;
+}
+
+// One row of ColumnDistances, squared.
+void SquareRow(const uint16_t* distance, int cols, int32_t* f) {
+  for (int c = 0; c < cols; ++c) {
+    f[c] = distance[c] >= kNoZero ? kFar : int32_t(distance[c]) * distance[c];
+  }
+}
+
+// Felzenszwalb and Huttenlocher's lower envelope of the parabolas
+// f[p] + (x - p)^2, p in [lo, hi] (columns at kFar left out), evaluated at
+// x = q for q in [from, to): calls emit(q, p) with a minimising p. At least one
+// column of [lo, hi] must be finite. The breakpoints are quotients of exact
+// integers, rounded once, so equal ones compare equal and unequal ones apart.
+class LowerEnvelope {
+ public:
+  explicit LowerEnvelope(int cols) : v_(cols), g_(cols), z_(cols + 1) {}
+
+  template <typename Emit>
+  void Evaluate(const int32_t* f, int lo, int hi, int from, int to, Emit emit) {
+    int k = -1;
+    for (int q = lo; q <= hi; ++q) {
+      if (f[q] == kFar) continue;
+      const int64_t g = int64_t(f[q]) + int64_t(q) * q;
+      double s = -std::numeric_limits<double>::infinity();
+      while (k >= 0) {
+        s = double(g - g_[k]) / double(2 * (q - v_[k]));
+        if (s > z_[k]) break;
+        --k;
+      }
+      ++k;
+      v_[k] = q;
+      g_[k] = g;
+      z_[k] = k == 0 ? -std::numeric_limits<double>::infinity() : s;
+    }
+    const int last = k;
+    k = 0;
+    for (int q = from; q < to; ++q) {
+      while (k < last && z_[k + 1] <= q) ++k;
+      emit(q, v_[k]);
+    }
+  }
+
+ private:
+  std::vector<int> v_;
+  std::vector<int64_t> g_;
+  std::vector<double> z_;
+};
+
+// The distance as OpenCV's DIST_MASK_PRECISE gives it: the square root, in
+// single precision, of the sum of the squared offsets along the row and the
+// column.
+float DistanceValue(const int32_t* f, int q, int p) {
+  return std::sqrt(float((q - p) * (q - p)) + float(f[p]));
+}
+
+// The first column from `c` on where the row of `mask` is not zero, or cols.
+int NextNonZero(const uint8_t* mask, int c, int cols) {
+  // Eight cells at a time across the stretches of zero cells.
+  for (; c + 8 <= cols; c += 8) {
+    uint64_t eight;
+    std::memcpy(&eight, mask + c, sizeof(eight));
+    if (eight != 0) break;
+  }
+  while (c < cols && mask[c] == 0) ++c;
+  return c;
+}
+
+// Calls emit(q, p) for every non-zero cell q of one row (`mask`, and f: its
+// squared column distances) with p its nearest column. Only the run of
+// non-zero cells around q and the zero cells that bound it matter: any column
+// beyond such a zero cell is farther than the zero cell itself.
+template <typename Emit>
+void ForEachNonZeroCell(const uint8_t* mask, const int32_t* f, int cols, LowerEnvelope& envelope,
+                        Emit emit) {
+  int c = 0;
+  while (c < cols) {
+    c = NextNonZero(mask, c, cols);
+    if (c == cols) break;
+    const int start = c;
+    while (c < cols && mask[c] != 0) ++c;
+    envelope.Evaluate(f, std::max(start - 1, 0), std::min(c, cols - 1), start, c, emit);
+  }
+}
+
+cv::Mat OpenCvDistances(const cv::Mat& mask) {
+  cv::Mat distance;
+  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return distance;
+}
+
+// The least squared distance whose DistanceValue reaches `reach` (> 0).
+int64_t SquaredReach(float reach) {
+  int64_t k = int64_t(std::ceil(double(reach) * double(reach)));
+  while (k > 0 && std::sqrt(float(k - 1)) >= reach) --k;
+  while (std::sqrt(float(k)) < reach) ++k;
+  return k;
+}
+
+}  // namespace
+
+bool ComputedExactly(cv::Size size) {
+  // The guard of ColumnDistances with the farthest distance a column can have.
+  const int64_t rows = size.height, cols = size.width;
+  return (rows - 1) * (rows - 1) + (cols - 1) * (cols - 1) < (int64_t(1) << 24);
+}
+
+cv::Mat ExactDistanceTransform(const cv::Mat& mask) {
+  CV_Assert(mask.type() == CV_8U);
+  const std::vector<uint16_t> columns = ColumnDistances(mask);
+  if (columns.empty()) return OpenCvDistances(mask);
+  const int rows = mask.rows, cols = mask.cols;
+  cv::Mat distance = cv::Mat::zeros(rows, cols, CV_32F);
+  std::vector<int32_t> f(cols);
+  LowerEnvelope envelope(cols);
+  for (int r = 0; r < rows; ++r) {
+    SquareRow(columns.data() + size_t(r) * cols, cols, f.data());
+    float* out = distance.ptr<float>(r);
+    ForEachNonZeroCell(mask.ptr<uint8_t>(r), f.data(), cols, envelope,
+                       [&](int q, int p) { out[q] = DistanceValue(f.data(), q, p); });
+  }
+  return distance;
+}
+
+double DeepestDistance(const cv::Mat& mask) {
+  CV_Assert(mask.type() == CV_8U);
+  if (mask.empty()) return 0;
+  const std::vector<uint16_t> columns = ColumnDistances(mask);
+  if (columns.empty()) {
+    double deepest = 0;
+    cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
+    return deepest;
+  }
+  const int rows = mask.rows, cols = mask.cols;
+  // No cell is deeper than its distance along its row or its column: rows in
+  // order of the deepest such bound, until it is no more than the deepest
+  // cell found.
+  std::vector<int32_t> row_bound(rows, 0);
+  std::vector<int> along(cols);
+  for (int r = 0; r < rows; ++r) {
+    const uint8_t* m = mask.ptr<uint8_t>(r);
+    const uint16_t* column = columns.data() + size_t(r) * cols;
+    int32_t bound = 0;
+    // Along the row: to the nearest zero cell left, then right.
+    int left = kNoZero;
+    for (int c = 0; c < cols; ++c) {
+      left = m[c] == 0 ? 0 : std::min(left + 1, int(kNoZero));
+      along[c] = left;
+    }
+    int right = kNoZero;
+    for (int c = cols - 1; c >= 0; --c) {
+      right = m[c] == 0 ? 0 : std::min(right + 1, int(kNoZero));
+      const int d = std::min({along[c], right, int(column[c])});
+      bound = std::max(bound, d);
+    }
+    row_bound[r] = bound * bound;
+  }
+  std::vector<int> order(rows);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return row_bound[a] != row_bound[b] ? row_bound[a] > row_bound[b] : a < b;
+  });
+  std::vector<int32_t> f(cols);
+  LowerEnvelope envelope(cols);
+  int64_t deepest_squared = 0;
+  float deepest = 0;
+  for (const int r : order) {
+    if (row_bound[r] <= deepest_squared) break;
+    SquareRow(columns.data() + size_t(r) * cols, cols, f.data());
+    ForEachNonZeroCell(mask.ptr<uint8_t>(r), f.data(), cols, envelope, [&](int q, int p) {
+      const int64_t d = int64_t(q - p) * (q - p) + f[p];
+      if (d <= deepest_squared) return;
+      deepest_squared = d;
+      deepest = std::max(deepest, DistanceValue(f.data(), q, p));
+    });
+  }
+  return deepest;
+}
+
+cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
+  CV_Assert(mask.type() == CV_8U);
+  const int rows = mask.rows, cols = mask.cols;
+  cv::Mat at_least(rows, cols, CV_8U, cv::Scalar(1));
+  if (mask.empty() || reach <= 0) return at_least;
+  const std::vector<uint16_t> columns = ColumnDistances(mask);
+  if (columns.empty()) {
+    cv::Mat distance = OpenCvDistances(mask);
+    for (int r = 0; r < rows; ++r) {
+      const float* d = distance.ptr<float>(r);
+      uint8_t* out = at_least.ptr<uint8_t>(r);
+      for (int c = 0; c < cols; ++c) out[c] = d[c] >= reach ? 1 : 0;
+    }
+    return at_least;
+  }
+  const int64_t k = SquaredReach(reach);
+  // A column whose zero cell is v < sqrt(k) away keeps the cells q of its row
+  // with (q - p)^2 < k - v^2 below the reach: those within spread[v] of it.
+  std::vector<int> spread;
+  for (int64_t v = 0; v * v < k && v < kNoZero; ++v) {
+    int64_t t = 0;
+    while ((t + 1) * (t + 1) < k - v * v) ++t;
+    spread.push_back(int(t));
+  }
+  const int nearer = int(spread.size());
+  for (int r = 0; r < rows; ++r) {
+    const uint16_t* v = columns.data() + size_t(r) * cols;
+    uint8_t* out = at_least.ptr<uint8_t>(r);
+    // From the left: cells that a column at or before them keeps short.
+    int kept_until = -1;
+    for (int q = 0; q < cols; ++q) {
+      if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
+      out[q] = q > kept_until;
+    }
+    // From the right.
+    int kept_from = cols;
+    for (int q = cols - 1; q >= 0; --q) {
+      if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
+      out[q] &= q < kept_from;
+    }
+  }
+  return at_least;
+}
+
+}  // namespace areagraph

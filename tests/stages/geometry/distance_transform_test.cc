@@ -1,0 +1,190 @@
+#include "stages/geometry/distance_transform.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <opencv2/imgproc.hpp>
+#include <random>
+
+namespace areagraph {
+namespace {
+
+cv::Mat OpenCvDistances(const cv::Mat& mask) {
+  cv::Mat distance;
+  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
+  return distance;
+}
+
+// Bit for bit: the stages' outputs must not move when they switch.
+void ExpectSameAsOpenCv(const cv::Mat& mask) {
+  const cv::Mat expected = OpenCvDistances(mask);
+  const cv::Mat actual = ExactDistanceTransform(mask);
+  ASSERT_EQ(actual.type(), CV_32F);
+  ASSERT_EQ(actual.size(), mask.size());
+  for (int r = 0; r < mask.rows; ++r) {
+    ASSERT_EQ(std::memcmp(actual.ptr(r), expected.ptr(r), sizeof(float) * mask.cols), 0)
+        << "row " << r << " of " << mask.cols << " x " << mask.rows;
+  }
+  double deepest = 0;
+  cv::minMaxLoc(expected, nullptr, &deepest);
+  EXPECT_EQ(DeepestDistance(mask), deepest);
+}
+
+// Zero cells with probability `zero_share`, else 255.
+cv::Mat RandomMask(std::mt19937& random, int rows, int cols, double zero_share) {
+  cv::Mat mask(rows, cols, CV_8U);
+  std::bernoulli_distribution zero(zero_share);
+  for (int r = 0; r < rows; ++r) {
+    for (int c = 0; c < cols; ++c) mask.at<uint8_t>(r, c) = zero(random) ? 0 : 255;
+  }
+  return mask;
+}
+
+// A map-like mask: walls (0) of 1-4 cells around rectangular rooms, some
+// boxes of furniture, the rest 255; `invert` swaps them (walls non-zero).
+cv::Mat RoomsMask(std::mt19937& random, int rows, int cols, bool invert) {
+  cv::Mat mask(rows, cols, CV_8U, cv::Scalar(255));
+  std::uniform_int_distribution<int> x(0, cols - 1), y(0, rows - 1), thick(1, 4);
+  for (int wall = 0; wall < 30; ++wall) {
+    const cv::Point a(x(random), y(random));
+    const cv::Point b = random() % 2 ? cv::Point(x(random), a.y) : cv::Point(a.x, y(random));
+    cv::line(mask, a, b, cv::Scalar(0), thick(random));
+  }
+  for (int box = 0; box < 10; ++box) {
+    const cv::Point a(x(random), y(random));
+    cv::rectangle(mask, a, a + cv::Point(thick(random) * 3, thick(random) * 2), cv::Scalar(0),
+                  cv::FILLED);
+  }
+  if (invert) cv::bitwise_not(mask, mask);
+  return mask;
+}
+
+TEST(ExactDistanceTransform, EqualsOpenCvOnRandomMasks) {
+  std::mt19937 random(14);
+  for (int trial = 0; trial < 60; ++trial) {
+    const int rows = 1 + int(random() % 90), cols = 1 + int(random() % 90);
+    const double shares[] = {0.002, 0.02, 0.2, 0.5, 0.9};
+    ExpectSameAsOpenCv(RandomMask(random, rows, cols, shares[trial % 5]));
+  }
+}
+
+TEST(ExactDistanceTransform, EqualsOpenCvOnLargeSparseMasks) {
+  // Few zero cells far apart: long rows of parabolas, breakpoints far from
+  // the cells, distances in the hundreds.
+  std::mt19937 random(3);
+  for (const double share : {0.00001, 0.0001, 0.001}) {
+    ExpectSameAsOpenCv(RandomMask(random, 700, 1300, share));
+  }
+}
+
+TEST(ExactDistanceTransform, EqualsOpenCvOnMapLikeMasks) {
+  std::mt19937 random(5);
+  for (int trial = 0; trial < 6; ++trial) {
+    const bool invert = trial % 2 == 1;
+    ExpectSameAsOpenCv(RoomsMask(random, 400 + 100 * trial, 900 - 50 * trial, invert));
+  }
+}
+
+TEST(ExactDistanceTransform, KnownDistancesAroundOneZeroCell) {
+  cv::Mat mask(41, 57, CV_8U, cv::Scalar(255));
+  mask.at<uint8_t>(13, 29) = 0;
+  const cv::Mat distance = ExactDistanceTransform(mask);
+  for (int r = 0; r < mask.rows; ++r) {
+    for (int c = 0; c < mask.cols; ++c) {
+      const float expected = std::sqrt(float((r - 13) * (r - 13) + (c - 29) * (c - 29)));
+      ASSERT_EQ(distance.at<float>(r, c), expected) << c << "," << r;
+    }
+  }
+  EXPECT_EQ(DeepestDistance(mask), std::sqrt(float(27 * 27 + 29 * 29)));
+}
+
+TEST(ExactDistanceTransform, ZerosOnlyOnTheEdgesAndThinMasks) {
+  // Columns without a zero cell, zero cells only on one border, one row,
+  // one column, a single cell.
+  cv::Mat left(30, 50, CV_8U, cv::Scalar(255));
+  left.col(0).setTo(0);
+  ExpectSameAsOpenCv(left);
+  cv::Mat bottom(30, 50, CV_8U, cv::Scalar(255));
+  bottom.row(29).setTo(0);
+  ExpectSameAsOpenCv(bottom);
+  cv::Mat corner(30, 50, CV_8U, cv::Scalar(255));
+  corner.at<uint8_t>(29, 49) = 0;
+  ExpectSameAsOpenCv(corner);
+  std::mt19937 random(8);
+  ExpectSameAsOpenCv(RandomMask(random, 1, 200, 0.05));
+  ExpectSameAsOpenCv(RandomMask(random, 200, 1, 0.05));
+  ExpectSameAsOpenCv(cv::Mat(1, 1, CV_8U, cv::Scalar(0)));
+}
+
+TEST(ExactDistanceTransform, MaskWithoutNonZeroCellsIsAllZero) {
+  const cv::Mat mask(20, 30, CV_8U, cv::Scalar(0));
+  EXPECT_EQ(cv::countNonZero(ExactDistanceTransform(mask)), 0);
+  EXPECT_EQ(DeepestDistance(mask), 0);
+  EXPECT_EQ(cv::countNonZero(DistanceAtLeast(mask, 0.5f)), 0);
+  EXPECT_EQ(cv::countNonZero(DistanceAtLeast(mask, 0.0f)), 20 * 30);
+}
+
+TEST(ExactDistanceTransform, MaskWithoutZeroCellsIsOpenCvs) {
+  // No zero cell at all: OpenCV's stand-in for infinity, as it gives it.
+  const cv::Mat mask(20, 30, CV_8U, cv::Scalar(255));
+  ExpectSameAsOpenCv(mask);
+  EXPECT_EQ(cv::countNonZero(DistanceAtLeast(mask, 1000.0f)), 20 * 30);
+  EXPECT_EQ(ExactDistanceTransform(cv::Mat(0, 0, CV_8U)).total(), 0u);
+  EXPECT_EQ(DeepestDistance(cv::Mat(0, 0, CV_8U)), 0);
+}
+
+TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistances) {
+  std::mt19937 random(21);
+  // Whole, half and odd reaches, and ones just beside a square root.
+  const float reaches[] = {0.5f,
+                           1.0f,
+                           std::sqrt(2.0f),
+                           std::nextafter(std::sqrt(2.0f), 0.0f),
+                           2.5f,
+                           3.0f,
+                           5.0f,
+                           std::sqrt(50.0f),
+                           12.25f};
+  for (int trial = 0; trial < 24; ++trial) {
+    const cv::Mat mask = trial % 3 == 0 ? RoomsMask(random, 200, 300, trial % 2 == 1)
+                                        : RandomMask(random, 80, 120, trial % 2 ? 0.01 : 0.1);
+    const cv::Mat distance = OpenCvDistances(mask);
+    for (const float reach : reaches) {
+      const cv::Mat at_least = DistanceAtLeast(mask, reach);
+      ASSERT_EQ(at_least.type(), CV_8U);
+      for (int r = 0; r < mask.rows; ++r) {
+        for (int c = 0; c < mask.cols; ++c) {
+          ASSERT_EQ(at_least.at<uint8_t>(r, c), distance.at<float>(r, c) >= reach ? 1 : 0)
+              << "reach " << reach << " at " << c << "," << r;
+        }
+      }
+    }
+  }
+}
+
+TEST(DeepestDistance, EqualsOpenCvsMaximumOnShapes) {
+  // Shapes with holes and margins, as merge measures its areas.
+  std::mt19937 random(2);
+  for (int trial = 0; trial < 30; ++trial) {
+    const int rows = 20 + int(random() % 200), cols = 20 + int(random() % 200);
+    cv::Mat mask(rows, cols, CV_8U, cv::Scalar(0));
+    const int shapes = 1 + int(random() % 4);
+    for (int s = 0; s < shapes; ++s) {
+      const cv::Point a(1 + int(random() % (cols - 2)), 1 + int(random() % (rows - 2)));
+      const cv::Point b(1 + int(random() % (cols - 2)), 1 + int(random() % (rows - 2)));
+      if (s % 2 == 0) {
+        cv::rectangle(mask, a, b, cv::Scalar(255), cv::FILLED);
+      } else {
+        cv::circle(mask, a, 1 + int(random() % 40), cv::Scalar(255), cv::FILLED);
+      }
+    }
+    cv::rectangle(mask, cv::Rect(0, 0, cols, rows), cv::Scalar(0));
+    double deepest = 0;
+    cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
+    ASSERT_EQ(DeepestDistance(mask), deepest) << trial;
+  }
+}
+
+}  // namespace
+}  // namespace areagraph
