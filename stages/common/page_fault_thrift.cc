@@ -11,36 +11,59 @@
 
 namespace areagraph {
 
-bool UseFaultThriftyHeap(size_t reserve_bytes) {
 #if defined(__GLIBC__) && defined(MADV_HUGEPAGE)
-  // glibc's largest threshold on 64-bit: bigger buffers are still mapped on
-  // their own (and given back when freed).
-  constexpr size_t kMmapThreshold = size_t{32} << 20;
-  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kMmapThreshold));
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-  // Grow the heap once by the whole reserve (M_TOP_PAD is what malloc adds to
-  // its next growth of the break), then advise that stretch; growth beyond it
-  // gets ordinary pages. The probe must not fit in the heap's free top.
-  const size_t top = mallinfo2().keepcost;
-  const size_t probe_bytes = top + (size_t{64} << 10);
-  if (reserve_bytes == 0 || probe_bytes >= kMmapThreshold || reserve_bytes > (size_t{1} << 30)) {
-    return false;
-  }
+namespace {
+
+// glibc's largest threshold on 64-bit: bigger buffers are mapped on their own
+// (and given back when freed) unless mappings are turned off.
+constexpr size_t kMmapThreshold = size_t{32} << 20;
+constexpr size_t kMaxReserve = size_t{1} << 30;
+
+// Grows the heap once by `reserve_bytes` above its free top (M_TOP_PAD is
+// what malloc adds to its next growth of the break; the probe must not fit in
+// the free top), then advises that stretch for huge pages; growth beyond it
+// gets ordinary pages.
+bool ReserveHugePageHeap(size_t reserve_bytes) {
   constexpr uintptr_t kHugePage = uintptr_t{2} << 20;
+  const size_t probe_bytes = mallinfo2().keepcost + (size_t{64} << 10);
   mallopt(M_TOP_PAD, static_cast<int>(reserve_bytes));
-  const auto start = reinterpret_cast<uintptr_t>(sbrk(0));
   // Volatile, or the compiler drops the pair of calls.
   void* volatile probe = malloc(probe_bytes);
+  // Splitting the probe off the top wrote the top's header just after it:
+  // that page is faulted in already, its huge page is lost.
+  const uintptr_t touched = reinterpret_cast<uintptr_t>(probe) + probe_bytes + 64;
   free(probe);
   mallopt(M_TOP_PAD, 128 << 10);  // glibc's default again
+  if (probe == nullptr) return false;
   const auto end = reinterpret_cast<uintptr_t>(sbrk(0));
-  const uintptr_t first = (start + kHugePage - 1) & ~(kHugePage - 1), last = end & ~(kHugePage - 1);
+  const uintptr_t first = (touched + kHugePage - 1) & ~(kHugePage - 1),
+                  last = end & ~(kHugePage - 1);
   if (last <= first) return false;
   return madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE) == 0;
-#else
-  (void)reserve_bytes;
-  return false;
-#endif
 }
+
+}  // namespace
+
+bool UseFaultThriftyHeap(size_t reserve_bytes) {
+  mallopt(M_MMAP_THRESHOLD, static_cast<int>(kMmapThreshold));
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  // A probe of the threshold or more would be mapped, not grow the heap.
+  if (reserve_bytes == 0 || reserve_bytes > kMaxReserve ||
+      mallinfo2().keepcost + (size_t{64} << 10) >= kMmapThreshold) {
+    return false;
+  }
+  return ReserveHugePageHeap(reserve_bytes);
+}
+
+bool GrowFaultThriftyHeap(size_t more_bytes) {
+  mallopt(M_MMAP_MAX, 0);
+  if (more_bytes == 0 || more_bytes > kMaxReserve) return false;
+  return ReserveHugePageHeap(more_bytes);
+}
+
+#else
+bool UseFaultThriftyHeap(size_t) { return false; }
+bool GrowFaultThriftyHeap(size_t) { return false; }
+#endif
 
 }  // namespace areagraph

@@ -20,4 +20,12 @@ namespace areagraph {
 // kernel refuses: then only the malloc settings apply, or nothing).
 bool UseFaultThriftyHeap(size_t reserve_bytes);
 
+// For a process about to hold far more than its reserve (a big map's canvas,
+// masks and edge lists): from now on every buffer comes from the heap, also
+// those over 32 MB, which glibc would otherwise map on their own in 4-kB
+// pages, and the heap grows once more by `more_bytes` (at most 1 GB), advised
+// for huge pages like the reserve. Freed memory stays in the process. Returns
+// whether the advice was taken.
+bool GrowFaultThriftyHeap(size_t more_bytes);
+
 }  // namespace areagraph

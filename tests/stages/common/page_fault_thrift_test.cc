@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 #include <malloc.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdint>
 #include <cstdlib>
@@ -67,6 +70,38 @@ TEST(PageFaultThriftTest, TheReservedHeapIsAdvisedForHugePages) {
   const std::string flags = VmFlagsOf(static_cast<char*>(buffer) + 15 * kMb);
   EXPECT_NE(flags.find(" hg"), std::string::npos) << flags;
   free(buffer);
+}
+
+long MinorFaults() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
+// In a forked child (the call changes the whole heap for good): a 64-MB
+// buffer, which glibc would map on its own in 4-kB pages (16 384 faults to
+// write it), comes from the grown heap's huge pages.
+TEST(PageFaultThriftTest, GrownHeapHoldsBigBuffersInHugePages) {
+  if (TransparentHugePagesOff()) GTEST_SKIP() << "transparent huge pages are off here";
+  const pid_t child = fork();
+  if (child == 0) {
+    UseFaultThriftyHeap(16 * kMb);
+    if (!GrowFaultThriftyHeap(256 * kMb)) _exit(2);
+    const size_t mapped_before = mallinfo2().hblks;
+    const long faults_before = MinorFaults();
+    char* volatile buffer = static_cast<char*>(malloc(64 * kMb));
+    if (buffer == nullptr) _exit(3);
+    std::memset(buffer, 1, 64 * kMb);
+    if (mallinfo2().hblks != mapped_before) _exit(4);  // a mapping of its own
+    if (VmFlagsOf(buffer + 32 * kMb).find(" hg") == std::string::npos) _exit(5);
+    // 32 huge pages and whatever the kernel splits; 16 384 in 4-kB pages.
+    _exit(MinorFaults() - faults_before < 1000 ? 0 : 6);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0)
+      << "2: not advised, 3: no memory, 4: mapped on its own, 5: no huge-page flag, 6: faults";
 }
 
 }  // namespace
