@@ -16,21 +16,26 @@
 
 namespace areagraph {
 
-bool GetsHugePageHeap(const std::string& map_path) {
+std::optional<int64_t> PngMapPixels(const std::string& map_path) {
   // The signature and the IHDR chunk: 8 + 4 + 4 + 13 + 4 bytes.
   constexpr size_t kHeaderBytes = 33;
   std::ifstream in(map_path, std::ios::binary);
   std::string bytes(kHeaderBytes, '\0');
   if (!in.read(bytes.data(), static_cast<std::streamsize>(kHeaderBytes)) ||
       !HasPngSignature(bytes)) {
-    return false;
+    return std::nullopt;
   }
   try {
     const PngHeader header = ReadPngHeader(bytes, map_path);
-    return int64_t{header.width} * header.height <= kWorkerHugePageMaxPixels;
+    return int64_t{header.width} * header.height;
   } catch (const std::exception&) {
-    return false;
+    return std::nullopt;
   }
+}
+
+bool GetsHugePageHeap(const std::string& map_path) {
+  const std::optional<int64_t> pixels = PngMapPixels(map_path);
+  return pixels && *pixels <= kWorkerHugePageMaxPixels;
 }
 
 #if defined(__GLIBC__)
