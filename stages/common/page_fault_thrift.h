@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace areagraph {
 
@@ -27,5 +28,12 @@ bool UseFaultThriftyHeap(size_t reserve_bytes);
 // for huge pages like the reserve. Freed memory stays in the process. Returns
 // whether the advice was taken.
 bool GrowFaultThriftyHeap(size_t more_bytes);
+
+// Takes the free top of glibc's heap below `boundary` with one allocation
+// that is never touched nor freed, so that the heap's next allocations start
+// at `boundary` (a huge-page boundary of an advised stretch). Returns false,
+// holding nothing, when the top does not reach that far or malloc took the
+// allocation from elsewhere.
+bool HoldHeapBelow(uintptr_t boundary);
 
 }  // namespace areagraph
