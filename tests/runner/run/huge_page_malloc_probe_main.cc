@@ -1,4 +1,4 @@
-// ag-test-huge-page-malloc FILE: starts itself again with glibc's huge-page
+// huge-page-malloc-probe FILE: starts itself again with glibc's huge-page
 // malloc as ag-run does (StartAgainWithHugePageMalloc, wanted), appending a
 // line to FILE at each start, then prints the GLIBC_TUNABLES it runs with and
 // whether malloc advised a buffer that it mapped on its own for huge pages.

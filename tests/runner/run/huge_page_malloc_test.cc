@@ -1,6 +1,6 @@
 // ag-run's second start with glibc's huge-page malloc: when it happens, that
 // it happens once, that a user's GLIBC_TUNABLES is left alone, and that glibc
-// takes the tunable (through ag-test-huge-page-malloc, which calls what
+// takes the tunable (through huge-page-malloc-probe, which calls what
 // ag-run calls).
 #include "runner/run/huge_page_malloc.h"
 
@@ -51,7 +51,7 @@ TEST(HugePageMallocTest, ProgramStartsAgainOnceWithTheTunable) {
   const std::string starts = dir.File("starts");
   const CommandResult run =
       testing::RunProgram({"/usr/bin/env", "-u", "GLIBC_TUNABLES", "-u", kHugePageMallocMarker,
-                           testing::BinDir() + "/ag-test-huge-page-malloc", starts});
+                           testing::BinDir() + "/huge-page-malloc-probe", starts});
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(Starts(starts), 2);
   EXPECT_NE(run.out.find(std::string("tunables=") + kHugePageMallocTunable + "\n"),
@@ -69,7 +69,7 @@ TEST(HugePageMallocTest, UsersTunablesAndTheMarkerKeepTheFirstStart) {
   const std::string user = dir.File("user"), marked = dir.File("marked");
   const CommandResult with_user = testing::RunProgram(
       {"/usr/bin/env", "-u", kHugePageMallocMarker, "GLIBC_TUNABLES=glibc.malloc.check=0",
-       testing::BinDir() + "/ag-test-huge-page-malloc", user});
+       testing::BinDir() + "/huge-page-malloc-probe", user});
   ASSERT_EQ(with_user.exit_code, 0) << with_user.err;
   EXPECT_EQ(Starts(user), 1);
   EXPECT_NE(with_user.out.find("tunables=glibc.malloc.check=0\n"), std::string::npos)
@@ -78,7 +78,7 @@ TEST(HugePageMallocTest, UsersTunablesAndTheMarkerKeepTheFirstStart) {
 
   const CommandResult with_marker = testing::RunProgram(
       {"/usr/bin/env", "-u", "GLIBC_TUNABLES", std::string(kHugePageMallocMarker) + "=1",
-       testing::BinDir() + "/ag-test-huge-page-malloc", marked});
+       testing::BinDir() + "/huge-page-malloc-probe", marked});
   ASSERT_EQ(with_marker.exit_code, 0) << with_marker.err;
   EXPECT_EQ(Starts(marked), 1);
   EXPECT_NE(with_marker.out.find("tunables=\n"), std::string::npos) << with_marker.out;
