@@ -12,25 +12,31 @@
 #include <unistd.h>
 #endif
 
+#include "stages/common/page_fault_thrift.h"
 #include "stages/import/png_header.h"
 
 namespace areagraph {
 
-bool GetsHugePageHeap(const std::string& map_path) {
+std::optional<int64_t> PngMapPixels(const std::string& map_path) {
   // The signature and the IHDR chunk: 8 + 4 + 4 + 13 + 4 bytes.
   constexpr size_t kHeaderBytes = 33;
   std::ifstream in(map_path, std::ios::binary);
   std::string bytes(kHeaderBytes, '\0');
   if (!in.read(bytes.data(), static_cast<std::streamsize>(kHeaderBytes)) ||
       !HasPngSignature(bytes)) {
-    return false;
+    return std::nullopt;
   }
   try {
     const PngHeader header = ReadPngHeader(bytes, map_path);
-    return int64_t{header.width} * header.height <= kWorkerHugePageMaxPixels;
+    return int64_t{header.width} * header.height;
   } catch (const std::exception&) {
-    return false;
+    return std::nullopt;
   }
+}
+
+bool GetsHugePageHeap(const std::string& map_path) {
+  const std::optional<int64_t> pixels = PngMapPixels(map_path);
+  return pixels && *pixels <= kWorkerHugePageMaxPixels;
 }
 
 #if defined(__GLIBC__)
@@ -49,24 +55,6 @@ uintptr_t Break() { return reinterpret_cast<uintptr_t>(sbrk(0)); }
 // The chunk that a request of `bytes` takes: one size word more, rounded up.
 size_t ChunkBytes(size_t bytes) {
   return (bytes + kSizeWord + kChunkAlign - 1) & ~(kChunkAlign - 1);
-}
-
-// Takes the free top of the heap below `boundary` with one allocation, so
-// that the next allocation from the top starts at `boundary`. Leaves nothing
-// allocated and returns false when malloc did not take it from there.
-bool HoldHeapBelow(uintptr_t boundary) {
-  const size_t top_bytes = mallinfo2().keepcost;  // the top chunk, up to the break
-  const uintptr_t top_start = Break() - top_bytes;
-  if (top_start % kChunkAlign != 0 || boundary < top_start + 64 * kChunkAlign) return false;
-  const size_t request = (boundary - top_start) - kSizeWord;  // ChunkBytes(request) reaches it
-  void* filler = malloc(request);
-  if (filler == nullptr) return false;
-  if (reinterpret_cast<uintptr_t>(filler) - kChunkToMemory != top_start ||
-      mallinfo2().keepcost != top_bytes - (boundary - top_start)) {
-    free(filler);  // it came from somewhere else: nothing to hold
-    return false;
-  }
-  return true;  // held for the life of the process, never touched beyond its first page
 }
 
 }  // namespace

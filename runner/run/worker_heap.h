@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace areagraph {
@@ -33,6 +34,10 @@ inline constexpr size_t kWorkerHugePageReserve = size_t{48} << 20;
 // ag-render's heap, for a reason not found. Every map of areagraph/, bormann/
 // and RobotMap is smaller.
 inline constexpr int64_t kWorkerHugePageMaxPixels = 5'000'000;
+
+// The pixels of `map_path` when it is a PNG (read from its header), else
+// nothing (a YAML, an unreadable file).
+std::optional<int64_t> PngMapPixels(const std::string& map_path);
 
 // True when `map_path` is a PNG of at most kWorkerHugePageMaxPixels pixels
 // (read from its header). Anything else, a YAML or an unreadable file

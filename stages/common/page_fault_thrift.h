@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 namespace areagraph {
 
@@ -19,5 +20,20 @@ namespace areagraph {
 // huge-page advice was taken (false where there is no glibc heap or the
 // kernel refuses: then only the malloc settings apply, or nothing).
 bool UseFaultThriftyHeap(size_t reserve_bytes);
+
+// For a process about to hold far more than its reserve (a big map's canvas,
+// masks and edge lists): from now on every buffer comes from the heap, also
+// those over 32 MB, which glibc would otherwise map on their own in 4-kB
+// pages, and the heap grows once more by `more_bytes` (at most 1 GB), advised
+// for huge pages like the reserve. Freed memory stays in the process. Returns
+// whether the advice was taken.
+bool GrowFaultThriftyHeap(size_t more_bytes);
+
+// Takes the free top of glibc's heap below `boundary` with one allocation
+// that is never touched nor freed, so that the heap's next allocations start
+// at `boundary` (a huge-page boundary of an advised stretch). Returns false,
+// holding nothing, when the top does not reach that far or malloc took the
+// allocation from elsewhere.
+bool HoldHeapBelow(uintptr_t boundary);
 
 }  // namespace areagraph

@@ -44,6 +44,10 @@ CommandResult RunProgram(const std::vector<std::string>& argv);
 CommandResult RunProgramWithStdout(const std::vector<std::string>& argv,
                                    const std::string& stdout_path);
 
+// The VmFlags line of this process's mapping that holds `address` (from
+// /proc/self/smaps; " hg" marks huge-page advice), "" when none holds it.
+std::string VmFlagsOf(const void* address);
+
 std::string ReadFile(const std::string& path);
 void WriteFile(const std::string& path, const std::string& bytes);
 

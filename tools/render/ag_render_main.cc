@@ -2,6 +2,7 @@
 #include <google/protobuf/arena.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -41,6 +42,11 @@ BaseMap ReadBaseMap(ArtifactStore& store, const std::string& map, const StageInf
   return base;
 }
 
+// The canvas above which the heap grows by huge pages once more: at lab_a
+// tiled 2 x 2 (1.5 Mpx) it saved nothing, at 8 x 8 (24 Mpx) 31 000 of 31 600
+// faults (docs/performance.md, eleventh pass).
+constexpr double kHugePageCanvasPixels = 4e6;
+
 // The canvas pixels of a window "X,Y,W,H" given in map cells.
 cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
   int x = 0, y = 0, w = 0, h = 0;
@@ -68,6 +74,14 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
       (width <= 0 || width_px * scale <= width)) {
     WriteOutputFile(out, EncodeMapPng(base.cells, width_px, height_px, scale));
     return;
+  }
+  // A big canvas, its masks and the parsed artifact outgrow the heap's
+  // reserve, and glibc maps each buffer over 32 MB (the BGR picture of lab_a
+  // tiled 8 x 8 is 71 MB) in 4-kB pages: its Voronoi picture faulted 31 000
+  // pages, 0.85 of its 2 s of CPU (docs/performance.md, eleventh pass).
+  const double canvas_pixels = static_cast<double>(width_px) * height_px * scale * scale;
+  if (canvas_pixels > kHugePageCanvasPixels) {
+    GrowFaultThriftyHeap(static_cast<size_t>(std::min(canvas_pixels * 40, double{1 << 30})));
   }
   Canvas canvas(base.cells, width_px, height_px, scale);
   // The others are parsed into an arena, which frees tens of thousands of

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <opencv2/core.hpp>
 #include <utility>
 #include <vector>
@@ -61,6 +62,14 @@ class Canvas {
 // directions: the picture cv::resize makes with INTER_NEAREST, in less than
 // half of its instructions.
 cv::Mat UpscaleNearest(const cv::Mat& grey, int scale);
+
+// For each BGR channel, what blending `colour` with weight `alpha` makes of
+// each 8-bit value, computed as cv::addWeighted(picture, 1 - alpha, colour,
+// alpha, 0) does: in float, rounded to the nearest. The same values for
+// alpha 0.5 (every product and sum exact; a test holds them to it), within
+// one for others, where OpenCV's vector code may fuse the multiply-add.
+using BlendTables = std::array<std::array<uint8_t, 256>, 3>;
+BlendTables BlendTablesFor(const cv::Scalar& colour, double alpha);
 
 // Distinct, well separated colours for ids (golden-angle hues).
 cv::Scalar DistinctColour(int id);

@@ -151,6 +151,62 @@ TEST(Canvas, LinesDrawWhatALinePerSegmentDraws) {
   }
 }
 
+// The blend tables give what cv::addWeighted gives at FaintLines' alpha, for
+// every value of a channel against every value of the colour (a picture
+// long enough for OpenCV's vector code).
+TEST(Canvas, BlendTablesAreAddWeightedAtOneHalf) {
+  cv::Mat values(256, 256, CV_8UC3);
+  for (int colour = 0; colour < 256; ++colour) {
+    for (int v = 0; v < 256; ++v) values.at<cv::Vec3b>(colour, v) = cv::Vec3b(v, 255 - v, v ^ 85);
+  }
+  for (int colour = 0; colour < 256; ++colour) {
+    const cv::Scalar tint(colour, (colour * 7) % 256, 255 - colour);
+    const cv::Mat row = values.row(colour);
+    cv::Mat expected;
+    cv::addWeighted(row, 0.5, cv::Mat(row.size(), row.type(), tint), 0.5, 0, expected);
+    const BlendTables tables = BlendTablesFor(tint, 0.5);
+    for (int v = 0; v < 256; ++v) {
+      const cv::Vec3b in = row.at<cv::Vec3b>(0, v), out = expected.at<cv::Vec3b>(0, v);
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(tables[c][in[c]], out[c]) << "colour " << colour << " value " << int(in[c]);
+      }
+    }
+  }
+}
+
+// FaintLines blends exactly the pixels of its 1-px lines, each once, as the
+// whole-picture cv::addWeighted and a masked copy did before.
+TEST(Canvas, FaintLinesBlendWhatAddWeightedUnderAMaskBlended) {
+  cv::RNG random(11);
+  std::vector<std::pair<cv::Point2d, cv::Point2d>> segments;
+  for (int i = 0; i < 300; ++i) {
+    segments.emplace_back(cv::Point2d(random.uniform(-2.0, 62.0), random.uniform(-2.0, 42.0)),
+                          cv::Point2d(random.uniform(-2.0, 62.0), random.uniform(-2.0, 42.0)));
+  }
+  std::string cells(60 * 40, static_cast<char>(proto::CELL_FREE));
+  for (size_t i = 0; i < cells.size(); i += 7) cells[i] = static_cast<char>(proto::CELL_OCCUPIED);
+  for (size_t i = 3; i < cells.size(); i += 11) cells[i] = static_cast<char>(proto::CELL_UNKNOWN);
+  const cv::Scalar colour(195, 175, 245);
+  for (const int scale : {1, 3}) {
+    Canvas canvas(cells, 60, 40, scale), reference(cells, 60, 40, scale);
+    canvas.Line(At(1, 1), At(50, 30), cv::Scalar(10, 200, 30), 2);  // colours under the lines
+    reference.Line(At(1, 1), At(50, 30), cv::Scalar(10, 200, 30), 2);
+    canvas.FaintLines(segments, colour, 0.5);
+    cv::Mat mask = cv::Mat::zeros(reference.image().size(), CV_8UC1);
+    for (const auto& [a, b] : segments) {
+      cv::line(mask, reference.ToCanvas(a), reference.ToCanvas(b), cv::Scalar(255), 1, cv::LINE_8,
+               4);
+    }
+    cv::Mat tinted;
+    cv::addWeighted(reference.image(), 0.5,
+                    cv::Mat(reference.image().size(), reference.image().type(), colour), 0.5, 0,
+                    tinted);
+    tinted.copyTo(reference.image(), mask);
+    EXPECT_EQ(cv::norm(canvas.image(), reference.image(), cv::NORM_INF), 0) << "scale " << scale;
+    EXPECT_GT(cv::countNonZero(mask), 100);
+  }
+}
+
 TEST(Canvas, DefaultScaleKeepsThePictureNearTheMapsOwnSize) {
   EXPECT_EQ(DefaultScale(120, 100), 8);    // small maps are enlarged, at most 8 x
   EXPECT_EQ(DefaultScale(500, 500), 2);    // 1000 px
