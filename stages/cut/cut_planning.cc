@@ -200,18 +200,16 @@ std::vector<EdgePiece> PlanEdgeCuts(const EdgeTrack& track, bool source_is_dead_
   std::vector<EdgePiece> pieces = SplitByRoom(track, room_at);
   if (pieces.size() == 1) return pieces;
 
-  const bool closed_cut =
-      std::any_of(pieces.begin() + 1, pieces.end(), [&](const EdgePiece& piece) {
-        return OnClosedLine(track, piece.begin, closed_lines);
-      });
-  if ((source_is_dead_end || target_is_dead_end) && track.length() < room_width_px &&
-      !closed_cut) {
+  const bool closed_cut = std::any_of(
+      pieces.begin() + 1, pieces.end(),
+      [&](const EdgePiece& piece) { return OnClosedLine(track, piece.begin, closed_lines); });
+  if ((source_is_dead_end || target_is_dead_end) && track.length() < room_width_px && !closed_cut) {
     const int room =
         source_is_dead_end && !target_is_dead_end ? pieces.back().room : pieces.front().room;
     return {{track.Start(), track.End(), room}};
   }
-  while (DropOneShortTip(track, source_is_dead_end, target_is_dead_end, room_width_px,
-                         closed_lines, &pieces) ||
+  while (DropOneShortTip(track, source_is_dead_end, target_is_dead_end, room_width_px, closed_lines,
+                         &pieces) ||
          FoldOneDoorway(track, room_width_px, &pieces)) {
   }
   MoveCutsToNarrowest(track, room_width_px, &pieces);
