@@ -1,4 +1,4 @@
-// A closet of about 2.2 m2 behind a 0.8 m door in a 6 x 5 m room (as the
+// A closet of about 1.4 m2 behind a 0.8 m door in a 6 x 5 m room (as the
 // small rooms of areagraph/ lab_d_scan_furnitures and freiburg_building101):
 // the cut closes the door, but the closet's piece of the edge is shorter
 // than W, so the cut joined it to the room's piece (cut.keep_closed_room_tips
