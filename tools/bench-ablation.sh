@@ -62,7 +62,9 @@ STEPS=(
   "+ clean.keep_wall_pieces|clean.keep_wall_pieces=true"
   "+ merge.join_one_sided_narrowings|merge.join_one_sided_narrowings=true"
   "+ merge.join_split_corridor_chains|merge.join_split_corridor_chains=true"
-  "+ merge.join_corridor_stems (= defaults)|merge.join_corridor_stems=true"
+  "+ merge.join_corridor_stems|merge.join_corridor_stems=true"
+  "+ cut.keep_closed_room_tips|cut.keep_closed_room_tips=true"
+  "+ merge.keep_small_closed_rooms (= defaults)|merge.keep_small_closed_rooms=true"
 )
 
 set_flags=()

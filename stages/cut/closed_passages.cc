@@ -1,40 +1,41 @@
 #include "stages/cut/closed_passages.h"
 
 #include <cmath>
-#include <unordered_map>
-#include <vector>
 
 namespace areagraph {
 
-void MarkClosedPassages(const PointList& closing_sites, double resolution_m,
-                        proto::CutGraph* graph) {
-  if (closing_sites.empty()) return;
-  const double reach_px = kClosedPassageReachM / resolution_m;
-  // Sites bucketed in cells of the reach, so each passage looks at 3 x 3.
-  auto key = [&](double x, double y) {
-    return (static_cast<int64_t>(std::floor(x / reach_px)) << 32) ^
-           static_cast<uint32_t>(static_cast<int32_t>(std::floor(y / reach_px)));
-  };
-  std::unordered_map<int64_t, std::vector<Eigen::Vector2d>> buckets;
+ClosedLines::ClosedLines(const PointList& closing_sites, double resolution_m)
+    : reach_px_(kClosedPassageReachM / resolution_m) {
   for (const Eigen::Vector2d& site : closing_sites) {
-    buckets[key(site.x(), site.y())].push_back(site);
+    buckets_[Key(site.x(), site.y())].push_back(site);
   }
-  for (proto::PassagePoint& passage : *graph->mutable_passage_points()) {
-    const Eigen::Vector2d p(passage.position().x(), passage.position().y());
-    bool near = false;
-    for (int dx = -1; dx <= 1 && !near; ++dx) {
-      for (int dy = -1; dy <= 1 && !near; ++dy) {
-        auto it = buckets.find(key(p.x() + dx * reach_px, p.y() + dy * reach_px));
-        if (it == buckets.end()) continue;
-        for (const Eigen::Vector2d& site : it->second) {
-          if ((site - p).norm() <= reach_px) {
-            near = true;
-            break;
-          }
-        }
+}
+
+int64_t ClosedLines::Key(double x, double y) const {
+  return (static_cast<int64_t>(std::floor(x / reach_px_)) << 32) ^
+         static_cast<uint32_t>(static_cast<int32_t>(std::floor(y / reach_px_)));
+}
+
+bool ClosedLines::Near(const Eigen::Vector2d& p) const {
+  if (buckets_.empty()) return false;
+  for (int dx = -1; dx <= 1; ++dx) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      auto it = buckets_.find(Key(p.x() + dx * reach_px_, p.y() + dy * reach_px_));
+      if (it == buckets_.end()) continue;
+      for (const Eigen::Vector2d& site : it->second) {
+        if ((site - p).norm() <= reach_px_) return true;
       }
     }
-    if (near) passage.set_closed_by_cut(true);
+  }
+  return false;
+}
+
+void MarkClosedPassages(const ClosedLines& lines, proto::CutGraph* graph) {
+  if (lines.empty()) return;
+  for (proto::PassagePoint& passage : *graph->mutable_passage_points()) {
+    if (lines.Near({passage.position().x(), passage.position().y()})) {
+      passage.set_closed_by_cut(true);
+    }
   }
 }
 

@@ -99,6 +99,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     closing.insert(closing.end(), gaps.begin(), gaps.end());
   }
   sites.insert(sites.end(), closing.begin(), closing.end());
+  const ClosedLines closed_lines(closing, grid.resolution_m());
+  const ClosedLines* kept_tips = options.keep_closed_room_tips() ? &closed_lines : nullptr;
   SiteAlphaShape shape(std::move(sites), room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);
@@ -128,7 +130,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const bool source_dead = topology.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END;
     const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
     const std::vector<EdgePiece> plan =
-        PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at);
+        PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
 
     std::vector<proto::GraphEdge> pieces;
     if (plan.size() == 1) {
@@ -177,7 +179,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   std::vector<proto::Polygon> outlines = shape.RoomOutlines();
   outlines.resize(room_ids.size());
   for (proto::Polygon& outline : outlines) *out.add_room_shapes() = std::move(outline);
-  MarkClosedPassages(closing, grid.resolution_m(), &out);
+  MarkClosedPassages(closed_lines, &out);
   return out;
 }
 

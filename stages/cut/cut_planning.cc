@@ -78,16 +78,24 @@ bool FoldOneDoorway(const EdgeTrack& track, double room_width_px, std::vector<Ed
   return false;
 }
 
+// Whether the cut at `at` lies on a line the cut closed.
+bool OnClosedLine(const EdgeTrack& track, const PathPosition& at, const ClosedLines* lines) {
+  return lines != nullptr && lines->Near(track.PointAt(at));
+}
+
 // Rule 2 for the pieces at dead ends. Returns true when something changed.
 bool DropOneShortTip(const EdgeTrack& track, bool source_is_dead_end, bool target_is_dead_end,
-                     double room_width_px, std::vector<EdgePiece>* pieces) {
+                     double room_width_px, const ClosedLines* closed_lines,
+                     std::vector<EdgePiece>* pieces) {
   const int n = static_cast<int>(pieces->size());
   if (n < 2) return false;
-  if (source_is_dead_end && Length(track, pieces->front()) < room_width_px) {
+  if (source_is_dead_end && Length(track, pieces->front()) < room_width_px &&
+      !OnClosedLine(track, pieces->front().end, closed_lines)) {
     JoinPieces(pieces, 0, 1, (*pieces)[1].room);
     return true;
   }
-  if (target_is_dead_end && Length(track, pieces->back()) < room_width_px) {
+  if (target_is_dead_end && Length(track, pieces->back()) < room_width_px &&
+      !OnClosedLine(track, pieces->back().begin, closed_lines)) {
     JoinPieces(pieces, n - 2, n - 1, (*pieces)[n - 2].room);
     return true;
   }
@@ -187,16 +195,21 @@ PathPosition NarrowestPosition(const EdgeTrack& track, const PathPosition& from,
 
 std::vector<EdgePiece> PlanEdgeCuts(const EdgeTrack& track, bool source_is_dead_end,
                                     bool target_is_dead_end, double room_width_px,
-                                    const std::function<int(const Eigen::Vector2d&)>& room_at) {
+                                    const std::function<int(const Eigen::Vector2d&)>& room_at,
+                                    const ClosedLines* closed_lines) {
   std::vector<EdgePiece> pieces = SplitByRoom(track, room_at);
   if (pieces.size() == 1) return pieces;
 
-  if ((source_is_dead_end || target_is_dead_end) && track.length() < room_width_px) {
+  const bool closed_cut = std::any_of(
+      pieces.begin() + 1, pieces.end(),
+      [&](const EdgePiece& piece) { return OnClosedLine(track, piece.begin, closed_lines); });
+  if ((source_is_dead_end || target_is_dead_end) && track.length() < room_width_px && !closed_cut) {
     const int room =
         source_is_dead_end && !target_is_dead_end ? pieces.back().room : pieces.front().room;
     return {{track.Start(), track.End(), room}};
   }
-  while (DropOneShortTip(track, source_is_dead_end, target_is_dead_end, room_width_px, &pieces) ||
+  while (DropOneShortTip(track, source_is_dead_end, target_is_dead_end, room_width_px, closed_lines,
+                         &pieces) ||
          FoldOneDoorway(track, room_width_px, &pieces)) {
   }
   MoveCutsToNarrowest(track, room_width_px, &pieces);

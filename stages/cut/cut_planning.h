@@ -4,6 +4,7 @@
 #include <functional>
 #include <vector>
 
+#include "stages/cut/closed_passages.h"
 #include "stages/cut/edge_track.h"
 
 namespace areagraph {
@@ -20,7 +21,9 @@ struct EdgePiece {
 //    found by sampling and bisection along the segment).
 // 2. A dead-end edge shorter than `room_width_px` is not cut; it takes the
 //    room found at its junction end. Likewise a piece shorter than W at a
-//    dead end joins its neighbour.
+//    dead end joins its neighbour. Neither happens where the cut lies on
+//    one of `closed_lines` (cut.keep_closed_room_tips): a small room behind
+//    a door the cut closed is shorter than W, not a bulge of the corridor.
 // 3. A room-less piece shorter than W between two rooms is a doorway: it
 //    vanishes, leaving one cut at its narrowest point (or none when both
 //    sides are the same room).
@@ -29,7 +32,8 @@ struct EdgePiece {
 // Returns the pieces in path order; they cover the whole edge.
 std::vector<EdgePiece> PlanEdgeCuts(const EdgeTrack& track, bool source_is_dead_end,
                                     bool target_is_dead_end, double room_width_px,
-                                    const std::function<int(const Eigen::Vector2d&)>& room_at);
+                                    const std::function<int(const Eigen::Vector2d&)>& room_at,
+                                    const ClosedLines* closed_lines = nullptr);
 
 // The middle of the narrowest stretch of the path between two positions:
 // the run of path points (and the two ends) within half a pixel of the

@@ -14,6 +14,7 @@
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
+#include "stages/merge/closed_rooms.h"
 #include "stages/merge/corridor_joining.h"
 #include "stages/merge/corridor_labels.h"
 #include "stages/merge/corridor_piece_folding.h"
@@ -145,7 +146,10 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
-  FoldSmallAreas(graph, min_cells, &plan, &raster);
+  FoldSmallAreas(graph, min_cells, &plan, &raster,
+                 options.keep_small_closed_rooms()
+                     ? SmallClosedRooms(graph, plan, raster, grid, min_cells)
+                     : std::vector<bool>());
   if (options.label_corridors_by_shape()) {
     LabelCorridorsByShape(raster, grid.resolution_m(), &plan);
   }

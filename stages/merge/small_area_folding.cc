@@ -139,13 +139,14 @@ void ApplyFolds(FoldedAreas& folded, const std::vector<bool>& took_others, AreaP
 }  // namespace
 
 void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* plan,
-                    AreaRaster* raster) {
+                    AreaRaster* raster, const std::vector<bool>& kept) {
   const int count = static_cast<int>(plan->areas.size());
   std::vector<int64_t>& cells = raster->cell_count;
   FoldedAreas folded(count);
   std::vector<cv::Rect> box = AreaBoxes(*raster);
   std::vector<std::set<int>> neighbours = GraphNeighbours(graph, *plan);
   std::vector<bool> unfoldable(count, false), took_others(count, false);
+  for (int k = 0; k < count && k < static_cast<int>(kept.size()); ++k) unfoldable[k] = kept[k];
   int remaining = count;
   // Smallest first, ties to the lower index. An area that grows is queued
   // again; its older entry no longer matches its size and is skipped.

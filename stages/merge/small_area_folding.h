@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "proto/artifacts.pb.h"
 #include "stages/merge/area_assignment.h"
@@ -16,7 +17,9 @@ namespace areagraph {
 // at once, but keeps folded areas in a union-find and relabels the raster
 // once at the end: a fold costs its area's bounding box, not the whole map
 // (thousands of folds on a cluttered 2000 x 2000 map took minutes).
+// Areas marked in `kept` (by index; may be empty) are never folded away,
+// though others may fold into them (merge.keep_small_closed_rooms).
 void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* plan,
-                    AreaRaster* raster);
+                    AreaRaster* raster, const std::vector<bool>& kept = {});
 
 }  // namespace areagraph

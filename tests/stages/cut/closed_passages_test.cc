@@ -30,7 +30,7 @@ PointList DoorLine() {
 
 TEST(ClosedPassagesTest, OnlyTheCutOnTheClosedLineIsMarked) {
   proto::CutGraph graph = TwoPassages();
-  MarkClosedPassages(DoorLine(), kResolutionM, &graph);
+  MarkClosedPassages(ClosedLines(DoorLine(), kResolutionM), &graph);
   EXPECT_TRUE(graph.passage_points(0).closed_by_cut());
   EXPECT_FALSE(graph.passage_points(1).closed_by_cut());
 }
@@ -40,13 +40,13 @@ TEST(ClosedPassagesTest, ACutJustBeyondTheReachIsNotMarked) {
   PointList sites;
   // 0.15 m is 3 px: a line 3.5 px away is out of reach.
   for (int y = 5; y <= 35; ++y) sites.emplace_back(43.5, y);
-  MarkClosedPassages(sites, kResolutionM, &graph);
+  MarkClosedPassages(ClosedLines(sites, kResolutionM), &graph);
   EXPECT_FALSE(graph.passage_points(0).closed_by_cut());
 }
 
 TEST(ClosedPassagesTest, NoClosingSitesMarkNothing) {
   proto::CutGraph graph = TwoPassages();
-  MarkClosedPassages({}, kResolutionM, &graph);
+  MarkClosedPassages(ClosedLines({}, kResolutionM), &graph);
   EXPECT_FALSE(graph.passage_points(0).closed_by_cut());
   EXPECT_FALSE(graph.passage_points(1).closed_by_cut());
 }

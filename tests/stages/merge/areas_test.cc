@@ -146,16 +146,22 @@ TEST(AreaStagesTest, NarrowerRoomWidthStrategyMakesTheCorridorARoom) {
   }
 }
 
+// With merge.keep_small_closed_rooms the rooms stay: each is one area behind
+// a door the cut closed, narrower than the room, with its walls seen.
 TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
   const FloorPlan plan = CorridorWithThreeRooms();
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
-  proto::PipelineOptions options;
-  // The rooms hold about 10.5 m2 each, the corridor about 15.5 m2.
-  options.mutable_merge()->set_min_area_m2(12);
-  const AreaStages stages = RunAreaStages(map, options);
-  ExpectAreaGraphInvariants(stages, map);
-  EXPECT_EQ(stages.areas.areas_size(), 1);
-  EXPECT_EQ(stages.areas.passages_size(), 0);
+  for (const bool keep_closed : {false, true}) {
+    SCOPED_TRACE(keep_closed ? "keep_small_closed_rooms" : "fold every small area");
+    proto::PipelineOptions options;
+    // The rooms hold about 10.5 m2 each, the corridor about 15.5 m2.
+    options.mutable_merge()->set_min_area_m2(12);
+    options.mutable_merge()->set_keep_small_closed_rooms(keep_closed);
+    const AreaStages stages = RunAreaStages(map, options);
+    ExpectAreaGraphInvariants(stages, map);
+    EXPECT_EQ(stages.areas.areas_size(), keep_closed ? 4 : 1);
+    EXPECT_EQ(stages.areas.passages_size(), keep_closed ? 3 : 0);
+  }
 }
 
 // A door narrower than twice the clearance keeps the Topology Graph out of

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+#include "stages/geometry/cell_grid.h"
+#include "stages/merge/area_assignment.h"
+#include "stages/merge/area_raster.h"
+
+namespace areagraph {
+
+// An opening narrower than this share of the area's widest inner width is a
+// door (the same share as corridor piece folding's wide opening).
+inline constexpr double kClosedRoomOpeningShare = 0.9;
+// At most this share of the faces between the area's cells and non-free
+// cells may face unknown cells: a room's walls were seen; a piece that
+// borders unknown space is a scan's frontier or gap, not a room.
+inline constexpr double kClosedRoomMaxUnknownShare = 0.1;
+
+// Per area of `plan`: whether it is a small closed room that
+// merge.keep_small_closed_rooms keeps out of FoldSmallAreas although it has
+// fewer than `min_cells` cells (and some). All must hold:
+// - it meets the other areas at one graph vertex only, and one area there;
+// - ag-cut closed that passage on purpose (PassagePoint.closed_by_cut);
+// - its opening there is narrower than kClosedRoomOpeningShare of its widest
+//   inner width (twice the largest distance from its cells to a cell
+//   outside it);
+// - at most kClosedRoomMaxUnknownShare of its faces towards non-free cells
+//   face unknown cells (cells off the map count as unknown).
+std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan& plan,
+                                   const AreaRaster& raster, const CellGrid& grid,
+                                   int64_t min_cells);
+
+}  // namespace areagraph

@@ -1,0 +1,76 @@
+// A closet of about 1.4 m2 behind a 0.8 m door in a 6 x 5 m room (as the
+// small rooms of areagraph/ lab_d_scan_furnitures and freiburg_building101):
+// the cut closes the door, but the closet's piece of the edge is shorter
+// than W, so the cut joined it to the room's piece (cut.keep_closed_room_tips
+// keeps it), and ag-merge folded the closet, smaller than merge.min_area_m2,
+// into the room (merge.keep_small_closed_rooms keeps it).
+#include <gtest/gtest.h>
+
+#include "tests/support/area_test_support.h"
+#include "tools/example_maps/floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+using floorplan::WallDirection;
+
+// The room {0.5, 0.5, 6, 5} and the closet {6.5, 0.5, 1.2, 1.5} beside its
+// top right corner, with a 0.8 m door in the wall between them. With
+// `far_wall_unknown` the closet's far wall was never seen: unknown cells.
+floorplan::FloorPlan RoomAndCloset(bool far_wall_unknown = false) {
+  floorplan::FloorPlan plan(8.6, 6);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 5});
+  floorplan::DrawRoom(plan, {6.5, 0.5, 1.2, 1.5});
+  floorplan::DrawDoor(plan, 6.5, 1.25, 0.8, WallDirection::kVertical);
+  if (far_wall_unknown) {
+    const cv::Rect inner = floorplan::InnerCells(plan, {6.5, 0.5, 1.2, 1.5});
+    plan.image()(cv::Rect(inner.br().x, inner.y, plan.wall_thickness_px(), inner.height))
+        .setTo(floorplan::kUnknownGrey);
+  }
+  return plan;
+}
+
+struct Result {
+  int room = -1, closet = -1;
+};
+
+Result RunOn(const floorplan::FloorPlan& plan, const proto::PipelineOptions& options) {
+  const proto::CleanedMap map = CleanDrawnMap(plan.image(), options.clean());
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map, 0.9);
+  return {AreaAt(stages.areas, 3.5, 3), AreaAt(stages.areas, 7.1, 1.25)};
+}
+
+TEST(SmallClosedRoomsTest, AClosetBehindAClosedDoorIsAnAreaOfItsOwn) {
+  const Result result = RunOn(RoomAndCloset(), {});
+  ASSERT_NE(result.room, -1);
+  ASSERT_NE(result.closet, -1);
+  EXPECT_NE(result.room, result.closet);
+}
+
+TEST(SmallClosedRoomsTest, WithoutKeepSmallClosedRoomsTheClosetFolds) {
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_keep_small_closed_rooms(false);
+  const Result result = RunOn(RoomAndCloset(), options);
+  ASSERT_NE(result.room, -1);
+  EXPECT_EQ(result.room, result.closet);
+}
+
+TEST(SmallClosedRoomsTest, WithoutKeepClosedRoomTipsTheClosetJoinsTheRoom) {
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_keep_closed_room_tips(false);
+  const Result result = RunOn(RoomAndCloset(), options);
+  ASSERT_NE(result.room, -1);
+  EXPECT_EQ(result.room, result.closet);
+}
+
+// The walls-seen condition: a closet whose far wall is unknown space may be
+// the edge of what the scan saw, and it folds.
+TEST(SmallClosedRoomsTest, AClosetBesideUnknownSpaceFolds) {
+  const Result result = RunOn(RoomAndCloset(/*far_wall_unknown=*/true), {});
+  ASSERT_NE(result.room, -1);
+  EXPECT_EQ(result.room, result.closet);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
