@@ -62,7 +62,8 @@ STEPS=(
   "+ clean.keep_wall_pieces|clean.keep_wall_pieces=true"
   "+ merge.join_one_sided_narrowings|merge.join_one_sided_narrowings=true"
   "+ merge.join_split_corridor_chains|merge.join_split_corridor_chains=true"
-  "+ merge.join_corridor_stems (= defaults)|merge.join_corridor_stems=true"
+  "+ merge.join_corridor_stems|merge.join_corridor_stems=true"
+  "+ cut.cut_narrow_tails and merge.corridor_stems_max_width_m 4 (= defaults)|cut.cut_narrow_tails=true merge.corridor_stems_max_width_m=4"
 )
 
 set_flags=()
