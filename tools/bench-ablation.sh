@@ -64,7 +64,8 @@ STEPS=(
   "+ merge.join_split_corridor_chains|merge.join_split_corridor_chains=true"
   "+ merge.join_corridor_stems|merge.join_corridor_stems=true"
   "+ cut.keep_closed_room_tips|cut.keep_closed_room_tips=true"
-  "+ merge.keep_small_closed_rooms (= defaults)|merge.keep_small_closed_rooms=true"
+  "+ merge.keep_small_closed_rooms|merge.keep_small_closed_rooms=true"
+  "+ cut.cut_narrow_tails and merge.corridor_stems_max_width_m 4 (= defaults)|cut.cut_narrow_tails=true merge.corridor_stems_max_width_m=4"
 )
 
 set_flags=()

@@ -113,6 +113,8 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
                      "square metres");
   RequireNotNegative(options.join_porous_borders_gap_m(), "merge.join_porous_borders_gap_m",
                      "metres");
+  RequireNotNegative(options.corridor_stems_max_width_m(), "merge.corridor_stems_max_width_m",
+                     "metres");
   const double elongation = options.furniture_max_elongation();
   Require(elongation == 0 || (std::isfinite(elongation) && elongation >= 1),
           "merge.furniture_max_elongation must be 0 (any shape) or at least 1, got " +

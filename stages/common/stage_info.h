@@ -36,8 +36,11 @@ inline constexpr StageInfo kPruneStage{"prune", 3};
 // cut 6: gaps beside thin wall ends closed too (cut.close_wall_gaps_max_m).
 // cut 7: passages on doors and wall gaps closed on purpose are marked (closed_by_cut).
 // cut 8: island_end_on_face on (face's middle only); wall gaps up to 3.5 m, short wall tips.
-// cut 9: a tip shorter than W behind a door or wall gap the cut closed keeps its own room
-// (cut.keep_closed_room_tips; issue 12, areagraph/ lab_d_scan_furnitures, freiburg_building101).
+// cut 9 (one bump for two branches merged the same day): a tip shorter than W behind a door or wall
+// gap the cut closed keeps its own room (cut.keep_closed_room_tips; issue 12, areagraph/
+// lab_d_scan_furnitures, freiburg_building101). Also in cut 9: a room's edge running on into a
+// narrow tail (a corridor wider than W but at most half as wide as the room) is cut where the tail
+// begins (cut.cut_narrow_tails; issue 12, areagraph/ Freiburg101_scan's side corridors).
 inline constexpr StageInfo kCutStage{"cut", 9};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
@@ -65,8 +68,10 @@ inline constexpr StageInfo kCutStage{"cut", 9};
 // chain (merge.join_split_corridor_chains), and dead-end branches that do not narrow at their mouth
 // join their corridor (merge.join_corridor_stems); issue 12, generated tuning floors lost to a
 // fixed W = 1.25 m (floor_18, floor_6, floor_19).
-// merge 14: a small room behind a closed door, one area with walls seen, is not folded away
-// (merge.keep_small_closed_rooms; issue 12, with cut 9).
+// merge 14 (one bump for two branches merged the same day): a small room behind a closed door, one
+// area with walls seen, is not folded away (merge.keep_small_closed_rooms; issue 12, with cut 9).
+// Also in merge 14: corridor stem joining joins stems only into corridors at most 4 m wide
+// (merge.corridor_stems_max_width_m), so a hall does not take back the tails cut 9 cut off.
 inline constexpr StageInfo kMergeStage{"merge", 14};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).

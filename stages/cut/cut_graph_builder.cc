@@ -11,6 +11,7 @@
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
+#include "stages/cut/narrow_tails.h"
 #include "stages/cut/room_width.h"
 #include "stages/cut/structure_sites.h"
 #include "stages/geometry/cell_grid.h"
@@ -129,8 +130,9 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const EdgeTrack track(edge);
     const bool source_dead = topology.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END;
     const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
-    const std::vector<EdgePiece> plan =
+    std::vector<EdgePiece> plan =
         PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
+    if (options.cut_narrow_tails()) CutNarrowTails(track, source_dead, target_dead, &plan);
 
     std::vector<proto::GraphEdge> pieces;
     if (plan.size() == 1) {

@@ -141,7 +141,9 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
                        options.join_one_sided_narrowings() ? &grid : nullptr);
   }
   if (options.join_corridor_stems()) {
-    JoinCorridorStems(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
+    CorridorStemParams params;
+    params.max_corridor_width_m = options.corridor_stems_max_width_m();
+    JoinCorridorStems(graph, grid.resolution_m(), options.keep_closed_doors(), &plan, params);
   }
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =

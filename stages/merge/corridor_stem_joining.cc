@@ -54,6 +54,10 @@ void JoinCorridorStems(const proto::CutGraph& graph, double resolution_m, bool k
     const bool corridor_shaped =
         into.room_id < 0 ? into.kind == proto::AREA_CORRIDOR : CorridorLike(graph, into);
     if (!corridor_shaped || w > params.max_width_share * width[corridor]) continue;
+    if (params.max_corridor_width_m > 0 &&
+        width[corridor] > params.max_corridor_width_m / resolution_m) {
+      continue;
+    }
     groups.Union(stem, corridor);
     joined.push_back(corridor);
   }

@@ -2,6 +2,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/corridor_labels.h"
 
 namespace areagraph {
 
@@ -25,6 +26,10 @@ struct CorridorStemParams {
   // the rest (RobotMap lab_c_scan's last office, 2.10 m beside a 2.10 m
   // corridor, lost 0.057 without this).
   double max_width_share = 0.8;
+  // The corridor is at most this wide (metres, its median free width; 0: no
+  // limit): a wider area is a hall, whose narrow tails cut.cut_narrow_tails
+  // made areas of their own (merge.corridor_stems_max_width_m).
+  double max_corridor_width_m = kMaxCorridorWidthM;
 };
 
 // Joins a room-less dead end (AREA_DEAD_END) into the corridor it opens

@@ -6,31 +6,10 @@
 #include <cmath>
 #include <functional>
 
+#include "tests/stages/cut/straight_edge.h"
+
 namespace areagraph {
 namespace {
-
-// A straight edge along y = 0 from x = 0 to x = 100 with a point every
-// 2 px; the walls are `clearance(x)` away on either side.
-proto::GraphEdge StraightEdge(const std::function<double(double)>& clearance) {
-  proto::GraphEdge edge;
-  for (int x = 0; x <= 100; x += 2) {
-    proto::Point2* p = edge.add_path();
-    p->set_x(x);
-    p->set_y(0);
-    edge.add_clearance_px(clearance(x));
-    if (x < 100) {
-      const double mid = x + 1;
-      proto::Point2* left = edge.add_left_sites();
-      left->set_x(mid);
-      left->set_y(-clearance(mid));
-      proto::Point2* right = edge.add_right_sites();
-      right->set_x(mid);
-      right->set_y(clearance(mid));
-    }
-  }
-  edge.set_length_px(100);
-  return edge;
-}
 
 // Rooms by x: [0, a) room 0, [a, b) none, [b, 100] `last_room`.
 std::function<int(const Eigen::Vector2d&)> Rooms(double a, double b, int last_room) {

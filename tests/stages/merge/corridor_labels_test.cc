@@ -5,6 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "proto/pipeline_options.pb.h"
+#include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
 
@@ -109,6 +111,13 @@ TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
   EXPECT_EQ(with.at<uint8_t>(28, 85), 2);   // the cabinet at the wall's end
   EXPECT_EQ(with.at<uint8_t>(21, 120), 0);  // the wall piece itself
   EXPECT_EQ(with.at<uint8_t>(50, 65), 0);   // the thick wall is too long
+}
+
+// Stem joining stops at halls by the same limit that tells corridors from
+// halls by shape, in the options and in the function's own default.
+TEST(CorridorStemsTest, TheWidthLimitIsTheCorridorWidthLimit) {
+  EXPECT_EQ(proto::MergeOptions().corridor_stems_max_width_m(), kMaxCorridorWidthM);
+  EXPECT_EQ(CorridorStemParams().max_corridor_width_m, kMaxCorridorWidthM);
 }
 
 }  // namespace

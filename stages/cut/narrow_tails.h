@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include "stages/cut/cut_planning.h"
+#include "stages/cut/edge_track.h"
+
+namespace areagraph {
+
+// What makes the end of a room's edge a narrow tail (cut.cut_narrow_tails).
+struct NarrowTailParams {
+  // The room is at least this many times as wide as the tail: the tail is
+  // the stretch before the dead end where the clearance stays at most the
+  // room's widest clearance on the edge divided by this.
+  double room_to_tail_width = 2;
+  // The tail begins where the clearance first comes within this factor of
+  // the tail's median clearance (scan noise on its walls).
+  double width_tolerance = 1.15;
+  // Corridor-like: the tail is at least this many times as long as wide
+  // (merge's kMinCorridorElongation, 4 squares of the width).
+  double elongation = 4;
+};
+
+// Where a room's piece of an edge runs on into a dead end through a narrow
+// tail (a corridor narrower than the room but wider than W, so the room
+// disk fills it too), the piece is cut where the tail begins and the tail
+// becomes a room-less piece: its own area, as a corridor narrower than W
+// would be. `pieces` is PlanEdgeCuts' plan of `track`; only pieces at a
+// dead end are looked at. The paper has no such cut.
+void CutNarrowTails(const EdgeTrack& track, bool source_is_dead_end, bool target_is_dead_end,
+                    std::vector<EdgePiece>* pieces, const NarrowTailParams& params = {});
+
+}  // namespace areagraph
