@@ -121,6 +121,15 @@ AreaPlan AssignAreas(const proto::CutGraph& graph) {
   return plan;
 }
 
+std::vector<std::set<int>> AreasAtVertices(const proto::CutGraph& graph, const AreaPlan& plan) {
+  std::vector<std::set<int>> areas_at(graph.vertices_size());
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    areas_at[graph.edges(e).source()].insert(plan.area_of_edge[e]);
+    areas_at[graph.edges(e).target()].insert(plan.area_of_edge[e]);
+  }
+  return areas_at;
+}
+
 double MedianWidthPx(const proto::CutGraph& graph, const AreaPlan::Area& area) {
   std::vector<double> clearance;
   for (int e : area.edges) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <vector>
 
 #include "proto/artifacts.pb.h"
@@ -40,6 +41,9 @@ void MergeGroupsLedBy(DisjointSets& groups, const std::map<int, int>& lead, Area
 // joins the longest other room-less edge at its junction (or, when there is
 // none, the longest edge there, so that it becomes part of that room).
 AreaPlan AssignAreas(const proto::CutGraph& graph);
+
+// The areas whose edges end at each graph vertex, by vertex.
+std::vector<std::set<int>> AreasAtVertices(const proto::CutGraph& graph, const AreaPlan& plan);
 
 // Median free width (px) of an area: twice the median clearance along its
 // edges (0 without clearances).

@@ -1,9 +1,9 @@
 #include "stages/merge/closed_rooms.h"
 
 #include <algorithm>
-#include <opencv2/imgproc.hpp>
 #include <set>
 
+#include "stages/geometry/distance_transform.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
@@ -12,22 +12,10 @@ namespace {
 constexpr int kDx[4] = {1, -1, 0, 0};
 constexpr int kDy[4] = {0, 0, 1, -1};
 
-// Twice the largest distance (px) from a cell of `area` (labels hold area + 1)
-// to a cell outside it, inside `box`: the diameter of its largest inscribed disk.
-double WidestInnerWidthPx(const cv::Mat& labels, int area, const cv::Rect& box) {
-  const cv::Rect padded(box.x - 1, box.y - 1, box.width + 2, box.height + 2);
-  cv::Mat mask = cv::Mat::zeros(padded.size(), CV_8U);
-  for (int r = box.y; r < box.br().y; ++r) {
-    const int* row = labels.ptr<int>(r);
-    for (int c = box.x; c < box.br().x; ++c) {
-      if (row[c] == area + 1) mask.at<uint8_t>(r - padded.y, c - padded.x) = 255;
-    }
-  }
-  cv::Mat distance;
-  cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
-  double largest = 0;
-  cv::minMaxLoc(distance, nullptr, &largest);
-  return 2 * largest;
+// Twice the largest distance (px) from a cell of `area` to a cell outside it,
+// inside `box`: the diameter of its largest inscribed disk.
+double WidestInnerWidthPx(const AreaRaster& raster, int area, const cv::Rect& box) {
+  return 2 * DeepestDistance(AreaMaskInBox(raster, area, box));
 }
 
 // Whether at most kClosedRoomMaxUnknownShare of the faces between the cells
@@ -57,11 +45,7 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
                                    int64_t min_cells) {
   const int area_count = static_cast<int>(plan.areas.size());
   std::vector<bool> kept(area_count, false);
-  std::vector<std::set<int>> areas_at(graph.vertices_size());
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    areas_at[graph.edges(e).source()].insert(plan.area_of_edge[e]);
-    areas_at[graph.edges(e).target()].insert(plan.area_of_edge[e]);
-  }
+  const std::vector<std::set<int>> areas_at = AreasAtVertices(graph, plan);
   // The vertices where each area meets another, and how many others meet it there.
   std::vector<std::vector<int>> shared(area_count);
   std::vector<int> others_at_shared(area_count, 0);
@@ -85,8 +69,7 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
     if (!closed[v]) continue;
     const auto own = openings[v].find(k);
     if (own == openings[v].end()) continue;
-    if (own->second.width_px >=
-        kClosedRoomOpeningShare * WidestInnerWidthPx(raster.labels, k, boxes[k])) {
+    if (own->second.width_px >= kClosedRoomOpeningShare * WidestInnerWidthPx(raster, k, boxes[k])) {
       continue;
     }
     kept[k] = WallsSeen(raster.labels, grid, k, boxes[k]);

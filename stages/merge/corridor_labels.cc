@@ -22,15 +22,7 @@ AreaShape ShapeOfMask(cv::Mat& mask) {
 
 AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
   if (box.area() == 0) return {};
-  // The area's cells with a free margin of one cell, so that the distance
-  // transform sees its outline all round.
-  cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
-  for (int r = 0; r < box.height; ++r) {
-    const int* row = raster.labels.ptr<int>(box.y + r);
-    for (int c = 0; c < box.width; ++c) {
-      if (row[box.x + c] == k + 1) mask.at<uint8_t>(r + 1, c + 1) = 255;
-    }
-  }
+  cv::Mat mask = AreaMaskInBox(raster, k, box);
   return ShapeOfMask(mask);
 }
 

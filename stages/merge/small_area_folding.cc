@@ -37,13 +37,8 @@ class FoldedAreas {
 
 // The areas that share a graph vertex with each area.
 std::vector<std::set<int>> GraphNeighbours(const proto::CutGraph& graph, const AreaPlan& plan) {
-  std::vector<std::set<int>> areas_at(graph.vertices_size());
-  for (int e = 0; e < graph.edges_size(); ++e) {
-    areas_at[graph.edges(e).source()].insert(plan.area_of_edge[e]);
-    areas_at[graph.edges(e).target()].insert(plan.area_of_edge[e]);
-  }
   std::vector<std::set<int>> neighbours(plan.areas.size());
-  for (const std::set<int>& at : areas_at) {
+  for (const std::set<int>& at : AreasAtVertices(graph, plan)) {
     for (int a : at) {
       for (int b : at) {
         if (a != b) neighbours[a].insert(b);
