@@ -50,4 +50,16 @@ int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels
   return count;
 }
 
+cv::Mat LabelMaskInBox(const cv::Mat& labels, int label, const cv::Rect& box) {
+  cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
+  for (int r = 0; r < box.height; ++r) {
+    const int* row = labels.ptr<int>(box.y + r) + box.x;
+    uint8_t* out = mask.ptr<uint8_t>(r + 1) + 1;
+    for (int c = 0; c < box.width; ++c) {
+      if (row[c] == label) out[c] = 255;
+    }
+  }
+  return mask;
+}
+
 }  // namespace areagraph

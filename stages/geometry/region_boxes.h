@@ -23,4 +23,9 @@ int LabelRegionsWithBoxes(const cv::Mat& mask, int connectivity, cv::Mat* labels
 // one pass over the rows' runs of equal labels.
 cv::Mat LabelBoxes(const cv::Mat& labels, int count);
 
+// The cells of `labels` (CV_32S) equal to `label` inside `box` as a CV_8U
+// mask (255), with a margin of one zero cell all round, so that a distance
+// transform of the mask sees the region's outline.
+cv::Mat LabelMaskInBox(const cv::Mat& labels, int label, const cv::Rect& box);
+
 }  // namespace areagraph

@@ -274,16 +274,4 @@ std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
   return box;
 }
 
-cv::Mat AreaMaskInBox(const AreaRaster& raster, int area, const cv::Rect& box) {
-  cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
-  for (int r = 0; r < box.height; ++r) {
-    const int* row = raster.labels.ptr<int>(box.y + r);
-    uint8_t* out = mask.ptr<uint8_t>(r + 1);
-    for (int c = 0; c < box.width; ++c) {
-      if (row[box.x + c] == area + 1) out[c + 1] = 255;
-    }
-  }
-  return mask;
-}
-
 }  // namespace areagraph

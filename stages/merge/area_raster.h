@@ -53,8 +53,4 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 // The bounding box of every area's cells (empty for an area without cells).
 std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster);
 
-// The cells of `area` inside `box` as a CV_8U mask (255), with a margin of
-// one zero cell all round, so that a distance transform sees its outline.
-cv::Mat AreaMaskInBox(const AreaRaster& raster, int area, const cv::Rect& box);
-
 }  // namespace areagraph

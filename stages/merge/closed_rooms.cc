@@ -4,6 +4,7 @@
 #include <set>
 
 #include "stages/geometry/distance_transform.h"
+#include "stages/geometry/region_boxes.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
@@ -15,7 +16,7 @@ constexpr int kDy[4] = {0, 0, 1, -1};
 // Twice the largest distance (px) from a cell of `area` to a cell outside it,
 // inside `box`: the diameter of its largest inscribed disk.
 double WidestInnerWidthPx(const AreaRaster& raster, int area, const cv::Rect& box) {
-  return 2 * DeepestDistance(AreaMaskInBox(raster, area, box));
+  return 2 * DeepestDistance(LabelMaskInBox(raster.labels, area + 1, box));
 }
 
 // Whether at most kClosedRoomMaxUnknownShare of the faces between the cells

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "stages/geometry/distance_transform.h"
+#include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
 
@@ -22,7 +23,7 @@ AreaShape ShapeOfMask(cv::Mat& mask) {
 
 AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
   if (box.area() == 0) return {};
-  cv::Mat mask = AreaMaskInBox(raster, k, box);
+  cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
   return ShapeOfMask(mask);
 }
 

@@ -81,13 +81,7 @@ std::vector<float> DeepestPerRegion(const cv::Mat& labels, const cv::Mat& stats,
     const cv::Rect box(
         stats.at<int>(int(k), cv::CC_STAT_LEFT), stats.at<int>(int(k), cv::CC_STAT_TOP),
         stats.at<int>(int(k), cv::CC_STAT_WIDTH), stats.at<int>(int(k), cv::CC_STAT_HEIGHT));
-    cv::Mat mask = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
-    for (int r = 0; r < box.height; ++r) {
-      const int* row = labels.ptr<int>(box.y + r) + box.x;
-      uint8_t* out = mask.ptr<uint8_t>(r + 1) + 1;
-      for (int c = 0; c < box.width; ++c) out[c] = row[c] == int(k) ? 255 : 0;
-    }
-    deepest[k] = float(DeepestDistance(mask));
+    deepest[k] = float(DeepestDistance(LabelMaskInBox(labels, int(k), box)));
   }
   return deepest;
 }
