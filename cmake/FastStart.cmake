@@ -20,7 +20,7 @@
 #   placed at a random address (its libraries, heap and stack still are).
 # OpenCV's TBB backend, LAPACK, BLAS and LCM stay shared but are loaded on
 # first use (common/lazy_libraries.cc); yaml-cpp is static too; libstdc++ and
-# glibc stay shared.
+# glibc stay shared (ag-render links them statically: ag_fully_static below).
 #
 # Everything else (the image-codecs module, tests, tools that link
 # libopencv_imgcodecs) keeps the shared libraries: libopencv_imgcodecs.so
