@@ -20,7 +20,7 @@
 #   placed at a random address (its libraries, heap and stack still are).
 # OpenCV's TBB backend, LAPACK, BLAS and LCM stay shared but are loaded on
 # first use (common/lazy_libraries.cc); yaml-cpp is static too; libstdc++ and
-# glibc stay shared.
+# glibc stay shared (ag-render links them statically: ag_fully_static below).
 #
 # Everything else (the image-codecs module, tests, tools that link
 # libopencv_imgcodecs) keeps the shared libraries: libopencv_imgcodecs.so
@@ -82,12 +82,18 @@ if(AG_FAST_START)
   # 0.6 ms of every start. CGAL's FindGMP and FindMPFR (in stages/) take
   # these variables as found and link what they name.
   find_library(AG_GMP_LIBRARY gmp REQUIRED)
+  find_library(AG_GMPXX_LIBRARY gmpxx REQUIRED)
   find_library(AG_MPFR_LIBRARY mpfr REQUIRED)
   ag_static_archive(AG_STATIC_GMP gmp)
+  ag_static_archive(AG_STATIC_GMPXX gmpxx)
   ag_static_archive(AG_STATIC_MPFR mpfr)
   find_path(GMP_INCLUDE_DIR gmp.h REQUIRED)
+  find_path(GMPXX_INCLUDE_DIR gmpxx.h REQUIRED)
   find_path(MPFR_INCLUDE_DIR mpfr.h REQUIRED)
   set(GMP_LIBRARIES "$<IF:${_ag_fast},${AG_STATIC_GMP},${AG_GMP_LIBRARY}>")
+  # GMP's C++ classes (CGAL's FindGMPXX) too: a fully static executable
+  # (ag_fully_static) cannot link a shared library.
+  set(GMPXX_LIBRARIES "$<IF:${_ag_fast},${AG_STATIC_GMPXX},${AG_GMPXX_LIBRARY}>")
   set(MPFR_LIBRARIES "$<IF:${_ag_fast},${AG_STATIC_MPFR},${AG_MPFR_LIBRARY}>")
   # TBB, LAPACK and BLAS are loaded on first use (common/lazy_libraries.cc):
   # OpenCV's static core calls them (cv::parallel_for_, cv::solve, cv::gemm),
@@ -114,6 +120,7 @@ if(AG_FAST_START)
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
       ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh)
     add_library(ag_lazy_libraries STATIC ${CMAKE_SOURCE_DIR}/common/lazy_libraries.cc ${entries})
+    target_include_directories(ag_lazy_libraries PRIVATE ${CMAKE_SOURCE_DIR})
     target_link_libraries(ag_lazy_libraries PRIVATE ${CMAKE_DL_LIBS})
     set(AG_OPENCV_RUNTIME ag_lazy_libraries)
     set(AG_LCM_RUNTIME ag_lazy_libraries)
@@ -180,5 +187,26 @@ function(ag_fast_start_own_runtime)
   endif()
   foreach(target ${ARGN})
     target_link_options(${target} PRIVATE -static-libstdc++ -static-libgcc)
+  endforeach()
+endfunction()
+
+# ag_fully_static(TARGET...): a fast-start executable with its own runtime
+# (above) that links glibc statically too (-static): no dynamic loader, no
+# libc.so or libm.so to map and relocate. lab_a's import picture took 1.4 ms
+# less CPU of 10.4 (docs/performance.md, issue-14-render3). Such a program
+# loads no library at run time: common/lazy_libraries.cc refuses to (its
+# callers, TBB's, LAPACK's and LCM's, are never reached in ag-render), and it
+# must never read an image through the codecs module.
+function(ag_fully_static)
+  if(NOT AG_FAST_START)
+    return()
+  endif()
+  foreach(target ${ARGN})
+    ag_fast_start_own_runtime(${target})
+    # Exceptions unwind through the link-time table of PT_GNU_EH_FRAME, not
+    # libgcc's registry of frames (common/no_frame_registry.cc).
+    target_sources(${target} PRIVATE ${CMAKE_SOURCE_DIR}/common/no_frame_registry.cc)
+    target_link_options(${target} PRIVATE -static -Wl,--eh-frame-hdr
+      -Wl,--wrap=__register_frame_info -Wl,--wrap=__deregister_frame_info)
   endforeach()
 endfunction()

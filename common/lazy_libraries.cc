@@ -13,6 +13,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "common/static_program.h"
+
 extern "C" {
 // From the generated assembly, in one order: each function's slot (its
 // first-call path, then its address), its library and its name.
@@ -46,6 +48,11 @@ void* ag_lazy_resolve(uint32_t index) {
   if (index >= ag_lazy_symbol_count) std::abort();
   const char* library = Nth(ag_lazy_library_names, ag_lazy_symbol_library[index]);
   const char* name = Nth(ag_lazy_symbol_names, index);
+  if (areagraph::LinkedStatically()) {
+    std::fprintf(stderr, "cannot load %s (for %s) into a statically linked program\n", library,
+                 name);
+    std::_Exit(127);
+  }
   // RTLD_GLOBAL, as if linked; a library loaded before is only counted again.
   void* handle = dlopen(library, RTLD_NOW | RTLD_GLOBAL);
   void* address = handle != nullptr ? dlsym(handle, name) : nullptr;

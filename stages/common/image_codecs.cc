@@ -6,6 +6,7 @@
 #include <climits>
 
 #include "common/error.h"
+#include "common/static_program.h"
 
 namespace areagraph {
 namespace {
@@ -41,6 +42,9 @@ void Find(void* module, const char* name, Function* function) {
 // finds it (LD_LIBRARY_PATH); once per process.
 const Codecs& LoadedCodecs() {
   static const Codecs codecs = [] {
+    if (LinkedStatically()) {
+      throw Error("cannot load OpenCV's image codecs into a statically linked program");
+    }
     void* module = dlopen((ExecutableFolder() + kModuleFile).c_str(), RTLD_NOW | RTLD_LOCAL);
     if (module == nullptr) module = dlopen(kModuleFile, RTLD_NOW | RTLD_LOCAL);
     if (module == nullptr) {

@@ -15,9 +15,12 @@ namespace areagraph::testing {
 namespace {
 
 constexpr const char* kFastStartTools[] = {
-    "ag-import", "ag-clean",    "ag-voronoi", "ag-prune",       "ag-cut",        "ag-merge",
-    "ag-match",  "ag-pipeline", "ag-run",     "ag-render",      "ag-inspect",    "ag-store",
-    "ag-export", "ag-live",     "ag-listen",  "ag-bench-stage", "ag-bench-floor"};
+    "ag-import", "ag-clean",    "ag-voronoi",     "ag-prune",      "ag-cut",   "ag-merge",
+    "ag-match",  "ag-pipeline", "ag-run",         "ag-inspect",    "ag-store", "ag-export",
+    "ag-live",   "ag-listen",   "ag-bench-stage", "ag-bench-floor"};
+
+// Linked with glibc too (ag_fully_static): no dynamic loader at all.
+constexpr const char* kFullyStaticTools[] = {"ag-render"};
 
 std::string Ldd(const std::string& path) {
   FILE* pipe = popen(("ldd " + path).c_str(), "r");
@@ -57,6 +60,34 @@ TEST(FastStart, PipelineExecutablesLoadNoneOfTheStaticallyLinkedLibraries) {
     for (const char* shared : kNotLoadedAtStart) {
       EXPECT_EQ(libraries.find(shared), std::string::npos) << tool << " loads " << shared;
     }
+    EXPECT_EQ(ElfType(path), ET_EXEC) << tool << " is position-independent";
+  }
+}
+
+// Whether the executable has a program header of `type`.
+bool HasProgramHeader(const std::string& path, uint32_t type) {
+  std::ifstream file(path, std::ios::binary);
+  Elf64_Ehdr header{};
+  file.read(reinterpret_cast<char*>(&header), sizeof(header));
+  for (int i = 0; i < header.e_phnum; ++i) {
+    Elf64_Phdr program{};
+    file.seekg(static_cast<std::streamoff>(header.e_phoff + i * header.e_phentsize));
+    file.read(reinterpret_cast<char*>(&program), sizeof(program));
+    if (file && program.p_type == type) return true;
+  }
+  return false;
+}
+
+TEST(FastStart, FullyStaticExecutablesHaveNoDynamicLoader) {
+#if !AG_FAST_START
+  GTEST_SKIP() << "built with -DAG_FAST_START=OFF";
+#endif
+  EXPECT_TRUE(HasProgramHeader(std::string(AG_BIN_DIR) + "/ag-run", PT_INTERP));
+  for (const char* tool : kFullyStaticTools) {
+    const std::string path = std::string(AG_BIN_DIR) + "/" + tool;
+    EXPECT_FALSE(HasProgramHeader(path, PT_INTERP)) << tool << " is linked dynamically";
+    // Where its unwinder finds the sorted FDE table (common/no_frame_registry.cc).
+    EXPECT_TRUE(HasProgramHeader(path, PT_GNU_EH_FRAME)) << tool;
     EXPECT_EQ(ElfType(path), ET_EXEC) << tool << " is position-independent";
   }
 }
