@@ -26,7 +26,8 @@ bool FitsIntegers(const cv::Mat& mask) { return mask.rows < kNoZero && mask.cols
 // (OpenCV then gives its stand-in for infinity), or when OpenCV's
 // single-precision breakpoints, f[q] + q^2 - f[p] - p^2, are not all exact
 // integers (2^24 and above; on masks over 4096 cells wide its distances are
-// then not exact, and differ). Then callers ask OpenCV.
+// then not exact, and differ). Then callers take OpenCV's rounding
+// (OpenCvDistances).
 std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
   const int rows = mask.rows, cols = mask.cols;
   if (mask.empty() || !FitsIntegers(mask)) return {};
