@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
       ->type_name("DIR");
   return RunCommand("ag-run", app, argc, argv, [&] {
     CheckRunFlags(app, flags);
-    const int status = RunCollection(flags, argv);
+    const int status = RunCollection(flags);
     if (!report_dir.empty()) WriteRunReport(flags, report_dir);
     return status;
   });

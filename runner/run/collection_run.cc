@@ -10,7 +10,6 @@
 #include "common/json.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/run/fault_injection.h"
-#include "runner/run/huge_page_malloc.h"
 #include "runner/run/process_pool.h"
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
@@ -52,15 +51,10 @@ void RecordLeftoverFailures(ArtifactStore& store, const RunReport& report) {
 
 }  // namespace
 
-int RunCollection(const RunFlags& flags, char* const* argv) {
+int RunCollection(const RunFlags& flags) {
   const RunSettings settings = SettingsFrom(flags);
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
-  StartAgainWithHugePageMalloc(argv, [&] {
-    return std::any_of(tasks.begin(), tasks.end(), [](const MapTask& task) {
-      return PngMapPixels(task.entry.path).value_or(0) > kWorkerHugePageMaxPixels;
-    });
-  });
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork(). Its log

@@ -7,9 +7,7 @@ namespace areagraph {
 // ag-run's work: the maps of the collection (options checked for every map
 // before the store is touched), run in worker processes, with progress and
 // the summary printed at the end. Returns the exit status: 1 when any map
-// failed. Throws Error for what stops the whole run. Given ag-run's `argv`,
-// a run with a map above kWorkerHugePageMaxPixels starts again first with
-// glibc's huge-page malloc (StartAgainWithHugePageMalloc).
-int RunCollection(const RunFlags& flags, char* const* argv = nullptr);
+// failed. Throws Error for what stops the whole run.
+int RunCollection(const RunFlags& flags);
 
 }  // namespace areagraph

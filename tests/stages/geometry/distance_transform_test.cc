@@ -117,6 +117,42 @@ TEST(ExactDistanceTransform, ZerosOnlyOnTheEdgesAndThinMasks) {
   ExpectSameAsOpenCv(cv::Mat(1, 1, CV_8U, cv::Scalar(0)));
 }
 
+// Over 4096 cells wide OpenCV's single-precision arithmetic is not exact; the
+// transform must then give OpenCV's rounding, not the true distances.
+TEST(ExactDistanceTransform, EqualsOpenCvOnMasksOver4096Wide) {
+  std::mt19937 random(14);
+  const double shares[] = {0.5, 0.02, 0.001, 0.0002};
+  for (int trial = 0; trial < 4; ++trial) {
+    ExpectSameAsOpenCv(RandomMask(random, 40 + 90 * trial, 4100 + 400 * trial, shares[trial]));
+  }
+  for (const bool invert : {false, true}) {
+    ExpectSameAsOpenCv(RoomsMask(random, 300, 5200, invert));
+    ExpectSameAsOpenCv(RoomsMask(random, 4700, 120, invert));
+  }
+  // Columns without any zero cell beside far zero cells.
+  cv::Mat sparse(200, 5000, CV_8U, cv::Scalar(255));
+  sparse.at<uint8_t>(199, 4999) = 0;
+  sparse.at<uint8_t>(0, 7) = 0;
+  sparse.at<uint8_t>(100, 2600) = 0;
+  ExpectSameAsOpenCv(sparse);
+  ExpectSameAsOpenCv(cv::Mat(30, 4500, CV_8U, cv::Scalar(255)));
+}
+
+TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096Wide) {
+  std::mt19937 random(41);
+  const cv::Mat mask = RoomsMask(random, 200, 4800, false);
+  const cv::Mat distance = OpenCvDistances(mask);
+  for (const float reach : {0.5f, 3.0f, 7.3f}) {
+    const cv::Mat at_least = DistanceAtLeast(mask, reach);
+    for (int r = 0; r < mask.rows; ++r) {
+      for (int c = 0; c < mask.cols; ++c) {
+        ASSERT_EQ(at_least.at<uint8_t>(r, c), distance.at<float>(r, c) >= reach ? 1 : 0)
+            << r << ", " << c << " reach " << reach;
+      }
+    }
+  }
+}
+
 TEST(ExactDistanceTransform, MaskWithoutNonZeroCellsIsAllZero) {
   const cv::Mat mask(20, 30, CV_8U, cv::Scalar(0));
   EXPECT_EQ(cv::countNonZero(ExactDistanceTransform(mask)), 0);
