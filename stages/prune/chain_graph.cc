@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <utility>
 
 #include "stages/geometry/disjoint_sets.h"
 
@@ -40,6 +42,14 @@ void ChainEdge::Append(const ChainEdge& next) {
   AppendTail(next.absorbed, 0, &absorbed);
   min_clearance_px = std::min(min_clearance_px, next.min_clearance_px);
   target = next.target;
+}
+
+void ChainEdge::Append(ChainEdge&& next) {
+  std::vector<proto::Polygon> moved = std::move(next.absorbed);
+  next.absorbed.clear();
+  Append(next);
+  absorbed.insert(absorbed.end(), std::make_move_iterator(moved.begin()),
+                  std::make_move_iterator(moved.end()));
 }
 
 std::vector<proto::Polygon> ChainEdge::AllPolygons() const {
@@ -106,7 +116,7 @@ void ChainGraph::JoinDegreeTwoChains() {
       const auto& at = incidences[v];
       const Incidence next = at[0].edge == came_by ? at[1] : at[0];
       if (used[next.edge]) break;
-      chain.Append(take(next));
+      chain.Append(std::move(take(next)));
       came_by = next.edge;
       v = chain.target;
     }
