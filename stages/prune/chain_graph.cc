@@ -52,13 +52,15 @@ void ChainEdge::Append(ChainEdge&& next) {
                   std::make_move_iterator(moved.end()));
 }
 
-std::vector<proto::Polygon> ChainEdge::AllPolygons() const {
+std::vector<proto::Polygon> ChainEdge::TakeAllPolygons() {
   std::vector<proto::Polygon> polygons;
   polygons.reserve(1 + absorbed.size());
   proto::Polygon own;
   *own.mutable_outer() = EdgePolygonRing(path, left_sites, right_sites);
   polygons.push_back(std::move(own));
-  polygons.insert(polygons.end(), absorbed.begin(), absorbed.end());
+  polygons.insert(polygons.end(), std::make_move_iterator(absorbed.begin()),
+                  std::make_move_iterator(absorbed.end()));
+  absorbed.clear();
   return polygons;
 }
 

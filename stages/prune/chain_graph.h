@@ -43,8 +43,9 @@ struct ChainEdge {
   // that is given up, its absorbed polygons are moved, not copied.
   void Append(const ChainEdge& next);
   void Append(ChainEdge&& next);
-  // The edge's own polygon followed by everything it absorbed.
-  std::vector<proto::Polygon> AllPolygons() const;
+  // The edge's own polygon followed by everything it absorbed, which it
+  // gives up (moved, not copied: for an edge that is being removed).
+  std::vector<proto::Polygon> TakeAllPolygons();
 };
 
 // One end of an edge at a vertex: which edge, and whether it is the edge's
