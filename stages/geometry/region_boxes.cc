@@ -12,7 +12,7 @@ namespace {
 
 // RunPieces for one cell type.
 template <typename Cell>
-int RunPiecesOf(const cv::Mat& cells, std::vector<CellRun>* runs, std::vector<int>* piece_of_run) {
+int RunPiecesOf(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<int>* piece_of_run) {
   runs->clear();
   // Where each row's runs start in `runs` (one more entry for the end).
   std::vector<size_t> row_start(cells.rows + 1, 0);
@@ -34,7 +34,7 @@ int RunPiecesOf(const cv::Mat& cells, std::vector<CellRun>* runs, std::vector<in
     // Both rows' runs are in column order: one sweep finds the overlaps.
     size_t above = row_start[r - 1];
     for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
-      const CellRun& run = (*runs)[i];
+      const PieceRun& run = (*runs)[i];
       while (above < row_start[r] && (*runs)[above].end <= run.begin) ++above;
       for (size_t a = above; a < row_start[r] && (*runs)[a].begin < run.end; ++a) {
         if ((*runs)[a].value == run.value) pieces.Union(static_cast<int>(a), static_cast<int>(i));
@@ -103,7 +103,7 @@ cv::Mat LabelMaskInBox(const cv::Mat& labels, int label, const cv::Rect& box) {
   return mask;
 }
 
-int RunPieces(const cv::Mat& cells, std::vector<CellRun>* runs, std::vector<int>* piece_of_run) {
+int RunPieces(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<int>* piece_of_run) {
   CV_Assert(cells.type() == CV_8U || cells.type() == CV_32S);
   return cells.type() == CV_8U ? RunPiecesOf<uint8_t>(cells, runs, piece_of_run)
                                : RunPiecesOf<int>(cells, runs, piece_of_run);

@@ -30,7 +30,7 @@ cv::Mat LabelBoxes(const cv::Mat& labels, int count);
 cv::Mat LabelMaskInBox(const cv::Mat& labels, int label, const cv::Rect& box);
 
 // A run of equal cells in one row: columns [begin, end) of `row`.
-struct CellRun {
+struct PieceRun {
   int row;
   int begin;
   int end;
@@ -42,6 +42,6 @@ struct CellRun {
 // row-major order, and per run its piece, the pieces numbered in the
 // row-major order of their first cells (the order a row-major scan that
 // walks each piece it meets would find them). Returns the number of pieces.
-int RunPieces(const cv::Mat& cells, std::vector<CellRun>* runs, std::vector<int>* piece_of_run);
+int RunPieces(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<int>* piece_of_run);
 
 }  // namespace areagraph

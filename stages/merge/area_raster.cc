@@ -97,7 +97,7 @@ void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
 // the piece with most of the area's path cells (`on_path`), else the biggest
 // (ties to the piece that a row-major scan meets first).
 void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
-  std::vector<CellRun> runs;
+  std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
   const int count = RunPieces(*labels, &runs, &piece_of_run);
   struct Piece {
@@ -107,7 +107,7 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   };
   std::vector<Piece> pieces(count);
   for (size_t i = 0; i < runs.size(); ++i) {
-    const CellRun& run = runs[i];
+    const PieceRun& run = runs[i];
     Piece& piece = pieces[piece_of_run[i]];
     piece.label = run.value;
     piece.size += run.end - run.begin;
@@ -124,7 +124,7 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
     }
   }
   for (size_t i = 0; i < runs.size(); ++i) {
-    const CellRun& run = runs[i];
+    const PieceRun& run = runs[i];
     if (biggest[run.value] == piece_of_run[i]) continue;
     int* row = labels->ptr<int>(run.row);
     std::fill(row + run.begin, row + run.end, 0);
@@ -156,20 +156,20 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
 void MarkUnreachedCores(const cv::Mat& core, double min_gap_px, cv::Mat* labels) {
   // Pockets in clutter are no room: a core must span (2 gaps)^2 to stay unreached.
   const double min_core_cells = 4 * min_gap_px * min_gap_px;
-  std::vector<CellRun> runs;
+  std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
   const int count = RunPieces(core, &runs, &piece_of_run);
   std::vector<int64_t> size(count, 0);
   std::vector<uint8_t> reached(count, 0);
   for (size_t i = 0; i < runs.size(); ++i) {
-    const CellRun& run = runs[i];
+    const PieceRun& run = runs[i];
     const int piece = piece_of_run[i];
     size[piece] += run.end - run.begin;
     const int* row = labels->ptr<int>(run.row);
     for (int c = run.begin; c < run.end && !reached[piece]; ++c) reached[piece] = row[c] > 0;
   }
   for (size_t i = 0; i < runs.size(); ++i) {
-    const CellRun& run = runs[i];
+    const PieceRun& run = runs[i];
     const int piece = piece_of_run[i];
     if (reached[piece] || size[piece] < min_core_cells) continue;
     int* row = labels->ptr<int>(run.row);

@@ -135,13 +135,13 @@ cv::Mat PiecesByWalking(const cv::Mat& cells) {
 }
 
 void ExpectSamePieces(const cv::Mat& cells) {
-  std::vector<CellRun> runs;
+  std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
   const int count = RunPieces(cells, &runs, &piece_of_run);
   ASSERT_EQ(runs.size(), piece_of_run.size());
   cv::Mat piece(cells.size(), CV_32S, cv::Scalar(-1));
   for (size_t i = 0; i < runs.size(); ++i) {
-    const CellRun& run = runs[i];
+    const PieceRun& run = runs[i];
     ASSERT_LT(run.begin, run.end);
     ASSERT_LT(piece_of_run[i], count);
     if (i > 0) {
@@ -190,7 +190,7 @@ TEST(RegionBoxes, RunPiecesJoinAUShapeAndKeepDiagonalsApart) {
   labels(cv::Rect(0, 5, 7, 1)).setTo(2);
   labels.at<int>(0, 3) = 2;
   labels.at<int>(1, 4) = 2;
-  std::vector<CellRun> runs;
+  std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
   ASSERT_EQ(RunPieces(labels, &runs, &piece_of_run), 3);
   EXPECT_EQ(piece_of_run[0], 0);  // row 0, the left arm
