@@ -85,20 +85,26 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
   };
+  // The obstacles labelled once for the three site finders.
+  ObstacleLabels obstacles;
+  if (options.room_island_max_m() > 0 || options.close_wall_doors() ||
+      options.close_wall_gaps_max_m() > 0) {
+    obstacles = LabelObstacles(map.cells(), grid.width(), grid.height());
+  }
   PointList sites = StructureSites(
       map.cells(), grid.width(), grid.height(), grid.resolution_m(), options.room_island_max_m(),
-      options.island_end_on_face() ? options.island_end_on_face_share() : 0);
+      options.island_end_on_face() ? options.island_end_on_face_share() : 0, obstacles);
   PointList closing;  // the sites that close doors and wall gaps on purpose
   if (options.close_wall_doors()) {
-    closing =
-        DoorClosingSites(room_width, map.cells(), grid.width(), grid.height(), grid.resolution_m());
+    closing = DoorClosingSites(room_width, obstacles, grid.resolution_m());
   }
   if (options.close_wall_gaps_max_m() > 0) {
     const PointList gaps =
-        WallGapSites(topology, map.cells(), grid.width(), grid.height(), grid.resolution_m(),
-                     options.close_wall_gaps_max_m(), options.close_wall_gaps_short_tips());
+        WallGapSites(topology, obstacles, grid.resolution_m(), options.close_wall_gaps_max_m(),
+                     options.close_wall_gaps_short_tips());
     closing.insert(closing.end(), gaps.begin(), gaps.end());
   }
+  obstacles = ObstacleLabels();
   sites.insert(sites.end(), closing.begin(), closing.end());
   const ClosedLines closed_lines(closing, grid.resolution_m());
   const ClosedLines* kept_tips = options.keep_closed_room_tips() ? &closed_lines : nullptr;

@@ -6,8 +6,6 @@
 #include <vector>
 
 #include "stages/cut/width_estimate.h"
-#include "stages/geometry/region_boxes.h"
-#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 namespace {
@@ -16,11 +14,10 @@ namespace {
 // the building's structure.
 class WallStructure {
  public:
-  WallStructure(const std::string& cells, int width, int height, double min_region_px)
-      : width_(width), height_(height) {
-    cv::Mat stats;
-    const int count =
-        LabelRegionsWithBoxes(ObstacleMask(cells, width, height), 8, &labels_, &stats);
+  WallStructure(const ObstacleLabels& obstacles, double min_region_px)
+      : width_(obstacles.labels.cols), height_(obstacles.labels.rows), labels_(obstacles.labels) {
+    const int count = obstacles.count, width = width_, height = height_;
+    const cv::Mat& stats = obstacles.stats;
     structure_.assign(count, 0);
     longest_.assign(count, 0);
     for (int region = 1; region < count; ++region) {
@@ -47,6 +44,7 @@ class WallStructure {
  private:
   int width_;
   int height_;
+  // Shared with the caller's labels, read only.
   cv::Mat labels_;
   std::vector<uint8_t> structure_;
   std::vector<int> longest_;
@@ -218,11 +216,11 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 
 }  // namespace
 
-PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& cells, int width,
-                       int height, double resolution_m, double max_gap_m, bool short_tips) {
+PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
+                       double resolution_m, double max_gap_m, bool short_tips) {
   PointList sites;
   if (max_gap_m <= 0) return sites;
-  const WallStructure walls(cells, width, height, kMinWallRegionM / resolution_m);
+  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m);
   const double run_px = kJambRunM / resolution_m;
   const double reach_px = kDoorReachM / resolution_m, rise_px = kDoorRiseM / resolution_m;
   const double max_thickness_px = kMaxTipWallM / resolution_m;
@@ -269,11 +267,11 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& 
   return sites;
 }
 
-PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate, const std::string& cells,
-                           int width, int height, double resolution_m) {
+PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
+                           const ObstacleLabels& obstacles, double resolution_m) {
   PointList sites;
   if (estimate.doors_size() == 0) return sites;
-  const WallStructure walls(cells, width, height, kMinWallRegionM / resolution_m);
+  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m);
   const double run_px = kJambRunM / resolution_m;
   for (const proto::DetectedWidth& door : estimate.doors()) {
     const Eigen::Vector2d p(door.position().x(), door.position().y());

@@ -4,6 +4,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/obstacle_regions.h"
 
 namespace areagraph {
 
@@ -20,8 +21,9 @@ namespace areagraph {
 // - line up with a wall: past each jamb, away from the door, the line
 //   through both jambs runs on in non-free cells for kJambRunM.
 // Returns the added sites (pixel coordinates, about one per pixel).
-PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate, const std::string& cells,
-                           int width, int height, double resolution_m);
+// `obstacles` labels the map's cells (LabelObstacles).
+PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
+                           const ObstacleLabels& obstacles, double resolution_m);
 
 // Doors found from the jambs alone (cut.close_wall_gaps), for doors that
 // the width estimate misses because the space beyond them does not widen on
@@ -42,8 +44,8 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate, const std::
 // of the two sites may lie in a region that is not structure when it is the
 // thin wall end and its region is at least kMinShortTipM long: a piece of
 // wall between two doors, a partition, a block of a row dividing a room.
-PointList WallGapSites(const proto::TopologyGraph& topology, const std::string& cells, int width,
-                       int height, double resolution_m, double max_gap_m, bool short_tips);
+PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
+                       double resolution_m, double max_gap_m, bool short_tips);
 
 // A wall end is at most this thick across the door's line (metres).
 inline constexpr double kMaxTipWallM = 0.6;

@@ -23,25 +23,28 @@ void CheckFitsMap(double width, const proto::MapFrame& frame) {
   }
 }
 
-// The graph with only the edges of its connected part with the most edge
-// length: the one part of the paper, and the one W is estimated from.
+// The edges (indices, in order) of the graph's connected part with the most
+// edge length: the one part of the paper, and the one W is estimated from.
 // Smaller parts (a room seen through a window, the fans of free cells that
 // laser rays leave outside an incomplete scan) would otherwise shift the
-// door estimate, and with it every room of the main part.
-proto::TopologyGraph LongestPart(const proto::TopologyGraph& topology) {
+// door estimate, and with it every room of the main part. Indices, not a
+// copy of the graph: its edges carry their polygons.
+std::vector<int> LongestPart(const proto::TopologyGraph& topology) {
   DisjointSets parts(topology.vertices_size());
   for (const proto::GraphEdge& edge : topology.edges()) parts.Union(edge.source(), edge.target());
   std::vector<double> length(topology.vertices_size(), 0.0);
   for (const proto::GraphEdge& edge : topology.edges()) {
     length[parts.Find(edge.source())] += edge.length_px();
   }
-  if (length.empty()) return topology;
+  std::vector<int> part;
+  if (length.empty()) {
+    for (int e = 0; e < topology.edges_size(); ++e) part.push_back(e);
+    return part;
+  }
   const int longest =
       static_cast<int>(std::max_element(length.begin(), length.end()) - length.begin());
-  proto::TopologyGraph part = topology;
-  part.clear_edges();
-  for (const proto::GraphEdge& edge : topology.edges()) {
-    if (parts.Find(edge.source()) == longest) *part.add_edges() = edge;
+  for (int e = 0; e < topology.edges_size(); ++e) {
+    if (parts.Find(topology.edges(e).source()) == longest) part.push_back(e);
   }
   return part;
 }
@@ -66,7 +69,7 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   proto::RoomWidthEstimate estimate;
   if (options.room_width_auto() && !strategy) {
     estimate =
-        EstimateRoomWidth(LongestPart(topology), frame.resolution_m(), fixed,
+        EstimateRoomWidth(topology, LongestPart(topology), frame.resolution_m(), fixed,
                           options.room_width_above_doors(), options.room_width_door_margin_m());
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {

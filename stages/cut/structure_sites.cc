@@ -70,12 +70,13 @@ bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, d
 }  // namespace
 
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, double end_on_face_share) {
+                         double max_island_m, double end_on_face_share,
+                         const ObstacleLabels& obstacles) {
   const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
   std::vector<uint8_t> island;
   ObstacleRegions regions;
   if (max_island_m > 0) {
-    regions = FindObstacleRegions(cells, width, height, site_cells);
+    regions = FindObstacleRegions(cells, obstacles, site_cells);
     const double max_island_px = max_island_m / resolution_m;
     const double min_thickness = std::max(
         kMinIslandThicknessM / resolution_m,

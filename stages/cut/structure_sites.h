@@ -3,6 +3,7 @@
 #include <string>
 
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/obstacle_regions.h"
 
 namespace areagraph {
 
@@ -23,8 +24,10 @@ namespace areagraph {
 // other obstacle may continue the region's line on any line across this
 // share of its end face's width, centred on the face, not only on its centre
 // line.
+// `obstacles` labels `cells` (LabelObstacles; read only when max_island_m > 0).
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, double end_on_face_share);
+                         double max_island_m, double end_on_face_share,
+                         const ObstacleLabels& obstacles);
 
 // Walls are thinner than this (metres); furniture islands are not.
 inline constexpr double kMinIslandThicknessM = 0.8;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 #include "stages/cut/edge_track.h"
@@ -195,9 +196,19 @@ double NarrowestCorridorM(std::vector<proto::DetectedWidth> corridors) {
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m, bool above_doors,
                                            double door_margin_m) {
+  std::vector<int> all(topology.edges_size());
+  std::iota(all.begin(), all.end(), 0);
+  return EstimateRoomWidth(topology, all, resolution_m, fallback_m, above_doors, door_margin_m);
+}
+
+proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
+                                           const std::vector<int>& edges, double resolution_m,
+                                           double fallback_m, bool above_doors,
+                                           double door_margin_m) {
   std::vector<WidthProfile> profiles;
   std::vector<std::vector<int>> incident(topology.vertices_size());
-  for (const proto::GraphEdge& edge : topology.edges()) {
+  for (const int e : edges) {
+    const proto::GraphEdge& edge = topology.edges(e);
     profiles.push_back(SampleEdge(edge, resolution_m));
     incident[edge.source()].push_back(static_cast<int>(profiles.size()) - 1);
     if (edge.target() != edge.source()) {

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "proto/artifacts.pb.h"
 
 namespace areagraph {
@@ -26,6 +28,11 @@ namespace areagraph {
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m,
                                            bool above_doors = false, double door_margin_m = 0.1);
+// The same from the edges `edges` (indices, in order) of `topology` only.
+proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
+                                           const std::vector<int>& edges, double resolution_m,
+                                           double fallback_m, bool above_doors,
+                                           double door_margin_m);
 
 inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;

@@ -4,16 +4,24 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/geometry/region_boxes.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 
-ObstacleRegions FindObstacleRegions(const std::string& cells, int width, int height,
+ObstacleLabels LabelObstacles(const std::string& cells, int width, int height) {
+  ObstacleLabels obstacles;
+  obstacles.count = LabelRegionsWithBoxes(ObstacleMask(cells, width, height), 8, &obstacles.labels,
+                                          &obstacles.stats);
+  return obstacles;
+}
+
+ObstacleRegions FindObstacleRegions(const std::string& cells, const ObstacleLabels& obstacles,
                                     const std::vector<int>& site_cells) {
-  const cv::Mat obstacle = ObstacleMask(cells, width, height);
-  cv::Mat labels;
-  const int count = cv::connectedComponents(obstacle, labels, 8, CV_32S);
-  return DescribeObstacleRegions(std::move(labels), count, ObstacleDepth(obstacle), site_cells);
+  // The regions only read the labels: they share the buffer.
+  return DescribeObstacleRegions(
+      obstacles.labels, obstacles.count,
+      ObstacleDepth(ObstacleMask(cells, obstacles.labels.cols, obstacles.labels.rows)), site_cells);
 }
 
 ObstacleRegions DescribeObstacleRegions(cv::Mat labels, int count, cv::Mat depth,

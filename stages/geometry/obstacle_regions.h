@@ -43,11 +43,22 @@ struct ObstacleRegions {
   }
 };
 
-// The regions of `cells`; the rectangles are fitted to `site_cells` (flat
-// indices of non-free cells, such as ObstacleSiteCells: the cells next to
-// free space span the same rectangle as the whole region). Regions without
-// any of them get no rectangle.
-ObstacleRegions FindObstacleRegions(const std::string& cells, int width, int height,
+// A map's non-free cells as 8-connected regions: the labels of
+// cv::connectedComponents on ObstacleMask (label 0 = free), and each
+// region's box and cells (LabelRegionsWithBoxes' stats). Labelled once
+// for all of cut's site finders.
+struct ObstacleLabels {
+  cv::Mat labels;
+  cv::Mat stats;
+  int count = 0;
+};
+ObstacleLabels LabelObstacles(const std::string& cells, int width, int height);
+
+// The regions of `cells` (labelled as `obstacles`); the rectangles are
+// fitted to `site_cells` (flat indices of non-free cells, such as
+// ObstacleSiteCells: the cells next to free space span the same rectangle
+// as the whole region). Regions without any of them get no rectangle.
+ObstacleRegions FindObstacleRegions(const std::string& cells, const ObstacleLabels& obstacles,
                                     const std::vector<int>& site_cells);
 
 // The same from the regions' labels (`count` of them, as cv::connectedComponents

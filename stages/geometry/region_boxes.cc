@@ -5,7 +5,48 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/geometry/disjoint_sets.h"
+
 namespace areagraph {
+namespace {
+
+// RunPieces for one cell type.
+template <typename Cell>
+int RunPiecesOf(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<int>* piece_of_run) {
+  runs->clear();
+  // Where each row's runs start in `runs` (one more entry for the end).
+  std::vector<size_t> row_start(cells.rows + 1, 0);
+  for (int r = 0; r < cells.rows; ++r) {
+    row_start[r] = runs->size();
+    const Cell* row = cells.ptr<Cell>(r);
+    int c = 0;
+    while (c < cells.cols) {
+      const Cell value = row[c];
+      const int start = c;
+      while (++c < cells.cols && row[c] == value) {
+      }
+      if (value > 0) runs->push_back({r, start, c, static_cast<int>(value)});
+    }
+  }
+  row_start[cells.rows] = runs->size();
+  DisjointSets pieces(runs->size());
+  for (int r = 1; r < cells.rows; ++r) {
+    // Both rows' runs are in column order: one sweep finds the overlaps.
+    size_t above = row_start[r - 1];
+    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
+      const PieceRun& run = (*runs)[i];
+      while (above < row_start[r] && (*runs)[above].end <= run.begin) ++above;
+      for (size_t a = above; a < row_start[r] && (*runs)[a].begin < run.end; ++a) {
+        if ((*runs)[a].value == run.value) pieces.Union(static_cast<int>(a), static_cast<int>(i));
+      }
+    }
+  }
+  int count = 0;
+  *piece_of_run = pieces.DenseLabels(&count);
+  return count;
+}
+
+}  // namespace
 
 cv::Mat LabelBoxes(const cv::Mat& labels, int count) {
   const int width = labels.cols, height = labels.rows;
@@ -60,6 +101,12 @@ cv::Mat LabelMaskInBox(const cv::Mat& labels, int label, const cv::Rect& box) {
     }
   }
   return mask;
+}
+
+int RunPieces(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<int>* piece_of_run) {
+  CV_Assert(cells.type() == CV_8U || cells.type() == CV_32S);
+  return cells.type() == CV_8U ? RunPiecesOf<uint8_t>(cells, runs, piece_of_run)
+                               : RunPiecesOf<int>(cells, runs, piece_of_run);
 }
 
 }  // namespace areagraph

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
+#include <cstring>
 #include <opencv2/imgproc.hpp>
 
 #include "stages/geometry/distance_transform.h"
@@ -12,126 +12,122 @@
 namespace areagraph {
 namespace {
 
-constexpr int kDx[4] = {1, -1, 0, 0};
-constexpr int kDy[4] = {0, 0, 1, -1};
-
 // Label of the cells that free space the graph never reached claims while
 // growing; cleared to 0 afterwards.
 constexpr int kUnreached = -1;
 
-// The 4-neighbours of cell `index` (row-major in a cols x rows grid) in the
-// order +x, -x, +y, -y, or -1 where one would leave the grid.
-inline void Neighbours(int index, int cols, int rows, int neighbours[4]) {
-  const int c = index % cols, r = index / cols;
-  neighbours[0] = c + 1 < cols ? index + 1 : -1;
-  neighbours[1] = c > 0 ? index - 1 : -1;
-  neighbours[2] = r + 1 < rows ? index + cols : -1;
-  neighbours[3] = r > 0 ? index - cols : -1;
-}
-
 // Breadth-first growth of all labels (kUnreached too) into unlabelled domain
 // cells, seeded in row-major order, linear in the grid. Only labelled cells
 // beside an unlabelled domain cell are seeded (the others would add nothing
-// when their turn came, since labels are only ever set), and the queue lets
-// go of what it has handled, so it holds the growing front, not the map.
+// when their turn came, since labels are only ever set). The queue is held
+// as two fronts, this step's and the next's, in the order a single queue
+// would hold them: only the growing front is held, never the map. Each
+// entry keeps its column, so that no cell's index is divided out.
 void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
   CV_Assert(domain.isContinuous() && labels->isContinuous());
   const int cols = labels->cols, rows = labels->rows;
+  const int64_t cells = static_cast<int64_t>(cols) * rows;
   const uint8_t* inside = domain.ptr<uint8_t>();
   int* label = labels->ptr<int>();
-  auto open = [&](int q) { return q >= 0 && inside[q] && label[q] == 0; };
-  std::deque<int> queue;
-  int neighbours[4];
-  // Row by row, so that no cell's row and column are divided out.
+  auto open = [&](int q) { return inside[q] && label[q] == 0; };
+  struct Entry {
+    int index;
+    int col;
+  };
+  std::vector<Entry> front, next;
+  // The open cells of three rows (above, this one, below) as bytes with a
+  // closed cell at either end, so that the seed test runs over whole rows
+  // without bounds checks and vectorises: nearly every cell is labelled
+  // and only a few are seeds.
+  const int padded = cols + 2;
+  std::vector<uint8_t> open_rows(3 * static_cast<size_t>(padded), 0), seed(cols);
+  uint8_t* above = open_rows.data();
+  uint8_t* here = above + padded;
+  uint8_t* below = here + padded;
+  auto open_row = [&](int r, uint8_t* out) {
+    if (r >= rows) {
+      std::fill(out, out + padded, 0);
+      return;
+    }
+    const uint8_t* in = inside + static_cast<size_t>(r) * cols;
+    const int* row = label + static_cast<size_t>(r) * cols;
+    for (int c = 0; c < cols; ++c) out[c + 1] = (in[c] != 0) & (row[c] == 0);
+  };
+  open_row(0, here);
+  open_row(1, below);
   for (int r = 0; r < rows; ++r) {
-    const int first = r * cols;
+    const int* row = label + static_cast<size_t>(r) * cols;
     for (int c = 0; c < cols; ++c) {
-      const int i = first + c;
-      if (label[i] == 0) continue;
-      if ((c + 1 < cols && open(i + 1)) || (c > 0 && open(i - 1)) ||
-          (r + 1 < rows && open(i + cols)) || (r > 0 && open(i - cols))) {
-        queue.push_back(i);
+      seed[c] = (row[c] != 0) & (here[c] | here[c + 2] | above[c + 1] | below[c + 1]);
+    }
+    for (int c = 0; c < cols;) {
+      uint64_t eight = 0;
+      if (c + 8 <= cols) std::memcpy(&eight, &seed[c], 8);
+      if (c + 8 <= cols && eight == 0) {
+        c += 8;
+        continue;
       }
+      if (seed[c]) front.push_back({r * cols + c, c});
+      ++c;
     }
+    std::swap(above, here);
+    std::swap(here, below);
+    open_row(r + 2, below);
   }
-  while (!queue.empty()) {
-    const int p = queue.front();
-    queue.pop_front();
-    Neighbours(p, cols, rows, neighbours);
-    for (int q : neighbours) {
-      if (!open(q)) continue;
-      label[q] = label[p];
-      queue.push_back(q);
+  while (!front.empty()) {
+    next.clear();
+    for (const Entry& p : front) {
+      const int grown = label[p.index];
+      // The neighbours in the order +x, -x, +y, -y.
+      auto take = [&](int q, int col) {
+        if (!open(q)) return;
+        label[q] = grown;
+        next.push_back({q, col});
+      };
+      if (p.col + 1 < cols) take(p.index + 1, p.col + 1);
+      if (p.col > 0) take(p.index - 1, p.col - 1);
+      if (p.index + cols < cells) take(p.index + cols, p.col);
+      if (p.index >= cols) take(p.index - cols, p.col);
     }
-  }
-}
-
-// Marks the cells of a piece while KeepMainPieces walks it; no area label
-// reaches this bit.
-constexpr int kVisited = 1 << 30;
-
-// Visits the 4-connected piece of cells equal to `value` around `start`
-// (breadth first), sets each to `mark` and calls visit(cell) on it. For the
-// int labels and the byte core mask alike.
-template <typename Cell, typename Visit>
-void WalkPiece(int start, Cell value, Cell mark, int cols, int rows, Cell* label, Visit visit) {
-  std::deque<int> queue(1, start);
-  label[start] = mark;
-  int neighbours[4];
-  while (!queue.empty()) {
-    const int p = queue.front();
-    queue.pop_front();
-    visit(p);
-    Neighbours(p, cols, rows, neighbours);
-    for (int q : neighbours) {
-      if (q < 0 || label[q] != value) continue;
-      label[q] = mark;
-      queue.push_back(q);
-    }
+    front.swap(next);
   }
 }
 
 // Clears every cell that is not in the main 4-connected piece of its label:
-// the piece with most of the area's path cells (`on_path`), else the biggest.
-// Pieces are marked in the labels themselves (kVisited), not in a second
-// raster.
+// the piece with most of the area's path cells (`on_path`), else the biggest
+// (ties to the piece that a row-major scan meets first).
 void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
-  CV_Assert(on_path.isContinuous() && labels->isContinuous());
-  const int cols = labels->cols, rows = labels->rows;
-  const uint8_t* path = on_path.ptr<uint8_t>();
-  int* label = labels->ptr<int>();
+  std::vector<PieceRun> runs;
+  std::vector<int> piece_of_run;
+  const int count = RunPieces(*labels, &runs, &piece_of_run);
   struct Piece {
-    int start;
-    int label;
+    int label = 0;
     int64_t size = 0;
     int64_t path = 0;
   };
-  std::vector<Piece> pieces;
-  for (int start = 0; start < cols * rows; ++start) {
-    if (label[start] <= 0 || (label[start] & kVisited) != 0) continue;
-    Piece piece{start, label[start]};
-    WalkPiece(start, piece.label, piece.label | kVisited, cols, rows, label, [&](int p) {
-      ++piece.size;
-      piece.path += path[p] != 0;
-    });
-    pieces.push_back(piece);
+  std::vector<Piece> pieces(count);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const PieceRun& run = runs[i];
+    Piece& piece = pieces[piece_of_run[i]];
+    piece.label = run.value;
+    piece.size += run.end - run.begin;
+    const uint8_t* path = on_path.ptr<uint8_t>(run.row);
+    for (int c = run.begin; c < run.end; ++c) piece.path += path[c] != 0;
   }
   std::vector<int> biggest(label_count + 1, -1);
-  for (size_t id = 0; id < pieces.size(); ++id) {
+  for (int id = 0; id < count; ++id) {
     const Piece& piece = pieces[id];
     int& best = biggest[piece.label];
     if (best < 0 || piece.path > pieces[best].path ||
         (piece.path == pieces[best].path && piece.size > pieces[best].size)) {
-      best = static_cast<int>(id);
+      best = id;
     }
   }
-  for (size_t id = 0; id < pieces.size(); ++id) {
-    const Piece& piece = pieces[id];
-    if (biggest[piece.label] == static_cast<int>(id)) continue;
-    WalkPiece(piece.start, piece.label | kVisited, 0, cols, rows, label, [](int) {});
-  }
-  for (int i = 0; i < cols * rows; ++i) {
-    if (label[i] > 0) label[i] &= ~kVisited;
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const PieceRun& run = runs[i];
+    if (biggest[run.value] == piece_of_run[i]) continue;
+    int* row = labels->ptr<int>(run.row);
+    std::fill(row + run.begin, row + run.end, 0);
   }
 }
 
@@ -155,41 +151,30 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
 }
 
 // Marks kUnreached on the unlabelled cells of the cores (`core`, see
-// CoreCells; consumed as visit marks) whose 4-connected pieces no area's
-// polygons or paths reach and that are big enough to be a room.
-void MarkUnreachedCores(cv::Mat core, double min_gap_px, cv::Mat* labels) {
-  CV_Assert(core.isContinuous() && labels->isContinuous());
-  const int cols = labels->cols, rows = labels->rows;
-  uint8_t* cell = core.ptr<uint8_t>();
-  int* label = labels->ptr<int>();
+// CoreCells) whose 4-connected pieces no area's polygons or paths reach and
+// that are big enough to be a room.
+void MarkUnreachedCores(const cv::Mat& core, double min_gap_px, cv::Mat* labels) {
   // Pockets in clutter are no room: a core must span (2 gaps)^2 to stay unreached.
   const double min_core_cells = 4 * min_gap_px * min_gap_px;
-  enum : uint8_t { kCore = 1, kSeen = 2, kDone = 3 };
-  // Walks the piece of `from` cells around `start`, marking them `to`.
-  auto walk = [&](int start, uint8_t from, uint8_t to, auto visit) {
-    WalkPiece<uint8_t>(start, from, to, cols, rows, cell, visit);
-  };
-  for (int start = 0; start < cols * rows; ++start) {
-    if (cell[start] != kCore) continue;
-    int64_t size = 0;
-    bool reached = false;
-    walk(start, kCore, kSeen, [&](int p) {
-      ++size;
-      reached = reached || label[p] > 0;
-    });
-    if (reached || size < min_core_cells) continue;
-    walk(start, kSeen, kDone, [&](int p) {
-      if (label[p] == 0) label[p] = kUnreached;
-    });
+  std::vector<PieceRun> runs;
+  std::vector<int> piece_of_run;
+  const int count = RunPieces(core, &runs, &piece_of_run);
+  std::vector<int64_t> size(count, 0);
+  std::vector<uint8_t> reached(count, 0);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const PieceRun& run = runs[i];
+    const int piece = piece_of_run[i];
+    size[piece] += run.end - run.begin;
+    const int* row = labels->ptr<int>(run.row);
+    for (int c = run.begin; c < run.end && !reached[piece]; ++c) reached[piece] = row[c] > 0;
   }
-}
-
-void CountCells(AreaRaster* raster) {
-  std::fill(raster->cell_count.begin(), raster->cell_count.end(), 0);
-  for (int r = 0; r < raster->labels.rows; ++r) {
-    const int* row = raster->labels.ptr<int>(r);
-    for (int c = 0; c < raster->labels.cols; ++c) {
-      if (row[c] > 0) ++raster->cell_count[row[c] - 1];
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const PieceRun& run = runs[i];
+    const int piece = piece_of_run[i];
+    if (reached[piece] || size[piece] < min_core_cells) continue;
+    int* row = labels->ptr<int>(run.row);
+    for (int c = run.begin; c < run.end; ++c) {
+      if (row[c] == 0) row[c] = kUnreached;
     }
   }
 }
@@ -246,7 +231,8 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   for (size_t i = 0; i < cells; ++i) {
     if (!inside[i]) label[i] = 0;
   }
-  if (!core.empty()) MarkUnreachedCores(std::move(core), min_gap_px, &raster.labels);
+  if (!core.empty()) MarkUnreachedCores(core, min_gap_px, &raster.labels);
+  core.release();
   GrowLabels(domain, &raster.labels);
   KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
   on_path.release();
@@ -255,23 +241,23 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
     if (label[i] == kUnreached) label[i] = 0;
   }
   raster.cell_count.assign(area_polygons.size(), 0);
-  CountCells(&raster);
+  CountAreaCells(&raster);
   return raster;
 }
 
-std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster) {
-  const int count = static_cast<int>(raster.cell_count.size());
+void CountAreaCells(AreaRaster* raster) {
+  const int count = static_cast<int>(raster->cell_count.size());
   // Label k + 1 is area k; 0 and below are no area.
-  const cv::Mat stats = LabelBoxes(raster.labels, count + 1);
-  std::vector<cv::Rect> box(count);
+  const cv::Mat stats = LabelBoxes(raster->labels, count + 1);
+  raster->boxes.assign(count, cv::Rect());
   for (int k = 0; k < count; ++k) {
     const int* s = stats.ptr<int>(k + 1);
+    raster->cell_count[k] = s[cv::CC_STAT_AREA];
     if (s[cv::CC_STAT_AREA] > 0) {
-      box[k] = cv::Rect(s[cv::CC_STAT_LEFT], s[cv::CC_STAT_TOP], s[cv::CC_STAT_WIDTH],
-                        s[cv::CC_STAT_HEIGHT]);
+      raster->boxes[k] = cv::Rect(s[cv::CC_STAT_LEFT], s[cv::CC_STAT_TOP], s[cv::CC_STAT_WIDTH],
+                                  s[cv::CC_STAT_HEIGHT]);
     }
   }
-  return box;
 }
 
 }  // namespace areagraph

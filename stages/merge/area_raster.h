@@ -16,6 +16,8 @@ struct AreaRaster {
   cv::Mat labels;
   // Cells of each area.
   std::vector<int64_t> cell_count;
+  // The bounding box of each area's cells (empty for an area without cells).
+  std::vector<cv::Rect> boxes;
   // Free cells inside the boundary: what the areas should cover.
   int64_t domain_cells = 0;
 };
@@ -50,7 +52,8 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
                               const std::vector<std::pair<PointList, int>>& through_paths,
                               double min_gap_px = 0, const cv::Mat& keep_out = cv::Mat());
 
-// The bounding box of every area's cells (empty for an area without cells).
-std::vector<cv::Rect> AreaBoxes(const AreaRaster& raster);
+// Sets `cell_count` and `boxes` from the labels, for as many areas as
+// `cell_count` has (one pass over the rows' runs).
+void CountAreaCells(AreaRaster* raster);
 
 }  // namespace areagraph

@@ -60,7 +60,7 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
   }
   const std::vector<bool> closed = ClosedVertices(graph, /*keep_closed_doors=*/true);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, plan);
-  const std::vector<cv::Rect> boxes = AreaBoxes(raster);
+  const std::vector<cv::Rect>& boxes = raster.boxes;
   for (int k = 0; k < area_count; ++k) {
     const int64_t cells = raster.cell_count[k];
     if (cells == 0 || cells >= min_cells || shared[k].size() != 1 || others_at_shared[k] != 1) {

@@ -30,10 +30,9 @@ AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
 }  // namespace
 
 std::vector<AreaShape> AreaShapes(const AreaRaster& raster) {
-  const std::vector<cv::Rect> boxes = AreaBoxes(raster);
   std::vector<AreaShape> shapes;
-  for (size_t k = 0; k < boxes.size(); ++k) {
-    shapes.push_back(ShapeOfArea(raster, static_cast<int>(k), boxes[k]));
+  for (size_t k = 0; k < raster.boxes.size(); ++k) {
+    shapes.push_back(ShapeOfArea(raster, static_cast<int>(k), raster.boxes[k]));
   }
   return shapes;
 }

@@ -105,12 +105,14 @@ void ApplyFolds(FoldedAreas& folded, const std::vector<bool>& took_others, AreaP
   std::vector<int> new_index(count, -1);
   AreaPlan result;
   std::vector<int64_t> cells;
+  std::vector<cv::Rect> boxes;
   for (int k = 0; k < count; ++k) {
     if (folded.Find(k) != k) continue;
     new_index[k] = static_cast<int>(result.areas.size());
     result.areas.push_back(plan->areas[k]);
     if (took_others[k]) result.areas.back().edges.clear();
     cells.push_back(raster->cell_count[k]);
+    boxes.push_back(raster->boxes[k]);
   }
   result.area_of_edge.resize(plan->area_of_edge.size(), -1);
   for (size_t e = 0; e < plan->area_of_edge.size(); ++e) {
@@ -128,6 +130,7 @@ void ApplyFolds(FoldedAreas& folded, const std::vector<bool>& took_others, AreaP
     }
   }
   raster->cell_count = std::move(cells);
+  raster->boxes = std::move(boxes);
   *plan = std::move(result);
 }
 
@@ -138,7 +141,8 @@ void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* p
   const int count = static_cast<int>(plan->areas.size());
   std::vector<int64_t>& cells = raster->cell_count;
   FoldedAreas folded(count);
-  std::vector<cv::Rect> box = AreaBoxes(*raster);
+  // Folding keeps the boxes: the box of two areas' cells is the union of theirs.
+  std::vector<cv::Rect>& box = raster->boxes;
   std::vector<std::set<int>> neighbours = GraphNeighbours(graph, *plan);
   std::vector<bool> unfoldable(count, false), took_others(count, false);
   for (int k = 0; k < count && k < static_cast<int>(kept.size()); ++k) unfoldable[k] = kept[k];

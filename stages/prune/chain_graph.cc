@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <utility>
 
 #include "stages/geometry/disjoint_sets.h"
 
@@ -42,13 +44,23 @@ void ChainEdge::Append(const ChainEdge& next) {
   target = next.target;
 }
 
-std::vector<proto::Polygon> ChainEdge::AllPolygons() const {
+void ChainEdge::Append(ChainEdge&& next) {
+  std::vector<proto::Polygon> moved = std::move(next.absorbed);
+  next.absorbed.clear();
+  Append(next);
+  absorbed.insert(absorbed.end(), std::make_move_iterator(moved.begin()),
+                  std::make_move_iterator(moved.end()));
+}
+
+std::vector<proto::Polygon> ChainEdge::TakeAllPolygons() {
   std::vector<proto::Polygon> polygons;
   polygons.reserve(1 + absorbed.size());
   proto::Polygon own;
   *own.mutable_outer() = EdgePolygonRing(path, left_sites, right_sites);
   polygons.push_back(std::move(own));
-  polygons.insert(polygons.end(), absorbed.begin(), absorbed.end());
+  polygons.insert(polygons.end(), std::make_move_iterator(absorbed.begin()),
+                  std::make_move_iterator(absorbed.end()));
+  absorbed.clear();
   return polygons;
 }
 
@@ -106,7 +118,7 @@ void ChainGraph::JoinDegreeTwoChains() {
       const auto& at = incidences[v];
       const Incidence next = at[0].edge == came_by ? at[1] : at[0];
       if (used[next.edge]) break;
-      chain.Append(take(next));
+      chain.Append(std::move(take(next)));
       came_by = next.edge;
       v = chain.target;
     }

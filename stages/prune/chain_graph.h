@@ -39,10 +39,13 @@ struct ChainEdge {
   ChainEdge Reversed() const;
   // Turns this chain around in place (what Reversed returns).
   void Reverse();
-  // Appends `next`, which must start where this chain ends.
+  // Appends `next`, which must start where this chain ends; from a chain
+  // that is given up, its absorbed polygons are moved, not copied.
   void Append(const ChainEdge& next);
-  // The edge's own polygon followed by everything it absorbed.
-  std::vector<proto::Polygon> AllPolygons() const;
+  void Append(ChainEdge&& next);
+  // The edge's own polygon followed by everything it absorbed, which it
+  // gives up (moved, not copied: for an edge that is being removed).
+  std::vector<proto::Polygon> TakeAllPolygons();
 };
 
 // One end of an edge at a vertex: which edge, and whether it is the edge's

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numeric>
 
 namespace areagraph {
@@ -78,7 +79,7 @@ int RemoveShortDeadEnds(ChainGraph* graph, double max_length_px) {
     if (next < 0) continue;
     const int recipient = is_dead_end(graph->edges[next]) ? last : next;
 
-    std::vector<proto::Polygon> polygons = edge.AllPolygons();
+    std::vector<proto::Polygon> polygons = edge.TakeAllPolygons();
     auto& absorbed = graph->edges[recipient].absorbed;
     absorbed.insert(absorbed.end(), std::make_move_iterator(polygons.begin()),
                     std::make_move_iterator(polygons.end()));
@@ -119,7 +120,10 @@ int MergeCloseJunctions(ChainGraph* graph) {
       // Its own faces go with the extended edges below; what it absorbed
       // goes to the longest other edge at the kept junction.
       auto& absorbed = graph->edges[recipient].absorbed;
-      absorbed.insert(absorbed.end(), edge.absorbed.begin(), edge.absorbed.end());
+      // Moved: the edge is removed below.
+      absorbed.insert(absorbed.end(), std::make_move_iterator(edge.absorbed.begin()),
+                      std::make_move_iterator(edge.absorbed.end()));
+      edge.absorbed.clear();
       // The other edges of the dropped junction now start at the kept one,
       // along the merged edge: their paths stay Voronoi chains, so their
       // polygons stay valid (they overlap on the merged edge's faces).

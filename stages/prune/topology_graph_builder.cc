@@ -216,7 +216,8 @@ std::vector<proto::Polygon> PartBoundaries(const FilteredGraph& filtered,
   return outlines;
 }
 
-proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& frame,
+// Takes the graph over: the chains' absorbed polygons move into the proto.
+proto::TopologyGraph ToProto(ChainGraph graph, const proto::MapFrame& frame,
                              std::vector<proto::Polygon> parts, const PartSelection& selection) {
   proto::TopologyGraph out;
   out.set_format_version(kTopologyGraphFormatVersion);
@@ -239,7 +240,7 @@ proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& fra
     vertex->set_kind(incidences[v].size() == 1 ? proto::VERTEX_DEAD_END : proto::VERTEX_JUNCTION);
     vertex->set_clearance_px(graph.vertices[v].clearance_px);
   }
-  for (const ChainEdge& chain : graph.edges) {
+  for (ChainEdge& chain : graph.edges) {
     if (chain.removed) continue;
     proto::GraphEdge* edge = out.add_edges();
     edge->set_id(out.edges_size() - 1);
@@ -249,7 +250,7 @@ proto::TopologyGraph ToProto(const ChainGraph& graph, const proto::MapFrame& fra
     AppendPoints(chain.left_sites, edge->mutable_left_sites());
     AppendPoints(chain.right_sites, edge->mutable_right_sites());
     for (double c : chain.clearance_px) edge->add_clearance_px(c);
-    for (const proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = polygon;
+    for (proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = std::move(polygon);
     edge->set_length_px(chain.Length());
     edge->set_min_clearance_px(chain.min_clearance_px);
     UpdateEdgePolygons(edge);
@@ -317,7 +318,7 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   if (parts.empty()) {
     throw InputError("no Topology Graph: no part of the graph lies inside the boundary");
   }
-  return ToProto(graph, map.frame(), std::move(parts), selection);
+  return ToProto(std::move(graph), map.frame(), std::move(parts), selection);
 }
 
 }  // namespace areagraph

@@ -40,8 +40,9 @@ proto::RoomWidthEstimate OneDoor(double x_m, double y_m, double width_m) {
 
 PointList Sites(const FloorPlan& plan, const proto::RoomWidthEstimate& estimate) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
-  return DoorClosingSites(estimate, map.cells(), map.frame().width_px(), map.frame().height_px(),
-                          kResolutionM);
+  return DoorClosingSites(
+      estimate, LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()),
+      kResolutionM);
 }
 
 TEST(DoorSitesTest, DoorInAWallIsClosedAcrossItsWholeWidth) {
@@ -83,7 +84,8 @@ TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
 PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = true) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   const AreaStages stages = RunAreaStages(map);
-  return WallGapSites(stages.topology, map.cells(), map.frame().width_px(), map.frame().height_px(),
+  return WallGapSites(stages.topology,
+                      LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()),
                       kResolutionM, max_gap_m, short_tips);
 }
 

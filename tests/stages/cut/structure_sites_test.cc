@@ -34,7 +34,8 @@ int SitesOnBlock(const FloorPlan& plan, double end_on_face_share) {
   const proto::CleanedMap map = CleanDrawnMap(plan.image());
   const PointList sites =
       StructureSites(map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM,
-                     /*max_island_m=*/4.0, end_on_face_share);
+                     /*max_island_m=*/4.0, end_on_face_share,
+                     LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()));
   int on_block = 0;
   for (const Eigen::Vector2d& site : sites) {
     const double x = site.x() * kResolutionM, y = site.y() * kResolutionM;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <deque>
 #include <opencv2/imgproc.hpp>
 #include <random>
 
@@ -99,6 +100,106 @@ TEST(RegionBoxes, LabelBoxesSkipsLabelsOutsideTheCount) {
   EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_HEIGHT), 2);
   EXPECT_EQ(stats.at<int>(1, cv::CC_STAT_AREA), 6);
   EXPECT_EQ(stats.at<int>(2, cv::CC_STAT_AREA), 0);
+}
+
+// RunPieces against the cell-by-cell walk it replaced in ag-merge: a
+// row-major scan that walks (breadth first, 4-connected) every piece of
+// equal positive cells it meets, numbering the pieces as it finds them.
+cv::Mat PiecesByWalking(const cv::Mat& cells) {
+  cv::Mat values;
+  cells.convertTo(values, CV_32S);
+  cv::Mat piece(cells.size(), CV_32S, cv::Scalar(-1));
+  int count = 0;
+  for (int r = 0; r < cells.rows; ++r) {
+    for (int c = 0; c < cells.cols; ++c) {
+      const int value = values.at<int>(r, c);
+      if (value <= 0 || piece.at<int>(r, c) >= 0) continue;
+      std::deque<cv::Point> queue{{c, r}};
+      piece.at<int>(r, c) = count;
+      while (!queue.empty()) {
+        const cv::Point p = queue.front();
+        queue.pop_front();
+        for (const cv::Point d :
+             {cv::Point(1, 0), cv::Point(-1, 0), cv::Point(0, 1), cv::Point(0, -1)}) {
+          const cv::Point q = p + d;
+          if (q.x < 0 || q.y < 0 || q.x >= cells.cols || q.y >= cells.rows) continue;
+          if (values.at<int>(q) != value || piece.at<int>(q) >= 0) continue;
+          piece.at<int>(q) = count;
+          queue.push_back(q);
+        }
+      }
+      ++count;
+    }
+  }
+  return piece;
+}
+
+void ExpectSamePieces(const cv::Mat& cells) {
+  std::vector<PieceRun> runs;
+  std::vector<int> piece_of_run;
+  const int count = RunPieces(cells, &runs, &piece_of_run);
+  ASSERT_EQ(runs.size(), piece_of_run.size());
+  cv::Mat piece(cells.size(), CV_32S, cv::Scalar(-1));
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const PieceRun& run = runs[i];
+    ASSERT_LT(run.begin, run.end);
+    ASSERT_LT(piece_of_run[i], count);
+    if (i > 0) {
+      ASSERT_TRUE(runs[i - 1].row < run.row ||
+                  (runs[i - 1].row == run.row && runs[i - 1].end <= run.begin));
+    }
+    for (int c = run.begin; c < run.end; ++c) {
+      ASSERT_EQ(cells.type() == CV_8U ? cells.at<uint8_t>(run.row, c) : cells.at<int>(run.row, c),
+                run.value);
+      piece.at<int>(run.row, c) = piece_of_run[i];
+    }
+  }
+  const cv::Mat want = PiecesByWalking(cells);
+  double most = -1;
+  cv::minMaxLoc(want, nullptr, &most);
+  EXPECT_EQ(count, static_cast<int>(most) + 1);
+  EXPECT_EQ(cv::countNonZero(piece != want), 0);
+}
+
+TEST(RegionBoxes, RunPiecesEqualAWalkOnRandomMasksAndLabels) {
+  std::mt19937 random(140);
+  for (const double density : {0.05, 0.5, 0.95}) {
+    for (const cv::Size size :
+         {cv::Size(1, 1), cv::Size(1, 37), cv::Size(53, 1), cv::Size(64, 48), cv::Size(301, 177)}) {
+      const cv::Mat mask = RandomMask(random, size.height, size.width, density);
+      ExpectSamePieces(mask);
+      // Labels -1 to 3 (ag-merge's raster holds -1 for unreached cells):
+      // equal neighbours join, different ones do not.
+      cv::Mat labels(size, CV_32S);
+      std::uniform_int_distribution<int> label(-1, 3);
+      for (int i = 0; i < size.area(); ++i) {
+        labels.ptr<int>()[i] = mask.data[i] != 0 ? label(random) : 0;
+      }
+      ExpectSamePieces(labels);
+    }
+  }
+}
+
+TEST(RegionBoxes, RunPiecesJoinAUShapeAndKeepDiagonalsApart) {
+  // A U whose arms meet only at the bottom: one piece, numbered first
+  // although its right arm starts after another piece; two cells touching
+  // only at a corner are two pieces.
+  cv::Mat labels(6, 8, CV_32S, cv::Scalar(0));
+  labels(cv::Rect(0, 0, 2, 5)).setTo(2);
+  labels(cv::Rect(5, 2, 2, 3)).setTo(2);
+  labels(cv::Rect(0, 5, 7, 1)).setTo(2);
+  labels.at<int>(0, 3) = 2;
+  labels.at<int>(1, 4) = 2;
+  std::vector<PieceRun> runs;
+  std::vector<int> piece_of_run;
+  ASSERT_EQ(RunPieces(labels, &runs, &piece_of_run), 3);
+  EXPECT_EQ(piece_of_run[0], 0);  // row 0, the left arm
+  EXPECT_EQ(piece_of_run[1], 1);  // row 0, column 3
+  EXPECT_EQ(piece_of_run[2], 0);  // row 1, the left arm
+  EXPECT_EQ(piece_of_run[3], 2);  // row 1, column 4
+  EXPECT_EQ(piece_of_run[4], 0);  // row 2, the left arm
+  EXPECT_EQ(piece_of_run[5], 0);  // row 2, the right arm
+  ExpectSamePieces(labels);
 }
 
 }  // namespace

@@ -19,8 +19,9 @@ AreaRaster RasterOf(const std::vector<cv::Rect>& rects) {
   raster.labels = cv::Mat::zeros(400, 600, CV_32S);
   for (size_t k = 0; k < rects.size(); ++k) {
     raster.labels(rects[k]).setTo(static_cast<int>(k + 1));
-    raster.cell_count.push_back(rects[k].area());
   }
+  raster.cell_count.resize(rects.size());
+  CountAreaCells(&raster);
   return raster;
 }
 
@@ -37,6 +38,7 @@ TEST(CorridorLabelsTest, LongNarrowRoomBecomesACorridor) {
       RasterOf({{0, 0, 200, 40}, {0, 50, 100, 80}, {0, 140, 500, 100}, {520, 0, 30, 120}});
   raster.labels(cv::Rect(40, 80, 20, 20)).setTo(0);
   raster.labels(cv::Rect(430, 90, 90, 30)).setTo(4);
+  CountAreaCells(&raster);
   AreaPlan plan = RoomsOnly(4);
   LabelCorridorsByShape(raster, 0.05, &plan);
   EXPECT_EQ(plan.areas[0].kind, AREA_CORRIDOR);
