@@ -27,10 +27,17 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
                "publish each new or changed Area Graph on LCM channel AREA_GRAPH (at --url)");
   AddLcmUrlFlag(app, flags.url);
   app.add_flag("--json", flags.json, "print the summary as JSON");
-  app.add_option("MAP", flags.maps, "map image, directory or manifest")->required();
+  app.add_option("MAP", flags.maps, "map image, directory or manifest");
+  app.add_flag("--print-options", flags.print_options,
+               "print the options a run would use (the --options file with every --set, every "
+               "default filled in) in protobuf text format and exit; no MAP");
 }
 
 void CheckRunFlags(const CLI::App& app, const RunFlags& flags) {
+  if (flags.maps.empty() != flags.print_options) {
+    throw OptionsError(flags.print_options ? "--print-options takes no MAP"
+                                           : "MAP is required (see --help)");
+  }
   if (app.get_option("--url")->count() > 0 && !flags.publish) {
     throw OptionsError("--url is where --publish sends; add --publish, or drop --url");
   }
