@@ -14,7 +14,10 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
   app.add_option("--store", flags.stage.store_path, "artifact store (SQLite file)")
       ->capture_default_str();
   app.add_option("--options", flags.stage.options_file, "pipeline options (protobuf text format)");
-  app.add_option("--set", flags.stage.overrides, "override one option: stage.field=value");
+  // One value per --set: MAP is optional (--print-options), so a greedy
+  // --set would take the maps too.
+  app.add_option("--set", flags.stage.overrides, "override one option: stage.field=value")
+      ->allow_extra_args(false);
   CLI::Option* from = app.add_option("--from", flags.from_stage,
                                      "start at this stage; earlier stages' heads are its inputs");
   app.add_option("--only", flags.only_stage, "run this stage only")->excludes(from);
