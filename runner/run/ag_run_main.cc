@@ -2,8 +2,11 @@
 // with parallel worker processes, failures recorded, and an optional LCM
 // publisher for live consumers.
 #include <CLI/CLI.hpp>
+#include <iostream>
 
 #include "runner/run/collection_run.h"
+#include "stages/common/command_line.h"
+#include "stages/common/pipeline_options.h"
 #include "stages/common/stage_table.h"
 #include "tools/report/run_report_writer.h"
 
@@ -25,6 +28,10 @@ int main(int argc, char** argv) {
       ->type_name("DIR");
   return RunCommand("ag-run", app, argc, argv, [&] {
     CheckRunFlags(app, flags);
+    if (flags.print_options) {  // examples/options/default.pbtxt is this output
+      std::cout << CanonicalText(LoadPipelineOptions(flags.stage));
+      return 0;
+    }
     const int status = RunCollection(flags);
     if (!report_dir.empty()) WriteRunReport(flags, report_dir);
     return status;

@@ -14,7 +14,10 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
   app.add_option("--store", flags.stage.store_path, "artifact store (SQLite file)")
       ->capture_default_str();
   app.add_option("--options", flags.stage.options_file, "pipeline options (protobuf text format)");
-  app.add_option("--set", flags.stage.overrides, "override one option: stage.field=value");
+  // One value per --set: MAP is optional (--print-options), so a greedy
+  // --set would take the maps too.
+  app.add_option("--set", flags.stage.overrides, "override one option: stage.field=value")
+      ->allow_extra_args(false);
   CLI::Option* from = app.add_option("--from", flags.from_stage,
                                      "start at this stage; earlier stages' heads are its inputs");
   app.add_option("--only", flags.only_stage, "run this stage only")->excludes(from);
@@ -27,10 +30,17 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
                "publish each new or changed Area Graph on LCM channel AREA_GRAPH (at --url)");
   AddLcmUrlFlag(app, flags.url);
   app.add_flag("--json", flags.json, "print the summary as JSON");
-  app.add_option("MAP", flags.maps, "map image, directory or manifest")->required();
+  app.add_option("MAP", flags.maps, "map image, directory or manifest");
+  app.add_flag("--print-options", flags.print_options,
+               "print the options a run would use (the --options file with every --set, every "
+               "default filled in) in protobuf text format and exit; no MAP");
 }
 
 void CheckRunFlags(const CLI::App& app, const RunFlags& flags) {
+  if (flags.maps.empty() != flags.print_options) {
+    throw OptionsError(flags.print_options ? "--print-options takes no MAP"
+                                           : "MAP is required (see --help)");
+  }
   if (app.get_option("--url")->count() > 0 && !flags.publish) {
     throw OptionsError("--url is where --publish sends; add --publish, or drop --url");
   }

@@ -20,14 +20,15 @@ struct RunFlags {
   bool publish = false;
   std::string url;
   bool json = false;
+  bool print_options = false;
 };
 
 // Adds ag-run's flags and MAP arguments to `app`; --jobs defaults to the
 // number of cores.
 void AddRunFlags(CLI::App& app, RunFlags& flags);
 
-// Checks what needs no map: --jobs, stage names, --url without --publish.
-// Throws OptionsError.
+// Checks what needs no map: MAP given unless --print-options, --jobs, stage names, --url without
+// --publish. Throws OptionsError.
 void CheckRunFlags(const CLI::App& app, const RunFlags& flags);
 
 // The run settings that --store, --from, --only and --force ask for.

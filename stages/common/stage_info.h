@@ -72,7 +72,9 @@ inline constexpr StageInfo kCutStage{"cut", 9};
 // area with walls seen, is not folded away (merge.keep_small_closed_rooms; issue 12, with cut 9).
 // Also in merge 14: corridor stem joining joins stems only into corridors at most 4 m wide
 // (merge.corridor_stems_max_width_m), so a hall does not take back the tails cut 9 cut off.
-inline constexpr StageInfo kMergeStage{"merge", 14};
+// merge 15: a small closed room whose jambs are both thick obstacles (a pocket between cabinets) is
+// folded after all (merge.closed_room_pocket_jamb_m, issue-12-pocket).
+inline constexpr StageInfo kMergeStage{"merge", 15};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds (issue 15).

@@ -150,7 +150,8 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
   FoldSmallAreas(graph, min_cells, &plan, &raster,
                  options.keep_small_closed_rooms()
-                     ? SmallClosedRooms(graph, plan, raster, grid, min_cells)
+                     ? SmallClosedRooms(graph, plan, raster, grid, min_cells,
+                                        options.closed_room_pocket_jamb_m())
                      : std::vector<bool>());
   if (options.label_corridors_by_shape()) {
     LabelCorridorsByShape(raster, grid.resolution_m(), &plan);

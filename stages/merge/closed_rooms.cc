@@ -1,6 +1,8 @@
 #include "stages/merge/closed_rooms.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <set>
 
 #include "stages/geometry/distance_transform.h"
@@ -39,11 +41,37 @@ bool WallsSeen(const cv::Mat& labels, const CellGrid& grid, int area, const cv::
   return unknown <= kClosedRoomMaxUnknownShare * non_free;
 }
 
+// Thickness (m) of the obstacle behind `jamb`, seen from the other jamb
+// `from`: the run of non-free cells through the point kJambDepthM beyond the
+// jamb on their line, across that line, between free cells on both sides;
+// infinity when either side meets no free cell within kJambMaxRunM.
+double JambThicknessM(const CellGrid& grid, const Eigen::Vector2d& from,
+                      const Eigen::Vector2d& jamb) {
+  const double res = grid.resolution_m();
+  const Eigen::Vector2d along = (jamb - from).normalized();
+  const Eigen::Vector2d across(-along.y(), along.x());
+  const Eigen::Vector2d point = jamb + along * (kJambDepthM / res);
+  const int limit = static_cast<int>(std::ceil(kJambMaxRunM / res));
+  int run = 0;
+  for (const double sign : {1.0, -1.0}) {
+    for (int step = 0;; ++step) {
+      const Eigen::Vector2d p = point + sign * step * across;
+      const int x = static_cast<int>(std::lround(p.x())), y = static_cast<int>(std::lround(p.y()));
+      if (step > limit || !grid.Contains(x, y)) return std::numeric_limits<double>::infinity();
+      if (grid.At(x, y) == proto::CELL_FREE) {
+        run += step;
+        break;
+      }
+    }
+  }
+  return std::max(0, run - 1) * res;
+}
+
 }  // namespace
 
 std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan& plan,
                                    const AreaRaster& raster, const CellGrid& grid,
-                                   int64_t min_cells) {
+                                   int64_t min_cells, double pocket_jamb_m) {
   const int area_count = static_cast<int>(plan.areas.size());
   std::vector<bool> kept(area_count, false);
   const std::vector<std::set<int>> areas_at = AreasAtVertices(graph, plan);
@@ -72,6 +100,11 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
     if (own == openings[v].end()) continue;
     if (own->second.width_px >= kClosedRoomOpeningShare * WidestInnerWidthPx(raster, k, boxes[k])) {
       continue;
+    }
+    if (pocket_jamb_m > 0 &&
+        JambThicknessM(grid, own->second.right, own->second.left) >= pocket_jamb_m &&
+        JambThicknessM(grid, own->second.left, own->second.right) >= pocket_jamb_m) {
+      continue;  // a pocket between furniture, not a door in a wall
     }
     kept[k] = WallsSeen(raster.labels, grid, k, boxes[k]);
   }

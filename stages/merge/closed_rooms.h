@@ -17,6 +17,10 @@ inline constexpr double kClosedRoomOpeningShare = 0.9;
 // cells may face unknown cells: a room's walls were seen; a piece that
 // borders unknown space is a scan's frontier or gap, not a room.
 inline constexpr double kClosedRoomMaxUnknownShare = 0.1;
+// A jamb's thickness is measured this far beyond it on the opening's line;
+// a run across that line longer than kJambMaxRunM counts as endless.
+inline constexpr double kJambDepthM = 0.25;
+inline constexpr double kJambMaxRunM = 1.5;
 
 // Per area of `plan`: whether it is a small closed room that
 // merge.keep_small_closed_rooms keeps out of FoldSmallAreas although it has
@@ -27,9 +31,14 @@ inline constexpr double kClosedRoomMaxUnknownShare = 0.1;
 //   inner width (twice the largest distance from its cells to a cell
 //   outside it);
 // - at most kClosedRoomMaxUnknownShare of its faces towards non-free cells
-//   face unknown cells (cells off the map count as unknown).
+//   face unknown cells (cells off the map count as unknown);
+// - unless `pocket_jamb_m` is 0, not both of its jambs are obstacles at
+//   least `pocket_jamb_m` thick kJambDepthM beyond the opening (across its
+//   line): a door's jambs are a wall's ends, thin with free space on both
+//   sides; a pocket between cabinets is entered past their corners or along
+//   their faces.
 std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan& plan,
                                    const AreaRaster& raster, const CellGrid& grid,
-                                   int64_t min_cells);
+                                   int64_t min_cells, double pocket_jamb_m);
 
 }  // namespace areagraph

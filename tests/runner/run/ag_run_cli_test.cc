@@ -323,6 +323,22 @@ TEST(AgRunInputTest, OptionsFolderIsRefused) {
   EXPECT_FALSE(std::filesystem::exists(dir.File("s.db")));
 }
 
+// --print-options: the options a run would use, defaults filled in (what
+// examples/options/default.pbtxt lists), and no MAP with it or without it.
+TEST(AgRunInputTest, PrintOptionsPrintsEveryDefaultAndTheSets) {
+  TempDir dir;
+  const CommandResult run = RunTool("ag-run", {"--print-options", "--set", "cut.room_width_m=1.1"});
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("room_width_m: 1.1\n"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("closed_room_pocket_jamb_m: 0.6\n"), std::string::npos) << run.out;
+  const CommandResult with_map = RunTool("ag-run", {"--print-options", dir.File("map.png")});
+  EXPECT_EQ(with_map.exit_code, 2);
+  EXPECT_EQ(with_map.err, "ag-run: --print-options takes no MAP\n");
+  const CommandResult nothing = RunTool("ag-run", {});
+  EXPECT_EQ(nothing.exit_code, 2);
+  EXPECT_EQ(nothing.err, "ag-run: MAP is required (see --help)\n");
+}
+
 // The case: 2 x 2 tiles of lab_a kept the areas of one tile, with
 // exit 0 and no word. Every tile is a part of the map now, and the summary
 // and ag-inspect say how many components there are and how many small parts

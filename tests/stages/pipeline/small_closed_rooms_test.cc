@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
+#include "tools/example_maps/benchmark_floor.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
@@ -41,6 +42,20 @@ Result RunOn(const floorplan::FloorPlan& plan, const proto::PipelineOptions& opt
   return {AreaAt(stages.areas, 3.5, 3), AreaAt(stages.areas, 7.1, 1.25)};
 }
 
+// Generated tuning floor_16 (0.042 m/px): a room of about 3 x 3.4 m whose top
+// left corner is a pocket of about 0.9 x 1.3 m between a cabinet against the
+// left wall and one against the top wall. The cut closes the 0.56 m gap
+// between the cabinets' corners as a door. Areas at the pocket and at the
+// room's middle.
+std::pair<int, int> PocketAndRoomOfFloor16(const proto::PipelineOptions& options) {
+  const floorplan::BenchmarkFloor floor = floorplan::RandomBenchmarkFloor(16);
+  const double res = floor.plan.resolution_m();
+  const proto::CleanedMap map = CleanDrawnMap(floor.plan.image(), options.clean(), res);
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map, 0.9);
+  return {AreaAt(stages.areas, 6.6, 1.6, res), AreaAt(stages.areas, 7.85, 3.15, res)};
+}
+
 TEST(SmallClosedRoomsTest, AClosetBehindAClosedDoorIsAnAreaOfItsOwn) {
   const Result result = RunOn(RoomAndCloset(), {});
   ASSERT_NE(result.room, -1);
@@ -70,6 +85,24 @@ TEST(SmallClosedRoomsTest, AClosetBesideUnknownSpaceFolds) {
   const Result result = RunOn(RoomAndCloset(/*far_wall_unknown=*/true), {});
   ASSERT_NE(result.room, -1);
   EXPECT_EQ(result.room, result.closet);
+}
+
+// merge.closed_room_pocket_jamb_m: the pocket's "door" runs between two
+// cabinet corners, thick obstacles beyond both jambs, so the pocket stays in
+// its room (the closet above, whose door lies in a wall, stays a room).
+TEST(SmallClosedRoomsTest, APocketBetweenCabinetsStaysInTheRoom) {
+  const auto [pocket, room] = PocketAndRoomOfFloor16({});
+  ASSERT_NE(room, -1);
+  EXPECT_EQ(pocket, room);
+}
+
+TEST(SmallClosedRoomsTest, WithoutThePocketTestThePocketIsAnArea) {
+  proto::PipelineOptions options;
+  options.mutable_merge()->set_closed_room_pocket_jamb_m(0);
+  const auto [pocket, room] = PocketAndRoomOfFloor16(options);
+  ASSERT_NE(room, -1);
+  ASSERT_NE(pocket, -1);
+  EXPECT_NE(pocket, room);
 }
 
 }  // namespace
