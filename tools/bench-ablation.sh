@@ -66,7 +66,8 @@ STEPS=(
   "+ cut.keep_closed_room_tips|cut.keep_closed_room_tips=true"
   "+ merge.keep_small_closed_rooms|merge.keep_small_closed_rooms=true"
   "+ merge.closed_room_pocket_jamb_m 0.6|merge.closed_room_pocket_jamb_m=0.6"
-  "+ cut.cut_narrow_tails and merge.corridor_stems_max_width_m 4 (= defaults)|cut.cut_narrow_tails=true merge.corridor_stems_max_width_m=4"
+  "+ cut.cut_narrow_tails and merge.corridor_stems_max_width_m 4|cut.cut_narrow_tails=true merge.corridor_stems_max_width_m=4"
+  "+ cut.island_wall_piece_both_ends (= defaults)|cut.island_wall_piece_both_ends=true"
 )
 
 set_flags=()

@@ -41,7 +41,9 @@ inline constexpr StageInfo kPruneStage{"prune", 3};
 // lab_d_scan_furnitures, freiburg_building101). Also in cut 9: a room's edge running on into a
 // narrow tail (a corridor wider than W but at most half as wide as the room) is cut where the tail
 // begins (cut.cut_narrow_tails; issue 12, areagraph/ Freiburg101_scan's side corridors).
-inline constexpr StageInfo kCutStage{"cut", 9};
+// cut 10: a block continued end-on at one end is a wall piece only when its other end faces an
+// obstacle within a door's width (cut.island_wall_piece_both_ends; bormann/ lab_ipa furnished).
+inline constexpr StageInfo kCutStage{"cut", 10};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

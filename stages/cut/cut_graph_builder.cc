@@ -93,7 +93,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   }
   PointList sites = StructureSites(
       map.cells(), grid.width(), grid.height(), grid.resolution_m(), options.room_island_max_m(),
-      options.island_end_on_face() ? options.island_end_on_face_share() : 0, obstacles);
+      options.island_end_on_face() ? options.island_end_on_face_share() : 0,
+      options.island_wall_piece_both_ends(), obstacles);
   PointList closing;  // the sites that close doors and wall gaps on purpose
   if (options.close_wall_doors()) {
     closing = DoorClosingSites(room_width, obstacles, grid.resolution_m());

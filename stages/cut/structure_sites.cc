@@ -67,10 +67,41 @@ bool ContinuedEndOn(const ObstacleRegions& regions, int region, int direction, d
   return false;
 }
 
+// Whether, past the end of `region` in `direction`, another obstacle lies
+// within `gap_px` on any line across its end face: the other jamb of a door.
+bool ObstacleBeyondEnd(const ObstacleRegions& regions, int region, int direction, double gap_px) {
+  const RegionShape& shape = regions.shapes[region];
+  const Eigen::Vector2d along = direction * shape.axis;
+  const Eigen::Vector2d across(-along.y(), along.x());
+  const double half = 0.5 * shape.width - 1;
+  for (double offset = -half; offset <= half; offset += 1) {
+    const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along + offset * across;
+    for (double t = 0; t <= gap_px; t += 1) {
+      const int label = regions.LabelAt(end + t * along);
+      if (label != 0 && label != region) return true;
+    }
+  }
+  return false;
+}
+
+// Whether `region` is a piece of a wall: continued end-on past one end and,
+// with `both_ends`, facing another obstacle within a door's width past the
+// other end too (a piece of wall stands between two doors).
+bool WallPiece(const ObstacleRegions& regions, int region, double gap_px, double run_px,
+               double face_share, bool both_ends) {
+  for (const int direction : {1, -1}) {
+    if (ContinuedEndOn(regions, region, direction, gap_px, run_px, face_share) &&
+        (!both_ends || ObstacleBeyondEnd(regions, region, -direction, gap_px))) {
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, double end_on_face_share,
+                         double max_island_m, double end_on_face_share, bool wall_piece_both_ends,
                          const ObstacleLabels& obstacles) {
   const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
   std::vector<uint8_t> island;
@@ -90,8 +121,7 @@ PointList StructureSites(const std::string& cells, int width, int height, double
                        s.length <= kMaxIslandElongation * s.width &&
                        s.cells >= kMinIslandSolidity * s.length * s.width;
       if (island[region] &&
-          (ContinuedEndOn(regions, region, 1, gap_px, run_px, end_on_face_share) ||
-           ContinuedEndOn(regions, region, -1, gap_px, run_px, end_on_face_share))) {
+          WallPiece(regions, region, gap_px, run_px, end_on_face_share, wall_piece_both_ends)) {
         island[region] = 0;
       }
     }

@@ -23,10 +23,14 @@ namespace areagraph {
 // (cut.island_end_on_face_share, 0 when cut.island_end_on_face is off): the
 // other obstacle may continue the region's line on any line across this
 // share of its end face's width, centred on the face, not only on its centre
-// line.
+// line. `wall_piece_both_ends` (cut.island_wall_piece_both_ends): a region
+// continued end-on is a piece of wall only when another obstacle also lies
+// within kWallGapM past its other end (a wall piece stands between two
+// doors); a cabinet at a wall that lines up with a desk leaves the desk's
+// other end open.
 // `obstacles` labels `cells` (LabelObstacles; read only when max_island_m > 0).
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, double end_on_face_share,
+                         double max_island_m, double end_on_face_share, bool wall_piece_both_ends,
                          const ObstacleLabels& obstacles);
 
 // Walls are thinner than this (metres); furniture islands are not.

@@ -30,11 +30,11 @@ FloorPlan RoomWithBlock() {
 }
 
 // How many of the structure sites lie on the block.
-int SitesOnBlock(const FloorPlan& plan, double end_on_face_share) {
+int SitesOnBlock(const FloorPlan& plan, double end_on_face_share, bool both_ends = true) {
   const proto::CleanedMap map = CleanDrawnMap(plan.image());
   const PointList sites =
       StructureSites(map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM,
-                     /*max_island_m=*/4.0, end_on_face_share,
+                     /*max_island_m=*/4.0, end_on_face_share, both_ends,
                      LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()));
   int on_block = 0;
   for (const Eigen::Vector2d& site : sites) {
@@ -83,6 +83,32 @@ TEST(StructureSitesTest, BlockWithAStubOnItsCentreLineIsStructureEitherWay) {
   for (const double share : {kCentreLine, kMiddleQuarter, kWholeFace}) {
     EXPECT_GT(SitesOnBlock(plan, share), 40) << share;
   }
+}
+
+TEST(StructureSitesTest, BlockContinuedAtOneEndOnlyIsAnIsland) {
+  // A cabinet 0.5 x 1 m against the top wall on the block's centre line,
+  // 0.6 m above a block moved up to y = 1.7-3.7 m: its other end is 2.4 m
+  // from the bottom wall, wider than a door, so it is no piece of wall
+  // between two doors (cut.island_wall_piece_both_ends); one continued end
+  // was enough before.
+  FloorPlan plan(12.2, 6.2, kResolutionM);
+  floorplan::DrawRoom(plan, {0.1, 0.1, 7, 6});
+  for (int k = 0; k < 4; ++k) floorplan::DrawRoom(plan, {7.1 + 1.25 * k, 0.1, 1.25, 6});
+  floorplan::DrawFurniture(plan, {3.15, 0.1, 0.5, 1.0});
+  floorplan::DrawFurniture(plan, {kBlock.x, 1.7, kBlock.width, kBlock.height});
+  const auto sites_on_moved_block = [&](bool both_ends) {
+    const proto::CleanedMap map = CleanDrawnMap(plan.image());
+    int on_block = 0;
+    for (const Eigen::Vector2d& site :
+         StructureSites(map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM,
+                        4.0, kMiddleQuarter, both_ends)) {
+      const double x = site.x() * kResolutionM, y = site.y() * kResolutionM;
+      on_block += x > kBlock.x - 0.05 && x < kBlock.x + kBlock.width + 0.05 && y > 1.65 && y < 3.75;
+    }
+    return on_block;
+  };
+  EXPECT_EQ(sites_on_moved_block(true), 0);
+  EXPECT_GT(sites_on_moved_block(false), 40);
 }
 
 }  // namespace
