@@ -99,9 +99,10 @@ TEST(StructureSitesTest, BlockContinuedAtOneEndOnlyIsAnIsland) {
   const auto sites_on_moved_block = [&](bool both_ends) {
     const proto::CleanedMap map = CleanDrawnMap(plan.image());
     int on_block = 0;
-    for (const Eigen::Vector2d& site :
-         StructureSites(map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM,
-                        4.0, kMiddleQuarter, both_ends)) {
+    for (const Eigen::Vector2d& site : StructureSites(
+             map.cells(), map.frame().width_px(), map.frame().height_px(), kResolutionM, 4.0,
+             kMiddleQuarter, both_ends,
+             LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()))) {
       const double x = site.x() * kResolutionM, y = site.y() * kResolutionM;
       on_block += x > kBlock.x - 0.05 && x < kBlock.x + kBlock.width + 0.05 && y > 1.65 && y < 3.75;
     }
