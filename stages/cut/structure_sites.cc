@@ -14,6 +14,17 @@
 namespace areagraph {
 namespace {
 
+// The distance (px, in whole steps) along `along` from `end` to the first cell
+// of an obstacle other than `region`, at most `gap_px`; -1 when there is none.
+double OtherObstacleWithin(const ObstacleRegions& regions, int region, const Eigen::Vector2d& end,
+                           const Eigen::Vector2d& along, double gap_px) {
+  for (double t = 0; t <= gap_px; t += 1) {
+    const int label = regions.LabelAt(end + t * along);
+    if (label != 0 && label != region) return t;
+  }
+  return -1;
+}
+
 // Whether, past one end of `region` along its axis (`direction` +1 or -1),
 // within `gap_px`, another obstacle continues the region's line end-on for
 // `run_px` and is about as wide as the region: a wall broken by a door, or a
@@ -25,15 +36,7 @@ bool ContinuedEndOnAt(const ObstacleRegions& regions, int region, int direction,
   const Eigen::Vector2d along = direction * shape.axis;
   const Eigen::Vector2d across(-along.y(), along.x());
   const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along + offset * across;
-  // The first obstacle cell of another region past the end.
-  double hit = -1;
-  for (double t = 0; t <= gap_px; t += 1) {
-    const int label = regions.LabelAt(end + t * along);
-    if (label != 0 && label != region) {
-      hit = t;
-      break;
-    }
-  }
+  const double hit = OtherObstacleWithin(regions, region, end, along, gap_px);
   if (hit < 0) return false;
   for (double t = hit; t <= hit + run_px; t += 1) {
     if (!regions.NonFree(end + t * along)) return false;
@@ -76,10 +79,7 @@ bool ObstacleBeyondEnd(const ObstacleRegions& regions, int region, int direction
   const double half = 0.5 * shape.width - 1;
   for (double offset = -half; offset <= half; offset += 1) {
     const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along + offset * across;
-    for (double t = 0; t <= gap_px; t += 1) {
-      const int label = regions.LabelAt(end + t * along);
-      if (label != 0 && label != region) return true;
-    }
+    if (OtherObstacleWithin(regions, region, end, along, gap_px) >= 0) return true;
   }
   return false;
 }
