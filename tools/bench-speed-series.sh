@@ -106,11 +106,29 @@ clutter_table() {
   echo
 }
 
-# cpu_ms_per_run N COMMAND...: runs COMMAND N times under one /usr/bin/time
-# and prints the mean CPU milliseconds (user + system) and the mean wall
-# seconds of one run: /usr/bin/time counts in 10-ms steps, too coarse for one
-# render. A failure becomes a note and prints nothing.
-cpu_ms_per_run() {
+# own_cpu N COMMAND...: runs COMMAND N times with ag-bench-exec, each run its
+# own process whose resource usage wait4 reports, and prints the median CPU
+# milliseconds (user + system) of one such process, its median wall seconds
+# and its median minor page faults: the command from its exec to its exit,
+# start-up included, and nothing of the launcher. A failure becomes a note
+# and prints nothing.
+own_cpu() {
+  local n=$1
+  shift
+  if ! "$bin/ag-bench-exec" --repeat "$n" -- "$@" >"$work/exec.txt" 2>&1; then
+    notes+=("$(basename "$1") failed: $(tail -1 "$work/exec.txt")")
+    return 1
+  fi
+  awk '{ printf "%s %.4f %s\n", $2, $8 / 1000, $10 }' "$work/exec.txt"
+}
+
+# loop_cpu N COMMAND...: the method of this table before issue-14-render4,
+# kept as a column to set against own_cpu: N runs in one bash loop under
+# /usr/bin/time, the mean CPU milliseconds per run. It also charges bash's
+# fork of each run (the page-table copy and copy-on-write faults, several ms a
+# process on a loaded machine) to the command (docs/performance.md, issue 14,
+# thirteenth pass). A failure becomes a note and prints nothing.
+loop_cpu() {
   local n=$1 status=0
   shift
   /usr/bin/time -f '%e %U %S' -o "$work/time.txt" \
@@ -120,30 +138,34 @@ cpu_ms_per_run() {
     notes+=("$(basename "$1") failed: $*")
     return 1
   fi
-  awk -v n="$n" '{ printf "%.1f %.3f\n", ($2 + $3) * 1000 / n, $1 / n }' "$work/time.txt"
+  awk -v n="$n" '{ printf "%.1f\n", ($2 + $3) * 1000 / n }' "$work/time.txt"
 }
 
 # ag-render of every stage against that stage's compute, on lab_a and on
 # lab_a tiled 2 x 2, in CPU time: the compute is ag-bench-stage's median CPU
 # time of the stage's compute function on the stored inputs, run again in one
-# process (the import: reading and decoding the file); the render is the mean
-# CPU time (user + system) of --runs x 3 whole ag-render processes, start-up
-# included. "start-up" is the same for `ag-render --help` (loading its
-# libraries); the last column is the render without it. The wall columns are
-# the store's elapsed compute time (for the import only the copy into the
-# artifact) and ag-render's mean.
+# process (the import: reading and decoding the file); the render is the
+# median CPU time (user + system) of one whole ag-render process over --runs
+# x 5 of them (own_cpu), start-up included. "start-up" is the same for
+# `ag-render --help`; the column after the ratio is the render without it.
+# The last column is the old method (loop_cpu), for comparison only. The wall
+# columns are the store's elapsed compute time (for the import only the copy
+# into the artifact) and ag-render's median.
 render_table() {
-  local source="$data/lab_a.png" map name stage ms repeat=$((3 * runs))
+  local source="$data/lab_a.png" map name stage ms repeat=$((5 * runs))
   [ -f "$source" ] || { notes+=("no $source: the render table did not run"); return; }
   echo "#### ag-render of each stage against the stage's compute time"
   echo
-  local startup_ms
-  startup_ms=$(cpu_ms_per_run "$repeat" "$bin/ag-render" --help | awk '{ print $1 }')
-  echo "ag-render's start-up (\`--help\`): ${startup_ms} ms of CPU (mean of $repeat)."
+  local startup_ms startup_faults startup_loop
+  read -r startup_ms _ startup_faults < <(own_cpu "$repeat" "$bin/ag-render" --help)
+  startup_loop=$(loop_cpu "$repeat" "$bin/ag-render" --help)
+  echo "ag-render's start-up (\`--help\`): ${startup_ms} ms of CPU, $startup_faults page faults"
+  echo "(its own process, median of $repeat); ${startup_loop} ms in the old bash loop."
   echo
   echo -n "| map | stage | compute CPU ms | compute wall ms (store) | ag-render wall s"
-  echo " | ag-render CPU ms | CPU render / compute | without start-up |"
-  echo "|---|---|--:|--:|--:|--:|--:|--:|"
+  echo -n " | ag-render CPU ms | page faults | CPU render / compute | without start-up"
+  echo " | bash-loop CPU ms (old method) |"
+  echo "|---|---|--:|--:|--:|--:|--:|--:|--:|--:|"
   "$bin/ag-bench-tile" --tiles 2 "$source" "$work/lab_a_2x2.png" >/dev/null
   for map in "$source" "$work/lab_a_2x2.png"; do
     name=$(basename "${map%.*}")
@@ -154,16 +176,18 @@ render_table() {
     for stage in import clean voronoi prune cut merge; do
       ms=$("$bin/ag-inspect" --store "$work/series.db" --map "$name" |
         awk -v s="$stage" '$1 == s && $NF == "*" { print $4 }')
-      local compute_cpu cpu_ms wall
+      local compute_cpu cpu_ms wall faults loop_ms render=()
       compute_cpu=$("$bin/ag-bench-stage" --store "$work/series.db" --map "$name" \
         --stage "$stage" --repeat "$((2 * runs + 1))" | awk '{ print $4 }')
-      read -r cpu_ms wall < <(cpu_ms_per_run "$repeat" "$bin/ag-render" --store "$work/series.db" \
-        --map "$name" --stage "$stage" --out "$work/render.png")
-      printf '| %s | %s | %.1f | %.1f | %.3f | %.0f | %s | %s |\n' "$name" "$stage" \
-        "${compute_cpu:-0}" "${ms:-0}" "${wall:-0}" "${cpu_ms:-0}" \
+      render=("$bin/ag-render" --store "$work/series.db" --map "$name" --stage "$stage" \
+        --out "$work/render.png")
+      read -r cpu_ms wall faults < <(own_cpu "$repeat" "${render[@]}")
+      loop_ms=$(loop_cpu "$repeat" "${render[@]}")
+      printf '| %s | %s | %.1f | %.1f | %.3f | %.1f | %s | %s | %s | %s |\n' "$name" "$stage" \
+        "${compute_cpu:-0}" "${ms:-0}" "${wall:-0}" "${cpu_ms:-0}" "${faults:-–}" \
         "$(ratio "$cpu_ms" "$compute_cpu")" \
         "$(ratio "$(awk -v c="$cpu_ms" -v s="$startup_ms" 'BEGIN { print c - s }')" \
-          "$compute_cpu")"
+          "$compute_cpu")" "${loop_ms:-–}"
     done
   done
   echo

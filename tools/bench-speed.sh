@@ -23,7 +23,8 @@
 # "clutter", rooms of N x N px with 1 % random obstacle cells
 # (--clutter-sizes, default 500 1000 2000); "render", ag-render of every
 # stage of lab_a and of lab_a tiled 2 x 2 against that stage's compute, in
-# CPU time (ag-bench-stage times the compute). --tables picks which tables
+# CPU time (ag-bench-stage times the compute; ag-bench-exec each ag-render
+# process on its own, start-up included). --tables picks which tables
 # run (default all: maps runs scale clutter render).
 #
 # Usage: tools/bench-speed.sh [--runs N] [--floor-repeat R] [--build-dir DIR]
@@ -55,7 +56,7 @@ while [ $# -gt 0 ]; do
       done ;;
     --tiles) tiles="$2"; shift 2 ;;
     --clutter-sizes) clutter_sizes="$2"; shift 2 ;;
-    -h|--help) sed -n '2,31p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,32p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-speed: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
@@ -68,7 +69,7 @@ if [ "$build" = 1 ]; then
   tools/build.sh >&2
 fi
 bin="$build_dir/bin"
-for tool in ag-import ag-inspect ag-bench-floor ag-bench-stage ag-run ag-render ag-bench-tile; do
+for tool in ag-import ag-inspect ag-bench-floor ag-bench-stage ag-run ag-render ag-bench-tile ag-bench-exec; do
   if [ ! -x "$bin/$tool" ]; then
     echo "bench-speed: $bin/$tool is missing; build it first" >&2
     exit 1
