@@ -1,8 +1,5 @@
 #include "stages/common/stage.h"
 
-#include <google/protobuf/descriptor.h>
-#include <google/protobuf/reflection.h>
-
 #include <chrono>
 #include <exception>
 #include <new>
@@ -22,6 +19,16 @@ InputError MissingInput(ArtifactStore& store, const std::string& map_name, const
   }
   return InputError("map '" + map_name + "' has no " + stage.name + " artifact; run ag-" +
                     stage.name + " first");
+}
+
+// Whether the stored artifact is of `message`'s type: by the stage table's
+// name for the type when a stage writes it (protobuf's descriptors, which
+// GetTypeName builds, cost a short reader such as ag-render 0.9 M
+// instructions), else by GetTypeName.
+bool IsOfType(const ArtifactRecord& record, const google::protobuf::Message& message) {
+  const StageDefinition* stage = StageWritingType(message);
+  return stage != nullptr ? record.proto_type == stage->proto_type
+                          : record.proto_type == message.GetTypeName();
 }
 
 // A cache hit's summary: from the row, or (for an artifact stored before the
@@ -166,28 +173,20 @@ StageInputs HeadInputs(ArtifactStore& store, const std::string& map_name,
 }
 
 void CheckFormatVersion(const google::protobuf::Message& artifact, const std::string& what) {
-  const google::protobuf::FieldDescriptor* field =
-      artifact.GetDescriptor()->FindFieldByName("format_version");
-  if (field == nullptr || field->cpp_type() != google::protobuf::FieldDescriptor::CPPTYPE_UINT32) {
-    return;
-  }
-  const uint32_t version = artifact.GetReflection()->GetUInt32(artifact, field);
-  for (const StageDefinition& stage : StageTable()) {
-    if (stage.prototype->GetDescriptor() != artifact.GetDescriptor()) continue;
-    if (version > stage.format_version) {
-      throw StoreError(what + " has format version " + std::to_string(version) +
-                       ", newer than this build's " + std::to_string(stage.format_version) +
-                       "; upgrade areagraph");
-    }
-    return;
+  const StageDefinition* stage = StageWritingType(artifact);
+  if (stage == nullptr) return;
+  const uint32_t version = stage->format_version_of(artifact);
+  if (version > stage->format_version) {
+    throw StoreError(what + " has format version " + std::to_string(version) +
+                     ", newer than this build's " + std::to_string(stage->format_version) +
+                     "; upgrade areagraph");
   }
 }
 
 void ParseArtifact(ArtifactStore& store, const std::string& map_name, const std::string& cache_key,
                    google::protobuf::Message* message) {
   const std::optional<ArtifactRecord> record = store.ReadArtifact(map_name, cache_key);
-  if (!record || record->proto_type != message->GetTypeName() ||
-      !message->ParseFromString(record->payload)) {
+  if (!record || !IsOfType(*record, *message) || !message->ParseFromString(record->payload)) {
     throw StoreError("artifact " + ShortKey(cache_key) + " of map '" + map_name +
                      "' is missing or not a valid " + message->GetTypeName());
   }
@@ -198,7 +197,7 @@ void ParseHeadArtifact(ArtifactStore& store, const std::string& map_name, const 
                        google::protobuf::Message* message, std::string* cache_key) {
   const std::optional<ArtifactRecord> head = store.ReadHead(map_name, stage.name);
   if (!head) throw MissingInput(store, map_name, stage);
-  if (head->proto_type != message->GetTypeName() || !message->ParseFromString(head->payload)) {
+  if (!IsOfType(*head, *message) || !message->ParseFromString(head->payload)) {
     throw StoreError("the " + std::string(stage.name) + " artifact of map '" + map_name +
                      "' is not a valid " + message->GetTypeName());
   }

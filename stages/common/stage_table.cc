@@ -2,6 +2,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <typeinfo>
 
 #include "common/error.h"
 #include "proto/artifacts.pb.h"
@@ -24,6 +25,13 @@ using Inputs = std::vector<const Message*>;
 template <typename T>
 const T& Input(const Inputs& inputs, size_t i) {
   return static_cast<const T&>(*inputs.at(i));
+}
+
+// The format_version of an artifact of type T, read without protobuf's
+// reflection.
+template <typename T>
+uint32_t FormatVersionOf(const Message& artifact) {
+  return static_cast<const T&>(artifact).format_version();
 }
 
 template <typename T>
@@ -90,6 +98,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.import(); },
       &proto::GridMap::default_instance(),
       kGridMapFormatVersion,
+      "areagraph.proto.GridMap",
+      FormatVersionOf<proto::GridMap>,
       nullptr,  // reads a file: see ag-import and runner/common
       SummarizeGridMap,
       "Decodes a map image into occupied, free and unknown cells and stores it as the map's "
@@ -101,6 +111,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.clean(); },
       &proto::CleanedMap::default_instance(),
       kCleanedMapFormatVersion,
+      "areagraph.proto.CleanedMap",
+      FormatVersionOf<proto::CleanedMap>,
       [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(CleanGridMap(Input<proto::GridMap>(in, 0), o.clean()));
       },
@@ -114,6 +126,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.voronoi(); },
       &proto::VoronoiDiagram::default_instance(),
       kVoronoiDiagramFormatVersion,
+      "areagraph.proto.VoronoiDiagram",
+      FormatVersionOf<proto::VoronoiDiagram>,
       [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(ComputeVoronoiStage(Input<proto::CleanedMap>(in, 0), o.voronoi()));
       },
@@ -127,6 +141,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.prune(); },
       &proto::TopologyGraph::default_instance(),
       kTopologyGraphFormatVersion,
+      "areagraph.proto.TopologyGraph",
+      FormatVersionOf<proto::TopologyGraph>,
       [](const Inputs& in, const InputRelease& release, const proto::PipelineOptions& o) {
         return Wrap(BuildTopologyGraph(Input<proto::VoronoiDiagram>(in, 0),
                                        Input<proto::CleanedMap>(in, 1), o.prune(),
@@ -145,6 +161,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.cut(); },
       &proto::CutGraph::default_instance(),
       kCutGraphFormatVersion,
+      "areagraph.proto.CutGraph",
+      FormatVersionOf<proto::CutGraph>,
       [](const Inputs& in, const InputRelease& release, const proto::PipelineOptions& o) {
         // When the graph is this stage's alone, each edge is freed once cut
         // has made its pieces: their copies then take the memory it frees.
@@ -167,6 +185,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.merge(); },
       &proto::AreaGraph::default_instance(),
       kAreaGraphFormatVersion,
+      "areagraph.proto.AreaGraph",
+      FormatVersionOf<proto::AreaGraph>,
       [](const Inputs& in, const InputRelease&, const proto::PipelineOptions& o) {
         return Wrap(BuildAreaGraph(Input<proto::CutGraph>(in, 0), Input<proto::CleanedMap>(in, 1),
                                    o.merge()));
@@ -182,6 +202,8 @@ std::vector<StageDefinition> MakeStageTable() {
       [](const proto::PipelineOptions& o) -> const Message& { return o.match(); },
       &proto::AreaGraph::default_instance(),
       kAreaGraphFormatVersion,
+      "areagraph.proto.AreaGraph",
+      FormatVersionOf<proto::AreaGraph>,
       nullptr,  // reads its previous version: compute_next_version
       SummarizeAreaGraph,
       "Gives the areas and passages of a map's head AreaGraph (run ag-merge first) ids that stay "
@@ -243,18 +265,22 @@ std::vector<std::string> FileInputStageNames() {
 
 MessagePtr NewArtifactMessage(const std::string& proto_type) {
   for (const StageDefinition& stage : StageTable()) {
-    if (stage.prototype->GetTypeName() == proto_type) return MessagePtr(stage.prototype->New());
+    if (stage.proto_type == proto_type) return MessagePtr(stage.prototype->New());
+  }
+  return nullptr;
+}
+
+const StageDefinition* StageWritingType(const google::protobuf::Message& artifact) {
+  for (const StageDefinition& stage : StageTable()) {
+    if (typeid(*stage.prototype) == typeid(artifact)) return &stage;
   }
   return nullptr;
 }
 
 std::string SummarizeArtifact(const google::protobuf::Message& artifact) {
-  for (const StageDefinition& stage : StageTable()) {
-    if (stage.prototype->GetDescriptor() == artifact.GetDescriptor()) {
-      return stage.summarize(artifact);
-    }
-  }
-  throw Error("no stage writes artifacts of type " + artifact.GetTypeName());
+  const StageDefinition* stage = StageWritingType(artifact);
+  if (stage == nullptr) throw Error("no stage writes artifacts of type " + artifact.GetTypeName());
+  return stage->summarize(artifact);
 }
 
 }  // namespace areagraph

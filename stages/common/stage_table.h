@@ -50,6 +50,14 @@ struct StageDefinition {
   const google::protobuf::Message* prototype;
   // The format_version it writes (stage_info.h).
   uint32_t format_version;
+  // The artifact type's full name, as the store's proto_type records it, and
+  // the format_version of a parsed artifact of that type: what reading an
+  // artifact checks, here so that a reader need not build protobuf's
+  // descriptors for it (0.9 M instructions of ag-render's 28 M; docs/
+  // performance.md, thirteenth pass). stage_table_test ties both to
+  // `prototype`.
+  const char* proto_type;
+  uint32_t (*format_version_of)(const google::protobuf::Message& artifact);
   // Computes its artifact from its input artifacts (in `inputs` order, each of
   // its stage's artifact type), calling `release` for an input it is done
   // with early (prune: the Voronoi diagram); inputs[i] is dangling after.
@@ -104,6 +112,10 @@ std::vector<std::string> FileInputStageNames();
 // A new, empty message of the artifact type named `proto_type` (as stored in
 // the artifacts table), or nullptr for a type this build does not know.
 MessagePtr NewArtifactMessage(const std::string& proto_type);
+
+// The first row whose artifact type `artifact` is (by its C++ type, without
+// protobuf's descriptors), or nullptr for a type no stage writes.
+const StageDefinition* StageWritingType(const google::protobuf::Message& artifact);
 
 // The summary of an artifact of any stage, chosen by its type.
 std::string SummarizeArtifact(const google::protobuf::Message& artifact);
