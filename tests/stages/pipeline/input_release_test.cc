@@ -154,3 +154,32 @@ TEST(InputReleaseTest, CutTakesTheMemosGraphOnlyAsItsLastReader) {
 
 }  // namespace
 }  // namespace areagraph
+
+namespace areagraph {
+namespace {
+
+// ag-run reads the final graph's counts from the memo instead of the store:
+// the memo must hold the last stage's artifact, equal to the stored bytes,
+// and nothing before it.
+TEST(ArtifactMemoTest, ThePipelineLeavesItsLastStagesArtifactInTheMemo) {
+  const proto::PipelineOptions options;
+  for (const StageInfo& last : {kVoronoiStage, kMatchStage}) {
+    auto store = OpenArtifactStore(":memory:");
+    const ImportSource source = ReadImportSource(testing::SourcePath("examples/two_rooms.png"));
+    RunCachedStage(*store, "m", StageOf(kImportStage), options, ImportInputs(source), [&] {
+      return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
+    });
+    ArtifactMemo memo;
+    RunMapPipeline(*store, "m", options, false, PipelineObserver{}, kCleanStage, last, &memo);
+    const std::optional<std::string> key = store->ReadHeadKey("m", last.name);
+    ASSERT_TRUE(key.has_value());
+    const auto kept = memo.Acquire(last.name, *key);
+    ASSERT_NE(kept, nullptr) << last.name;
+    EXPECT_TRUE(kept->SerializeAsString() == store->ReadArtifact("m", *key)->payload) << last.name;
+    const std::optional<std::string> clean_key = store->ReadHeadKey("m", kCleanStage.name);
+    EXPECT_EQ(memo.Acquire(kCleanStage.name, *clean_key), nullptr) << last.name;
+  }
+}
+
+}  // namespace
+}  // namespace areagraph
