@@ -1,6 +1,7 @@
 #include "runner/common/map_run.h"
 
 #include <exception>
+#include <memory>
 #include <new>
 #include <optional>
 
@@ -53,12 +54,13 @@ bool SetHeadsIfFullyCached(ArtifactStore& store, const std::string& map_name,
   return true;
 }
 
+// Runs the map's stages; `memo` then holds the last stage's artifact when it
+// was computed here.
 void RunStages(ArtifactStore& store, const std::string& map_name, const MapImport& import,
                const proto::PipelineOptions& options, const MapRunSettings& settings,
-               const PipelineObserver& observer) {
+               const PipelineObserver& observer, ArtifactMemo& memo) {
   const std::vector<StageInfo> stages = PipelineStages();
   StageInfo first = settings.first;
-  ArtifactMemo memo;
   if (SameStage(first, kImportStage)) {
     const StageInputs inputs = InStep(map_name, kImportStage.name, import.read_inputs);
     const bool whole_pipeline = SameStage(settings.last, stages.back());
@@ -75,6 +77,25 @@ void RunStages(ArtifactStore& store, const std::string& map_name, const MapImpor
     first = stages.front();
   }
   RunMapPipeline(store, map_name, options, settings.force, observer, first, settings.last, &memo);
+}
+
+// The head graph of the final stage and its key: the one just computed, as
+// the memo holds it (equal to the stored bytes parsed), else read back.
+std::shared_ptr<const proto::AreaGraph> FinalGraph(ArtifactStore& store,
+                                                   const std::string& map_name, ArtifactMemo& memo,
+                                                   std::string* key) {
+  const StageInfo final_stage = FinalStage();
+  const std::optional<std::string> head = store.ReadHeadKey(map_name, final_stage.name);
+  if (head) {
+    const auto computed =
+        std::dynamic_pointer_cast<const proto::AreaGraph>(memo.Acquire(final_stage.name, *head));
+    if (computed) {
+      *key = *head;
+      return computed;
+    }
+  }
+  return std::make_shared<const proto::AreaGraph>(
+      ReadHeadArtifact<proto::AreaGraph>(store, map_name, final_stage, key));
 }
 
 }  // namespace
@@ -114,11 +135,14 @@ MapOutcome RunOneMap(ArtifactStore& store, FailureLog& failures, const std::stri
       outcome.compute_ms += run.elapsed_ms;
       if (observer.on_done) observer.on_done(stage, run);
     };
-    RunStages(store, map_name, import, options, settings, counting);
+    ArtifactMemo memo;
+    RunStages(store, map_name, import, options, settings, counting, memo);
     outcome.fully_cached = outcome.stages_run > 0 && outcome.cache_hits == outcome.stages_run;
     if (makes_graph) {
       std::string key;
-      const auto graph = ReadHeadArtifact<proto::AreaGraph>(store, map_name, final_stage, &key);
+      const std::shared_ptr<const proto::AreaGraph> final_graph =
+          FinalGraph(store, map_name, memo, &key);
+      const proto::AreaGraph& graph = *final_graph;
       outcome.areas = graph.areas_size();
       outcome.passages = graph.passages_size();
       outcome.components = graph.components();

@@ -164,13 +164,10 @@ std::vector<StageDefinition> MakeStageTable() {
       "areagraph.proto.CutGraph",
       FormatVersionOf<proto::CutGraph>,
       [](const Inputs& in, const InputRelease& release, const proto::PipelineOptions& o) {
-        // When the graph is this stage's alone, each edge is freed once cut
-        // has made its pieces: their copies then take the memory it frees.
+        // When the graph is this stage's alone, cut takes its edges over.
         const auto owned = std::static_pointer_cast<proto::TopologyGraph>(release.TakeInput(0));
         return Wrap(BuildCutGraph(Input<proto::TopologyGraph>(in, 0),
-                                  Input<proto::CleanedMap>(in, 1), o.cut(), [&](int edge) {
-                                    if (owned) proto::GraphEdge().Swap(owned->mutable_edges(edge));
-                                  }));
+                                  Input<proto::CleanedMap>(in, 1), o.cut(), owned.get()));
       },
       SummarizeCutGraph,
       "Detects rooms (alpha shapes with alpha = (W/2)^2; W estimated from the map's doors and "

@@ -1,12 +1,12 @@
 #include "stages/cut/cut_graph_builder.h"
 
 #include <cmath>
-#include <limits>
 #include <map>
 
 #include "common/error.h"
 #include "stages/common/freed_memory.h"
 #include "stages/common/stage_info.h"
+#include "stages/cut/absorbed_polygons.h"
 #include "stages/cut/closed_passages.h"
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
@@ -20,23 +20,6 @@
 
 namespace areagraph {
 namespace {
-
-// The piece closest to a polygon that the edge absorbed. A dead end's
-// polygon starts at the junction where it was removed, which lies on the
-// edge's path, so this finds the piece it hung from.
-size_t NearestPiece(const std::vector<proto::GraphEdge>& pieces, const proto::Ring& ring) {
-  size_t nearest = 0;
-  double best = std::numeric_limits<double>::infinity();
-  for (size_t k = 0; k < pieces.size(); ++k) {
-    for (const proto::Point2& p : pieces[k].path()) {
-      for (const proto::Point2& q : ring.points()) {
-        const double d = std::hypot(p.x() - q.x(), p.y() - q.y());
-        if (d < best) best = d, nearest = k;
-      }
-    }
-  }
-  return nearest;
-}
 
 void CheckTopology(const proto::TopologyGraph& topology) {
   const int vertex_count = topology.vertices_size();
@@ -69,8 +52,7 @@ void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count
 }  // namespace
 
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                              const proto::CutOptions& options,
-                              const std::function<void(int edge)>& edge_done) {
+                              const proto::CutOptions& options, proto::TopologyGraph* owned) {
   const CellGrid grid(map);
   CheckTopology(topology);
   const proto::RoomWidthEstimate room_width = ChooseRoomWidth(options, map.frame(), topology);
@@ -134,27 +116,38 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
 
   for (int edge_index = 0; edge_index < topology.edges_size(); ++edge_index) {
     const proto::GraphEdge& edge = topology.edges(edge_index);
+    const int source = edge.source(), target = edge.target();
     const EdgeTrack track(edge);
-    const bool source_dead = topology.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END;
-    const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
+    const bool source_dead = topology.vertices(source).kind() == proto::VERTEX_DEAD_END;
+    const bool target_dead = topology.vertices(target).kind() == proto::VERTEX_DEAD_END;
     std::vector<EdgePiece> plan =
         PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
     if (options.cut_narrow_tails()) CutNarrowTails(track, source_dead, target_dead, &plan);
 
+    // The edge's absorbed polygons, and its pieces without them. A graph
+    // the caller gave up hands its edge over (`edge` is then empty).
+    proto::GraphEdge* given = owned != nullptr ? owned->mutable_edges(edge_index) : nullptr;
+    google::protobuf::RepeatedPtrField<proto::Polygon> absorbed;
+    if (given != nullptr) absorbed.Swap(given->mutable_absorbed());
     std::vector<proto::GraphEdge> pieces;
     if (plan.size() == 1) {
-      pieces.push_back(edge);
-      pieces.back().clear_absorbed();
+      if (given != nullptr) {
+        pieces.push_back(std::move(*given));
+      } else {
+        pieces.push_back(edge);
+        pieces.back().clear_absorbed();
+      }
     } else {
       for (const EdgePiece& piece : plan) pieces.push_back(track.Piece(piece.begin, piece.end));
     }
-    int from_vertex = edge.source();
+    if (given == nullptr) absorbed = edge.absorbed();
+    int from_vertex = source;
     for (size_t k = 0; k < pieces.size(); ++k) {
       proto::GraphEdge& piece = pieces[k];
       piece.set_room_id(keep_room(plan[k].room));
       piece.set_source(from_vertex);
       if (k + 1 == pieces.size()) {
-        piece.set_target(edge.target());
+        piece.set_target(target);
         break;
       }
       // A cut: a new passage vertex between this piece and the next.
@@ -171,15 +164,16 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
       piece.set_target(vertex->id());
       from_vertex = vertex->id();
     }
-    for (const proto::Polygon& absorbed : edge.absorbed()) {
-      const size_t k = pieces.size() == 1 ? 0 : NearestPiece(pieces, absorbed.outer());
-      *pieces[k].add_absorbed() = absorbed;
+    for (proto::Polygon& polygon : absorbed) {
+      const size_t k = pieces.size() == 1 ? 0 : NearestPiece(pieces, polygon.outer());
+      *pieces[k].add_absorbed() = std::move(polygon);
     }
     for (proto::GraphEdge& piece : pieces) {
       piece.set_id(out.edges_size());
       *out.add_edges() = std::move(piece);
     }
-    if (edge_done) edge_done(edge_index);
+    // Freed as soon as it is read no more: the pieces take the memory.
+    if (given != nullptr) proto::GraphEdge().Swap(given);
   }
 
   std::vector<int> renumber(room_count, -1);

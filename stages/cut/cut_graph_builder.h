@@ -1,6 +1,5 @@
 #pragma once
 
-#include <functional>
 #include <string>
 
 #include "proto/artifacts.pb.h"
@@ -17,11 +16,12 @@ namespace areagraph {
 // than the disk of diameter W are slivers of a corridor about W wide and
 // count as no room; of the others, only those that some edge runs through
 // are kept, renumbered from 0. Throws OptionsError for a bad W and
-// InputError for a corrupt input. Calls `edge_done`, when given, with the
-// index of each of topology's edges once it reads that edge no more, so that
-// a caller that owns the graph can free it edge by edge.
+// InputError for a corrupt input. `owned`, when given, is `topology` itself,
+// which the caller gives up: its edges are taken one by one (an edge that
+// stays one piece moves into the Cut Graph, absorbed polygons move to their
+// pieces) and each is freed once read, so the copies take the memory it frees.
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
                               const proto::CutOptions& options,
-                              const std::function<void(int edge)>& edge_done = {});
+                              proto::TopologyGraph* owned = nullptr);
 
 }  // namespace areagraph

@@ -71,8 +71,11 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
     }
     const StageRun run = RunStageOnHeads(store, map_name, StageOf(stages[i]), options, force, memo);
     if (observer.on_done) observer.on_done(stages[i], run);
+    // The last stage's artifact stays for the caller (ag-run's summary).
     for (const StageDefinition& stage : StageTable()) {
-      if (!ReadLater(stages, i + 1, end, stage.info)) memo->Forget(stage.info.name);
+      if (!SameStage(stage.info, last) && !ReadLater(stages, i + 1, end, stage.info)) {
+        memo->Forget(stage.info.name);
+      }
     }
     ReturnFreedMemory();
   }

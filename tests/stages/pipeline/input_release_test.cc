@@ -14,11 +14,13 @@
 namespace areagraph {
 namespace {
 
-// A store holding two_rooms up to `last` (the Voronoi diagram by default).
+// A store holding `example` (two_rooms by default) up to `last` (the Voronoi
+// diagram by default).
 std::unique_ptr<ArtifactStore> StoreUpToVoronoi(const proto::PipelineOptions& options,
-                                                const StageInfo& last = kVoronoiStage) {
+                                                const StageInfo& last = kVoronoiStage,
+                                                const char* example = "examples/two_rooms.png") {
   auto store = OpenArtifactStore(":memory:");
-  const ImportSource source = ReadImportSource(testing::SourcePath("examples/two_rooms.png"));
+  const ImportSource source = ReadImportSource(testing::SourcePath(example));
   RunCachedStage(*store, "m", StageOf(kImportStage), options, ImportInputs(source), [&] {
     return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
   });
@@ -66,30 +68,47 @@ TEST(InputReleaseTest, PruneReleasesTheDiagramAndNeverReadsItAfter) {
       << "prune read the diagram after releasing it";
 }
 
+int AbsorbedPolygons(const google::protobuf::RepeatedPtrField<proto::GraphEdge>& edges) {
+  int count = 0;
+  for (const proto::GraphEdge& edge : edges) count += edge.absorbed_size();
+  return count;
+}
+
+// Handed over, cut moves the edges that stay one piece and every absorbed
+// polygon instead of copying them; the Cut Graph must not change.
 TEST(InputReleaseTest, CutFreesTheEdgesOfAGraphHandedOverAndLeavesOneThatIsNot) {
   const proto::PipelineOptions options;
-  const auto store = StoreUpToVoronoi(options, kPruneStage);
-  const auto map = ReadHeadArtifact<proto::CleanedMap>(*store, "m", kCleanStage);
-  const auto topology = ReadHeadArtifact<proto::TopologyGraph>(*store, "m", kPruneStage);
-  ASSERT_GT(topology.edges_size(), 1);
-  const std::string expected = BuildCutGraph(topology, map, options.cut()).SerializeAsString();
+  int absorbed_seen = 0;
+  for (const char* example : {"examples/two_rooms.png", "examples/office_small.png"}) {
+    const auto store = StoreUpToVoronoi(options, kPruneStage, example);
+    const auto map = ReadHeadArtifact<proto::CleanedMap>(*store, "m", kCleanStage);
+    const auto topology = ReadHeadArtifact<proto::TopologyGraph>(*store, "m", kPruneStage);
+    ASSERT_GT(topology.edges_size(), 1);
+    const proto::CutGraph expected_graph = BuildCutGraph(topology, map, options.cut());
+    const std::string expected = expected_graph.SerializeAsString();
+    EXPECT_EQ(AbsorbedPolygons(expected_graph.edges()), AbsorbedPolygons(topology.edges()));
+    absorbed_seen += AbsorbedPolygons(topology.edges());
 
-  for (const bool handed_over : {false, true}) {
-    auto input = std::make_shared<proto::TopologyGraph>(topology);
-    int takes = 0;
-    const InputRelease release([](size_t) {},
-                               [&](size_t i) -> std::shared_ptr<google::protobuf::Message> {
-                                 ++takes;
-                                 EXPECT_EQ(i, 0u);
-                                 return handed_over ? input : nullptr;
-                               });
-    const MessagePtr cut = StageOf(kCutStage).compute({input.get(), &map}, release, options);
-    EXPECT_EQ(takes, 1);
-    EXPECT_TRUE(cut->SerializeAsString() == expected) << "handed_over = " << handed_over;
-    int emptied = 0;
-    for (const proto::GraphEdge& edge : input->edges()) emptied += edge.ByteSizeLong() == 0;
-    EXPECT_EQ(emptied, handed_over ? topology.edges_size() : 0) << "handed_over = " << handed_over;
+    for (const bool handed_over : {false, true}) {
+      auto input = std::make_shared<proto::TopologyGraph>(topology);
+      int takes = 0;
+      const InputRelease release([](size_t) {},
+                                 [&](size_t i) -> std::shared_ptr<google::protobuf::Message> {
+                                   ++takes;
+                                   EXPECT_EQ(i, 0u);
+                                   return handed_over ? input : nullptr;
+                                 });
+      const MessagePtr cut = StageOf(kCutStage).compute({input.get(), &map}, release, options);
+      EXPECT_EQ(takes, 1);
+      EXPECT_TRUE(cut->SerializeAsString() == expected)
+          << example << ", handed_over = " << handed_over;
+      int emptied = 0;
+      for (const proto::GraphEdge& edge : input->edges()) emptied += edge.ByteSizeLong() == 0;
+      EXPECT_EQ(emptied, handed_over ? topology.edges_size() : 0)
+          << example << ", handed_over = " << handed_over;
+    }
   }
+  EXPECT_GT(absorbed_seen, 0) << "no absorbed polygon to move";
 }
 
 TEST(InputReleaseTest, TheLastReaderFreesTheMemosArtifactAndOthersLeaveIt) {
@@ -130,6 +149,35 @@ TEST(InputReleaseTest, CutTakesTheMemosGraphOnlyAsItsLastReader) {
       EXPECT_TRUE(shared->SerializeAsString() == topology.SerializeAsString())
           << "cut changed a graph that others still read";
     }
+  }
+}
+
+}  // namespace
+}  // namespace areagraph
+
+namespace areagraph {
+namespace {
+
+// ag-run reads the final graph's counts from the memo instead of the store:
+// the memo must hold the last stage's artifact, equal to the stored bytes,
+// and nothing before it.
+TEST(ArtifactMemoTest, ThePipelineLeavesItsLastStagesArtifactInTheMemo) {
+  const proto::PipelineOptions options;
+  for (const StageInfo& last : {kVoronoiStage, kMatchStage}) {
+    auto store = OpenArtifactStore(":memory:");
+    const ImportSource source = ReadImportSource(testing::SourcePath("examples/two_rooms.png"));
+    RunCachedStage(*store, "m", StageOf(kImportStage), options, ImportInputs(source), [&] {
+      return std::make_unique<proto::GridMap>(ImportGridMap(source, options.import()));
+    });
+    ArtifactMemo memo;
+    RunMapPipeline(*store, "m", options, false, PipelineObserver{}, kCleanStage, last, &memo);
+    const std::optional<std::string> key = store->ReadHeadKey("m", last.name);
+    ASSERT_TRUE(key.has_value());
+    const auto kept = memo.Acquire(last.name, *key);
+    ASSERT_NE(kept, nullptr) << last.name;
+    EXPECT_TRUE(kept->SerializeAsString() == store->ReadArtifact("m", *key)->payload) << last.name;
+    const std::optional<std::string> clean_key = store->ReadHeadKey("m", kCleanStage.name);
+    EXPECT_EQ(memo.Acquire(kCleanStage.name, *clean_key), nullptr) << last.name;
   }
 }
 
