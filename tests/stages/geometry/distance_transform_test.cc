@@ -138,6 +138,19 @@ TEST(ExactDistanceTransform, EqualsOpenCvOnMasksOver4096Wide) {
   ExpectSameAsOpenCv(cv::Mat(30, 4500, CV_8U, cv::Scalar(255)));
 }
 
+// Around the width where the row alone leaves the exact transform (4097
+// cells: 4096^2 = 2^24), with columns both near and far from a zero cell.
+TEST(ExactDistanceTransform, EqualsOpenCvAtTheWidthWhereTheExactTransformStops) {
+  std::mt19937 random(4097);
+  for (const int cols : {4095, 4096, 4097, 4098}) {
+    ExpectSameAsOpenCv(RandomMask(random, 60, cols, 0.001));
+    cv::Mat two_zeros(50, cols, CV_8U, cv::Scalar(255));
+    two_zeros.at<uint8_t>(0, 0) = 0;
+    two_zeros.at<uint8_t>(49, cols - 1) = 0;
+    ExpectSameAsOpenCv(two_zeros);
+  }
+}
+
 TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096Wide) {
   std::mt19937 random(41);
   const cv::Mat mask = RoomsMask(random, 200, 4800, false);
