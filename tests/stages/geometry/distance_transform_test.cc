@@ -166,6 +166,25 @@ TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096Wide) {
   }
 }
 
+// Beyond 4097 cells across DistanceAtLeast takes OpenCV's rounding one row
+// at a time: columns without any zero cell, and a mask without any.
+TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096WideWithEmptyColumns) {
+  cv::Mat one_zero(40, 4500, CV_8U, cv::Scalar(255));
+  one_zero.at<uint8_t>(39, 4321) = 0;
+  for (const cv::Mat& mask : {one_zero, cv::Mat(20, 4200, CV_8U, cv::Scalar(255))}) {
+    const cv::Mat distance = OpenCvDistances(mask);
+    for (const float reach : {1.0f, 100.5f, 4000.0f}) {
+      const cv::Mat at_least = DistanceAtLeast(mask, reach);
+      for (int r = 0; r < mask.rows; ++r) {
+        for (int c = 0; c < mask.cols; ++c) {
+          ASSERT_EQ(at_least.at<uint8_t>(r, c), distance.at<float>(r, c) >= reach ? 1 : 0)
+              << r << ", " << c << " reach " << reach;
+        }
+      }
+    }
+  }
+}
+
 TEST(ExactDistanceTransform, MaskWithoutNonZeroCellsIsAllZero) {
   const cv::Mat mask(20, 30, CV_8U, cv::Scalar(0));
   EXPECT_EQ(cv::countNonZero(ExactDistanceTransform(mask)), 0);
