@@ -73,10 +73,7 @@ void KeepSiteTriangulation(SiteTriangulationPtr triangulation, std::vector<Eigen
   kept.triangulation.reset();
   kept.sites.clear();
   kept.sites.shrink_to_fit();
-  if (triangulation == nullptr ||
-      SiteTriangulationBytes(*triangulation) > kMaxKeptTriangulationBytes) {
-    return;
-  }
+  if (triangulation == nullptr) return;
   kept.triangulation = std::move(triangulation);
   kept.sites = std::move(sites);
 }

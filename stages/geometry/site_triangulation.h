@@ -35,16 +35,13 @@ SiteTriangulationPtr TriangulateSites(std::vector<Eigen::Vector2d>&& sites);
 // Bytes the triangulation's vertices and faces take (what keeping it costs).
 size_t SiteTriangulationBytes(const SiteTriangulation& triangulation);
 
-// Largest triangulation that is kept for a later stage (about 176 bytes a
-// site): lab_e's takes 9 MB and lab_a tiled 4 x 4's 43 MB, while lab_a tiled
-// 8 x 8's (about 170 MB) would sit on top of prune's peak memory, so there
-// prune triangulates again. Same bound as ReturnFreedMemory's
-// (stages/common/freed_memory.cc).
-inline constexpr size_t kMaxKeptTriangulationBytes = size_t{64} << 20;
-
 // Keeps `triangulation` of `sites` (inserted in this order) for a later
-// TakeSiteTriangulation in this process, replacing any kept before; drops it
-// at once when it is larger than kMaxKeptTriangulationBytes.
+// TakeSiteTriangulation in this process, replacing any kept before. Kept at
+// every size: prune would build the same one (about 176 bytes a site, 170 MB
+// on lab_a tiled 8 x 8), and holding it from voronoi's end to prune's start
+// stays under cut's and merge's peak memory there (512 MB against 561 MB,
+// docs/performance.md, thirteenth pass), while triangulating again cost
+// prune a tenth of its time.
 void KeepSiteTriangulation(SiteTriangulationPtr triangulation, std::vector<Eigen::Vector2d> sites);
 // The kept triangulation when it was made from exactly `sites` (the same
 // points in the same order, so it is the one a new triangulation of `sites`

@@ -32,7 +32,7 @@ proto::VoronoiDiagram ComputeVoronoiStage(const proto::CleanedMap& map,
                      std::to_string(sites.size()) + ", all on one line)");
   }
   // prune triangulates the diagram's sites again for its boundary shape; in
-  // this process it may take this one (when the map is small enough).
+  // this process it takes this one.
   KeepSiteTriangulation(std::move(triangulation), std::move(sites));
   diagram.set_format_version(kVoronoiDiagramFormatVersion);
   *diagram.mutable_frame() = map.frame();

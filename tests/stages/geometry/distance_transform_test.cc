@@ -31,6 +31,19 @@ void ExpectSameAsOpenCv(const cv::Mat& mask) {
   EXPECT_EQ(DeepestDistance(mask), deepest);
 }
 
+// DistanceAtLeast(mask, reach) is OpenCV's distances thresholded at `reach`.
+void ExpectThresholdedOpenCv(const cv::Mat& mask, const cv::Mat& distance, float reach) {
+  const cv::Mat at_least = DistanceAtLeast(mask, reach);
+  ASSERT_EQ(at_least.type(), CV_8U);
+  for (int r = 0; r < mask.rows; ++r) {
+    for (int c = 0; c < mask.cols; ++c) {
+      ASSERT_EQ(at_least.at<uint8_t>(r, c), distance.at<float>(r, c) >= reach ? 1 : 0)
+          << "reach " << reach << " at " << c << "," << r << " of " << mask.cols << " x "
+          << mask.rows;
+    }
+  }
+}
+
 // Zero cells with probability `zero_share`, else 255.
 cv::Mat RandomMask(std::mt19937& random, int rows, int cols, double zero_share) {
   cv::Mat mask(rows, cols, CV_8U);
@@ -138,17 +151,35 @@ TEST(ExactDistanceTransform, EqualsOpenCvOnMasksOver4096Wide) {
   ExpectSameAsOpenCv(cv::Mat(30, 4500, CV_8U, cv::Scalar(255)));
 }
 
+// Around the width where the row alone leaves the exact transform (4097
+// cells: 4096^2 = 2^24), with columns both near and far from a zero cell.
+TEST(ExactDistanceTransform, EqualsOpenCvAtTheWidthWhereTheExactTransformStops) {
+  std::mt19937 random(4097);
+  for (const int cols : {4095, 4096, 4097, 4098}) {
+    ExpectSameAsOpenCv(RandomMask(random, 60, cols, 0.001));
+    cv::Mat two_zeros(50, cols, CV_8U, cv::Scalar(255));
+    two_zeros.at<uint8_t>(0, 0) = 0;
+    two_zeros.at<uint8_t>(49, cols - 1) = 0;
+    ExpectSameAsOpenCv(two_zeros);
+  }
+}
+
 TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096Wide) {
   std::mt19937 random(41);
   const cv::Mat mask = RoomsMask(random, 200, 4800, false);
   const cv::Mat distance = OpenCvDistances(mask);
-  for (const float reach : {0.5f, 3.0f, 7.3f}) {
-    const cv::Mat at_least = DistanceAtLeast(mask, reach);
-    for (int r = 0; r < mask.rows; ++r) {
-      for (int c = 0; c < mask.cols; ++c) {
-        ASSERT_EQ(at_least.at<uint8_t>(r, c), distance.at<float>(r, c) >= reach ? 1 : 0)
-            << r << ", " << c << " reach " << reach;
-      }
+  for (const float reach : {0.5f, 3.0f, 7.3f}) ExpectThresholdedOpenCv(mask, distance, reach);
+}
+
+// Beyond 4097 cells across DistanceAtLeast takes OpenCV's rounding: columns
+// without any zero cell, and a mask without any.
+TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096WideWithEmptyColumns) {
+  cv::Mat one_zero(40, 4500, CV_8U, cv::Scalar(255));
+  one_zero.at<uint8_t>(39, 4321) = 0;
+  for (const cv::Mat& mask : {one_zero, cv::Mat(20, 4200, CV_8U, cv::Scalar(255))}) {
+    const cv::Mat distance = OpenCvDistances(mask);
+    for (const float reach : {1.0f, 100.5f, 4000.0f}) {
+      ExpectThresholdedOpenCv(mask, distance, reach);
     }
   }
 }
@@ -186,16 +217,7 @@ TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistances) {
     const cv::Mat mask = trial % 3 == 0 ? RoomsMask(random, 200, 300, trial % 2 == 1)
                                         : RandomMask(random, 80, 120, trial % 2 ? 0.01 : 0.1);
     const cv::Mat distance = OpenCvDistances(mask);
-    for (const float reach : reaches) {
-      const cv::Mat at_least = DistanceAtLeast(mask, reach);
-      ASSERT_EQ(at_least.type(), CV_8U);
-      for (int r = 0; r < mask.rows; ++r) {
-        for (int c = 0; c < mask.cols; ++c) {
-          ASSERT_EQ(at_least.at<uint8_t>(r, c), distance.at<float>(r, c) >= reach ? 1 : 0)
-              << "reach " << reach << " at " << c << "," << r;
-        }
-      }
-    }
+    for (const float reach : reaches) ExpectThresholdedOpenCv(mask, distance, reach);
   }
 }
 

@@ -80,6 +80,19 @@ TEST(SiteTriangulationTest, AKeptTriangulationIsGivenBackOnceForTheSameSites) {
   ExpectSameShape(on_kept, on_its_own);
 }
 
+// What the old 64-MB bound dropped (lab_a tiled 8 x 8's is 170 MB) is kept
+// now: prune would build the same triangulation itself.
+TEST(SiteTriangulationTest, ATriangulationOfOver64MegabytesIsKept) {
+  PointList sites;
+  for (int row = 0; row < 640; ++row) {
+    for (int col = 0; col < 640; ++col) sites.emplace_back(col + 0.25 * (row % 3), row);
+  }
+  SiteTriangulationPtr triangulation = TriangulateIndexedSites(sites);
+  ASSERT_GT(SiteTriangulationBytes(*triangulation), size_t{64} << 20);
+  KeepSiteTriangulation(std::move(triangulation), sites);
+  EXPECT_NE(TakeSiteTriangulation(sites), nullptr);
+}
+
 TEST(SiteTriangulationTest, OtherSitesOrAnotherOrderGetNothingAndDropIt) {
   const PointList sites = RoomsWithClutter();
   PointList reordered = sites;
