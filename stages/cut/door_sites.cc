@@ -44,7 +44,7 @@ class WallStructure {
   bool IsStructure(int label) const { return label > 0 && structure_[label] != 0; }
   // The longer side of the region's bounding box (px); 0 for free cells.
   int Longest(int label) const { return label > 0 ? longest_[label] : 0; }
-  // The free space (FreeSpaceLabels) holding `p`; 0 when `p` is not free or
+  // The free space (LabelFreeSpaces) holding `p`; 0 when `p` is not free or
   // free spaces are not told apart.
   int SpaceAt(const Eigen::Vector2d& p) const {
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
