@@ -67,7 +67,8 @@ STEPS=(
   "+ merge.keep_small_closed_rooms|merge.keep_small_closed_rooms=true"
   "+ merge.closed_room_pocket_jamb_m 0.6|merge.closed_room_pocket_jamb_m=0.6"
   "+ cut.cut_narrow_tails and merge.corridor_stems_max_width_m 4|cut.cut_narrow_tails=true merge.corridor_stems_max_width_m=4"
-  "+ cut.island_wall_piece_both_ends (= defaults)|cut.island_wall_piece_both_ends=true"
+  "+ cut.island_wall_piece_both_ends|cut.island_wall_piece_both_ends=true"
+  "+ cut.jamb_wall_behind_line (= defaults)|cut.jamb_wall_behind_line=true"
 )
 
 set_flags=()

@@ -43,7 +43,9 @@ inline constexpr StageInfo kPruneStage{"prune", 3};
 // begins (cut.cut_narrow_tails; issue 12, areagraph/ Freiburg101_scan's side corridors).
 // cut 10: a block continued end-on at one end is a wall piece only when its other end faces an
 // obstacle within a door's width (cut.island_wall_piece_both_ends; bormann/ lab_ipa furnished).
-inline constexpr StageInfo kCutStage{"cut", 10};
+// cut 11: past a jamb, free cells the door's free space cannot reach count as wall (outside drawn
+// free, hollow blocks; cut.jamb_wall_behind_line; areagraph/ lab_ipa_furnitures).
+inline constexpr StageInfo kCutStage{"cut", 11};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

@@ -78,16 +78,23 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
       options.island_end_on_face() ? options.island_end_on_face_share() : 0,
       options.island_wall_piece_both_ends(), obstacles);
   PointList closing;  // the sites that close doors and wall gaps on purpose
+  cv::Mat free_spaces;
+  if (options.jamb_wall_behind_line() &&
+      (options.close_wall_doors() || options.close_wall_gaps_max_m() > 0)) {
+    free_spaces = LabelFreeSpaces(map.cells(), grid.width(), grid.height());
+  }
+  const cv::Mat* spaces = free_spaces.empty() ? nullptr : &free_spaces;
   if (options.close_wall_doors()) {
-    closing = DoorClosingSites(room_width, obstacles, grid.resolution_m());
+    closing = DoorClosingSites(room_width, obstacles, grid.resolution_m(), spaces);
   }
   if (options.close_wall_gaps_max_m() > 0) {
     const PointList gaps =
         WallGapSites(topology, obstacles, grid.resolution_m(), options.close_wall_gaps_max_m(),
-                     options.close_wall_gaps_short_tips());
+                     options.close_wall_gaps_short_tips(), spaces);
     closing.insert(closing.end(), gaps.begin(), gaps.end());
   }
   obstacles = ObstacleLabels();
+  free_spaces.release();
   sites.insert(sites.end(), closing.begin(), closing.end());
   const ClosedLines closed_lines(closing, grid.resolution_m());
   const ClosedLines* kept_tips = options.keep_closed_room_tips() ? &closed_lines : nullptr;

@@ -14,8 +14,12 @@ namespace {
 // the building's structure.
 class WallStructure {
  public:
-  WallStructure(const ObstacleLabels& obstacles, double min_region_px)
-      : width_(obstacles.labels.cols), height_(obstacles.labels.rows), labels_(obstacles.labels) {
+  WallStructure(const ObstacleLabels& obstacles, double min_region_px,
+                const cv::Mat* free_spaces = nullptr)
+      : width_(obstacles.labels.cols),
+        height_(obstacles.labels.rows),
+        labels_(obstacles.labels),
+        free_spaces_(free_spaces != nullptr ? *free_spaces : cv::Mat()) {
     const int count = obstacles.count, width = width_, height = height_;
     const cv::Mat& stats = obstacles.stats;
     structure_.assign(count, 0);
@@ -40,12 +44,27 @@ class WallStructure {
   bool IsStructure(int label) const { return label > 0 && structure_[label] != 0; }
   // The longer side of the region's bounding box (px); 0 for free cells.
   int Longest(int label) const { return label > 0 ? longest_[label] : 0; }
+  // The free space (LabelFreeSpaces) holding `p`; 0 when `p` is not free or
+  // free spaces are not told apart.
+  int SpaceAt(const Eigen::Vector2d& p) const {
+    const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
+    if (free_spaces_.empty() || col < 0 || row < 0 || col >= width_ || row >= height_) return 0;
+    return free_spaces_.at<int>(row, col);
+  }
+  // Whether `p` is behind a wall as seen from free space `space`: non-free,
+  // or free but not reachable from `space` (space 0: only non-free).
+  bool Beyond(const Eigen::Vector2d& p, int space) const {
+    if (LabelAt(p) != 0) return true;
+    const int other = space > 0 ? SpaceAt(p) : 0;
+    return other > 0 && other != space;
+  }
 
  private:
   int width_;
   int height_;
   // Shared with the caller's labels, read only.
   cv::Mat labels_;
+  cv::Mat free_spaces_;
   std::vector<uint8_t> structure_;
   std::vector<int> longest_;
 };
@@ -76,11 +95,15 @@ bool NearestObstacle(const WallStructure& walls, const Eigen::Vector2d& p, doubl
 }
 
 // Whether non-free cells run on from `jamb` in `direction` for `run_px`.
+// Free cells that the door's free space `space` cannot reach count as
+// non-free (space 0: none do): they lie behind a wall drawn as a thin line,
+// the outside of a map whose outside is drawn free, or the inside of a block
+// drawn as a hollow outline.
 bool WallRunsOn(const WallStructure& walls, const Eigen::Vector2d& jamb,
-                const Eigen::Vector2d& direction, double run_px) {
+                const Eigen::Vector2d& direction, double run_px, int space) {
   int samples = 0, non_free = 0;
   for (double t = 1; t <= run_px; t += 1, ++samples) {
-    non_free += walls.LabelAt(jamb + t * direction) != 0;
+    non_free += walls.Beyond(jamb + t * direction, space);
   }
   return samples == 0 || non_free >= kJambRunShare * samples;
 }
@@ -217,10 +240,11 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 }  // namespace
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips) {
+                       double resolution_m, double max_gap_m, bool short_tips,
+                       const cv::Mat* free_spaces) {
   PointList sites;
   if (max_gap_m <= 0) return sites;
-  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m);
+  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
   const double reach_px = kDoorReachM / resolution_m, rise_px = kDoorRiseM / resolution_m;
   const double max_thickness_px = kMaxTipWallM / resolution_m;
@@ -248,7 +272,11 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabel
       const bool wall_a = walls.IsStructure(label_a), wall_b = walls.IsStructure(label_b);
       if (!wall_a && !wall_b) continue;
       const Eigen::Vector2d along = (b - a) / span;
-      if (!WallRunsOn(walls, a, -along, run_px) || !WallRunsOn(walls, b, along, run_px)) continue;
+      const int space = walls.SpaceAt(0.5 * (a + b));
+      if (!WallRunsOn(walls, a, -along, run_px, space) ||
+          !WallRunsOn(walls, b, along, run_px, space)) {
+        continue;
+      }
       const double min_run_px = kMinTipRunGaps * span;
       const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
       const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
@@ -268,10 +296,11 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabel
 }
 
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m) {
+                           const ObstacleLabels& obstacles, double resolution_m,
+                           const cv::Mat* free_spaces) {
   PointList sites;
   if (estimate.doors_size() == 0) return sites;
-  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m);
+  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
   for (const proto::DetectedWidth& door : estimate.doors()) {
     const Eigen::Vector2d p(door.position().x(), door.position().y());
@@ -283,7 +312,11 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
     const double span = (b - a).norm();
     if (span < 1) continue;
     const Eigen::Vector2d along = (b - a) / span;
-    if (!WallRunsOn(walls, a, -along, run_px) || !WallRunsOn(walls, b, along, run_px)) continue;
+    const int space = walls.SpaceAt(p);
+    if (!WallRunsOn(walls, a, -along, run_px, space) ||
+        !WallRunsOn(walls, b, along, run_px, space)) {
+      continue;
+    }
     AddLineSites(a, b, &sites);
   }
   return sites;

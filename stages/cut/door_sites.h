@@ -21,9 +21,14 @@ namespace areagraph {
 // - line up with a wall: past each jamb, away from the door, the line
 //   through both jambs runs on in non-free cells for kJambRunM.
 // Returns the added sites (pixel coordinates, about one per pixel).
-// `obstacles` labels the map's cells (LabelObstacles).
+// `obstacles` labels the map's cells (LabelObstacles). With `free_spaces`
+// (LabelFreeSpaces; cut.jamb_wall_behind_line), the free cells that the
+// door's free space cannot reach count as non-free past a jamb: the wall
+// behind them is drawn as a thin line (a map whose outside is drawn free) or
+// as the outline of a hollow block. Null: only non-free cells count.
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m);
+                           const ObstacleLabels& obstacles, double resolution_m,
+                           const cv::Mat* free_spaces = nullptr);
 
 // Doors found from the jambs alone (cut.close_wall_gaps), for doors that
 // the width estimate misses because the space beyond them does not widen on
@@ -44,8 +49,10 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // of the two sites may lie in a region that is not structure when it is the
 // thin wall end and its region is at least kMinShortTipM long: a piece of
 // wall between two doors, a partition, a block of a row dividing a room.
+// `free_spaces` as for DoorClosingSites.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips);
+                       double resolution_m, double max_gap_m, bool short_tips,
+                       const cv::Mat* free_spaces = nullptr);
 
 // A wall end is at most this thick across the door's line (metres).
 inline constexpr double kMaxTipWallM = 0.6;

@@ -16,6 +16,12 @@ ObstacleLabels LabelObstacles(const std::string& cells, int width, int height) {
   return obstacles;
 }
 
+cv::Mat LabelFreeSpaces(const std::string& cells, int width, int height) {
+  cv::Mat labels;
+  cv::connectedComponents(ObstacleMask(cells, width, height) == 0, labels, 4, CV_32S);
+  return labels;
+}
+
 ObstacleRegions FindObstacleRegions(const std::string& cells, const ObstacleLabels& obstacles,
                                     const std::vector<int>& site_cells) {
   // The regions only read the labels: they share the buffer.

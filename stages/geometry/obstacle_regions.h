@@ -54,6 +54,11 @@ struct ObstacleLabels {
 };
 ObstacleLabels LabelObstacles(const std::string& cells, int width, int height);
 
+// The map's free cells as 4-connected spaces, as the free space is
+// connected (CV_32S labels, 0 = non-free): cells in different spaces
+// cannot reach each other.
+cv::Mat LabelFreeSpaces(const std::string& cells, int width, int height);
+
 // The regions of `cells` (labelled as `obstacles`); the rectangles are
 // fitted to `site_cells` (flat indices of non-free cells, such as
 // ObstacleSiteCells: the cells next to free space span the same rectangle

@@ -80,13 +80,17 @@ TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
   EXPECT_FALSE(Sites(plan, OneDoor(2.5, 2.45, 0.9)).empty());
 }
 
-// WallGapSites on the pruned Topology Graph of a plan.
-PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = true) {
+// WallGapSites on the pruned Topology Graph of a plan; with `free_spaces`,
+// free cells the gap cannot reach count as non-free past a jamb
+// (cut.jamb_wall_behind_line).
+PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = true,
+                   bool free_spaces = false) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   const AreaStages stages = RunAreaStages(map);
-  return WallGapSites(stages.topology,
-                      LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()),
-                      kResolutionM, max_gap_m, short_tips);
+  const int width = map.frame().width_px(), height = map.frame().height_px();
+  const cv::Mat spaces = LabelFreeSpaces(map.cells(), width, height);
+  return WallGapSites(stages.topology, LabelObstacles(map.cells(), width, height), kResolutionM,
+                      max_gap_m, short_tips, free_spaces ? &spaces : nullptr);
 }
 
 // A 6 x 4 m room whose wall at x = 3 m runs up from the bottom wall to
@@ -109,6 +113,24 @@ TEST(DoorSitesTest, GapBetweenAThinWallEndAndAWallIsClosedAlongTheWall) {
   // Wider than the limit: left open.
   EXPECT_TRUE(GapSites(PartialWall(), 1.5).empty());
   EXPECT_TRUE(GapSites(PartialWall(), 0).empty());
+}
+
+TEST(DoorSitesTest, GapToAThinOuterWallWithFreeSpaceBehindIsClosedWithFreeSpaces) {
+  // PartialWall with 0.1 m walls and the outside drawn free, as the Area
+  // Graph paper's copies of some maps have it: past the top wall's jamb the
+  // gap's line leaves the wall after two cells. That free space is not the
+  // room's, so with free spaces told apart the wall runs on behind the line.
+  FloorPlan plan(7, 5, kResolutionM, 0.1);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 4});
+  floorplan::DrawFurniture(plan, {2.95, 2.2, 0.1, 2.3});
+  plan.image().setTo(floorplan::kFreeGrey, plan.image() == floorplan::kUnknownGrey);
+  EXPECT_TRUE(GapSites(plan, 2.5).empty());
+  const PointList sites = GapSites(plan, 2.5, true, /*free_spaces=*/true);
+  ASSERT_GE(sites.size(), 10u);
+  for (const Eigen::Vector2d& site : sites) {
+    EXPECT_NEAR(site.x() * kResolutionM, 3.0, 0.2);
+    EXPECT_LT(site.y() * kResolutionM, 2.25);
+  }
 }
 
 TEST(DoorSitesTest, GapBesideACabinetAgainstAWallIsNoWallGap) {
