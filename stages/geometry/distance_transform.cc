@@ -156,59 +156,108 @@ void ForEachNonZeroCell(const uint8_t* mask, const int32_t* f, int cols, LowerEn
 // (a cache miss per cell once a column outgrows the cache: lab_a tiled 8 x 8
 // spent 2 s of merge's 8 there); here the columns go row by row. Tests hold it
 // to OpenCV bit for bit, masks over 4096 wide included.
-cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
-  const int rows = mask.rows, cols = mask.cols;
-  constexpr float kInfinity = 1e15f;
-  std::vector<float> square(std::max(rows, cols)), half_inverse(cols, 0.f);
-  for (size_t i = 0; i < square.size(); ++i) square[i] = float(int(i) * int(i));
-  for (int i = 1; i < cols; ++i) half_inverse[i] = float(0.5 / i);
-  // The column distances first go where the result will be (no second
-  // buffer: on this project's virtual machines each new page costs a fault
-  // of 20-50 microseconds), as int32: down, then up with the nearer one;
-  // `rows` or more where a column has no zero cell.
-  cv::Mat distance(rows, cols, CV_32F);
-  for (int r = 0; r < rows; ++r) {
-    const uint8_t* m = mask.ptr<uint8_t>(r);
-    int32_t* out = distance.ptr<int32_t>(r);
-    const int32_t* above = r > 0 ? distance.ptr<int32_t>(r - 1) : nullptr;
-    for (int c = 0; c < cols; ++c) out[c] = m[c] == 0 ? 0 : (above ? above[c] + 1 : rows);
+class SinglePrecisionRows {
+ public:
+  SinglePrecisionRows(int rows, int cols)
+      : rows_(rows), cols_(cols), square_(std::max(rows, cols)), half_inverse_(cols, 0.f),
+        f_(cols), z_(size_t(cols) + 1), v_(cols) {
+    for (size_t i = 0; i < square_.size(); ++i) square_[i] = float(int(i) * int(i));
+    for (int i = 1; i < cols; ++i) half_inverse_[i] = float(0.5 / i);
   }
-  for (int r = rows - 2; r >= 0; --r) {
-    int32_t* out = distance.ptr<int32_t>(r);
-    const int32_t* below = distance.ptr<int32_t>(r + 1);
-    for (int c = 0; c < cols; ++c) out[c] = std::min(out[c], below[c] + 1);
+
+  // Every cell's distance to the nearest zero cell of its column into `row(r)`
+  // (T* rows of the mask's size): down, then up with the nearer one; `rows`
+  // or more where a column has no zero cell.
+  template <typename T, typename Row>
+  void ColumnDistances(const cv::Mat& mask, Row row) const {
+    for (int r = 0; r < rows_; ++r) {
+      const uint8_t* m = mask.ptr<uint8_t>(r);
+      T* out = row(r);
+      const T* above = r > 0 ? row(r - 1) : nullptr;
+      for (int c = 0; c < cols_; ++c) out[c] = m[c] == 0 ? 0 : (above ? T(above[c] + 1) : T(rows_));
+    }
+    for (int r = rows_ - 2; r >= 0; --r) {
+      T* out = row(r);
+      const T* below = row(r + 1);
+      for (int c = 0; c < cols_; ++c) out[c] = std::min<T>(out[c], T(below[c] + 1));
+    }
   }
-  std::vector<float> f(cols), z(size_t(cols) + 1);
-  std::vector<int> v(cols);
-  for (int r = 0; r < rows; ++r) {
-    float* out = distance.ptr<float>(r);
-    const int32_t* column = distance.ptr<int32_t>(r);
-    for (int c = 0; c < cols; ++c) f[c] = column[c] < rows ? square[column[c]] : kInfinity;
+
+  // One row's squared distances, (q - p)^2 + f[p] before the square root,
+  // from its column distances; `out` may be `column` itself.
+  template <typename T>
+  void Squares(const T* column, float* out) {
+    for (int c = 0; c < cols_; ++c) f_[c] = int(column[c]) < rows_ ? square_[column[c]] : kInfinity;
     int k = 0;
-    v[0] = 0;
-    z[0] = -kInfinity;
-    z[1] = kInfinity;
-    for (int q = 1; q < cols; ++q) {
+    v_[0] = 0;
+    z_[0] = -kInfinity;
+    z_[1] = kInfinity;
+    for (int q = 1; q < cols_; ++q) {
       for (;; --k) {
-        const int p = v[k];
-        const float s = (f[q] + square[q] - f[p] - square[p]) * half_inverse[q - p];
-        if (s > z[k]) {
+        const int p = v_[k];
+        const float s = (f_[q] + square_[q] - f_[p] - square_[p]) * half_inverse_[q - p];
+        if (s > z_[k]) {
           ++k;
-          v[k] = q;
-          z[k] = s;
-          z[k + 1] = kInfinity;
+          v_[k] = q;
+          z_[k] = s;
+          z_[k + 1] = kInfinity;
           break;
         }
       }
     }
     k = 0;
-    for (int q = 0; q < cols; ++q) {
-      while (z[k + 1] < float(q)) ++k;
-      const int p = v[k];
-      out[q] = std::sqrt(square[std::abs(q - p)] + f[p]);
+    for (int q = 0; q < cols_; ++q) {
+      while (z_[k + 1] < float(q)) ++k;
+      const int p = v_[k];
+      out[q] = square_[std::abs(q - p)] + f_[p];
     }
   }
+
+ private:
+  static constexpr float kInfinity = 1e15f;
+  int rows_, cols_;
+  std::vector<float> square_, half_inverse_, f_, z_;
+  std::vector<int> v_;
+};
+
+cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
+  SinglePrecisionRows rows(mask.rows, mask.cols);
+  // The column distances first go where the result will be (no second
+  // buffer: on this project's virtual machines each new page costs a fault
+  // of 20-50 microseconds), as int32.
+  cv::Mat distance(mask.rows, mask.cols, CV_32F);
+  rows.ColumnDistances<int32_t>(mask, [&](int r) { return distance.ptr<int32_t>(r); });
+  for (int r = 0; r < mask.rows; ++r) {
+    float* out = distance.ptr<float>(r);
+    rows.Squares(distance.ptr<int32_t>(r), out);
+    for (int c = 0; c < mask.cols; ++c) out[c] = std::sqrt(out[c]);
+  }
   return distance;
+}
+
+// Calls each_row(r, squares) with row r's squared single-precision distances
+// (SinglePrecisionDistances before the square root), without the float image:
+// the column distances take half its size. For callers that threshold or take
+// maxima: the square root, correctly rounded, keeps the order of its inputs.
+template <typename EachRow>
+void ForEachSinglePrecisionRow(const cv::Mat& mask, EachRow each_row) {
+  SinglePrecisionRows rows(mask.rows, mask.cols);
+  std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
+  rows.ColumnDistances<uint16_t>(mask,
+                                 [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  std::vector<float> squares(mask.cols);
+  for (int r = 0; r < mask.rows; ++r) {
+    rows.Squares(columns.data() + size_t(r) * mask.cols, squares.data());
+    each_row(r, squares.data());
+  }
+}
+
+// The least float x with std::sqrt(x) >= reach (> 0).
+float SquaredThreshold(float reach) {
+  float x = reach * reach;
+  while (x > 0 && std::sqrt(std::nextafter(x, 0.f)) >= reach) x = std::nextafter(x, 0.f);
+  while (std::sqrt(x) < reach) x = std::nextafter(x, std::numeric_limits<float>::infinity());
+  return x;
 }
 
 cv::Mat OpenCvDistances(const cv::Mat& mask) {
@@ -256,9 +305,16 @@ double DeepestDistance(const cv::Mat& mask) {
   if (mask.empty()) return 0;
   const std::vector<uint16_t> columns = ColumnDistances(mask);
   if (columns.empty()) {
-    double deepest = 0;
-    cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
-    return deepest;
+    if (!FitsIntegers(mask)) {
+      double deepest = 0;
+      cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
+      return deepest;
+    }
+    float deepest_squared = 0;
+    ForEachSinglePrecisionRow(mask, [&](int, const float* squares) {
+      deepest_squared = std::max(deepest_squared, *std::max_element(squares, squares + mask.cols));
+    });
+    return std::sqrt(deepest_squared);
   }
   const int rows = mask.rows, cols = mask.cols;
   // No cell is deeper than its distance along its row or its column: rows in
@@ -309,9 +365,18 @@ double DeepestDistance(const cv::Mat& mask) {
 cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
   CV_Assert(mask.type() == CV_8U);
   const int rows = mask.rows, cols = mask.cols;
-  cv::Mat at_least(rows, cols, CV_8U, cv::Scalar(1));
-  if (mask.empty() || reach <= 0) return at_least;
+  if (mask.empty() || reach <= 0) return cv::Mat(rows, cols, CV_8U, cv::Scalar(1));
+  // Every cell is written below.
+  cv::Mat at_least(rows, cols, CV_8U);
   const std::vector<uint16_t> columns = ColumnDistances(mask);
+  if (columns.empty() && FitsIntegers(mask)) {
+    const float threshold = SquaredThreshold(reach);
+    ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
+      uint8_t* out = at_least.ptr<uint8_t>(r);
+      for (int c = 0; c < cols; ++c) out[c] = squares[c] >= threshold ? 1 : 0;
+    });
+    return at_least;
+  }
   if (columns.empty()) {
     cv::Mat distance = OpenCvDistances(mask);
     for (int r = 0; r < rows; ++r) {
