@@ -20,6 +20,9 @@ constexpr uint16_t kNoZero = 1 << 15;
 
 bool FitsIntegers(const cv::Mat& mask) { return mask.rows < kNoZero && mask.cols < kNoZero; }
 
+// Whether a row this wide alone breaks ColumnDistances's guard below.
+bool TooWideForIntegers(int cols) { return int64_t(cols - 1) * (cols - 1) >= (int64_t(1) << 24); }
+
 // The distance of every cell to the nearest zero cell of its column
 // (kNoZero or more when the column has none), row by row. Leaves it empty
 // when the result would not be OpenCV's: when the mask has no zero cell
@@ -34,8 +37,8 @@ std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
   // The row's width alone breaks the guard below (masks over 4097 cells
   // wide): no need to fill the buffer first (lab_a tiled 8 x 8 did, 47 MB,
   // for every whole-map transform of clean, cut and merge).
+  if (TooWideForIntegers(cols)) return {};
   const int64_t widest = int64_t(cols - 1) * (cols - 1);
-  if (widest >= (int64_t(1) << 24)) return {};
   std::vector<uint16_t> distance(size_t(rows) * cols);
   // Downwards: the distance to the nearest zero cell above or at the cell.
   for (int c = 0; c < cols; ++c) distance[c] = mask.ptr<uint8_t>(0)[c] == 0 ? 0 : kNoZero;
@@ -159,8 +162,13 @@ void ForEachNonZeroCell(const uint8_t* mask, const int32_t* f, int cols, LowerEn
 class SinglePrecisionRows {
  public:
   SinglePrecisionRows(int rows, int cols)
-      : rows_(rows), cols_(cols), square_(std::max(rows, cols)), half_inverse_(cols, 0.f),
-        f_(cols), z_(size_t(cols) + 1), v_(cols) {
+      : rows_(rows),
+        cols_(cols),
+        square_(std::max(rows, cols)),
+        half_inverse_(cols, 0.f),
+        f_(cols),
+        z_(size_t(cols) + 1),
+        v_(cols) {
     for (size_t i = 0; i < square_.size(); ++i) square_[i] = float(int(i) * int(i));
     for (int i = 1; i < cols; ++i) half_inverse_[i] = float(0.5 / i);
   }
@@ -358,6 +366,30 @@ double DeepestDistance(const cv::Mat& mask) {
       deepest_squared = d;
       deepest = std::max(deepest, DistanceValue(f.data(), q, p));
     });
+  }
+  return deepest;
+}
+
+std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, int count,
+                                   const cv::Mat& depth) {
+  CV_Assert(mask.type() == CV_8U && labels.type() == CV_32S && labels.size() == mask.size());
+  std::vector<float> deepest(count, 0);
+  if (mask.empty()) return deepest;
+  if (depth.empty() && FitsIntegers(mask) && TooWideForIntegers(mask.cols)) {
+    // Maxima of the squares, then their roots (the root keeps the order).
+    ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
+      const int* label = labels.ptr<int>(r);
+      for (int c = 0; c < mask.cols; ++c)
+        deepest[label[c]] = std::max(deepest[label[c]], squares[c]);
+    });
+    for (float& d : deepest) d = std::sqrt(d);
+    return deepest;
+  }
+  const cv::Mat distance = depth.empty() ? ExactDistanceTransform(mask) : depth;
+  for (int r = 0; r < mask.rows; ++r) {
+    const int* label = labels.ptr<int>(r);
+    const float* d = distance.ptr<float>(r);
+    for (int c = 0; c < mask.cols; ++c) deepest[label[c]] = std::max(deepest[label[c]], d[c]);
   }
   return deepest;
 }
