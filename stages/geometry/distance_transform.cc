@@ -8,6 +8,9 @@
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <vector>
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
 
 namespace areagraph {
 namespace {
@@ -168,51 +171,60 @@ class SinglePrecisionRows {
         half_inverse_(cols, 0.f),
         f_(cols),
         z_(size_t(cols) + 1),
-        v_(cols) {
+        v_(cols),
+        below_(cols, std::numeric_limits<int>::max() - 1) {
     for (size_t i = 0; i < square_.size(); ++i) square_[i] = float(int(i) * int(i));
     for (int i = 1; i < cols; ++i) half_inverse_[i] = float(0.5 / i);
   }
 
-  // Every cell's distance to the nearest zero cell of its column into `row(r)`
-  // (T* rows of the mask's size): down, then up with the nearer one; `rows`
-  // or more where a column has no zero cell.
+  // Every cell's distance to the nearest zero cell above or at it in its
+  // column into `row(r)` (T* rows of the mask's size); `rows` or more where
+  // there is none.
   template <typename T, typename Row>
-  void ColumnDistances(const cv::Mat& mask, Row row) const {
+  void DownDistances(const cv::Mat& mask, Row row) const {
     for (int r = 0; r < rows_; ++r) {
       const uint8_t* m = mask.ptr<uint8_t>(r);
       T* out = row(r);
       const T* above = r > 0 ? row(r - 1) : nullptr;
       for (int c = 0; c < cols_; ++c) out[c] = m[c] == 0 ? 0 : (above ? T(above[c] + 1) : T(rows_));
     }
-    for (int r = rows_ - 2; r >= 0; --r) {
-      T* out = row(r);
-      const T* below = row(r + 1);
-      for (int c = 0; c < cols_; ++c) out[c] = std::min<T>(out[c], T(below[c] + 1));
-    }
   }
 
   // One row's squared distances, (q - p)^2 + f[p] before the square root,
-  // from its column distances; `out` may be `column` itself.
+  // from its DownDistances; rows go from the last up (each takes the nearer
+  // of its own and the one below's plus 1, as OpenCV's upward pass does).
+  // `out` may be `down` itself.
   template <typename T>
-  void Squares(const T* column, float* out) {
-    for (int c = 0; c < cols_; ++c) f_[c] = int(column[c]) < rows_ ? square_[column[c]] : kInfinity;
-    int k = 0;
+  void Squares(const T* down, float* out) {
+    for (int c = 0; c < cols_; ++c) {
+      const int d = std::min(int(down[c]), below_[c] + 1);
+      below_[c] = d;
+      f_[c] = d < rows_ ? square_[d] : kInfinity;
+    }
+    // The top parabola stays in registers (OpenCV's loop reads it back from
+    // the arrays it has just written); the same operations in the same order.
+    int k = 0, p = 0;
     v_[0] = 0;
     z_[0] = -kInfinity;
-    z_[1] = kInfinity;
+    float top_z = -kInfinity, top_f = f_[0], top_square = square_[0];
     for (int q = 1; q < cols_; ++q) {
-      for (;; --k) {
-        const int p = v_[k];
-        const float s = (f_[q] + square_[q] - f_[p] - square_[p]) * half_inverse_[q - p];
-        if (s > z_[k]) {
-          ++k;
-          v_[k] = q;
-          z_[k] = s;
-          z_[k + 1] = kInfinity;
+      const float g = f_[q] + square_[q];
+      for (;;) {
+        const float s = (g - top_f - top_square) * half_inverse_[q - p];
+        if (s > top_z) {
+          v_[++k] = p = q;
+          z_[k] = top_z = s;
+          top_f = f_[q];
+          top_square = square_[q];
           break;
         }
+        p = v_[--k];
+        top_z = z_[k];
+        top_f = f_[p];
+        top_square = square_[p];
       }
     }
+    z_[k + 1] = kInfinity;
     k = 0;
     for (int q = 0; q < cols_; ++q) {
       while (z_[k + 1] < float(q)) ++k;
@@ -225,8 +237,46 @@ class SinglePrecisionRows {
   static constexpr float kInfinity = 1e15f;
   int rows_, cols_;
   std::vector<float> square_, half_inverse_, f_, z_;
-  std::vector<int> v_;
+  std::vector<int> v_, below_;
 };
+
+// x = sqrt(x) for n floats. Four at a time where SSE is: sqrtps rounds as
+// sqrtss does (correctly), and std::sqrt's loop stays scalar for errno.
+void SquareRoots(float* x, int n) {
+  int i = 0;
+#ifdef __SSE2__
+  for (; i + 4 <= n; i += 4) _mm_storeu_ps(x + i, _mm_sqrt_ps(_mm_loadu_ps(x + i)));
+#endif
+  for (; i < n; ++i) x[i] = std::sqrt(x[i]);
+}
+
+// The largest of n >= 1 finite floats, four at a time where SSE is.
+float LargestOf(const float* x, int n) {
+  float largest = x[0];
+  int i = 0;
+#ifdef __SSE2__
+  if (n >= 4) {
+    __m128 four = _mm_loadu_ps(x);
+    for (i = 4; i + 4 <= n; i += 4) four = _mm_max_ps(four, _mm_loadu_ps(x + i));
+    float lanes[4];
+    _mm_storeu_ps(lanes, four);
+    largest = std::max({lanes[0], lanes[1], lanes[2], lanes[3]});
+  }
+#endif
+  for (; i < n; ++i) largest = std::max(largest, x[i]);
+  return largest;
+}
+
+// deepest[label[c]] = max(deepest[label[c]], value[c]) along a row, one
+// store per run of a label (the store-to-load chain cell by cell is slow).
+void DeepestAlongRow(const int* label, const float* value, int n, float* deepest) {
+  for (int c = 0; c < n;) {
+    const int run_label = label[c];
+    float largest = deepest[run_label];
+    for (; c < n && label[c] == run_label; ++c) largest = std::max(largest, value[c]);
+    deepest[run_label] = largest;
+  }
+}
 
 cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
   SinglePrecisionRows rows(mask.rows, mask.cols);
@@ -234,11 +284,11 @@ cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
   // buffer: on this project's virtual machines each new page costs a fault
   // of 20-50 microseconds), as int32.
   cv::Mat distance(mask.rows, mask.cols, CV_32F);
-  rows.ColumnDistances<int32_t>(mask, [&](int r) { return distance.ptr<int32_t>(r); });
-  for (int r = 0; r < mask.rows; ++r) {
+  rows.DownDistances<int32_t>(mask, [&](int r) { return distance.ptr<int32_t>(r); });
+  for (int r = mask.rows - 1; r >= 0; --r) {
     float* out = distance.ptr<float>(r);
     rows.Squares(distance.ptr<int32_t>(r), out);
-    for (int c = 0; c < mask.cols; ++c) out[c] = std::sqrt(out[c]);
+    SquareRoots(out, mask.cols);
   }
   return distance;
 }
@@ -251,10 +301,9 @@ template <typename EachRow>
 void ForEachSinglePrecisionRow(const cv::Mat& mask, EachRow each_row) {
   SinglePrecisionRows rows(mask.rows, mask.cols);
   std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
-  rows.ColumnDistances<uint16_t>(mask,
-                                 [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  rows.DownDistances<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
   std::vector<float> squares(mask.cols);
-  for (int r = 0; r < mask.rows; ++r) {
+  for (int r = mask.rows - 1; r >= 0; --r) {
     rows.Squares(columns.data() + size_t(r) * mask.cols, squares.data());
     each_row(r, squares.data());
   }
@@ -320,7 +369,7 @@ double DeepestDistance(const cv::Mat& mask) {
     }
     float deepest_squared = 0;
     ForEachSinglePrecisionRow(mask, [&](int, const float* squares) {
-      deepest_squared = std::max(deepest_squared, *std::max_element(squares, squares + mask.cols));
+      deepest_squared = std::max(deepest_squared, LargestOf(squares, mask.cols));
     });
     return std::sqrt(deepest_squared);
   }
@@ -378,18 +427,14 @@ std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, i
   if (depth.empty() && FitsIntegers(mask) && TooWideForIntegers(mask.cols)) {
     // Maxima of the squares, then their roots (the root keeps the order).
     ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
-      const int* label = labels.ptr<int>(r);
-      for (int c = 0; c < mask.cols; ++c)
-        deepest[label[c]] = std::max(deepest[label[c]], squares[c]);
+      DeepestAlongRow(labels.ptr<int>(r), squares, mask.cols, deepest.data());
     });
     for (float& d : deepest) d = std::sqrt(d);
     return deepest;
   }
   const cv::Mat distance = depth.empty() ? ExactDistanceTransform(mask) : depth;
   for (int r = 0; r < mask.rows; ++r) {
-    const int* label = labels.ptr<int>(r);
-    const float* d = distance.ptr<float>(r);
-    for (int c = 0; c < mask.cols; ++c) deepest[label[c]] = std::max(deepest[label[c]], d[c]);
+    DeepestAlongRow(labels.ptr<int>(r), distance.ptr<float>(r), mask.cols, deepest.data());
   }
   return deepest;
 }
