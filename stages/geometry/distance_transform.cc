@@ -8,6 +8,9 @@
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <vector>
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
 
 namespace areagraph {
 namespace {
@@ -19,6 +22,9 @@ constexpr int32_t kFar = std::numeric_limits<int32_t>::max();
 constexpr uint16_t kNoZero = 1 << 15;
 
 bool FitsIntegers(const cv::Mat& mask) { return mask.rows < kNoZero && mask.cols < kNoZero; }
+
+// Whether a row this wide alone breaks ColumnDistances's guard below.
+bool TooWideForIntegers(int cols) { return int64_t(cols - 1) * (cols - 1) >= (int64_t(1) << 24); }
 
 // The distance of every cell to the nearest zero cell of its column
 // (kNoZero or more when the column has none), row by row. Leaves it empty
@@ -34,8 +40,8 @@ std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
   // The row's width alone breaks the guard below (masks over 4097 cells
   // wide): no need to fill the buffer first (lab_a tiled 8 x 8 did, 47 MB,
   // for every whole-map transform of clean, cut and merge).
+  if (TooWideForIntegers(cols)) return {};
   const int64_t widest = int64_t(cols - 1) * (cols - 1);
-  if (widest >= (int64_t(1) << 24)) return {};
   std::vector<uint16_t> distance(size_t(rows) * cols);
   // Downwards: the distance to the nearest zero cell above or at the cell.
   for (int c = 0; c < cols; ++c) distance[c] = mask.ptr<uint8_t>(0)[c] == 0 ? 0 : kNoZero;
@@ -156,59 +162,159 @@ void ForEachNonZeroCell(const uint8_t* mask, const int32_t* f, int cols, LowerEn
 // (a cache miss per cell once a column outgrows the cache: lab_a tiled 8 x 8
 // spent 2 s of merge's 8 there); here the columns go row by row. Tests hold it
 // to OpenCV bit for bit, masks over 4096 wide included.
-cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
-  const int rows = mask.rows, cols = mask.cols;
-  constexpr float kInfinity = 1e15f;
-  std::vector<float> square(std::max(rows, cols)), half_inverse(cols, 0.f);
-  for (size_t i = 0; i < square.size(); ++i) square[i] = float(int(i) * int(i));
-  for (int i = 1; i < cols; ++i) half_inverse[i] = float(0.5 / i);
-  // The column distances first go where the result will be (no second
-  // buffer: on this project's virtual machines each new page costs a fault
-  // of 20-50 microseconds), as int32: down, then up with the nearer one;
-  // `rows` or more where a column has no zero cell.
-  cv::Mat distance(rows, cols, CV_32F);
-  for (int r = 0; r < rows; ++r) {
-    const uint8_t* m = mask.ptr<uint8_t>(r);
-    int32_t* out = distance.ptr<int32_t>(r);
-    const int32_t* above = r > 0 ? distance.ptr<int32_t>(r - 1) : nullptr;
-    for (int c = 0; c < cols; ++c) out[c] = m[c] == 0 ? 0 : (above ? above[c] + 1 : rows);
+class SinglePrecisionRows {
+ public:
+  SinglePrecisionRows(int rows, int cols)
+      : rows_(rows),
+        cols_(cols),
+        square_(std::max(rows, cols)),
+        half_inverse_(cols, 0.f),
+        f_(cols),
+        z_(size_t(cols) + 1),
+        v_(cols),
+        below_(cols, std::numeric_limits<int>::max() - 1) {
+    for (size_t i = 0; i < square_.size(); ++i) square_[i] = float(int(i) * int(i));
+    for (int i = 1; i < cols; ++i) half_inverse_[i] = float(0.5 / i);
   }
-  for (int r = rows - 2; r >= 0; --r) {
-    int32_t* out = distance.ptr<int32_t>(r);
-    const int32_t* below = distance.ptr<int32_t>(r + 1);
-    for (int c = 0; c < cols; ++c) out[c] = std::min(out[c], below[c] + 1);
+
+  // Every cell's distance to the nearest zero cell above or at it in its
+  // column into `row(r)` (T* rows of the mask's size); `rows` or more where
+  // there is none.
+  template <typename T, typename Row>
+  void DownDistances(const cv::Mat& mask, Row row) const {
+    for (int r = 0; r < rows_; ++r) {
+      const uint8_t* m = mask.ptr<uint8_t>(r);
+      T* out = row(r);
+      const T* above = r > 0 ? row(r - 1) : nullptr;
+      for (int c = 0; c < cols_; ++c) out[c] = m[c] == 0 ? 0 : (above ? T(above[c] + 1) : T(rows_));
+    }
   }
-  std::vector<float> f(cols), z(size_t(cols) + 1);
-  std::vector<int> v(cols);
-  for (int r = 0; r < rows; ++r) {
-    float* out = distance.ptr<float>(r);
-    const int32_t* column = distance.ptr<int32_t>(r);
-    for (int c = 0; c < cols; ++c) f[c] = column[c] < rows ? square[column[c]] : kInfinity;
-    int k = 0;
-    v[0] = 0;
-    z[0] = -kInfinity;
-    z[1] = kInfinity;
-    for (int q = 1; q < cols; ++q) {
-      for (;; --k) {
-        const int p = v[k];
-        const float s = (f[q] + square[q] - f[p] - square[p]) * half_inverse[q - p];
-        if (s > z[k]) {
-          ++k;
-          v[k] = q;
-          z[k] = s;
-          z[k + 1] = kInfinity;
+
+  // One row's squared distances, (q - p)^2 + f[p] before the square root,
+  // from its DownDistances; rows go from the last up (each takes the nearer
+  // of its own and the one below's plus 1, as OpenCV's upward pass does).
+  // `out` may be `down` itself.
+  template <typename T>
+  void Squares(const T* down, float* out) {
+    for (int c = 0; c < cols_; ++c) {
+      const int d = std::min(int(down[c]), below_[c] + 1);
+      below_[c] = d;
+      f_[c] = d < rows_ ? square_[d] : kInfinity;
+    }
+    // The top parabola stays in registers (OpenCV's loop reads it back from
+    // the arrays it has just written); the same operations in the same order.
+    int k = 0, p = 0;
+    v_[0] = 0;
+    z_[0] = -kInfinity;
+    float top_z = -kInfinity, top_f = f_[0], top_square = square_[0];
+    for (int q = 1; q < cols_; ++q) {
+      const float g = f_[q] + square_[q];
+      for (;;) {
+        const float s = (g - top_f - top_square) * half_inverse_[q - p];
+        if (s > top_z) {
+          v_[++k] = p = q;
+          z_[k] = top_z = s;
+          top_f = f_[q];
+          top_square = square_[q];
           break;
         }
+        p = v_[--k];
+        top_z = z_[k];
+        top_f = f_[p];
+        top_square = square_[p];
       }
     }
+    z_[k + 1] = kInfinity;
     k = 0;
-    for (int q = 0; q < cols; ++q) {
-      while (z[k + 1] < float(q)) ++k;
-      const int p = v[k];
-      out[q] = std::sqrt(square[std::abs(q - p)] + f[p]);
+    for (int q = 0; q < cols_; ++q) {
+      while (z_[k + 1] < float(q)) ++k;
+      const int p = v_[k];
+      out[q] = square_[std::abs(q - p)] + f_[p];
     }
   }
+
+ private:
+  static constexpr float kInfinity = 1e15f;
+  int rows_, cols_;
+  std::vector<float> square_, half_inverse_, f_, z_;
+  std::vector<int> v_, below_;
+};
+
+// x = sqrt(x) for n floats. Four at a time where SSE is: sqrtps rounds as
+// sqrtss does (correctly), and std::sqrt's loop stays scalar for errno.
+void SquareRoots(float* x, int n) {
+  int i = 0;
+#ifdef __SSE2__
+  for (; i + 4 <= n; i += 4) _mm_storeu_ps(x + i, _mm_sqrt_ps(_mm_loadu_ps(x + i)));
+#endif
+  for (; i < n; ++i) x[i] = std::sqrt(x[i]);
+}
+
+// The largest of n >= 1 finite floats, four at a time where SSE is.
+float LargestOf(const float* x, int n) {
+  float largest = x[0];
+  int i = 0;
+#ifdef __SSE2__
+  if (n >= 4) {
+    __m128 four = _mm_loadu_ps(x);
+    for (i = 4; i + 4 <= n; i += 4) four = _mm_max_ps(four, _mm_loadu_ps(x + i));
+    float lanes[4];
+    _mm_storeu_ps(lanes, four);
+    largest = std::max({lanes[0], lanes[1], lanes[2], lanes[3]});
+  }
+#endif
+  for (; i < n; ++i) largest = std::max(largest, x[i]);
+  return largest;
+}
+
+// deepest[label[c]] = max(deepest[label[c]], value[c]) along a row, one
+// store per run of a label (the store-to-load chain cell by cell is slow).
+void DeepestAlongRow(const int* label, const float* value, int n, float* deepest) {
+  for (int c = 0; c < n;) {
+    const int run_label = label[c];
+    float largest = deepest[run_label];
+    for (; c < n && label[c] == run_label; ++c) largest = std::max(largest, value[c]);
+    deepest[run_label] = largest;
+  }
+}
+
+cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
+  SinglePrecisionRows rows(mask.rows, mask.cols);
+  // The column distances first go where the result will be (no second
+  // buffer: on this project's virtual machines each new page costs a fault
+  // of 20-50 microseconds), as int32.
+  cv::Mat distance(mask.rows, mask.cols, CV_32F);
+  rows.DownDistances<int32_t>(mask, [&](int r) { return distance.ptr<int32_t>(r); });
+  for (int r = mask.rows - 1; r >= 0; --r) {
+    float* out = distance.ptr<float>(r);
+    rows.Squares(distance.ptr<int32_t>(r), out);
+    SquareRoots(out, mask.cols);
+  }
   return distance;
+}
+
+// Calls each_row(r, squares) with row r's squared single-precision distances
+// (SinglePrecisionDistances before the square root), without the float image:
+// the column distances take half its size. For callers that threshold or take
+// maxima: the square root, correctly rounded, keeps the order of its inputs.
+template <typename EachRow>
+void ForEachSinglePrecisionRow(const cv::Mat& mask, EachRow each_row) {
+  SinglePrecisionRows rows(mask.rows, mask.cols);
+  std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
+  rows.DownDistances<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  std::vector<float> squares(mask.cols);
+  for (int r = mask.rows - 1; r >= 0; --r) {
+    rows.Squares(columns.data() + size_t(r) * mask.cols, squares.data());
+    each_row(r, squares.data());
+  }
+}
+
+// The least float x with std::sqrt(x) >= reach (> 0).
+float SquaredThreshold(float reach) {
+  float x = reach * reach;
+  while (x > 0 && std::sqrt(std::nextafter(x, 0.f)) >= reach) x = std::nextafter(x, 0.f);
+  while (std::sqrt(x) < reach) x = std::nextafter(x, std::numeric_limits<float>::infinity());
+  return x;
 }
 
 cv::Mat OpenCvDistances(const cv::Mat& mask) {
@@ -256,9 +362,16 @@ double DeepestDistance(const cv::Mat& mask) {
   if (mask.empty()) return 0;
   const std::vector<uint16_t> columns = ColumnDistances(mask);
   if (columns.empty()) {
-    double deepest = 0;
-    cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
-    return deepest;
+    if (!FitsIntegers(mask)) {
+      double deepest = 0;
+      cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
+      return deepest;
+    }
+    float deepest_squared = 0;
+    ForEachSinglePrecisionRow(mask, [&](int, const float* squares) {
+      deepest_squared = std::max(deepest_squared, LargestOf(squares, mask.cols));
+    });
+    return std::sqrt(deepest_squared);
   }
   const int rows = mask.rows, cols = mask.cols;
   // No cell is deeper than its distance along its row or its column: rows in
@@ -306,12 +419,41 @@ double DeepestDistance(const cv::Mat& mask) {
   return deepest;
 }
 
+std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, int count,
+                                   const cv::Mat& depth) {
+  CV_Assert(mask.type() == CV_8U && labels.type() == CV_32S && labels.size() == mask.size());
+  std::vector<float> deepest(count, 0);
+  if (mask.empty()) return deepest;
+  if (depth.empty() && FitsIntegers(mask) && TooWideForIntegers(mask.cols)) {
+    // Maxima of the squares, then their roots (the root keeps the order).
+    ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
+      DeepestAlongRow(labels.ptr<int>(r), squares, mask.cols, deepest.data());
+    });
+    for (float& d : deepest) d = std::sqrt(d);
+    return deepest;
+  }
+  const cv::Mat distance = depth.empty() ? ExactDistanceTransform(mask) : depth;
+  for (int r = 0; r < mask.rows; ++r) {
+    DeepestAlongRow(labels.ptr<int>(r), distance.ptr<float>(r), mask.cols, deepest.data());
+  }
+  return deepest;
+}
+
 cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
   CV_Assert(mask.type() == CV_8U);
   const int rows = mask.rows, cols = mask.cols;
-  cv::Mat at_least(rows, cols, CV_8U, cv::Scalar(1));
-  if (mask.empty() || reach <= 0) return at_least;
+  if (mask.empty() || reach <= 0) return cv::Mat(rows, cols, CV_8U, cv::Scalar(1));
+  // Every cell is written below.
+  cv::Mat at_least(rows, cols, CV_8U);
   const std::vector<uint16_t> columns = ColumnDistances(mask);
+  if (columns.empty() && FitsIntegers(mask)) {
+    const float threshold = SquaredThreshold(reach);
+    ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
+      uint8_t* out = at_least.ptr<uint8_t>(r);
+      for (int c = 0; c < cols; ++c) out[c] = squares[c] >= threshold ? 1 : 0;
+    });
+    return at_least;
+  }
   if (columns.empty()) {
     cv::Mat distance = OpenCvDistances(mask);
     for (int r = 0; r < rows; ++r) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace areagraph {
 
@@ -19,6 +20,13 @@ cv::Mat ExactDistanceTransform(const cv::Mat& mask);
 // The largest distance of any cell (0 for an empty mask): the maximum of
 // ExactDistanceTransform(mask).
 double DeepestDistance(const cv::Mat& mask);
+
+// The largest distance within each label 0 .. count - 1 of `labels` (CV_32S,
+// the mask's size; 0 for a label without cells): the maxima of
+// ExactDistanceTransform(mask) over each label's cells. `depth`, if given, is
+// that transform already.
+std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, int count,
+                                   const cv::Mat& depth = cv::Mat());
 
 // 1 where ExactDistanceTransform(mask) >= reach, else 0 (CV_8U).
 cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach);

@@ -59,17 +59,6 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
   plan->MergeGroups(root);
 }
 
-// The depth of each label's deepest cell, read off `depth` (ObstacleDepth).
-std::vector<float> DeepestPerRegion(const cv::Mat& labels, int count, const cv::Mat& depth) {
-  std::vector<float> deepest(count, 0);
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* row = labels.ptr<int>(r);
-    const float* d = depth.ptr<float>(r);
-    for (int c = 0; c < labels.cols; ++c) deepest[row[c]] = std::max(deepest[row[c]], d[c]);
-  }
-  return deepest;
-}
-
 // The same for the labels marked in `wanted`, each measured within its box:
 // the cells nearest to a region's cells outside it are free (an 8-connected
 // region does not touch another), and lie within one cell of its box.
@@ -105,10 +94,9 @@ void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px
     const bool border = x == 0 || y == 0 || x + w == width || y + h == height;
     island[k] = !border && std::max(w, h) <= max_px;
   }
-  const std::vector<float> deepest =
-      depth.empty() && ComputedExactly(obstacle.size())
-          ? DeepestPerRegion(labels, stats, island)
-          : DeepestPerRegion(labels, count, depth.empty() ? ObstacleDepth(obstacle) : depth);
+  const std::vector<float> deepest = depth.empty() && ComputedExactly(obstacle.size())
+                                         ? DeepestPerRegion(labels, stats, island)
+                                         : DeepestPerLabel(obstacle, labels, count, depth);
   for (int k = 1; k < count; ++k) {
     island[k] = island[k] && 2 * deepest[k] >= min_thickness_px;
   }

@@ -2,10 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <vector>
 
 namespace areagraph {
 namespace {
@@ -29,6 +31,18 @@ void ExpectSameAsOpenCv(const cv::Mat& mask) {
   double deepest = 0;
   cv::minMaxLoc(expected, nullptr, &deepest);
   EXPECT_EQ(DeepestDistance(mask), deepest);
+  // Per 8-connected region of the non-zero cells (label 0: the zero cells).
+  cv::Mat labels;
+  const int count = cv::connectedComponents(mask, labels, 8, CV_32S);
+  std::vector<float> expected_deepest(count, 0);
+  for (int r = 0; r < mask.rows; ++r) {
+    for (int c = 0; c < mask.cols; ++c) {
+      float& d = expected_deepest[labels.at<int>(r, c)];
+      d = std::max(d, expected.at<float>(r, c));
+    }
+  }
+  EXPECT_EQ(DeepestPerLabel(mask, labels, count), expected_deepest);
+  EXPECT_EQ(DeepestPerLabel(mask, labels, count, expected), expected_deepest);
 }
 
 // DistanceAtLeast(mask, reach) is OpenCV's distances thresholded at `reach`.
@@ -169,6 +183,23 @@ TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesOver4096Wide) {
   const cv::Mat mask = RoomsMask(random, 200, 4800, false);
   const cv::Mat distance = OpenCvDistances(mask);
   for (const float reach : {0.5f, 3.0f, 7.3f}) ExpectThresholdedOpenCv(mask, distance, reach);
+}
+
+// Reaches at OpenCV's own distances and one float either side of them: the
+// threshold on squares beyond 4097 cells across must cut exactly there.
+TEST(DistanceAtLeast, EqualsThresholdedOpenCvDistancesAtTheirOwnValues) {
+  std::mt19937 random(43);
+  const cv::Mat mask = RoomsMask(random, 120, 5200, false);
+  const cv::Mat distance = OpenCvDistances(mask);
+  for (const float d : {1.0f, 1.4142135f, 2.236068f, 5.0f, 7.0710678f}) {
+    for (const float reach : {std::nextafter(d, 0.f), d, std::nextafter(d, 100.f)}) {
+      ExpectThresholdedOpenCv(mask, distance, reach);
+    }
+  }
+  double deepest = 0;
+  cv::minMaxLoc(distance, nullptr, &deepest);
+  ExpectThresholdedOpenCv(mask, distance, float(deepest));
+  ExpectThresholdedOpenCv(mask, distance, std::nextafter(float(deepest), 1e9f));
 }
 
 // Beyond 4097 cells across DistanceAtLeast takes OpenCV's rounding: columns
