@@ -1,9 +1,6 @@
 #include "stages/common/command_line.h"
 
 #include <iostream>
-#ifdef __GLIBC__
-#include <malloc.h>
-#endif
 #include <new>
 
 #include "common/error.h"
@@ -37,18 +34,6 @@ proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags) {
 
 namespace {
 
-// Big buffers (a whole-map image is 24-95 MB on lab_a tiled 8 x 8) come from
-// the heap and go back to it, not to the kernel: the next one reuses the pages
-// instead of faulting fresh zeroed ones in (lab_a 8 x 8: 562 k faults -> 399 k,
-// peak +9 MB). A process keeps what it freed, up to its own peak.
-void KeepFreedMemoryForReuse() {
-#ifdef __GLIBC__
-  constexpr int kOneGigabyte = 1 << 30;
-  mallopt(M_MMAP_THRESHOLD, kOneGigabyte);
-  mallopt(M_TRIM_THRESHOLD, kOneGigabyte);
-#endif
-}
-
 // Exit 0 once what --help or --version printed reached standard output, else 1.
 int FlushedExit(const std::string& tool) {
   try {
@@ -77,7 +62,6 @@ int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
     std::cerr << tool << ": " << e.what() << " (see --help)\n";
     return 2;
   }
-  KeepFreedMemoryForReuse();
   try {
     const int exit_code = body();
     FlushStandardOutput();  // a report lost on a full disk is a failure
