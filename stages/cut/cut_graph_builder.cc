@@ -68,9 +68,9 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
   };
   // The obstacles labelled once for the three site finders.
+  const bool closes_lines = options.close_wall_doors() || options.close_wall_gaps_max_m() > 0;
   ObstacleLabels obstacles;
-  if (options.room_island_max_m() > 0 || options.close_wall_doors() ||
-      options.close_wall_gaps_max_m() > 0) {
+  if (options.room_island_max_m() > 0 || closes_lines) {
     obstacles = LabelObstacles(map.cells(), grid.width(), grid.height());
   }
   PointList sites = StructureSites(
@@ -79,8 +79,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
       options.island_wall_piece_both_ends(), obstacles);
   PointList closing;  // the sites that close doors and wall gaps on purpose
   cv::Mat free_spaces;
-  if (options.jamb_wall_behind_line() &&
-      (options.close_wall_doors() || options.close_wall_gaps_max_m() > 0)) {
+  if (options.jamb_wall_behind_line() && closes_lines) {
     free_spaces = LabelFreeSpaces(map.cells(), grid.width(), grid.height());
   }
   const cv::Mat* spaces = free_spaces.empty() ? nullptr : &free_spaces;
@@ -135,7 +134,11 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     // the caller gave up hands its edge over (`edge` is then empty).
     proto::GraphEdge* given = owned != nullptr ? owned->mutable_edges(edge_index) : nullptr;
     google::protobuf::RepeatedPtrField<proto::Polygon> absorbed;
-    if (given != nullptr) absorbed.Swap(given->mutable_absorbed());
+    if (given != nullptr) {
+      absorbed.Swap(given->mutable_absorbed());
+    } else {
+      absorbed = edge.absorbed();
+    }
     std::vector<proto::GraphEdge> pieces;
     if (plan.size() == 1) {
       if (given != nullptr) {
@@ -147,7 +150,6 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     } else {
       for (const EdgePiece& piece : plan) pieces.push_back(track.Piece(piece.begin, piece.end));
     }
-    if (given == nullptr) absorbed = edge.absorbed();
     int from_vertex = source;
     for (size_t k = 0; k < pieces.size(); ++k) {
       proto::GraphEdge& piece = pieces[k];
