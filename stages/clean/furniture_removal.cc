@@ -9,7 +9,6 @@
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/near_free_mask.h"
-#include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -100,47 +99,7 @@ proto::Polygon ConvexOutline(const std::vector<int>& cell_indices, int width) {
   return polygon;
 }
 
-// Whether past the end of `region` in `direction` (+1 or -1 along its axis),
-// on its centre line or a line one cell beside it, another region's cell
-// lies within `max_gap_px`.
-bool MeetsObstaclePastEnd(const ObstacleRegions& regions, int region, int direction,
-                          double max_gap_px) {
-  const RegionShape& shape = regions.shapes[region];
-  const Eigen::Vector2d along = direction * shape.axis;
-  const Eigen::Vector2d across(-along.y(), along.x());
-  for (const int offset : {0, -1, 1}) {
-    const Eigen::Vector2d end = shape.centre + 0.5 * shape.length * along + offset * across;
-    for (double t = 0; t <= max_gap_px; t += 1) {
-      const int label = regions.LabelAt(end + t * along);
-      if (label != 0 && label != region) return true;
-    }
-  }
-  return false;
-}
-
 }  // namespace
-
-std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int height,
-                                      const cv::Mat& labels, int label_count,
-                                      const std::vector<int>& candidate_cells,
-                                      const WallPieceSizes& sizes) {
-  // The rectangles are fitted to the candidates' cells only.
-  const ObstacleRegions regions = DescribeObstacleRegions(
-      labels, label_count, ObstacleDepth(ObstacleMask(cells, width, height)), candidate_cells);
-  const double thinner_than =
-      std::max(sizes.thinner_than_px,
-               kWallPieceWallRatio * TypicalWallThickness(regions.depth, sizes.max_wall_px));
-  std::vector<uint8_t> wall(regions.shapes.size(), 0);
-  for (size_t region = 1; region < regions.shapes.size(); ++region) {
-    const RegionShape& shape = regions.shapes[region];
-    if (shape.on_border || shape.length == 0) continue;
-    wall[region] = shape.thickness < thinner_than && shape.length >= sizes.min_length_px &&
-                   shape.length >= kWallPieceMinElongation * shape.width &&
-                   MeetsObstaclePastEnd(regions, int(region), 1, sizes.max_gap_px) &&
-                   MeetsObstaclePastEnd(regions, int(region), -1, sizes.max_gap_px);
-  }
-  return wall;
-}
 
 double MaxFurnitureRegionCells(double alpha_radius_px, double max_perimeter_px) {
   if (alpha_radius_px < 1) return std::numeric_limits<double>::infinity();

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "proto/geometry.pb.h"
+#include "stages/clean/wall_pieces.h"
 
 namespace areagraph {
 
@@ -17,35 +18,6 @@ struct FurnitureRemoval {
   // removed piece, for drawing.
   std::vector<proto::Polygon> shapes;
 };
-
-// What makes an obstacle region of a furniture piece a piece of wall
-// standing between two doors (clean.keep_wall_pieces), in pixels: it is
-// thinner than `thinner_than_px` (twice its deepest cell's depth), at least
-// kWallPieceMinElongation times as long as wide and `min_length_px` long, and
-// past both of its ends its line (the centre line of its smallest enclosing
-// rectangle, or a line one cell beside it) meets another obstacle region
-// within `max_gap_px`. A wall broken by two doors leaves such a piece; its
-// perimeter is as short as a desk's.
-struct WallPieceSizes {
-  double thinner_than_px = 0;
-  double min_length_px = 0;
-  double max_gap_px = 0;
-  // Thicker ridges are not walls when the typical wall is measured
-  // (kMaxWallThicknessM).
-  double max_wall_px = 0;
-};
-// Thinner than the least furniture island of ag-merge (0.3 m, and twice the
-// map's typical wall, stages/merge/furniture_gap_joining.h): desks, cabinets
-// and shelves are not.
-inline constexpr double kWallPieceThinnerThanM = 0.3;
-inline constexpr double kWallPieceWallRatio = 2.0;
-inline constexpr double kWallPieceMinElongation = 3.0;
-// At least as long as the short wall pieces that ag-cut takes as jambs
-// (cut.close_wall_gaps_short_tips).
-inline constexpr double kWallPieceMinLengthM = 0.5;
-// The gap past each end is at most a door's (as kWallGapM,
-// stages/cut/structure_sites.h).
-inline constexpr double kWallPieceMaxGapM = 1.6;
 
 // Step (b) of the paper's preprocessing. The alpha shape (disk radius
 // alpha_radius_px) of the obstacle cells splits them into pieces; a piece
@@ -68,15 +40,6 @@ inline constexpr double kWallPieceMaxGapM = 1.6;
 // goes.
 FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, double alpha_radius_px,
                                  double max_perimeter_px, const WallPieceSizes* wall_pieces);
-
-// The obstacle regions (8-connected non-free cells of `cells`: `labels`, as
-// cv::connectedComponents labels ObstacleMask, `label_count` of them) among
-// those holding `candidate_cells` that are pieces of wall by `sizes`: 1 per
-// label.
-std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int height,
-                                      const cv::Mat& labels, int label_count,
-                                      const std::vector<int>& candidate_cells,
-                                      const WallPieceSizes& sizes);
 
 // The most cells an 8-connected obstacle region inside a furniture piece can
 // have: lattice points in a shape with boundary length P number at most about

@@ -72,4 +72,8 @@ ObstacleRegions FindObstacleRegions(const std::string& cells, const ObstacleLabe
 ObstacleRegions DescribeObstacleRegions(cv::Mat labels, int count, cv::Mat depth,
                                         const std::vector<int>& site_cells);
 
+// The rectangle of `shape` (centre, axis, length, width) around the centres
+// of a region's site cells (not empty), as the two functions above fit it.
+void FitRegionRectangle(const std::vector<cv::Point2f>& site_cells, RegionShape* shape);
+
 }  // namespace areagraph

@@ -1,0 +1,56 @@
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <string>
+#include <vector>
+
+namespace areagraph {
+
+// What makes an obstacle region of a furniture piece a piece of wall
+// standing between two doors (clean.keep_wall_pieces), in pixels: it is
+// thinner than `thinner_than_px` or kWallPieceWallRatio times the map's
+// typical wall (TypicalWallThickness; twice its deepest cell's depth), at
+// least kWallPieceMinElongation times as long as wide and `min_length_px`
+// long, and past both of its ends its line (the centre line of its smallest
+// enclosing rectangle, or a line one cell beside it) meets another obstacle
+// region within `max_gap_px`. A wall broken by two doors leaves such a piece;
+// its perimeter is as short as a desk's.
+struct WallPieceSizes {
+  double thinner_than_px = 0;
+  double min_length_px = 0;
+  double max_gap_px = 0;
+  // Thicker ridges are not walls when the typical wall is measured
+  // (kMaxWallThicknessM).
+  double max_wall_px = 0;
+};
+// Thinner than the least furniture island of ag-merge (0.3 m, and twice the
+// map's typical wall, stages/merge/furniture_gap_joining.h): desks, cabinets
+// and shelves are not.
+inline constexpr double kWallPieceThinnerThanM = 0.3;
+inline constexpr double kWallPieceWallRatio = 2.0;
+inline constexpr double kWallPieceMinElongation = 3.0;
+// At least as long as the short wall pieces that ag-cut takes as jambs
+// (cut.close_wall_gaps_short_tips).
+inline constexpr double kWallPieceMinLengthM = 0.5;
+// The gap past each end is at most a door's (as kWallGapM,
+// stages/cut/structure_sites.h).
+inline constexpr double kWallPieceMaxGapM = 1.6;
+
+// The obstacle regions (8-connected non-free cells of `cells`: `labels`, as
+// cv::connectedComponents labels ObstacleMask, `label_count` of them) among
+// those holding `candidate_cells` (flat indices, row-major; the rectangles
+// are fitted to them) that are pieces of wall by `sizes`: 1 per label.
+//
+// The same result as measuring every region on the whole map's depth
+// (DescribeObstacleRegions, TypicalWallThickness), but the depth is only
+// measured where a decision needs it: a region's own depth once its shape
+// and ends pass (within its box, where the map's transform is exact:
+// ComputedExactly), and the map's typical wall only for a region not
+// thinner than `thinner_than_px`.
+std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int height,
+                                      const cv::Mat& labels, int label_count,
+                                      const std::vector<int>& candidate_cells,
+                                      const WallPieceSizes& sizes);
+
+}  // namespace areagraph
