@@ -37,8 +37,10 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
   *cleaned.mutable_frame() = map.frame();
   cleaned.set_cells(std::move(cells));
   cleaned.mutable_removed_outlier_cells()->Add(outliers.begin(), outliers.end());
-  islands.insert(islands.end(), furniture.removed_cells.begin(), furniture.removed_cells.end());
-  std::sort(islands.begin(), islands.end());
+  // Both lists are increasing.
+  const auto middle =
+      islands.insert(islands.end(), furniture.removed_cells.begin(), furniture.removed_cells.end());
+  std::inplace_merge(islands.begin(), middle, islands.end());
   cleaned.mutable_removed_furniture_cells()->Add(islands.begin(), islands.end());
   for (const proto::Polygon& shape : furniture.shapes) *cleaned.add_furniture_shapes() = shape;
   return cleaned;

@@ -5,32 +5,38 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/clean/mask_runs.h"
 #include "stages/geometry/alpha_shape.h"
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/geometry/near_free_mask.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 namespace {
 
-// 8-connected regions of non-free cells: label per cell (0 = free), and for
-// each label 1 when it belongs to the map's outline: touching the image
-// border, or too big for furniture. Label 0 is never outline.
+// 8-connected regions of non-free cells (`obstacle`: ObstacleMask): label
+// per cell (0 = free), and for each label 1 when it belongs to the map's
+// outline: touching the image border, or too big for furniture. Label 0 is
+// never outline.
 std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, int height,
-                                          double max_region_cells, cv::Mat* labels) {
-  const int count = width * height;
+                                          double max_region_cells, cv::Mat* obstacle,
+                                          cv::Mat* labels) {
+  *obstacle = ObstacleMask(cells, width, height);
   // (connectedComponentsWithStats would also give sizes and boxes, but its
   // statistics cost three times the labelling.)
-  const int region_count =
-      cv::connectedComponents(ObstacleMask(cells, width, height), *labels, 8, CV_32S);
-  const int* label = labels->ptr<int>();
+  const int region_count = cv::connectedComponents(*obstacle, *labels, 8, CV_32S);
+  // A run of obstacle cells lies in one region.
   std::vector<int> size(region_count, 0);
-  for (int index = 0; index < count; ++index) ++size[label[index]];
+  for (int row = 0; row < height; ++row) {
+    const int* label = labels->ptr<int>(row);
+    ForEachMaskRun(obstacle->ptr<uint8_t>(row), width,
+                   [&](int begin, int end) { size[label[begin]] += end - begin; });
+  }
   std::vector<uint8_t> outline(region_count, 0);
   for (int region = 1; region < region_count; ++region) {
     outline[region] = size[region] > max_region_cells;
   }
+  const int* label = labels->ptr<int>();
   for (int col = 0; col < width; ++col) {
     outline[label[col]] = outline[label[(height - 1) * width + col]] = 1;
   }
@@ -49,31 +55,44 @@ std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, i
 // all other points is the same without them: the outline's other cells cannot
 // change what is furniture. No cells when no region may be furniture.
 std::vector<int> AlphaShapeCells(const std::string& cells, int width, int height,
-                                 const cv::Mat& labels, const std::vector<uint8_t>& outline,
-                                 double reach) {
-  const int* label = labels.ptr<int>();
+                                 const cv::Mat& obstacle, const cv::Mat& labels,
+                                 const std::vector<uint8_t>& outline, double reach) {
   std::vector<int> inner;
-  cv::Mat inner_mask(height, width, CV_8U, cv::Scalar(0));
-  for (int index = 0; index < width * height; ++index) {
-    const int region = label[index];
-    if (region == 0 || outline[region]) continue;
-    inner.push_back(index);
-    inner_mask.data[index] = 1;
+  cv::Rect inner_box;
+  for (int row = 0; row < height; ++row) {
+    const int* label = labels.ptr<int>(row);
+    ForEachMaskRun(obstacle.ptr<uint8_t>(row), width, [&](int begin, int end) {
+      if (outline[label[begin]]) return;
+      for (int col = begin; col < end; ++col) inner.push_back(row * width + col);
+      inner_box |= cv::Rect(begin, row, end - begin, 1);
+    });
   }
   if (inner.empty()) return {};
   // Within a square around the inner cells: a little more than the reach.
+  // Only the inner cells' box and that margin around it can be: the
+  // dilation works there (outside the box, as outside the image, are zeros).
   const int margin = int(std::ceil(reach)) + 1;
+  const cv::Rect box = cv::Rect(inner_box.x - margin, inner_box.y - margin,
+                                inner_box.width + 2 * margin, inner_box.height + 2 * margin) &
+                       cv::Rect(0, 0, width, height);
+  cv::Mat inner_mask(box.size(), CV_8U, cv::Scalar(0));
+  for (const int index : inner)
+    inner_mask.at<uint8_t>(index / width - box.y, index % width - box.x) = 255;
   cv::Mat within_reach;
   cv::dilate(inner_mask, within_reach,
              cv::getStructuringElement(cv::MORPH_RECT, cv::Size(2 * margin + 1, 2 * margin + 1)));
 
-  const std::vector<uint8_t> near_free = NearFreeMask(cells, width, height);
+  const CellStates grid(cells, width, height);
   std::vector<int> edge;
-  for (int index = 0; index < width * height; ++index) {
-    if (within_reach.data[index] && near_free[index] && label[index] != 0 &&
-        outline[label[index]]) {
-      edge.push_back(index);
-    }
+  for (int row = box.y; row < box.y + box.height; ++row) {
+    const int* label = labels.ptr<int>(row) + box.x;
+    ForEachMaskRun(within_reach.ptr<uint8_t>(row - box.y), box.width, [&](int begin, int end) {
+      for (int c = begin; c < end; ++c) {
+        if (label[c] != 0 && outline[label[c]] && grid.TouchesFree(box.x + c, row)) {
+          edge.push_back(row * width + box.x + c);
+        }
+      }
+    });
   }
   std::vector<int> merged(inner.size() + edge.size());
   std::merge(inner.begin(), inner.end(), edge.begin(), edge.end(), merged.begin());
@@ -109,14 +128,15 @@ double MaxFurnitureRegionCells(double alpha_radius_px, double max_perimeter_px) 
 
 FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, double alpha_radius_px,
                                  double max_perimeter_px, const WallPieceSizes* wall_pieces) {
-  cv::Mat labels;
+  cv::Mat obstacle, labels;
   const std::vector<uint8_t> outline = LabelObstacleRegions(
-      cells, width, height, MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px), &labels);
+      cells, width, height, MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px), &obstacle,
+      &labels);
   const int region_count = int(outline.size());
   const int* label = labels.ptr<int>();
 
   const std::vector<int> point_cells =
-      AlphaShapeCells(cells, width, height, labels, outline, 2 * alpha_radius_px);
+      AlphaShapeCells(cells, width, height, obstacle, labels, outline, 2 * alpha_radius_px);
   FurnitureRemoval removal;
   if (point_cells.empty()) return removal;
   std::vector<Eigen::Vector2d> points;

@@ -1,9 +1,11 @@
 #include "stages/clean/unknown_islands.h"
 
+#include <algorithm>
+#include <climits>
 #include <opencv2/imgproc.hpp>
 
 #include "proto/artifacts.pb.h"
-#include "stages/geometry/region_boxes.h"
+#include "stages/clean/mask_runs.h"
 
 namespace areagraph {
 
@@ -17,24 +19,38 @@ std::vector<int> FreeUnknownIslands(std::string& cells, int width, int height, d
   for (int index = 0; index < count; ++index) {
     mask[index] = state[index] == proto::CELL_UNKNOWN ? 255 : 0;
   }
-  cv::Mat labels, stats;
-  const int regions = LabelRegionsWithBoxes(unknown, 8, &labels, &stats);
-  std::vector<uint8_t> island(regions, 0);
-  for (int region = 1; region < regions; ++region) {
-    const int x = stats.at<int>(region, cv::CC_STAT_LEFT);
-    const int y = stats.at<int>(region, cv::CC_STAT_TOP);
-    const int w = stats.at<int>(region, cv::CC_STAT_WIDTH);
-    const int h = stats.at<int>(region, cv::CC_STAT_HEIGHT);
-    const bool on_border = x == 0 || y == 0 || x + w == width || y + h == height;
-    island[region] = !on_border && stats.at<int>(region, cv::CC_STAT_AREA) <= max_cells;
+  cv::Mat labels;
+  const int regions = cv::connectedComponents(unknown, labels, 8, CV_32S);
+  // Boxes and sizes from the mask's runs (a run is one region's), as
+  // LabelBoxes would give them, without visiting the other cells one by one.
+  std::vector<int> left(regions, INT_MAX), right(regions, -1), top(regions, -1),
+      bottom(regions, -1);
+  std::vector<int64_t> area(regions, 0);
+  for (int r = 0; r < height; ++r) {
+    const int* label = labels.ptr<int>(r);
+    ForEachMaskRun(unknown.ptr<uint8_t>(r), width, [&](int begin, int end) {
+      const int region = label[begin];
+      left[region] = std::min(left[region], begin);
+      right[region] = std::max(right[region], end - 1);
+      if (top[region] < 0) top[region] = r;
+      bottom[region] = r;
+      area[region] += end - begin;
+    });
   }
-  const int* label = labels.ptr<int>();
-  for (int index = 0; index < count; ++index) {
-    if (island[label[index]]) {
-      cells[index] = proto::CELL_FREE;
-      freed.push_back(index);
+  // The islands' cells, from their boxes: they are few and small.
+  for (int region = 1; region < regions; ++region) {
+    const bool on_border = left[region] == 0 || top[region] == 0 || right[region] == width - 1 ||
+                           bottom[region] == height - 1;
+    if (on_border || area[region] == 0 || double(area[region]) > max_cells) continue;
+    for (int r = top[region]; r <= bottom[region]; ++r) {
+      const int* label = labels.ptr<int>(r);
+      for (int c = left[region]; c <= right[region]; ++c) {
+        if (label[c] == region) freed.push_back(r * width + c);
+      }
     }
   }
+  std::sort(freed.begin(), freed.end());
+  for (const int index : freed) cells[index] = proto::CELL_FREE;
   return freed;
 }
 
