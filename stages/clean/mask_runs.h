@@ -5,26 +5,34 @@
 
 namespace areagraph {
 
-// Calls run(begin, end) for each run [begin, end) of non-zero bytes of
-// row[0, n), a row of a 0 / 255 mask. Eight bytes at a time across long
-// stretches of one value: a map is mostly such stretches.
+// Calls run(begin, end) for each run [begin, end) of bytes of row[0, n) that
+// have `bit` set (a 0 / 255 mask: 0xff; CellState bytes, whose states 0, 1
+// and 2 have one bit each: the state's bit). Eight bytes at a time across
+// long stretches of one kind: a map is mostly such stretches.
 template <typename Run>
-void ForEachMaskRun(const uint8_t* row, int n, Run run) {
+void ForEachRun(const uint8_t* row, int n, uint8_t bit, Run run) {
+  const uint64_t all = bit * uint64_t(0x0101010101010101);
   auto eight = [&](int c) {
     uint64_t word;
     std::memcpy(&word, row + c, sizeof(word));
-    return word;
+    return word & all;
   };
   int c = 0;
   while (c < n) {
     while (c + 8 <= n && eight(c) == 0) c += 8;
-    while (c < n && row[c] == 0) ++c;
+    while (c < n && (row[c] & bit) == 0) ++c;
     if (c == n) return;
     const int begin = c;
-    while (c + 8 <= n && eight(c) == ~uint64_t(0)) c += 8;
-    while (c < n && row[c] != 0) ++c;
+    while (c + 8 <= n && eight(c) == all) c += 8;
+    while (c < n && (row[c] & bit) != 0) ++c;
     run(begin, c);
   }
+}
+
+// The runs of non-zero cells of a 0 / 255 mask's row.
+template <typename Run>
+void ForEachMaskRun(const uint8_t* row, int n, Run run) {
+  ForEachRun(row, n, 0xff, run);
 }
 
 }  // namespace areagraph

@@ -1,56 +1,71 @@
 #include "stages/clean/unknown_islands.h"
 
 #include <algorithm>
-#include <climits>
-#include <opencv2/imgproc.hpp>
+#include <cstdint>
 
 #include "proto/artifacts.pb.h"
 #include "stages/clean/mask_runs.h"
+#include "stages/geometry/disjoint_sets.h"
 
 namespace areagraph {
+namespace {
+
+// A run of unknown cells: columns [begin, end) of `row`.
+struct Run {
+  int row;
+  int begin;
+  int end;
+};
+
+}  // namespace
 
 std::vector<int> FreeUnknownIslands(std::string& cells, int width, int height, double max_cells) {
   std::vector<int> freed;
   if (max_cells <= 0) return freed;
-  const int count = width * height;
-  cv::Mat unknown(height, width, CV_8U);
+  // The unknown cells' runs, row by row (no per-cell labels: a map's unknown
+  // space is mostly long runs), and where each row's runs start.
+  static_assert(proto::CELL_UNKNOWN == 2 && proto::CELL_FREE == 0 && proto::CELL_OCCUPIED == 1);
   const auto* state = reinterpret_cast<const uint8_t*>(cells.data());
-  uint8_t* mask = unknown.data;  // a local pointer: the stores may alias `cells`
-  for (int index = 0; index < count; ++index) {
-    mask[index] = state[index] == proto::CELL_UNKNOWN ? 255 : 0;
-  }
-  cv::Mat labels;
-  const int regions = cv::connectedComponents(unknown, labels, 8, CV_32S);
-  // Boxes and sizes from the mask's runs (a run is one region's), as
-  // LabelBoxes would give them, without visiting the other cells one by one.
-  std::vector<int> left(regions, INT_MAX), right(regions, -1), top(regions, -1),
-      bottom(regions, -1);
-  std::vector<int64_t> area(regions, 0);
+  std::vector<Run> runs;
+  std::vector<size_t> row_start(size_t(height) + 1, 0);
   for (int r = 0; r < height; ++r) {
-    const int* label = labels.ptr<int>(r);
-    ForEachMaskRun(unknown.ptr<uint8_t>(r), width, [&](int begin, int end) {
-      const int region = label[begin];
-      left[region] = std::min(left[region], begin);
-      right[region] = std::max(right[region], end - 1);
-      if (top[region] < 0) top[region] = r;
-      bottom[region] = r;
-      area[region] += end - begin;
+    row_start[r] = runs.size();
+    ForEachRun(state + size_t(r) * width, width, proto::CELL_UNKNOWN, [&](int begin, int end) {
+      runs.push_back({r, begin, end});
     });
   }
-  // The islands' cells, from their boxes: they are few and small.
-  for (int region = 1; region < regions; ++region) {
-    const bool on_border = left[region] == 0 || top[region] == 0 || right[region] == width - 1 ||
-                           bottom[region] == height - 1;
-    if (on_border || area[region] == 0 || double(area[region]) > max_cells) continue;
-    for (int r = top[region]; r <= bottom[region]; ++r) {
-      const int* label = labels.ptr<int>(r);
-      for (int c = left[region]; c <= right[region]; ++c) {
-        if (label[c] == region) freed.push_back(r * width + c);
+  row_start[height] = runs.size();
+  // 8-connected regions: runs of neighbouring rows that overlap or touch
+  // diagonally. Both rows' runs are in column order: one sweep.
+  DisjointSets regions(runs.size());
+  for (int r = 1; r < height; ++r) {
+    size_t above = row_start[r - 1];
+    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
+      while (above < row_start[r] && runs[above].end < runs[i].begin) ++above;
+      for (size_t a = above; a < row_start[r] && runs[a].begin <= runs[i].end; ++a) {
+        regions.Union(int(a), int(i));
       }
     }
   }
-  std::sort(freed.begin(), freed.end());
-  for (const int index : freed) cells[index] = proto::CELL_FREE;
+  // Per region (by its root): cells, and whether it touches the border.
+  std::vector<int64_t> area(runs.size(), 0);
+  std::vector<uint8_t> on_border(runs.size(), 0);
+  std::vector<int> root(runs.size());
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const Run& run = runs[i];
+    root[i] = regions.Find(int(i));
+    area[root[i]] += run.end - run.begin;
+    on_border[root[i]] |=
+        run.row == 0 || run.row == height - 1 || run.begin == 0 || run.end == width;
+  }
+  // The islands' runs are in row-major order: so are their cells.
+  for (size_t i = 0; i < runs.size(); ++i) {
+    if (on_border[root[i]] || double(area[root[i]]) > max_cells) continue;
+    for (int c = runs[i].begin; c < runs[i].end; ++c) {
+      freed.push_back(runs[i].row * width + c);
+      cells[size_t(runs[i].row) * width + c] = proto::CELL_FREE;
+    }
+  }
   return freed;
 }
 

@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <opencv2/imgproc.hpp>
+#include <random>
+
 #include "stages/clean/clean_stage.h"
 #include "tests/support/test_grids.h"
 
@@ -62,6 +65,62 @@ TEST(UnknownIslands, BigOrBorderTouchingUnknownStays) {
   std::string unchanged = grid.cells();
   EXPECT_TRUE(FreeUnknownIslands(unchanged, 100, 80, 0).empty());
   EXPECT_EQ(unchanged, grid.cells());
+}
+
+// OpenCV's 8-connected labelling of the unknown cells and its statistics.
+std::vector<int> IslandsByOpenCv(const std::string& cells, int width, int height,
+                                 double max_cells) {
+  cv::Mat unknown(height, width, CV_8U), labels, stats, centroids;
+  for (int index = 0; index < width * height; ++index) {
+    unknown.data[index] = cells[index] == char(proto::CELL_UNKNOWN) ? 255 : 0;
+  }
+  const int count = cv::connectedComponentsWithStats(unknown, labels, stats, centroids, 8, CV_32S);
+  std::vector<int> islands;
+  for (int index = 0; index < width * height; ++index) {
+    const int label = labels.ptr<int>()[index];
+    if (label == 0 || label >= count) continue;
+    const int x = stats.at<int>(label, cv::CC_STAT_LEFT), y = stats.at<int>(label, cv::CC_STAT_TOP);
+    const int w = stats.at<int>(label, cv::CC_STAT_WIDTH);
+    const int h = stats.at<int>(label, cv::CC_STAT_HEIGHT);
+    const bool on_border = x == 0 || y == 0 || x + w == width || y + h == height;
+    if (!on_border && stats.at<int>(label, cv::CC_STAT_AREA) <= max_cells) islands.push_back(index);
+  }
+  return islands;
+}
+
+TEST(UnknownIslands, SameAsOpenCvsLabelling) {
+  std::mt19937 random(12);
+  for (int trial = 0; trial < 80; ++trial) {
+    const int width = 1 + int(random() % 70), height = 1 + int(random() % 50);
+    std::string cells(size_t(width) * height, char(proto::CELL_FREE));
+    // Blobs, thin diagonal chains (8-connected only) and occupied cells.
+    for (int blob = int(random() % 25); blob > 0; --blob) {
+      const int col = int(random() % width), row = int(random() % height);
+      const int w = 1 + int(random() % 9), h = 1 + int(random() % 4);
+      for (int r = row; r < std::min(height, row + h); ++r) {
+        for (int c = col; c < std::min(width, col + w); ++c) {
+          if (random() % 5 != 0) cells[r * width + c] = char(proto::CELL_UNKNOWN);
+        }
+      }
+    }
+    for (int chain = int(random() % 4); chain > 0; --chain) {
+      int col = int(random() % width), row = int(random() % height);
+      for (int step = 0; step < 12 && col < width && row < height; ++step, ++col, ++row) {
+        cells[row * width + col] = char(proto::CELL_UNKNOWN);
+      }
+    }
+    for (int index = 0; index < width * height; ++index) {
+      if (random() % 11 == 0) cells[index] = char(proto::CELL_OCCUPIED);
+    }
+    const double max_cells = double(random() % 40);
+    std::string freed_cells = cells;
+    const std::vector<int> freed = FreeUnknownIslands(freed_cells, width, height, max_cells);
+    const std::vector<int> expected =
+        max_cells > 0 ? IslandsByOpenCv(cells, width, height, max_cells) : std::vector<int>{};
+    ASSERT_EQ(freed, expected) << width << " x " << height;
+    for (const int index : freed) cells[index] = char(proto::CELL_FREE);
+    EXPECT_EQ(freed_cells, cells);
+  }
 }
 
 }  // namespace
