@@ -5,45 +5,39 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/clean/cell_runs.h"
 #include "stages/clean/mask_runs.h"
 #include "stages/geometry/alpha_shape.h"
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 namespace {
 
-// 8-connected regions of non-free cells (`obstacle`: ObstacleMask): label
-// per cell (0 = free), and for each label 1 when it belongs to the map's
-// outline: touching the image border, or too big for furniture. Label 0 is
-// never outline.
+// 8-connected regions of non-free cells (`obstacles`, over their runs) and
+// their labels per cell (0 = free, run region r is label r + 1), and for each
+// label 1 when it belongs to the map's outline: touching the image border,
+// or too big for furniture. Label 0 is never outline.
 std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, int height,
-                                          double max_region_cells, cv::Mat* obstacle,
+                                          double max_region_cells, RunRegions* obstacles,
                                           cv::Mat* labels) {
-  *obstacle = ObstacleMask(cells, width, height);
-  // (connectedComponentsWithStats would also give sizes and boxes, but its
-  // statistics cost three times the labelling.)
-  const int region_count = cv::connectedComponents(*obstacle, *labels, 8, CV_32S);
-  // A run of obstacle cells lies in one region.
+  static_assert(proto::CELL_FREE == 0, "non-free cells have a bit of 3 set");
+  *obstacles = FindRunRegions(cells, width, height, proto::CELL_OCCUPIED | proto::CELL_UNKNOWN);
+  const int region_count = obstacles->count + 1;
+  *labels = cv::Mat::zeros(height, width, CV_32S);
   std::vector<int> size(region_count, 0);
-  for (int row = 0; row < height; ++row) {
-    const int* label = labels->ptr<int>(row);
-    ForEachMaskRun(obstacle->ptr<uint8_t>(row), width,
-                   [&](int begin, int end) { size[label[begin]] += end - begin; });
-  }
   std::vector<uint8_t> outline(region_count, 0);
+  for (size_t i = 0; i < obstacles->runs.size(); ++i) {
+    const CellRun& run = obstacles->runs[i];
+    const int label = obstacles->region[i] + 1;
+    int* row = labels->ptr<int>(run.row);
+    std::fill(row + run.begin, row + run.end, label);
+    size[label] += run.end - run.begin;
+    outline[label] |= OnBorder(run, width, height);
+  }
   for (int region = 1; region < region_count; ++region) {
-    outline[region] = size[region] > max_region_cells;
+    outline[region] |= size[region] > max_region_cells;
   }
-  const int* label = labels->ptr<int>();
-  for (int col = 0; col < width; ++col) {
-    outline[label[col]] = outline[label[(height - 1) * width + col]] = 1;
-  }
-  for (int row = 0; row < height; ++row) {
-    outline[label[row * width]] = outline[label[row * width + width - 1]] = 1;
-  }
-  outline[0] = 0;
   return outline;
 }
 
@@ -55,17 +49,15 @@ std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, i
 // all other points is the same without them: the outline's other cells cannot
 // change what is furniture. No cells when no region may be furniture.
 std::vector<int> AlphaShapeCells(const std::string& cells, int width, int height,
-                                 const cv::Mat& obstacle, const cv::Mat& labels,
+                                 const RunRegions& obstacles, const cv::Mat& labels,
                                  const std::vector<uint8_t>& outline, double reach) {
   std::vector<int> inner;
   cv::Rect inner_box;
-  for (int row = 0; row < height; ++row) {
-    const int* label = labels.ptr<int>(row);
-    ForEachMaskRun(obstacle.ptr<uint8_t>(row), width, [&](int begin, int end) {
-      if (outline[label[begin]]) return;
-      for (int col = begin; col < end; ++col) inner.push_back(row * width + col);
-      inner_box |= cv::Rect(begin, row, end - begin, 1);
-    });
+  for (size_t i = 0; i < obstacles.runs.size(); ++i) {
+    if (outline[obstacles.region[i] + 1]) continue;
+    const CellRun& run = obstacles.runs[i];
+    for (int col = run.begin; col < run.end; ++col) inner.push_back(run.row * width + col);
+    inner_box |= cv::Rect(run.begin, run.row, run.end - run.begin, 1);
   }
   if (inner.empty()) return {};
   // Within a square around the inner cells: a little more than the reach.
@@ -128,15 +120,16 @@ double MaxFurnitureRegionCells(double alpha_radius_px, double max_perimeter_px) 
 
 FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, double alpha_radius_px,
                                  double max_perimeter_px, const WallPieceSizes* wall_pieces) {
-  cv::Mat obstacle, labels;
+  RunRegions obstacles;
+  cv::Mat labels;
   const std::vector<uint8_t> outline = LabelObstacleRegions(
-      cells, width, height, MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px), &obstacle,
+      cells, width, height, MaxFurnitureRegionCells(alpha_radius_px, max_perimeter_px), &obstacles,
       &labels);
   const int region_count = int(outline.size());
   const int* label = labels.ptr<int>();
 
   const std::vector<int> point_cells =
-      AlphaShapeCells(cells, width, height, obstacle, labels, outline, 2 * alpha_radius_px);
+      AlphaShapeCells(cells, width, height, obstacles, labels, outline, 2 * alpha_radius_px);
   FurnitureRemoval removal;
   if (point_cells.empty()) return removal;
   std::vector<Eigen::Vector2d> points;

@@ -1,0 +1,37 @@
+#include "stages/clean/cell_runs.h"
+
+#include "stages/clean/mask_runs.h"
+#include "stages/geometry/disjoint_sets.h"
+
+namespace areagraph {
+
+RunRegions FindRunRegions(const std::string& cells, int width, int height, uint8_t bit) {
+  RunRegions found;
+  std::vector<CellRun>& runs = found.runs;
+  const auto* state = reinterpret_cast<const uint8_t*>(cells.data());
+  // Where each row's runs start in `runs` (one more entry for the end).
+  std::vector<size_t> row_start(size_t(height) + 1, 0);
+  for (int r = 0; r < height; ++r) {
+    row_start[r] = runs.size();
+    ForEachRun(state + size_t(r) * width, width, bit, [&](int begin, int end) {
+      runs.push_back({r, begin, end});
+    });
+  }
+  row_start[height] = runs.size();
+  // Runs of neighbouring rows join when they overlap or touch diagonally.
+  // Both rows' runs are in column order: one sweep.
+  DisjointSets regions(runs.size());
+  for (int r = 1; r < height; ++r) {
+    size_t above = row_start[r - 1];
+    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
+      while (above < row_start[r] && runs[above].end < runs[i].begin) ++above;
+      for (size_t a = above; a < row_start[r] && runs[a].begin <= runs[i].end; ++a) {
+        regions.Union(int(a), int(i));
+      }
+    }
+  }
+  found.region = regions.DenseLabels(&found.count);
+  return found;
+}
+
+}  // namespace areagraph
