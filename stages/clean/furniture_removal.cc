@@ -24,17 +24,22 @@ std::vector<uint8_t> LabelObstacleRegions(const std::string& cells, int width, i
   static_assert(proto::CELL_FREE == 0, "non-free cells have a bit of 3 set");
   *obstacles = FindRunRegions(cells, width, height, proto::CELL_OCCUPIED | proto::CELL_UNKNOWN);
   const int region_count = obstacles->count + 1;
-  *labels = cv::Mat::zeros(height, width, CV_32S);
+  // Every cell written once: the runs' labels, zeros between them.
+  labels->create(height, width, CV_32S);
   std::vector<int> size(region_count, 0);
   std::vector<uint8_t> outline(region_count, 0);
+  int* cell = labels->ptr<int>();
+  int* written = cell;
   for (size_t i = 0; i < obstacles->runs.size(); ++i) {
     const CellRun& run = obstacles->runs[i];
     const int label = obstacles->region[i] + 1;
-    int* row = labels->ptr<int>(run.row);
-    std::fill(row + run.begin, row + run.end, label);
+    int* row = cell + size_t(run.row) * width;
+    written = std::fill_n(written, row + run.begin - written, 0);
+    written = std::fill_n(written, run.end - run.begin, label);
     size[label] += run.end - run.begin;
     outline[label] |= OnBorder(run, width, height);
   }
+  std::fill(written, cell + size_t(width) * height, 0);
   for (int region = 1; region < region_count; ++region) {
     outline[region] |= size[region] > max_region_cells;
   }
