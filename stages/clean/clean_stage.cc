@@ -17,9 +17,13 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
   const int height = map.frame().height_px();
   CheckCellStates(map.cells(), width, height);
   const CleanParameters parameters = CleanParametersFor(options, map.frame());
-  const auto free_cells = std::count(map.cells().begin(), map.cells().end(), proto::CELL_FREE);
-  if (free_cells == 0) throw InputError("the map has no free space");
-  if (free_cells == static_cast<long>(map.cells().size())) {
+  // Whether there is a free cell and a non-free one: both are found early.
+  const std::string& states = map.cells();
+  if (std::find(states.begin(), states.end(), char(proto::CELL_FREE)) == states.end()) {
+    throw InputError("the map has no free space");
+  }
+  if (std::find_if(states.begin(), states.end(),
+                   [](char state) { return state != char(proto::CELL_FREE); }) == states.end()) {
     throw InputError("the map has no obstacle cells");
   }
 
