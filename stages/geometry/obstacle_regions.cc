@@ -66,16 +66,20 @@ ObstacleRegions DescribeObstacleRegions(cv::Mat labels, int count, cv::Mat depth
   for (int region = 1; region < count; ++region) {
     RegionShape& shape = shapes[region];
     if (shape.on_border || outline[region].empty()) continue;
-    const cv::RotatedRect rect = cv::minAreaRect(outline[region]);
-    const double angle = rect.angle * M_PI / 180;
-    const Eigen::Vector2d along_width(std::cos(angle), std::sin(angle));
-    const bool wide = rect.size.width >= rect.size.height;
-    shape.centre = {rect.center.x, rect.center.y};
-    shape.axis = wide ? along_width : Eigen::Vector2d(-along_width.y(), along_width.x());
-    shape.length = std::max(rect.size.width, rect.size.height) + 1;
-    shape.width = std::min(rect.size.width, rect.size.height) + 1;
+    FitRegionRectangle(outline[region], &shape);
   }
   return regions;
+}
+
+void FitRegionRectangle(const std::vector<cv::Point2f>& site_centres, RegionShape* shape) {
+  const cv::RotatedRect rect = cv::minAreaRect(site_centres);
+  const double angle = rect.angle * M_PI / 180;
+  const Eigen::Vector2d along_width(std::cos(angle), std::sin(angle));
+  const bool wide = rect.size.width >= rect.size.height;
+  shape->centre = {rect.center.x, rect.center.y};
+  shape->axis = wide ? along_width : Eigen::Vector2d(-along_width.y(), along_width.x());
+  shape->length = std::max(rect.size.width, rect.size.height) + 1;
+  shape->width = std::min(rect.size.width, rect.size.height) + 1;
 }
 
 }  // namespace areagraph

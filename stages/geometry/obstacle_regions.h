@@ -72,4 +72,8 @@ ObstacleRegions FindObstacleRegions(const std::string& cells, const ObstacleLabe
 ObstacleRegions DescribeObstacleRegions(cv::Mat labels, int count, cv::Mat depth,
                                         const std::vector<int>& site_cells);
 
+// The rectangle of a region (centre, axis, length, width) from its site
+// cells' centres, as DescribeObstacleRegions fits it (cv::minAreaRect).
+void FitRegionRectangle(const std::vector<cv::Point2f>& site_centres, RegionShape* shape);
+
 }  // namespace areagraph
