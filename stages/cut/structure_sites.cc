@@ -98,6 +98,59 @@ bool WallPiece(const ObstacleRegions& regions, int region, double gap_px, double
   return false;
 }
 
+// Regions that may be islands, `candidate` set for them: off the image
+// border, and not too long by their box (the rectangle around cells whose
+// centres span `extent` px along x or y is at least extent / sqrt 2 long;
+// 0.7 leaves a margin for minAreaRect's float sides), with the rectangle and
+// thickness (twice the deepest cell of `depth`) of each. The other regions
+// keep only their cell count and border flag: no island can come of them, and
+// DescribeObstacleRegions' pass over every cell and fits of long walls are
+// skipped.
+ObstacleRegions CandidateRegions(const ObstacleLabels& obstacles, const cv::Mat& depth,
+                                 const std::vector<int>& site_cells, double max_island_px,
+                                 std::vector<uint8_t>* candidate) {
+  ObstacleRegions regions;
+  regions.width = obstacles.labels.cols;
+  regions.height = obstacles.labels.rows;
+  regions.labels = obstacles.labels;  // shared, read only
+  regions.shapes.resize(obstacles.count);
+  candidate->assign(obstacles.count, 0);
+  for (int region = 1; region < obstacles.count; ++region) {
+    const int* stat = obstacles.stats.ptr<int>(region);
+    const int left = stat[cv::CC_STAT_LEFT], top = stat[cv::CC_STAT_TOP];
+    const int box_width = stat[cv::CC_STAT_WIDTH], box_height = stat[cv::CC_STAT_HEIGHT];
+    RegionShape& shape = regions.shapes[region];
+    shape.cells = stat[cv::CC_STAT_AREA];
+    shape.on_border = left == 0 || top == 0 || left + box_width == regions.width ||
+                      top + box_height == regions.height;
+    const int extent = std::max(box_width, box_height) - 1;
+    (*candidate)[region] = !shape.on_border && 0.7 * extent <= max_island_px;
+  }
+  const int* label = regions.labels.ptr<int>();
+  std::vector<std::vector<cv::Point2f>> outline(obstacles.count);
+  for (const int index : site_cells) {
+    if ((*candidate)[label[index]]) {
+      outline[label[index]].emplace_back(index % regions.width + 0.5f,
+                                         index / regions.width + 0.5f);
+    }
+  }
+  for (int region = 1; region < obstacles.count; ++region) {
+    if (!(*candidate)[region]) continue;
+    RegionShape& shape = regions.shapes[region];
+    FitRegionRectangle(outline[region], &shape);
+    const int* stat = obstacles.stats.ptr<int>(region);
+    for (int r = stat[cv::CC_STAT_TOP]; r < stat[cv::CC_STAT_TOP] + stat[cv::CC_STAT_HEIGHT]; ++r) {
+      const int* row_label = regions.labels.ptr<int>(r);
+      const float* row_depth = depth.ptr<float>(r);
+      for (int c = stat[cv::CC_STAT_LEFT]; c < stat[cv::CC_STAT_LEFT] + stat[cv::CC_STAT_WIDTH];
+           ++c) {
+        if (row_label[c] == region) shape.thickness = std::max(shape.thickness, 2 * row_depth[c]);
+      }
+    }
+  }
+  return regions;
+}
+
 }  // namespace
 
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
@@ -107,15 +160,16 @@ PointList StructureSites(const std::string& cells, int width, int height, double
   std::vector<uint8_t> island;
   ObstacleRegions regions;
   if (max_island_m > 0) {
-    regions = FindObstacleRegions(cells, obstacles, site_cells);
     const double max_island_px = max_island_m / resolution_m;
-    const double min_thickness = std::max(
-        kMinIslandThicknessM / resolution_m,
-        kIslandWallRatio * TypicalWallThickness(regions.depth, kMaxWallThicknessM / resolution_m));
+    const cv::Mat depth = ObstacleDepth(ObstacleMask(cells, width, height));
+    const double min_thickness =
+        std::max(kMinIslandThicknessM / resolution_m,
+                 kIslandWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
+    regions = CandidateRegions(obstacles, depth, site_cells, max_island_px, &island);
     const double gap_px = kWallGapM / resolution_m;
     const double run_px = kEndOnRunM / resolution_m;
-    island.assign(regions.shapes.size(), 0);
     for (size_t region = 1; region < regions.shapes.size(); ++region) {
+      if (!island[region]) continue;
       const RegionShape& s = regions.shapes[region];
       island[region] = !s.on_border && s.length <= max_island_px && s.thickness >= min_thickness &&
                        s.length <= kMaxIslandElongation * s.width &&

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "stages/cut/edge_track.h"
+#include "stages/cut/reach_extremes.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/point_buckets.h"
 
@@ -43,22 +44,16 @@ WidthProfile SampleEdge(const proto::GraphEdge& edge, double resolution_m) {
 // The widest point within `reach_m` of vertex `vertex` on the edges that
 // meet there, except edge `except`; 0 when there are none.
 double WidestNearVertex(const std::vector<WidthProfile>& profiles,
+                        const std::vector<EndMaxima>& maxima,
                         const std::vector<std::vector<int>>& incident, int vertex, int except,
                         double reach_m) {
   double widest = 0;
   for (int e : incident[vertex]) {
+    if (e == except) continue;
     const WidthProfile& p = profiles[e];
-    const size_t n = p.width_m.size();
-    if (e != except && p.source == vertex) {
-      for (size_t i = 0; i < n && p.arc_m[i] <= reach_m; ++i)
-        widest = std::max(widest, p.width_m[i]);
-    }
-    if (e != except && p.target == vertex) {
-      const double end = p.arc_m.back();
-      for (size_t i = n; i-- > 0 && end - p.arc_m[i] <= reach_m;) {
-        widest = std::max(widest, p.width_m[i]);
-      }
-    }
+    if (p.source == vertex)
+      widest = WidestFromStart(maxima[e], p.width_m, p.arc_m, reach_m, widest);
+    if (p.target == vertex) widest = WidestFromEnd(maxima[e], p.width_m, p.arc_m, reach_m, widest);
   }
   return widest;
 }
@@ -70,34 +65,29 @@ bool IsConstriction(double narrowest, double widest_beside) {
 void FindDoors(const std::vector<WidthProfile>& profiles,
                const std::vector<std::vector<int>>& incident,
                std::vector<proto::DetectedWidth>* doors) {
+  std::vector<EndMaxima> maxima;
+  maxima.reserve(profiles.size());
+  for (const WidthProfile& p : profiles) maxima.push_back(MaximaFromEnds(p.width_m, p.arc_m));
   for (size_t e = 0; e < profiles.size(); ++e) {
     const WidthProfile& p = profiles[e];
     const int n = static_cast<int>(p.width_m.size());
+    const ReachExtremes near = ExtremesWithinReach(p.width_m, p.arc_m, kDoorReachM);
     int run_start = -1;  // a run of equal narrowest samples (a door's depth)
     for (int i = 0; i <= n; ++i) {
       bool door = false;
       if (i < n) {
-        double left = 0, right = 0;
-        bool narrowest = true;
-        int j = i - 1;
-        for (; j >= 0 && p.arc_m[i] - p.arc_m[j] <= kDoorReachM; --j) {
-          narrowest &= p.width_m[j] >= p.width_m[i];
-          left = std::max(left, p.width_m[j]);
+        const double width = p.width_m[i];
+        const bool narrowest = near.before_min[i] >= width && near.after_min[i] >= width;
+        double left = near.before_max[i], right = near.after_max[i];
+        if (near.reaches_start[i]) {
+          left = std::max(left, WidestNearVertex(profiles, maxima, incident, p.source, e,
+                                                 kDoorReachM - p.arc_m[i]));
         }
-        if (j < 0) {
-          left = std::max(
-              left, WidestNearVertex(profiles, incident, p.source, e, kDoorReachM - p.arc_m[i]));
-        }
-        for (j = i + 1; j < n && p.arc_m[j] - p.arc_m[i] <= kDoorReachM; ++j) {
-          narrowest &= p.width_m[j] >= p.width_m[i];
-          right = std::max(right, p.width_m[j]);
-        }
-        if (j >= n) {
-          right = std::max(right, WidestNearVertex(profiles, incident, p.target, e,
+        if (near.reaches_end[i]) {
+          right = std::max(right, WidestNearVertex(profiles, maxima, incident, p.target, e,
                                                    kDoorReachM - (p.arc_m.back() - p.arc_m[i])));
         }
-        door =
-            narrowest && IsConstriction(p.width_m[i], left) && IsConstriction(p.width_m[i], right);
+        door = narrowest && IsConstriction(width, left) && IsConstriction(width, right);
       }
       if (door && run_start < 0) run_start = i;
       if (!door && run_start >= 0) {
@@ -117,15 +107,10 @@ void FindCorridors(const std::vector<WidthProfile>& profiles,
                    std::vector<proto::DetectedWidth>* corridors) {
   for (const WidthProfile& p : profiles) {
     const size_t n = p.width_m.size();
+    SteadyRuns runs(p.width_m, kCorridorToleranceM, 0.1);
     size_t i = 0;
     while (i < n) {
-      double low = p.width_m[i], high = p.width_m[i];
-      size_t j = i + 1;
-      for (; j < n; ++j) {
-        const double new_low = std::min(low, p.width_m[j]), new_high = std::max(high, p.width_m[j]);
-        if (new_high - new_low > std::max(kCorridorToleranceM, 0.1 * new_low)) break;
-        low = new_low, high = new_high;
-      }
+      const size_t j = runs.EndFrom(static_cast<int>(i));
       const double length = p.arc_m[j - 1] - p.arc_m[i];
       if (length < kCorridorMinLengthM) {
         ++i;

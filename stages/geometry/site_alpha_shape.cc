@@ -51,6 +51,18 @@ struct SiteAlphaShape::Impl {
   Delaunay& shape;
   Face hint;
   int enclosed_regions = 0;  // found by FindEnclosedRegions
+  // Rooms: the id each face label (DetectRooms') has now, RenumberRooms
+  // composed here instead of rewriting every face; the faces take them when
+  // RoomOutlines walks them. And the rooms' areas, summed as DetectRooms
+  // labels (in face order), until the first renumbering.
+  std::vector<int> room_ids;
+  std::vector<double> room_areas;
+  bool areas_valid = false;
+
+  int RoomId(const Face& face) const {
+    const int label = face->info().room;
+    return label < 0 || label >= static_cast<int>(room_ids.size()) ? -1 : room_ids[label];
+  }
 
   // `triangulation` holds the points inserted as Alpha_shape_2's constructor
   // does (one range insert), so the triangulation of co-circular grid points
@@ -268,17 +280,60 @@ std::map<int, proto::Polygon> SiteAlphaShape::EnclosedRegionOutlines(const std::
 int SiteAlphaShape::DetectRooms(
     const std::function<bool(const Eigen::Vector2d&)>& inside_boundary) {
   Impl& impl = *impl_;
+  impl.room_ids.clear();
+  impl.room_areas.clear();
+  impl.areas_valid = false;
   if (!impl.HasFaces()) return 0;
-  return impl.LabelRegions(
-      [&](const Face& face) { return !Impl::Interior(face) && inside_boundary(Centroid(face)); },
-      [&](const Face& face, int i) { return !Impl::InComplex(face, i); }, &FaceInfo::room);
+  // LabelRegions' walk with the member test asked once per face (-2: not
+  // asked yet, -1: no room), and each face's area added to its room as the
+  // seed loop passes it: its label is final by then (set by an earlier walk,
+  // or now as a seed, or never), so the sums run in face order as RoomAreas'.
+  auto& shape = impl.shape;
+  for (Face face : shape.finite_face_handles()) face->info().room = -2;
+  auto member = [&](const Face& face) {
+    int& room = face->info().room;
+    if (room == -2) room = !Impl::Interior(face) && inside_boundary(Centroid(face)) ? -3 : -1;
+    return room == -3;
+  };
+  int count = 0;
+  std::deque<Face> queue;
+  for (Face seed : shape.finite_face_handles()) {
+    if (seed->info().room < 0 && member(seed)) {
+      seed->info().room = count;
+      impl.room_areas.push_back(0.0);
+      queue.push_back(seed);
+      while (!queue.empty()) {
+        const Face face = queue.front();
+        queue.pop_front();
+        for (int i = 0; i < 3; ++i) {
+          const Face next = face->neighbor(i);
+          if (shape.is_infinite(next) || next->info().room >= 0) continue;
+          if (Impl::InComplex(face, i) || !member(next)) continue;
+          next->info().room = count;
+          queue.push_back(next);
+        }
+      }
+      ++count;
+    }
+    if (seed->info().room < 0) {
+      seed->info().room = -1;
+    } else {
+      impl.room_areas[seed->info().room] += TriangleArea(seed);
+    }
+  }
+  impl.room_ids.resize(count);
+  for (int room = 0; room < count; ++room) impl.room_ids[room] = room;
+  impl.areas_valid = true;
+  return count;
 }
 
 std::vector<double> SiteAlphaShape::RoomAreas() {
+  Impl& impl = *impl_;
+  if (impl.areas_valid) return impl.room_areas;
   std::vector<double> areas;
-  if (!impl_->HasFaces()) return areas;
-  for (Face face : impl_->shape.finite_face_handles()) {
-    const int room = face->info().room;
+  if (!impl.HasFaces()) return areas;
+  for (Face face : impl.shape.finite_face_handles()) {
+    const int room = impl.RoomId(face);
     if (room < 0) continue;
     if (room >= static_cast<int>(areas.size())) areas.resize(room + 1, 0.0);
     areas[room] += TriangleArea(face);
@@ -289,13 +344,13 @@ std::vector<double> SiteAlphaShape::RoomAreas() {
 int SiteAlphaShape::RoomAt(const Eigen::Vector2d& point) {
   if (!impl_->HasFaces()) return -1;
   const Face face = impl_->Locate(point);
-  return impl_->shape.is_infinite(face) ? -1 : face->info().room;
+  return impl_->shape.is_infinite(face) ? -1 : impl_->RoomId(face);
 }
 
 void SiteAlphaShape::RenumberRooms(const std::vector<int>& new_ids) {
-  if (!impl_->HasFaces()) return;
-  for (Face face : impl_->shape.finite_face_handles()) {
-    int& room = face->info().room;
+  Impl& impl = *impl_;
+  impl.areas_valid = false;
+  for (int& room : impl.room_ids) {
     if (room >= 0) room = room < static_cast<int>(new_ids.size()) ? new_ids[room] : -1;
   }
 }
@@ -303,6 +358,11 @@ void SiteAlphaShape::RenumberRooms(const std::vector<int>& new_ids) {
 std::vector<proto::Polygon> SiteAlphaShape::RoomOutlines() {
   std::vector<proto::Polygon> outlines;
   if (!impl_->HasFaces()) return outlines;
+  // The faces take their rooms' ids now (the labels stay ids from here on).
+  for (Face face : impl_->shape.finite_face_handles()) face->info().room = impl_->RoomId(face);
+  for (size_t room = 0; room < impl_->room_ids.size(); ++room) {
+    impl_->room_ids[room] = static_cast<int>(room);
+  }
   const auto rings = impl_->RegionRings(&FaceInfo::room);
   for (const auto& [room, room_rings] : rings) {
     if (room >= static_cast<int>(outlines.size())) outlines.resize(room + 1);

@@ -1,5 +1,6 @@
 // SiteAlphaShape's outlines of several enclosed regions in one pass against
-// one region at a time; the constructor that takes the sites over.
+// one region at a time; the constructor that takes the sites over; rooms
+// renumbered (twice, as ag-cut does) against a shape left as labelled.
 #include "stages/geometry/site_alpha_shape.h"
 
 #include <google/protobuf/util/message_differencer.h>
@@ -64,6 +65,55 @@ TEST(SiteAlphaShapeTest, TakingTheSitesOverFreesThemAndGivesTheSameShape) {
     EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(
         taken.EnclosedRegionOutline(region), copied.EnclosedRegionOutline(region)))
         << "region " << region;
+  }
+}
+
+TEST(SiteAlphaShapeTest, RenumberedRoomsKeepTheirFacesAreasAndOutlines) {
+  PointList sites;
+  AddBox(0, 0, 20, 12, &sites);
+  AddBox(30, 0, 10, 25, &sites);
+  AddBox(50, 0, 14, 14, &sites);
+  AddBox(3, 3, 4, 4, &sites);
+  // Faces whose centroid is right of x = 45 are no room.
+  auto left_part = [](const Eigen::Vector2d& p) { return p.x() < 45; };
+  SiteAlphaShape shape(sites, 1.5), as_labelled(sites, 1.5);
+  const int count = shape.DetectRooms(left_part);
+  ASSERT_EQ(as_labelled.DetectRooms(left_part), count);
+  ASSERT_GE(count, 2);
+  const std::vector<double> areas = shape.RoomAreas();
+  ASSERT_EQ(areas.size(), static_cast<size_t>(count));
+  std::vector<Eigen::Vector2d> probes;
+  std::vector<int> labelled;
+  for (double x = 0.3; x < 64; x += 0.7) {
+    for (double y = 0.2; y < 25; y += 0.9) {
+      probes.emplace_back(x, y);
+      labelled.push_back(as_labelled.RoomAt(probes.back()));
+    }
+  }
+  // Drop room 0 and reverse the others, then swap the first two kept.
+  std::vector<int> first(count, -1), second(count - 1);
+  for (int room = 1; room < count; ++room) first[room] = count - 1 - room;
+  for (int id = 0; id < count - 1; ++id) second[id] = id < 2 && count > 2 ? 1 - id : id;
+  shape.RenumberRooms(first);
+  auto new_id = [&](int room) {
+    return room < 0 ? -1 : first[room] < 0 ? -1 : second[first[room]];
+  };
+  const std::vector<double> after_first = shape.RoomAreas();
+  for (int room = 1; room < count; ++room) EXPECT_EQ(after_first[first[room]], areas[room]);
+  shape.RenumberRooms(second);
+  for (size_t k = 0; k < probes.size(); ++k) {
+    EXPECT_EQ(shape.RoomAt(probes[k]), new_id(labelled[k])) << probes[k].transpose();
+  }
+  const std::vector<proto::Polygon> outlines = shape.RoomOutlines();
+  const std::vector<proto::Polygon> labelled_outlines = as_labelled.RoomOutlines();
+  ASSERT_EQ(outlines.size(), static_cast<size_t>(count - 1));
+  for (int room = 1; room < count; ++room) {
+    EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(outlines[new_id(room)],
+                                                                   labelled_outlines[room]))
+        << "room " << room;
+  }
+  for (size_t k = 0; k < probes.size(); ++k) {
+    EXPECT_EQ(shape.RoomAt(probes[k]), new_id(labelled[k])) << "after the outlines";
   }
 }
 
