@@ -11,6 +11,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <Eigen/Core>
+#include <cstdint>
 #include <vector>
 
 #include "stages/geometry/site_triangulation.h"
@@ -34,14 +35,67 @@ struct SiteFaceInfo {
 namespace site_cgal {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_2;
+
+// Epick with an integer in-circle test for sites on the half-pixel grid
+// (cell centres): the same exact sign as Epick's filtered predicate, without
+// its interval-arithmetic fallback, which every co-circular quadruple of grid
+// points (most of a map's) takes. Every other predicate and construction is
+// Epick's. `on_half_grid` holds only when every point ever tested is a
+// multiple of 0.5 within +-kHalfGridLimit: set it only for a triangulation of
+// such sites (in-circle tests see its vertices and inserted points only).
+struct Traits : Kernel {
+  static constexpr double kHalfGridLimit = 33554432.0;  // 2^25: int64 minors, int128 products
+  bool on_half_grid = false;
+
+  Traits() = default;
+  explicit Traits(bool half_grid) : on_half_grid(half_grid) {}
+
+  struct Side_of_oriented_circle_2 {
+    using result_type = CGAL::Oriented_side;
+    bool on_half_grid;
+    CGAL::Oriented_side operator()(const Point& p, const Point& q, const Point& r,
+                                   const Point& t) const {
+      if (!on_half_grid) return Kernel().side_of_oriented_circle_2_object()(p, q, r, t);
+      // Epick's determinant (side_of_oriented_circleC2) on doubled, integral
+      // coordinates: the sign is the same (scaled by 2^4).
+      auto twice = [](double v) { return static_cast<int64_t>(2 * v); };
+      const int64_t px = twice(p.x()), py = twice(p.y());
+      const int64_t qpx = twice(q.x()) - px, qpy = twice(q.y()) - py;
+      const int64_t rpx = twice(r.x()) - px, rpy = twice(r.y()) - py;
+      const int64_t tpx = twice(t.x()) - px, tpy = twice(t.y()) - py;
+      const int64_t a = qpx * tpy - qpy * tpx;
+      const int64_t b = tpx * (tpx - qpx) + tpy * (tpy - qpy);
+      const int64_t c = qpx * rpy - qpy * rpx;
+      const int64_t d = rpx * (rpx - qpx) + rpy * (rpy - qpy);
+      const __int128 left = static_cast<__int128>(a) * d, right = static_cast<__int128>(b) * c;
+      return left > right ? CGAL::ON_POSITIVE_SIDE
+                          : (left < right ? CGAL::ON_NEGATIVE_SIDE : CGAL::ON_ORIENTED_BOUNDARY);
+    }
+  };
+  Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const { return {on_half_grid}; }
+};
+
+}  // namespace site_cgal
+}  // namespace areagraph
+
+// Locate as with Epick (an inexact walk, then the exact one from where it
+// stopped): which face a walk returns for a point on an edge depends on it.
+template <>
+struct CGAL::Triangulation_structural_filtering_traits<areagraph::site_cgal::Traits> {
+  using Use_structural_filtering_tag = CGAL::Tag_true;
+};
+
+namespace areagraph {
+namespace site_cgal {
 // Vertices carry their index in the site list (set by TriangulateIndexedSites).
-using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-using FaceBase = CGAL::Triangulation_face_base_with_info_2<SiteFaceInfo, Kernel>;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Traits>;
+using FaceBase = CGAL::Triangulation_face_base_with_info_2<SiteFaceInfo, Traits>;
 using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
-using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+using Delaunay = CGAL::Delaunay_triangulation_2<Traits, Tds>;
 }  // namespace site_cgal
 
 struct SiteTriangulation {
+  explicit SiteTriangulation(bool on_half_grid) : dt(site_cgal::Traits(on_half_grid)) {}
   site_cgal::Delaunay dt;
 };
 
