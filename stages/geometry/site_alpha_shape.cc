@@ -1,7 +1,7 @@
 #include "stages/geometry/site_alpha_shape.h"
 
-#include <deque>
 #include <map>
+#include <vector>
 
 #include "stages/geometry/site_triangulation_cgal.h"
 
@@ -108,23 +108,26 @@ struct SiteAlphaShape::Impl {
 
   // Labels edge-connected groups of `member` faces, crossing only edges that
   // `connects` accepts; `label` selects the field to write. Returns the count.
-  int LabelRegions(const std::function<bool(const Face&)>& member,
-                   const std::function<bool(const Face&, int)>& connects, int FaceInfo::*label) {
+  // Labels follow the seeds' (face) order; within a group the order of the
+  // search does not matter, so it runs depth first on a reused stack.
+  template <typename Member, typename Connects>
+  int LabelRegions(const Member& member, const Connects& connects, int FaceInfo::*label) {
     int count = 0;
     for (Face face : shape.finite_face_handles()) face->info().*label = -1;
+    std::vector<Face> stack;
     for (Face seed : shape.finite_face_handles()) {
       if (seed->info().*label >= 0 || !member(seed)) continue;
       seed->info().*label = count;
-      std::deque<Face> queue{seed};
-      while (!queue.empty()) {
-        const Face face = queue.front();
-        queue.pop_front();
+      stack.push_back(seed);
+      while (!stack.empty()) {
+        const Face face = stack.back();
+        stack.pop_back();
         for (int i = 0; i < 3; ++i) {
           const Face next = face->neighbor(i);
           if (shape.is_infinite(next) || next->info().*label >= 0) continue;
           if (!connects(face, i) || !member(next)) continue;
           next->info().*label = count;
-          queue.push_back(next);
+          stack.push_back(next);
         }
       }
       ++count;
@@ -210,19 +213,20 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
   // Outside: what infinity reaches without crossing the alpha complex. Edges
   // of the complex (singular ones too) are walls, so a thin wall whose
   // sliver triangles are wider than alpha still closes the map.
-  std::deque<Face> queue;
+  // (Only the set reached matters, so the search runs depth first.)
+  std::vector<Face> stack;
   for (Face face : impl.shape.all_face_handles()) {
     face->info().outside = impl.shape.is_infinite(face);
-    if (face->info().outside) queue.push_back(face);
+    if (face->info().outside) stack.push_back(face);
   }
-  while (!queue.empty()) {
-    const Face face = queue.front();
-    queue.pop_front();
+  while (!stack.empty()) {
+    const Face face = stack.back();
+    stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       const Face next = face->neighbor(i);
       if (next->info().outside || Impl::InComplex(face, i)) continue;
       next->info().outside = true;
-      queue.push_back(next);
+      stack.push_back(next);
     }
   }
   impl.enclosed_regions =
