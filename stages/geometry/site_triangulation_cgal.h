@@ -19,7 +19,9 @@
 namespace areagraph {
 
 // What the users of a site triangulation write on its faces: the Voronoi
-// builder's face number, and SiteAlphaShape's labels (`interior` and
+// builder's face number (once the diagram is built, the Voronoi vertex at
+// the face's circumcentre, from which SiteAlphaShape::EnclosedRegionAt walks),
+// and SiteAlphaShape's labels (`interior` and
 // `in_complex`, bit i for edge i, are the face's and its edges' places in the
 // alpha complex; `walked` marks boundary edges already put in a ring).
 struct SiteFaceInfo {

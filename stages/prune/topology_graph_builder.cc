@@ -107,7 +107,7 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
   for (int v = 0; v < vertex_count; ++v) {
     const Eigen::Vector2d& p = diagram.positions[v];
     if (!grid.FreeAt(p)) continue;
-    region[v] = boundary_shape->EnclosedRegionAt(p);
+    region[v] = boundary_shape->EnclosedRegionAt(p, v);
     keep[v] = region[v] >= 0;
   }
 
