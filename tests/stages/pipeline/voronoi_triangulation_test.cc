@@ -19,17 +19,29 @@
 namespace areagraph::testing {
 namespace {
 
+// A random office plan through voronoi, with the triangulation it kept.
+struct VoronoiRun {
+  proto::CleanedMap map;
+  PointList sites;
+  proto::VoronoiDiagram diagram;
+  SiteTriangulationPtr kept;
+
+  explicit VoronoiRun(uint32_t seed)
+      : map(CleanedMapFromImage(floorplan::RandomOfficePlan(seed).image())),
+        sites(ObstacleSites(map.cells(), map.frame().width_px(), map.frame().height_px())),
+        diagram(ComputeVoronoiStage(map, proto::VoronoiOptions())),
+        kept(TakeSiteTriangulation(sites)) {}
+};
+
 TEST(VoronoiTriangulationTest, PruneOnVoronoisTriangulationGivesTheSameGraph) {
   for (const uint32_t seed : {3u, 11u}) {
-    const proto::CleanedMap map = CleanedMapFromImage(floorplan::RandomOfficePlan(seed).image());
+    VoronoiRun run(seed);
     const proto::PipelineOptions options;
-    const PointList sites =
-        ObstacleSites(map.cells(), map.frame().width_px(), map.frame().height_px());
-
-    const proto::VoronoiDiagram diagram = ComputeVoronoiStage(map, options.voronoi());
-    SiteTriangulationPtr kept = TakeSiteTriangulation(sites);
-    ASSERT_NE(kept, nullptr) << "voronoi kept nothing for seed " << seed;
-    KeepSiteTriangulation(std::move(kept), sites);
+    const proto::CleanedMap& map = run.map;
+    const PointList& sites = run.sites;
+    const proto::VoronoiDiagram& diagram = run.diagram;
+    ASSERT_NE(run.kept, nullptr) << "voronoi kept nothing for seed " << seed;
+    KeepSiteTriangulation(std::move(run.kept), sites);
     const proto::TopologyGraph on_voronois = BuildTopologyGraph(diagram, map, options.prune());
     EXPECT_EQ(TakeSiteTriangulation(sites), nullptr) << "prune left it kept";
 
@@ -46,16 +58,14 @@ TEST(VoronoiTriangulationTest, PruneOnVoronoisTriangulationGivesTheSameGraph) {
 // walks' from one vertex to the next.
 TEST(VoronoiTriangulationTest, RegionsByVoronoiVertexAreThePlainWalksOnes) {
   for (const uint32_t seed : {3u, 11u, 19u}) {
-    const proto::CleanedMap map = CleanedMapFromImage(floorplan::RandomOfficePlan(seed).image());
+    VoronoiRun run(seed);
     const proto::PipelineOptions options;
-    const PointList sites =
-        ObstacleSites(map.cells(), map.frame().width_px(), map.frame().height_px());
-    const proto::VoronoiDiagram diagram = ComputeVoronoiStage(map, options.voronoi());
-    SiteTriangulationPtr kept = TakeSiteTriangulation(sites);
-    ASSERT_NE(kept, nullptr);
-    const double alpha_px = options.prune().boundary_alpha_radius_m() / map.frame().resolution_m();
-    SiteAlphaShape by_vertex(std::move(kept), alpha_px);
-    SiteAlphaShape plain(sites, alpha_px);
+    const proto::VoronoiDiagram& diagram = run.diagram;
+    ASSERT_NE(run.kept, nullptr);
+    const double alpha_px =
+        options.prune().boundary_alpha_radius_m() / run.map.frame().resolution_m();
+    SiteAlphaShape by_vertex(std::move(run.kept), alpha_px);
+    SiteAlphaShape plain(run.sites, alpha_px);
     ASSERT_EQ(by_vertex.FindEnclosedRegions(), plain.FindEnclosedRegions());
     // Grid maps' vertices lie on Delaunay edges often (the centre of a
     // square of sites is on its diagonal), so the put-off walks run.
