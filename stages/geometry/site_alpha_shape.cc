@@ -1,7 +1,7 @@
 #include "stages/geometry/site_alpha_shape.h"
 
-#include <deque>
 #include <map>
+#include <vector>
 
 #include "stages/geometry/site_triangulation_cgal.h"
 
@@ -49,7 +49,17 @@ proto::Ring ToProtoRing(const PointList& points) {
 struct SiteAlphaShape::Impl {
   SiteTriangulationPtr triangulation;
   Delaunay& shape;
+  // Where the last walk (RoomAt, EnclosedRegionAt) ended: the next one
+  // starts there, and for a point on an edge or vertex the face a walk
+  // returns depends on where it starts.
   Face hint;
+  // Points of EnclosedRegionAt whose walk from `hint` was put off (their
+  // answer did not depend on it); run before `hint` is next needed.
+  std::vector<Kernel::Point_2> unwalked;
+  // A face of each Voronoi vertex (face info's `number`, set by the Voronoi
+  // builder); built on first use, empty when the faces name none.
+  std::vector<Face> vertex_face;
+  bool vertex_faces_built = false;
   int enclosed_regions = 0;  // found by FindEnclosedRegions
   // Rooms: the id each face label (DetectRooms') has now, RenumberRooms
   // composed here instead of rewriting every face; the faces take them when
@@ -120,23 +130,26 @@ struct SiteAlphaShape::Impl {
 
   // Labels edge-connected groups of `member` faces, crossing only edges that
   // `connects` accepts; `label` selects the field to write. Returns the count.
-  int LabelRegions(const std::function<bool(const Face&)>& member,
-                   const std::function<bool(const Face&, int)>& connects, int FaceInfo::*label) {
+  // Labels follow the seeds' (face) order; within a group the order of the
+  // search does not matter, so it runs depth first on a reused stack.
+  template <typename Member, typename Connects>
+  int LabelRegions(const Member& member, const Connects& connects, int FaceInfo::*label) {
     int count = 0;
     for (Face face : shape.finite_face_handles()) face->info().*label = -1;
+    std::vector<Face> stack;
     for (Face seed : shape.finite_face_handles()) {
       if (seed->info().*label >= 0 || !member(seed)) continue;
       seed->info().*label = count;
-      std::deque<Face> queue{seed};
-      while (!queue.empty()) {
-        const Face face = queue.front();
-        queue.pop_front();
+      stack.push_back(seed);
+      while (!stack.empty()) {
+        const Face face = stack.back();
+        stack.pop_back();
         for (int i = 0; i < 3; ++i) {
           const Face next = face->neighbor(i);
           if (shape.is_infinite(next) || next->info().*label >= 0) continue;
           if (!connects(face, i) || !member(next)) continue;
           next->info().*label = count;
-          queue.push_back(next);
+          stack.push_back(next);
         }
       }
       ++count;
@@ -197,8 +210,36 @@ struct SiteAlphaShape::Impl {
   }
 
   Face Locate(const Eigen::Vector2d& point) {
+    CatchUpHint();
     hint = shape.locate(Kernel::Point_2(point.x(), point.y()), hint);
     return hint;
+  }
+
+  // Runs the walks EnclosedRegionAt put off, so that `hint` is where the
+  // plain walks would have left it.
+  void CatchUpHint() {
+    for (const Kernel::Point_2& point : unwalked) hint = shape.locate(point, hint);
+    unwalked.clear();
+  }
+
+  static int FilledRegion(const Delaunay& shape, const Face& face) {
+    return shape.is_infinite(face) ? -1 : face->info().filled_region;
+  }
+
+  // The face of Voronoi vertex `vertex`, or null.
+  Face VertexFace(int vertex) {
+    if (!vertex_faces_built) {
+      vertex_faces_built = true;
+      int count = 0;
+      for (Face face : shape.finite_face_handles())
+        count = std::max(count, face->info().number + 1);
+      vertex_face.resize(count);
+      for (Face face : shape.finite_face_handles()) {
+        if (face->info().number >= 0) vertex_face[face->info().number] = face;
+      }
+    }
+    return vertex >= 0 && vertex < static_cast<int>(vertex_face.size()) ? vertex_face[vertex]
+                                                                        : Face();
   }
 };
 
@@ -222,19 +263,20 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
   // Outside: what infinity reaches without crossing the alpha complex. Edges
   // of the complex (singular ones too) are walls, so a thin wall whose
   // sliver triangles are wider than alpha still closes the map.
-  std::deque<Face> queue;
+  // (Only the set reached matters, so the search runs depth first.)
+  std::vector<Face> stack;
   for (Face face : impl.shape.all_face_handles()) {
     face->info().outside = impl.shape.is_infinite(face);
-    if (face->info().outside) queue.push_back(face);
+    if (face->info().outside) stack.push_back(face);
   }
-  while (!queue.empty()) {
-    const Face face = queue.front();
-    queue.pop_front();
+  while (!stack.empty()) {
+    const Face face = stack.back();
+    stack.pop_back();
     for (int i = 0; i < 3; ++i) {
       const Face next = face->neighbor(i);
       if (next->info().outside || Impl::InComplex(face, i)) continue;
       next->info().outside = true;
-      queue.push_back(next);
+      stack.push_back(next);
     }
   }
   impl.enclosed_regions =
@@ -249,8 +291,70 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
 
 int SiteAlphaShape::EnclosedRegionAt(const Eigen::Vector2d& point) {
   if (!impl_->HasFaces() || impl_->enclosed_regions == 0) return -1;
-  const Face face = impl_->Locate(point);
-  return impl_->shape.is_infinite(face) ? -1 : face->info().filled_region;
+  return Impl::FilledRegion(impl_->shape, impl_->Locate(point));
+}
+
+int SiteAlphaShape::EnclosedRegionAt(const Eigen::Vector2d& point, int vertex) {
+  Impl& impl = *impl_;
+  if (!impl.HasFaces() || impl.enclosed_regions == 0) return -1;
+  const Face start = impl.VertexFace(vertex);
+  if (start == Face()) return EnclosedRegionAt(point);
+  // The answer is that of the plain walk from `hint` (where the last one
+  // ended). A point inside a face has one answer, however the walk starts,
+  // so the short walk from the vertex's own face gives it. A point on an
+  // edge or vertex (or outside the hull) gets the face where the plain walk
+  // stops; when all the faces it could stop in agree, that walk (needed only
+  // as the next start) is put off, else it runs, after those put off before.
+  const Kernel::Point_2 at(point.x(), point.y());
+  Face found = impl.shape.inexact_locate(at, start);
+  Delaunay::Locate_type type = Delaunay::OUTSIDE_CONVEX_HULL;
+  int index = 4;
+  if (!impl.shape.is_infinite(found)) {
+    // Where `at` lies in the face the inexact walk found, exactly (as the
+    // exact walk classifies it); a negative side means it is not there.
+    const auto orientation = impl.shape.geom_traits().orientation_2_object();
+    const Kernel::Point_2& a = found->vertex(0)->point();
+    const Kernel::Point_2& b = found->vertex(1)->point();
+    const Kernel::Point_2& c = found->vertex(2)->point();
+    const CGAL::Orientation o0 = orientation(a, b, at), o1 = orientation(b, c, at),
+                            o2 = orientation(c, a, at);
+    if (o0 == CGAL::NEGATIVE || o1 == CGAL::NEGATIVE || o2 == CGAL::NEGATIVE) {
+      found = impl.shape.locate(at, type, index, found);
+    } else {
+      const int zeros = (o0 == CGAL::ZERO) + (o1 == CGAL::ZERO) + (o2 == CGAL::ZERO);
+      if (zeros == 0) {
+        type = Delaunay::FACE;
+      } else if (zeros == 1) {
+        type = Delaunay::EDGE;
+        index = o0 == CGAL::ZERO ? 2 : (o1 == CGAL::ZERO ? 0 : 1);
+      } else {
+        type = Delaunay::VERTEX;
+        index = o0 != CGAL::ZERO ? 2 : (o1 != CGAL::ZERO ? 0 : 1);
+      }
+    }
+  } else {
+    found = impl.shape.locate(at, type, index, found);
+  }
+  if (type == Delaunay::FACE) {
+    impl.unwalked.clear();
+    impl.hint = found;
+    return found->info().filled_region;
+  }
+  const int region = Impl::FilledRegion(impl.shape, found);
+  bool agree = true;
+  if (type == Delaunay::EDGE) {
+    agree = Impl::FilledRegion(impl.shape, found->neighbor(index)) == region;
+  } else if (type == Delaunay::VERTEX) {
+    auto around = impl.shape.incident_faces(found->vertex(index)), end = around;
+    do {
+      agree = Impl::FilledRegion(impl.shape, around) == region;
+    } while (agree && ++around != end);
+  }
+  if (agree) {
+    impl.unwalked.push_back(at);
+    return region;
+  }
+  return Impl::FilledRegion(impl.shape, impl.Locate(point));
 }
 
 proto::Polygon SiteAlphaShape::EnclosedRegionOutline(int region) {

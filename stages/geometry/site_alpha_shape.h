@@ -42,6 +42,11 @@ class SiteAlphaShape {
   std::vector<double> FindEnclosedRegions();
   // The region (of FindEnclosedRegions) containing `point`, or -1.
   int EnclosedRegionAt(const Eigen::Vector2d& point);
+  // The same for Voronoi vertex `vertex` at `point` of the diagram this
+  // triangulation is the dual of (BuildVoronoiDiagram's): the search starts
+  // at the vertex's Delaunay face when the triangulation is voronoi's, and
+  // the answer is always EnclosedRegionAt's.
+  int EnclosedRegionAt(const Eigen::Vector2d& point, int vertex);
   // The outer ring of a region (rooms wider than alpha are inside it, not
   // holes); empty for an unknown region.
   proto::Polygon EnclosedRegionOutline(int region);

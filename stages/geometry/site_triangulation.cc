@@ -1,5 +1,6 @@
 #include "stages/geometry/site_triangulation.h"
 
+#include <cmath>
 #include <mutex>
 #include <utility>
 
@@ -20,6 +21,20 @@ KeptTriangulation& Kept() {
   return kept;
 }
 
+// Whether every site is a multiple of 0.5 within the integer in-circle
+// test's range (site_cgal::Traits).
+bool OnHalfGrid(const std::vector<Eigen::Vector2d>& sites) {
+  for (const Eigen::Vector2d& site : sites) {
+    for (const double value : {site.x(), site.y()}) {
+      const double twice = 2 * value;
+      if (!(std::abs(value) <= site_cgal::Traits::kHalfGridLimit) || twice != std::floor(twice)) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 std::vector<site_cgal::Point> KernelPoints(const std::vector<Eigen::Vector2d>& sites) {
   std::vector<site_cgal::Point> points;
   points.reserve(sites.size());
@@ -28,8 +43,8 @@ std::vector<site_cgal::Point> KernelPoints(const std::vector<Eigen::Vector2d>& s
 }
 
 // One spatially sorted range insert (as Alpha_shape_2's constructor does).
-SiteTriangulationPtr TriangulatePoints(std::vector<site_cgal::Point> points) {
-  SiteTriangulationPtr triangulation(new SiteTriangulation);
+SiteTriangulationPtr TriangulatePoints(std::vector<site_cgal::Point> points, bool on_half_grid) {
+  SiteTriangulationPtr triangulation(new SiteTriangulation(on_half_grid));
   triangulation->dt.insert(points.begin(), points.end());
   return triangulation;
 }
@@ -52,19 +67,20 @@ SiteTriangulationPtr TriangulateIndexedSites(const std::vector<Eigen::Vector2d>&
   for (size_t i = 0; i < sites.size(); ++i) {
     indexed.emplace_back(site_cgal::Point(sites[i].x(), sites[i].y()), static_cast<int>(i));
   }
-  SiteTriangulationPtr triangulation(new SiteTriangulation);
+  SiteTriangulationPtr triangulation(new SiteTriangulation(OnHalfGrid(sites)));
   triangulation->dt.insert(indexed.begin(), indexed.end());
   return triangulation;
 }
 
 SiteTriangulationPtr TriangulateSites(const std::vector<Eigen::Vector2d>& sites) {
-  return TriangulatePoints(KernelPoints(sites));
+  return TriangulatePoints(KernelPoints(sites), OnHalfGrid(sites));
 }
 
 SiteTriangulationPtr TriangulateSites(std::vector<Eigen::Vector2d>&& sites) {
   std::vector<site_cgal::Point> points = KernelPoints(sites);
+  const bool on_half_grid = OnHalfGrid(sites);
   std::vector<Eigen::Vector2d>().swap(sites);
-  return TriangulatePoints(std::move(points));
+  return TriangulatePoints(std::move(points), on_half_grid);
 }
 
 void KeepSiteTriangulation(SiteTriangulationPtr triangulation, std::vector<Eigen::Vector2d> sites) {

@@ -92,53 +92,134 @@ void ChainGraph::CompactEdges() {
       edges.end());
 }
 
-void ChainGraph::JoinDegreeTwoChains() {
-  CompactEdges();
-  const std::vector<std::vector<Incidence>> incidences = Incidences();
+namespace {
+
+// The maximal paths of JoinDegreeTwoChains over edges (source[e], target[e]):
+// each path's edge ends in walking order (at_target: the edge is walked
+// backwards), the paths in `starts`. Sets forced_junction on one vertex of
+// each pure cycle. Edge ends at a vertex are in edge order (source end
+// first), as Incidences gives them.
+struct DegreeTwoWalks {
+  std::vector<Incidence> steps;
+  std::vector<int> starts;
+};
+
+DegreeTwoWalks WalkDegreeTwo(const std::vector<int>& source, const std::vector<int>& target,
+                             std::vector<ChainVertex>& vertices) {
+  const int vertex_count = static_cast<int>(vertices.size());
+  const int edge_count = static_cast<int>(source.size());
+  // Incidences in one array, by vertex (offsets), in edge order.
+  std::vector<int> offset(vertex_count + 1, 0);
+  for (int e = 0; e < edge_count; ++e) ++offset[source[e] + 1], ++offset[target[e] + 1];
+  for (int v = 0; v < vertex_count; ++v) offset[v + 1] += offset[v];
+  std::vector<Incidence> at(offset.back());
+  std::vector<int> fill(offset.begin(), offset.end() - 1);
+  for (int e = 0; e < edge_count; ++e) {
+    at[fill[source[e]]++] = {e, false};
+    at[fill[target[e]]++] = {e, true};
+  }
   auto is_anchor = [&](int v) {
-    const auto& at = incidences[v];
     // A vertex whose two ends belong to one edge carries a loop: keep it.
-    return at.size() != 2 || vertices[v].forced_junction || at[0].edge == at[1].edge;
+    return offset[v + 1] - offset[v] != 2 || vertices[v].forced_junction ||
+           at[offset[v]].edge == at[offset[v] + 1].edge;
   };
 
-  std::vector<bool> used(edges.size(), false);
-  std::vector<ChainEdge> joined;
-  // Each edge enters one chain and `edges` is replaced at the end, so the
-  // walk turns and moves the edges themselves instead of copying them.
-  auto take = [&](const Incidence& end) -> ChainEdge& {
-    used[end.edge] = true;
-    if (end.at_target) edges[end.edge].Reverse();
-    return edges[end.edge];
-  };
+  DegreeTwoWalks walks;
+  walks.steps.reserve(edge_count);
+  std::vector<char> used(edge_count, 0);
   auto walk = [&](int start, Incidence first) {
-    ChainEdge chain = std::move(take(first));
-    int came_by = first.edge;
-    int v = chain.target;
-    while (v != start && !is_anchor(v)) {
-      const auto& at = incidences[v];
-      const Incidence next = at[0].edge == came_by ? at[1] : at[0];
+    walks.starts.push_back(static_cast<int>(walks.steps.size()));
+    Incidence end = first;
+    for (;;) {
+      used[end.edge] = 1;
+      walks.steps.push_back(end);
+      const int v = end.at_target ? source[end.edge] : target[end.edge];
+      if (v == start || is_anchor(v)) break;
+      const Incidence next = at[offset[v]].edge == end.edge ? at[offset[v] + 1] : at[offset[v]];
       if (used[next.edge]) break;
-      chain.Append(std::move(take(next)));
-      came_by = next.edge;
-      v = chain.target;
+      end = next;
     }
-    joined.push_back(std::move(chain));
   };
-
-  for (size_t v = 0; v < vertices.size(); ++v) {
-    if (incidences[v].empty() || !is_anchor(static_cast<int>(v))) continue;
-    for (const Incidence& incidence : incidences[v]) {
-      if (!used[incidence.edge]) walk(static_cast<int>(v), incidence);
+  for (int v = 0; v < vertex_count; ++v) {
+    if (offset[v] == offset[v + 1] || !is_anchor(v)) continue;
+    for (int k = offset[v]; k < offset[v + 1]; ++k) {
+      if (!used[at[k].edge]) walk(v, at[k]);
     }
   }
   // What is left are pure cycles through vertices of degree 2.
-  for (size_t e = 0; e < edges.size(); ++e) {
+  for (int e = 0; e < edge_count; ++e) {
     if (used[e]) continue;
-    const int start = edges[e].source;
-    vertices[start].forced_junction = true;
-    walk(start, Incidence{static_cast<int>(e), false});
+    vertices[source[e]].forced_junction = true;
+    walk(source[e], Incidence{e, false});
+  }
+  walks.starts.push_back(static_cast<int>(walks.steps.size()));
+  return walks;
+}
+
+}  // namespace
+
+void ChainGraph::JoinDegreeTwoChains() {
+  CompactEdges();
+  std::vector<int> source(edges.size()), target(edges.size());
+  for (size_t e = 0; e < edges.size(); ++e)
+    source[e] = edges[e].source, target[e] = edges[e].target;
+  const DegreeTwoWalks walks = WalkDegreeTwo(source, target, vertices);
+  // Each edge enters one chain and `edges` is replaced at the end, so the
+  // chains turn and move the edges themselves instead of copying them.
+  auto take = [&](const Incidence& end) -> ChainEdge& {
+    if (end.at_target) edges[end.edge].Reverse();
+    return edges[end.edge];
+  };
+  std::vector<ChainEdge> joined;
+  joined.reserve(walks.starts.size() - 1);
+  for (size_t w = 0; w + 1 < walks.starts.size(); ++w) {
+    ChainEdge chain = std::move(take(walks.steps[walks.starts[w]]));
+    for (int k = walks.starts[w] + 1; k < walks.starts[w + 1]; ++k) {
+      chain.Append(std::move(take(walks.steps[k])));
+    }
+    joined.push_back(std::move(chain));
   }
   edges = std::move(joined);
+}
+
+void ChainGraph::JoinSegments(const std::vector<ChainSegment>& segments, const PointList& sites) {
+  std::vector<int> source(segments.size()), target(segments.size());
+  for (size_t e = 0; e < segments.size(); ++e) {
+    source[e] = segments[e].source, target[e] = segments[e].target;
+  }
+  const DegreeTwoWalks walks = WalkDegreeTwo(source, target, vertices);
+  edges.clear();
+  edges.reserve(walks.starts.size() - 1);
+  for (size_t w = 0; w + 1 < walks.starts.size(); ++w) {
+    const int first = walks.starts[w], end = walks.starts[w + 1];
+    const size_t length = static_cast<size_t>(end - first);
+    ChainEdge chain;
+    chain.path.reserve(length + 1);
+    chain.clearance_px.reserve(length + 1);
+    chain.left_sites.reserve(length);
+    chain.right_sites.reserve(length);
+    for (int k = first; k < end; ++k) {
+      const ChainSegment& segment = segments[walks.steps[k].edge];
+      // Walked backwards, the segment's sides swap (ChainEdge::Reverse).
+      const bool back = walks.steps[k].at_target;
+      const int from = back ? segment.target : segment.source;
+      const int to = back ? segment.source : segment.target;
+      if (k == first) {
+        chain.source = from;
+        chain.path.push_back(vertices[from].position);
+        chain.clearance_px.push_back(vertices[from].clearance_px);
+        chain.min_clearance_px = segment.clearance_px;
+      } else {
+        chain.min_clearance_px = std::min(chain.min_clearance_px, segment.clearance_px);
+      }
+      chain.path.push_back(vertices[to].position);
+      chain.clearance_px.push_back(vertices[to].clearance_px);
+      chain.left_sites.push_back(sites[back ? segment.right_site : segment.left_site]);
+      chain.right_sites.push_back(sites[back ? segment.left_site : segment.right_site]);
+      chain.target = to;
+    }
+    edges.push_back(std::move(chain));
+  }
 }
 
 PartSelection ChainGraph::KeepParts(const std::function<int(int vertex)>& part_of,

@@ -55,6 +55,17 @@ struct Incidence {
   bool at_target = false;
 };
 
+// One Voronoi edge between two chain vertices, before chains are joined:
+// the sites on its left and right (indices into a site list) and its
+// clearance.
+struct ChainSegment {
+  int source = -1;
+  int target = -1;
+  int left_site = -1;
+  int right_site = -1;
+  double clearance_px = 0;
+};
+
 // What ChainGraph::KeepParts kept and dropped.
 struct PartSelection {
   // Groups kept: one per part of the free space kept, plus the long groups
@@ -77,6 +88,10 @@ class ChainGraph {
   // Replaces every maximal path through vertices of degree 2 by one edge.
   // Pure cycles get one vertex marked as a forced junction.
   void JoinDegreeTwoChains();
+  // Sets `edges` to what JoinDegreeTwoChains makes of one one-segment edge
+  // per segment (path: its two vertices' positions; clearances: theirs; one
+  // site a side), without building those edges first. `vertices` must be set.
+  void JoinSegments(const std::vector<ChainSegment>& segments, const PointList& sites);
 
   // Keeps the connected group with the largest total edge length (the
   // paper's keepBiggestGroup) and, in every other part of the free space

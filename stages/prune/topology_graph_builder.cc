@@ -85,7 +85,8 @@ PlainVoronoi PlainVoronoiOf(const proto::VoronoiDiagram& diagram) {
 }
 
 // The Voronoi edges that survive the boundary, free-cell and clearance
-// filters as one-segment chains, the enclosed region of each chain vertex,
+// filters, joined into chains through degree-2 vertices
+// (ChainGraph::JoinDegreeTwoChains), the enclosed region of each chain vertex,
 // and the outline of every region that holds one.
 struct FilteredGraph {
   ChainGraph graph;
@@ -106,7 +107,7 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
   for (int v = 0; v < vertex_count; ++v) {
     const Eigen::Vector2d& p = diagram.positions[v];
     if (!grid.FreeAt(p)) continue;
-    region[v] = boundary_shape->EnclosedRegionAt(p);
+    region[v] = boundary_shape->EnclosedRegionAt(p, v);
     keep[v] = region[v] >= 0;
   }
 
@@ -141,8 +142,8 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
   boundary_shape.reset();
 
   ChainGraph& graph = filtered.graph;
-  // Sized once: on a large map, doubling would hold two copies for a moment.
-  graph.edges.reserve(kept_edges.size());
+  std::vector<ChainSegment> segments;
+  segments.reserve(kept_edges.size());
   std::vector<int> chain_vertex(vertex_count, -1);
   auto vertex_of = [&](int voronoi_vertex) {
     const int root = same_point.Find(voronoi_vertex);
@@ -155,19 +156,18 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
   };
   for (int e : kept_edges) {
     const PlainVoronoi::Edge& edge = diagram.edges[e];
-    ChainEdge chain;
-    chain.source = vertex_of(edge.source);
-    chain.target = vertex_of(edge.target);
-    if (chain.source == chain.target) continue;
-    const ChainVertex& s = graph.vertices[chain.source];
-    const ChainVertex& t = graph.vertices[chain.target];
-    chain.path = {s.position, t.position};
-    chain.clearance_px = {s.clearance_px, t.clearance_px};
-    chain.left_sites = {diagram.sites[edge.left_site]};
-    chain.right_sites = {diagram.sites[edge.right_site]};
-    chain.min_clearance_px = edge.clearance_px;
-    graph.edges.push_back(std::move(chain));
+    ChainSegment segment;
+    segment.source = vertex_of(edge.source);
+    segment.target = vertex_of(edge.target);
+    if (segment.source == segment.target) continue;
+    segment.left_site = edge.left_site;
+    segment.right_site = edge.right_site;
+    segment.clearance_px = edge.clearance_px;
+    segments.push_back(segment);
   }
+  // The chains through degree-2 vertices, built once (not one edge per
+  // segment joined afterwards).
+  graph.JoinSegments(segments, diagram.sites);
   return filtered;
 }
 
@@ -302,7 +302,6 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   FilteredGraph filtered =
       FilteredVoronoiGraph(plain, grid, std::move(boundary_shape), min_clearance_px);
   ChainGraph& graph = filtered.graph;
-  graph.JoinDegreeTwoChains();
   if (graph.edges.empty()) {
     throw InputError("no Topology Graph: no Voronoi edge inside the boundary keeps " +
                      Metres(options.min_clearance_m()) + " away from obstacles");

@@ -138,6 +138,10 @@ void AddDualOfTriangulation(SiteDelaunay& dt, const VoronoiBuildOptions& options
       diagram->add_edge_clearance_px(clearance);
     }
   }
+  // Each face now names its Voronoi vertex (prune's locate walks start there).
+  for (auto face = dt.finite_faces_begin(); face != dt.finite_faces_end(); ++face) {
+    face->info().number = vertex_of_face[face->info().number];
+  }
 }
 
 }  // namespace

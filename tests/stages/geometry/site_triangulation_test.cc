@@ -9,6 +9,7 @@
 #include <random>
 
 #include "stages/geometry/site_alpha_shape.h"
+#include "stages/geometry/site_triangulation_cgal.h"
 
 namespace areagraph {
 namespace {
@@ -58,6 +59,30 @@ void ExpectSameShape(SiteAlphaShape& a, SiteAlphaShape& b) {
     EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(rooms[r], other_rooms[r]))
         << "room " << r;
   }
+}
+
+// The integer in-circle test of sites on the half-pixel grid gives Epick's
+// (exact) signs, co-circular quadruples (zero) included, near the range's end
+// too.
+TEST(SiteTriangulationTest, TheHalfGridInCircleTestIsEpicks) {
+  const site_cgal::Traits half_grid(true);
+  const auto fast = half_grid.side_of_oriented_circle_2_object();
+  const auto epick = site_cgal::Kernel().side_of_oriented_circle_2_object();
+  std::mt19937 random(5);
+  int zeros = 0;
+  for (const double offset : {0.0, site_cgal::Traits::kHalfGridLimit - 64}) {
+    for (const int span : {6, 40, 4000}) {
+      std::uniform_int_distribution<int> cell(0, span);
+      auto site = [&] { return site_cgal::Point(offset + cell(random) + 0.5, cell(random) + 0.5); };
+      for (int i = 0; i < 20000; ++i) {
+        const site_cgal::Point p = site(), q = site(), r = site(), t = site();
+        const CGAL::Oriented_side expected = epick(p, q, r, t);
+        ASSERT_EQ(fast(p, q, r, t), expected) << p << " " << q << " " << r << " " << t;
+        zeros += expected == CGAL::ON_ORIENTED_BOUNDARY;
+      }
+    }
+  }
+  EXPECT_GT(zeros, 1000) << "too few co-circular quadruples to mean anything";
 }
 
 TEST(SiteTriangulationTest, TheIndexedTriangulationGivesTheSameShapeAsANewOne) {
