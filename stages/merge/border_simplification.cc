@@ -124,6 +124,7 @@ class Simplifier {
   }
 
   std::vector<PointList> Run(double threshold) {
+    threshold_ = threshold;
     CostHeap heap(vertices_.size());
     for (size_t n = 0; n < nodes_.size(); ++n) {
       const int v = nodes_[n].vertex;
@@ -131,11 +132,11 @@ class Simplifier {
       double cost;
       if (Cost(static_cast<int>(n), &cost)) heap.Set(v, cost);
     }
+    // Every cost in the heap is below the threshold (Cost): each one popped
+    // is taken, in the order the full costs would give.
     while (!heap.empty()) {
       const int v = heap.top();
-      const double cost = heap.cost(v);
       heap.Pop();
-      if (cost >= threshold) break;
       const int node = vertices_[v].node;
       if (!Removable(node)) continue;
       const int u = nodes_[node].prev, w = nodes_[node].next;
@@ -278,7 +279,10 @@ class Simplifier {
   }
 
   // CGAL's Squared_distance_cost scaled by the vertex's factor, less its
-  // tie-break; false where the vertex may never go.
+  // tie-break; false where the vertex may never go, which includes a cost at
+  // or above the threshold: the scan stops at the first point that puts it
+  // there (the cost only grows with the maximum, so the answer is the same),
+  // and such a vertex would never be taken anyway.
   bool Cost(int node, double* cost) const {
     const Vertex& vertex = vertices_[nodes_[node].vertex];
     if (!std::isfinite(vertex.factor)) return false;
@@ -288,7 +292,10 @@ class Simplifier {
     const PointList& chain = chains_[nodes_[node].chain];
     double d = 0.0;
     for (int j = nodes_[u].index + 1; j < nodes_[w].index; ++j) {
-      d = std::max(d, CGAL::squared_distance(segment, Point(chain[j].x(), chain[j].y())));
+      const double to_point = CGAL::squared_distance(segment, Point(chain[j].x(), chain[j].y()));
+      if (to_point <= d) continue;
+      d = to_point;
+      if (d * vertex.factor - vertex.tie_break >= threshold_) return false;
     }
     *cost = d * vertex.factor - vertex.tie_break;
     return true;
@@ -368,6 +375,7 @@ class Simplifier {
   }
 
   const std::vector<PointList>& chains_;
+  double threshold_ = INFINITY;
   std::vector<Node> nodes_;
   std::vector<Vertex> vertices_;
   std::vector<int> chain_begin_;
