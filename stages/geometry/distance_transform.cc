@@ -190,6 +190,12 @@ class SinglePrecisionRows {
     }
   }
 
+  // Squares' column step alone, for a row whose distances are not wanted.
+  template <typename T>
+  void PassRow(const T* down) {
+    for (int c = 0; c < cols_; ++c) below_[c] = std::min(int(down[c]), below_[c] + 1);
+  }
+
   // One row's squared distances, (q - p)^2 + f[p] before the square root,
   // from its DownDistances; rows go from the last up (each takes the nearer
   // of its own and the one below's plus 1, as OpenCV's upward pass does).
@@ -436,6 +442,46 @@ std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, i
   for (int r = 0; r < mask.rows; ++r) {
     DeepestAlongRow(labels.ptr<int>(r), distance.ptr<float>(r), mask.cols, deepest.data());
   }
+  return deepest;
+}
+
+std::vector<float> DeepestPerRun(const cv::Mat& mask, const std::vector<PieceRun>& runs,
+                                 int count) {
+  CV_Assert(mask.type() == CV_8U);
+  if (mask.empty() || runs.empty() || !FitsIntegers(mask)) {
+    cv::Mat labels = cv::Mat::zeros(mask.size(), CV_32S);
+    for (const PieceRun& run : runs) {
+      std::fill(labels.ptr<int>(run.row) + run.begin, labels.ptr<int>(run.row) + run.end,
+                run.value);
+    }
+    std::vector<float> deepest = DeepestPerLabel(mask, labels, count);
+    if (!deepest.empty()) deepest[0] = 0;
+    return deepest;
+  }
+  // Every cell's value is OpenCV's, which the exact transform also gives
+  // where it applies: the maxima of the squares, then their roots.
+  std::vector<int> order(runs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return runs[a].row > runs[b].row; });
+  SinglePrecisionRows rows(mask.rows, mask.cols);
+  std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
+  rows.DownDistances<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  std::vector<float> squares(mask.cols), deepest(count, 0);
+  size_t next = 0;
+  for (int r = mask.rows - 1; r >= 0; --r) {
+    const uint16_t* down = columns.data() + size_t(r) * mask.cols;
+    if (next == order.size() || runs[order[next]].row != r) {
+      rows.PassRow(down);
+      continue;
+    }
+    rows.Squares(down, squares.data());
+    for (; next < order.size() && runs[order[next]].row == r; ++next) {
+      const PieceRun& run = runs[order[next]];
+      float& d = deepest[run.value];
+      d = std::max(d, LargestOf(squares.data() + run.begin, run.end - run.begin));
+    }
+  }
+  for (float& d : deepest) d = std::sqrt(d);
   return deepest;
 }
 

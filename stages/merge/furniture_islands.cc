@@ -124,8 +124,8 @@ bool IslandShaped(const Region& region, double max_elongation) {
 // The deepest distance of each region's cells to a zero cell of `mask`, as
 // ExactDistanceTransform(mask) gives it. Where that is computed exactly, a
 // region's box with a margin of one cell holds the cells nearest to its own
-// (an 8-connected region does not touch another); else the whole mask is
-// transformed, as the rounding of a cell depends on its whole row.
+// (an 8-connected region does not touch another); else the regions' rows
+// are transformed whole, as the rounding of a cell depends on its whole row.
 std::vector<float> DeepestOfRegions(const cv::Mat& mask, const std::vector<Region>& regions) {
   std::vector<float> deepest(regions.size(), 0);
   if (ComputedExactly(mask.size())) {
@@ -139,13 +139,20 @@ std::vector<float> DeepestOfRegions(const cv::Mat& mask, const std::vector<Regio
     }
     return deepest;
   }
-  cv::Mat labels = cv::Mat::zeros(mask.size(), CV_32S);
+  // The regions' rows' runs, region k + 1 (cells are in row-major order).
+  std::vector<PieceRun> runs;
   for (size_t k = 0; k < regions.size(); ++k) {
-    for (const cv::Point& p : regions[k].cells) labels.at<int>(p) = static_cast<int>(k) + 1;
+    for (const cv::Point& p : regions[k].cells) {
+      PieceRun* last = runs.empty() ? nullptr : &runs.back();
+      if (last && last->value == int(k) + 1 && last->row == p.y && last->end == p.x) {
+        ++last->end;
+      } else {
+        runs.push_back({p.y, p.x, p.x + 1, int(k) + 1});
+      }
+    }
   }
-  const std::vector<float> per_label =
-      DeepestPerLabel(mask, labels, static_cast<int>(regions.size()) + 1);
-  std::copy(per_label.begin() + 1, per_label.end(), deepest.begin());
+  const std::vector<float> per_run = DeepestPerRun(mask, runs, int(regions.size()) + 1);
+  std::copy(per_run.begin() + 1, per_run.end(), deepest.begin());
   return deepest;
 }
 

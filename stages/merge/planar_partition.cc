@@ -277,7 +277,7 @@ class PartitionTracer {
   void TraceChainsBetweenJunctions() {
     std::unordered_set<int64_t> used;
     ForEachBorderCorner([&](int x, int y, const Corner& corner) {
-      border_corners_.emplace_back(x, y);
+      border_corners_.push_back({x, y, corner.edges});
       for (int point = 0; point < (corner.cut == Cut::kNone ? 1 : 2); ++point) {
         const unsigned out = OutDirections(corner, point);
         if (PopCount(out) == 2) continue;
@@ -306,7 +306,15 @@ class PartitionTracer {
   // chains at points of its convex hull, so that simplification keeps at
   // least a triangle.
   void TraceClosedLoops() {
-    for (const auto& [x, y] : border_corners_) {
+    for (const BorderCorner& at : border_corners_) {
+      const int x = at.x, y = at.y;
+      // Most corners' borders were walked between junctions: their corner
+      // is not built again.
+      const uint8_t walked = visited_[CornerIndex(x, y)];
+      if (!((at.edges & Bit(kEast)) && !(walked & 1)) &&
+          !((at.edges & Bit(kSouth)) && !(walked & 2))) {
+        continue;
+      }
       const Corner corner = CornerAt(x, y);
       for (const int dir : {kEast, kSouth}) {
         const uint8_t bit = dir == kEast ? 1 : 2;
@@ -424,8 +432,12 @@ class PartitionTracer {
   PlanarPartition partition_;
   // Per chain.
   std::vector<ChainEnds> ends_;
-  // Every grid corner where borders meet, in row order.
-  std::vector<std::pair<int, int>> border_corners_;
+  // Every grid corner where borders meet, in row order, with its cell-edge borders (Corner.edges).
+  struct BorderCorner {
+    int x, y;
+    unsigned edges;
+  };
+  std::vector<BorderCorner> border_corners_;
   std::unordered_map<int64_t, ChainSide> side_from_;
 };
 
