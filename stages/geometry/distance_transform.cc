@@ -384,22 +384,21 @@ double DeepestDistance(const cv::Mat& mask) {
   // order of the deepest such bound, until it is no more than the deepest
   // cell found.
   std::vector<int32_t> row_bound(rows, 0);
-  std::vector<int> along(cols);
   for (int r = 0; r < rows; ++r) {
     const uint8_t* m = mask.ptr<uint8_t>(r);
     const uint16_t* column = columns.data() + size_t(r) * cols;
     int32_t bound = 0;
-    // Along the row: to the nearest zero cell left, then right.
-    int left = kNoZero;
-    for (int c = 0; c < cols; ++c) {
-      left = m[c] == 0 ? 0 : std::min(left + 1, int(kNoZero));
-      along[c] = left;
-    }
-    int right = kNoZero;
-    for (int c = cols - 1; c >= 0; --c) {
-      right = m[c] == 0 ? 0 : std::min(right + 1, int(kNoZero));
-      const int d = std::min({along[c], right, int(column[c])});
-      bound = std::max(bound, d);
+    // Along the row, run by run of non-zero cells (zero cells bound nothing):
+    // to the zero cell left of the run, and right of it (kNoZero at the
+    // mask's edge).
+    for (int c = NextNonZero(m, 0, cols); c < cols; c = NextNonZero(m, c, cols)) {
+      const int start = c;
+      while (c < cols && m[c] != 0) ++c;
+      for (int q = start; q < c; ++q) {
+        const int left = start > 0 ? q - start + 1 : kNoZero;
+        const int right = c < cols ? c - q : kNoZero;
+        bound = std::max(bound, std::min({left, right, int(column[q])}));
+      }
     }
     row_bound[r] = bound * bound;
   }
