@@ -190,6 +190,12 @@ class SinglePrecisionRows {
     }
   }
 
+  // Squares' column step alone, for a row whose distances are not wanted.
+  template <typename T>
+  void PassRow(const T* down) {
+    for (int c = 0; c < cols_; ++c) below_[c] = std::min(int(down[c]), below_[c] + 1);
+  }
+
   // One row's squared distances, (q - p)^2 + f[p] before the square root,
   // from its DownDistances; rows go from the last up (each takes the nearer
   // of its own and the one below's plus 1, as OpenCV's upward pass does).
@@ -378,22 +384,21 @@ double DeepestDistance(const cv::Mat& mask) {
   // order of the deepest such bound, until it is no more than the deepest
   // cell found.
   std::vector<int32_t> row_bound(rows, 0);
-  std::vector<int> along(cols);
   for (int r = 0; r < rows; ++r) {
     const uint8_t* m = mask.ptr<uint8_t>(r);
     const uint16_t* column = columns.data() + size_t(r) * cols;
     int32_t bound = 0;
-    // Along the row: to the nearest zero cell left, then right.
-    int left = kNoZero;
-    for (int c = 0; c < cols; ++c) {
-      left = m[c] == 0 ? 0 : std::min(left + 1, int(kNoZero));
-      along[c] = left;
-    }
-    int right = kNoZero;
-    for (int c = cols - 1; c >= 0; --c) {
-      right = m[c] == 0 ? 0 : std::min(right + 1, int(kNoZero));
-      const int d = std::min({along[c], right, int(column[c])});
-      bound = std::max(bound, d);
+    // Along the row, run by run of non-zero cells (zero cells bound nothing):
+    // to the zero cell left of the run, and right of it (kNoZero at the
+    // mask's edge).
+    for (int c = NextNonZero(m, 0, cols); c < cols; c = NextNonZero(m, c, cols)) {
+      const int start = c;
+      while (c < cols && m[c] != 0) ++c;
+      for (int q = start; q < c; ++q) {
+        const int left = start > 0 ? q - start + 1 : kNoZero;
+        const int right = c < cols ? c - q : kNoZero;
+        bound = std::max(bound, std::min({left, right, int(column[q])}));
+      }
     }
     row_bound[r] = bound * bound;
   }
@@ -436,6 +441,46 @@ std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, i
   for (int r = 0; r < mask.rows; ++r) {
     DeepestAlongRow(labels.ptr<int>(r), distance.ptr<float>(r), mask.cols, deepest.data());
   }
+  return deepest;
+}
+
+std::vector<float> DeepestPerRun(const cv::Mat& mask, const std::vector<PieceRun>& runs,
+                                 int count) {
+  CV_Assert(mask.type() == CV_8U);
+  if (mask.empty() || runs.empty() || !FitsIntegers(mask)) {
+    cv::Mat labels = cv::Mat::zeros(mask.size(), CV_32S);
+    for (const PieceRun& run : runs) {
+      std::fill(labels.ptr<int>(run.row) + run.begin, labels.ptr<int>(run.row) + run.end,
+                run.value);
+    }
+    std::vector<float> deepest = DeepestPerLabel(mask, labels, count);
+    if (!deepest.empty()) deepest[0] = 0;
+    return deepest;
+  }
+  // Every cell's value is OpenCV's, which the exact transform also gives
+  // where it applies: the maxima of the squares, then their roots.
+  std::vector<int> order(runs.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return runs[a].row > runs[b].row; });
+  SinglePrecisionRows rows(mask.rows, mask.cols);
+  std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
+  rows.DownDistances<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  std::vector<float> squares(mask.cols), deepest(count, 0);
+  size_t next = 0;
+  for (int r = mask.rows - 1; r >= 0; --r) {
+    const uint16_t* down = columns.data() + size_t(r) * mask.cols;
+    if (next == order.size() || runs[order[next]].row != r) {
+      rows.PassRow(down);
+      continue;
+    }
+    rows.Squares(down, squares.data());
+    for (; next < order.size() && runs[order[next]].row == r; ++next) {
+      const PieceRun& run = runs[order[next]];
+      float& d = deepest[run.value];
+      d = std::max(d, LargestOf(squares.data() + run.begin, run.end - run.begin));
+    }
+  }
+  for (float& d : deepest) d = std::sqrt(d);
   return deepest;
 }
 

@@ -3,6 +3,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "stages/geometry/region_boxes.h"
+
 namespace areagraph {
 
 // Exact Euclidean distance transforms of a CV_8U mask: the distance (px) of
@@ -27,6 +29,13 @@ double DeepestDistance(const cv::Mat& mask);
 // that transform already.
 std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, int count,
                                    const cv::Mat& depth = cv::Mat());
+
+// DeepestPerLabel(mask, labels, count) with the labels (1 .. count - 1) given
+// as runs of cells instead of a raster: the same maxima. Only the rows that
+// hold a run are transformed (the column distances pass through the others),
+// which on a mask where the single precision of OpenCV rounds (a row's value
+// depends on the whole row) saves most of the work when the runs are few.
+std::vector<float> DeepestPerRun(const cv::Mat& mask, const std::vector<PieceRun>& runs, int count);
 
 // 1 where ExactDistanceTransform(mask) >= reach, else 0 (CV_8U).
 cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach);

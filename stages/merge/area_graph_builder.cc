@@ -118,11 +118,14 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     JoinRoomsWithoutDoors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
   }
   if (options.join_furniture_gaps()) {
-    JoinAreasAtFurnitureGaps(
-        graph,
-        FurnitureIslandCells(map, options.fill_furniture_outlines_m(),
-                             options.wall_furniture_islands(), options.furniture_max_elongation()),
-        grid.resolution_m(), options.keep_closed_doors(), options.join_corridor_clutter(), &plan);
+    // Islands are looked for only at the openings' jambs.
+    const IslandsAt islands_at = [&](const std::vector<cv::Point>& cells) {
+      return FurnitureIslandsAt(map, options.fill_furniture_outlines_m(),
+                                options.wall_furniture_islands(),
+                                options.furniture_max_elongation(), cells);
+    };
+    JoinAreasAtFurnitureGaps(graph, islands_at, grid.resolution_m(), options.keep_closed_doors(),
+                             options.join_corridor_clutter(), &plan);
   }
   if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
   if (options.fold_corridor_pieces_below_m2() > 0) {

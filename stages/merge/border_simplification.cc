@@ -114,6 +114,44 @@ class CostHeap {
   std::vector<double> cost_;
 };
 
+// Vertex numbers by point (the bits of x and y), open addressing: one
+// array, no node per point.
+class VertexTable {
+ public:
+  explicit VertexTable(size_t count) {
+    size_t capacity = 16;
+    while (capacity < 2 * count) capacity *= 2;
+    mask_ = capacity - 1;
+    slots_.assign(capacity, Slot{0, 0, -1});
+  }
+
+  // The number stored for `key`, -1 for a new key (which the caller sets).
+  int& Find(const std::pair<uint64_t, uint64_t>& key) {
+    // The coordinates' bits vary at the top (exponent, leading mantissa):
+    // folded down and mixed.
+    uint64_t h = key.first ^ (key.second >> 32 | key.second << 32);
+    h ^= h >> 29;
+    h *= 0xBF58476D1CE4E5B9ull;
+    h ^= h >> 32;
+    for (size_t i = h;; ++i) {
+      Slot& slot = slots_[i & mask_];
+      if (slot.id < 0) {
+        slot.x = key.first, slot.y = key.second;
+        return slot.id;
+      }
+      if (slot.x == key.first && slot.y == key.second) return slot.id;
+    }
+  }
+
+ private:
+  struct Slot {
+    uint64_t x, y;
+    int id;
+  };
+  size_t mask_ = 0;
+  std::vector<Slot> slots_;
+};
+
 class Simplifier {
  public:
   Simplifier(const std::vector<PointList>& chains, const std::vector<double>& tolerance_px,
@@ -124,6 +162,7 @@ class Simplifier {
   }
 
   std::vector<PointList> Run(double threshold) {
+    threshold_ = threshold;
     CostHeap heap(vertices_.size());
     for (size_t n = 0; n < nodes_.size(); ++n) {
       const int v = nodes_[n].vertex;
@@ -131,11 +170,11 @@ class Simplifier {
       double cost;
       if (Cost(static_cast<int>(n), &cost)) heap.Set(v, cost);
     }
+    // Every cost in the heap is below the threshold (Cost): each one popped
+    // is taken, in the order the full costs would give.
     while (!heap.empty()) {
       const int v = heap.top();
-      const double cost = heap.cost(v);
       heap.Pop();
-      if (cost >= threshold) break;
       const int node = vertices_[v].node;
       if (!Removable(node)) continue;
       const int u = nodes_[node].prev, w = nodes_[node].next;
@@ -185,17 +224,11 @@ class Simplifier {
   };
 
   void IndexPoints(const std::vector<double>& tolerance_px, double largest) {
-    struct Hash {
-      size_t operator()(const std::pair<uint64_t, uint64_t>& key) const {
-        return std::hash<uint64_t>()(key.first * 0x9E3779B97F4A7C15ull ^ key.second);
-      }
-    };
-    std::unordered_map<std::pair<uint64_t, uint64_t>, int, Hash> vertex_at;
     size_t total = 0;
     for (const PointList& chain : chains_) total += chain.size();
     nodes_.reserve(total);
     vertices_.reserve(total);
-    vertex_at.reserve(total);
+    VertexTable vertex_at(total);
     chain_begin_.assign(chains_.size(), -1);
     int64_t order = 0;
     for (size_t i = 0; i < chains_.size(); ++i) {
@@ -208,19 +241,20 @@ class Simplifier {
         const double x = chain[j].x() + 0.0, y = chain[j].y() + 0.0;  // -0 as 0
         std::memcpy(&key.first, &x, sizeof x);
         std::memcpy(&key.second, &y, sizeof y);
-        const auto [it, added] = vertex_at.emplace(key, static_cast<int>(vertices_.size()));
-        if (added) {
+        int& id = vertex_at.Find(key);
+        if (id < 0) {
+          id = static_cast<int>(vertices_.size());
           vertices_.emplace_back();
           vertices_.back().point = Point(chain[j].x(), chain[j].y());
         }
-        Vertex& vertex = vertices_[it->second];
+        Vertex& vertex = vertices_[id];
         ++vertex.occurrences;
         vertex.factor = ratio * ratio;
         vertex.tie_break = kTieBreakStep * static_cast<double>(++order);
         const int n = static_cast<int>(nodes_.size());
         vertex.node = n;
         Node node;
-        node.vertex = it->second;
+        node.vertex = id;
         node.chain = static_cast<int>(i);
         node.index = static_cast<int>(j);
         node.prev = j > 0 ? n - 1 : -1;
@@ -278,7 +312,10 @@ class Simplifier {
   }
 
   // CGAL's Squared_distance_cost scaled by the vertex's factor, less its
-  // tie-break; false where the vertex may never go.
+  // tie-break; false where the vertex may never go, which includes a cost at
+  // or above the threshold: the scan stops at the first point that puts it
+  // there (the cost only grows with the maximum, so the answer is the same),
+  // and such a vertex would never be taken anyway.
   bool Cost(int node, double* cost) const {
     const Vertex& vertex = vertices_[nodes_[node].vertex];
     if (!std::isfinite(vertex.factor)) return false;
@@ -288,7 +325,10 @@ class Simplifier {
     const PointList& chain = chains_[nodes_[node].chain];
     double d = 0.0;
     for (int j = nodes_[u].index + 1; j < nodes_[w].index; ++j) {
-      d = std::max(d, CGAL::squared_distance(segment, Point(chain[j].x(), chain[j].y())));
+      const double to_point = CGAL::squared_distance(segment, Point(chain[j].x(), chain[j].y()));
+      if (to_point <= d) continue;
+      d = to_point;
+      if (d * vertex.factor - vertex.tie_break >= threshold_) return false;
     }
     *cost = d * vertex.factor - vertex.tie_break;
     return true;
@@ -368,6 +408,7 @@ class Simplifier {
   }
 
   const std::vector<PointList>& chains_;
+  double threshold_ = INFINITY;
   std::vector<Node> nodes_;
   std::vector<Vertex> vertices_;
   std::vector<int> chain_begin_;

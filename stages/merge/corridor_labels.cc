@@ -43,10 +43,11 @@ bool IsCorridorShaped(const AreaShape& shape, double resolution_m) {
 }
 
 void LabelCorridorsByShape(const AreaRaster& raster, double resolution_m, AreaPlan* plan) {
-  const std::vector<AreaShape> shapes = AreaShapes(raster);
-  for (size_t k = 0; k < plan->areas.size() && k < shapes.size(); ++k) {
+  // Only rooms change: the other areas' shapes (a distance transform each) are not measured.
+  for (size_t k = 0; k < plan->areas.size() && k < raster.boxes.size(); ++k) {
     AreaPlan::Area& area = plan->areas[k];
-    if (area.kind == proto::AREA_ROOM && IsCorridorShaped(shapes[k], resolution_m)) {
+    if (area.kind == proto::AREA_ROOM &&
+        IsCorridorShaped(ShapeOfArea(raster, static_cast<int>(k), raster.boxes[k]), resolution_m)) {
       area.kind = proto::AREA_CORRIDOR;
     }
   }

@@ -3,36 +3,52 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <opencv2/imgproc.hpp>
 #include <set>
 #include <utility>
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/geometry/distance_transform.h"
 #include "stages/geometry/edge_polygon.h"
-#include "stages/geometry/enclosed_pockets.h"
-#include "stages/geometry/region_boxes.h"
 #include "stages/geometry/ring_simplicity.h"
-#include "stages/geometry/wall_thickness.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
 
-// Whether the cell under a site (a cell centre), or one of its 8 neighbours,
-// belongs to an island: 1 when one stands free, 2 when one stands only
-// against a wall, 0 otherwise.
-int OnIsland(const cv::Mat& islands, const Eigen::Vector2d& site) {
+// The cells whose island values OnIsland reads: the cell under a site (a
+// cell centre) and its 8 neighbours, row by row.
+void AddCellsAround(const Eigen::Vector2d& site, std::vector<cv::Point>* cells) {
+  const int col = static_cast<int>(std::floor(site.x()));
+  const int row = static_cast<int>(std::floor(site.y()));
+  for (int dr = -1; dr <= 1; ++dr) {
+    for (int dc = -1; dc <= 1; ++dc) cells->emplace_back(col + dc, row + dr);
+  }
+}
+
+bool RowMajor(const cv::Point& a, const cv::Point& b) { return a.y != b.y ? a.y < b.y : a.x < b.x; }
+
+// Island values at the cells a search asked for (sorted row-major, each once).
+struct IslandValues {
+  std::vector<cv::Point> cells;
+  std::vector<uint8_t> values;
+
+  int At(const cv::Point& cell) const {
+    const auto it = std::lower_bound(cells.begin(), cells.end(), cell, RowMajor);
+    return it != cells.end() && *it == cell ? values[it - cells.begin()] : 0;
+  }
+};
+
+// Whether the cell under a site, or one of its 8 neighbours, belongs to an
+// island: 1 when one stands free, 2 when one stands only against a wall, 0
+// otherwise.
+int OnIsland(const IslandValues& islands, const Eigen::Vector2d& site) {
   int found = 0;
   const int col = static_cast<int>(std::floor(site.x()));
   const int row = static_cast<int>(std::floor(site.y()));
   for (int dr = -1; dr <= 1; ++dr) {
     for (int dc = -1; dc <= 1; ++dc) {
-      const int c = col + dc, r = row + dr;
-      if (c < 0 || r < 0 || c >= islands.cols || r >= islands.rows) continue;
-      const int value = islands.at<uint8_t>(r, c);
+      const int value = islands.At(cv::Point(col + dc, row + dr));
       if (value == 1) return 1;
       if (value != 0) found = value;
     }
@@ -59,109 +75,24 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
   plan->MergeGroups(root);
 }
 
-// The same for the labels marked in `wanted`, each measured within its box:
-// the cells nearest to a region's cells outside it are free (an 8-connected
-// region does not touch another), and lie within one cell of its box.
-std::vector<float> DeepestPerRegion(const cv::Mat& labels, const cv::Mat& stats,
-                                    const std::vector<uint8_t>& wanted) {
-  std::vector<float> deepest(wanted.size(), 0);
-  for (size_t k = 1; k < wanted.size(); ++k) {
-    if (!wanted[k]) continue;
-    const cv::Rect box(
-        stats.at<int>(int(k), cv::CC_STAT_LEFT), stats.at<int>(int(k), cv::CC_STAT_TOP),
-        stats.at<int>(int(k), cv::CC_STAT_WIDTH), stats.at<int>(int(k), cv::CC_STAT_HEIGHT));
-    deepest[k] = float(DeepestDistance(LabelMaskInBox(labels, int(k), box)));
-  }
-  return deepest;
-}
-
-// Marks (`value` in `out`, where it is still 0) the cells of every 8-connected region of `obstacle`
-// that touches no image border, is at most `max_px` long, at least
-// `min_thickness_px` thick (twice its deepest cell's depth), fills
-// kMinFurnitureSolidity of its smallest enclosing rectangle and, unless
-// `max_elongation` is 0, is at most that many times as long as the
-// rectangle is wide. `depth` is ObstacleDepth(obstacle), when the caller has
-// it already.
-void MarkIslands(const cv::Mat& obstacle, double min_thickness_px, double max_px,
-                 double max_elongation, uint8_t value, cv::Mat* out, cv::Mat depth = cv::Mat()) {
-  const int width = obstacle.cols, height = obstacle.rows;
-  cv::Mat labels, stats;
-  const int count = LabelRegionsWithBoxes(obstacle, 8, &labels, &stats);
-  std::vector<uint8_t> island(count, 0);
-  for (int k = 1; k < count; ++k) {
-    const int x = stats.at<int>(k, cv::CC_STAT_LEFT), y = stats.at<int>(k, cv::CC_STAT_TOP);
-    const int w = stats.at<int>(k, cv::CC_STAT_WIDTH), h = stats.at<int>(k, cv::CC_STAT_HEIGHT);
-    const bool border = x == 0 || y == 0 || x + w == width || y + h == height;
-    island[k] = !border && std::max(w, h) <= max_px;
-  }
-  const std::vector<float> deepest = depth.empty() && ComputedExactly(obstacle.size())
-                                         ? DeepestPerRegion(labels, stats, island)
-                                         : DeepestPerLabel(obstacle, labels, count, depth);
-  for (int k = 1; k < count; ++k) {
-    island[k] = island[k] && 2 * deepest[k] >= min_thickness_px;
-  }
-  // Candidates must fill most of their smallest enclosing rectangle.
-  std::vector<std::vector<cv::Point>> points(count);
-  for (int r = 0; r < height; ++r) {
-    const int* row = labels.ptr<int>(r);
-    for (int c = 0; c < width; ++c) {
-      if (island[row[c]]) points[row[c]].emplace_back(c, r);
-    }
-  }
-  for (int k = 1; k < count; ++k) {
-    if (!island[k]) continue;
-    const cv::RotatedRect box = cv::minAreaRect(points[k]);
-    const double box_cells = (box.size.width + 1) * (box.size.height + 1);
-    island[k] = stats.at<int>(k, cv::CC_STAT_AREA) >= kMinFurnitureSolidity * box_cells;
-    // A piece of wall between two doors is long and narrow, a desk is not.
-    const double longer = std::max(box.size.width, box.size.height) + 1;
-    const double shorter = std::min(box.size.width, box.size.height) + 1;
-    if (max_elongation > 0 && longer > max_elongation * shorter) island[k] = 0;
-  }
-  for (int r = 0; r < height; ++r) {
-    const int* row = labels.ptr<int>(r);
-    uint8_t* target = out->ptr<uint8_t>(r);
-    for (int c = 0; c < width; ++c) {
-      if (island[row[c]] && target[c] == 0) target[c] = value;
-    }
-  }
-}
-
 }  // namespace
 
-cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
-                             bool against_walls, double max_elongation) {
-  const int width = map.frame().width_px(), height = map.frame().height_px();
-  const double resolution_m = map.frame().resolution_m();
-  // What cleaning removed is still no free space: a wall it broke stays one.
-  cv::Mat obstacle = ObstacleMask(map.cells(), width, height);
-  for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
-    for (const int index : *list) {
-      if (index >= 0 && index < width * height) obstacle.data[index] = 255;
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
+                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+                              AreaPlan* plan) {
+  const cv::Rect inside(0, 0, islands.cols, islands.rows);
+  const IslandsAt from_raster = [&](const std::vector<cv::Point>& cells) {
+    std::vector<uint8_t> values(cells.size(), 0);
+    for (size_t i = 0; i < cells.size(); ++i) {
+      if (inside.contains(cells[i])) values[i] = islands.at<uint8_t>(cells[i]);
     }
-  }
-  if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
-  // One distance transform of the obstacles for the wall thickness and the islands.
-  cv::Mat depth = ObstacleDepth(obstacle);
-  const double min_thickness_px = std::max(
-      kMinFurnitureThicknessM / resolution_m,
-      kFurnitureWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
-  const double max_px = kMaxFurnitureIslandM / resolution_m;
-  cv::Mat out = cv::Mat::zeros(height, width, CV_8U);
-  MarkIslands(obstacle, min_thickness_px, max_px, max_elongation, 1, &out, std::move(depth));
-  if (against_walls) {
-    // Only what is at least as thick as an island is left of the obstacles:
-    // walls thinner than that go, and what stood against them is on its own.
-    const int diameter = static_cast<int>(std::ceil(min_thickness_px));
-    const cv::Mat disk = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(diameter, diameter));
-    cv::Mat thick;
-    cv::morphologyEx(obstacle, thick, cv::MORPH_OPEN, disk);
-    MarkIslands(thick, min_thickness_px, max_px, max_elongation, 2, &out);
-  }
-  return out;
+    return values;
+  };
+  JoinAreasAtFurnitureGaps(graph, from_raster, resolution_m, keep_closed_doors, corridor_clutter,
+                           plan);
 }
 
-void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const IslandsAt& islands_at,
                               double resolution_m, bool keep_closed_doors, bool corridor_clutter,
                               AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
@@ -182,32 +113,46 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islan
   std::vector<bool> enclosed(area_count, true);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
   const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
-  for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
-    const std::map<int, VertexOpening>& at = openings[vertex];
-    for (auto a = at.begin(); a != at.end(); ++a) {
-      for (auto b = std::next(a); b != at.end(); ++b) {
-        const bool corridors = corridor_like[a->first] && corridor_like[b->first];
-        // ag-cut closes a narrowing between two wider spaces whose sides are
-        // structure; a bin against a corridor's wall makes one.
-        if (closed[vertex] && !corridors) continue;
-        const VertexOpening& narrower =
-            a->second.width_px <= b->second.width_px ? a->second : b->second;
-        const int left = OnIsland(islands, narrower.left);
-        const int right = OnIsland(islands, narrower.right);
-        const bool small =
-            std::min(size_m2[a->first], size_m2[b->first]) <= kMaxFurnitureGapPieceM2;
-        if ((left == 1 || right == 1) && !closed[vertex]) {
-          if (small) gaps.emplace_back(a->first, b->first);
-        } else if ((left == 2 || right == 2) && corridors) {
-          // A bin or a cabinet against a corridor's wall, whatever the
-          // corridor's size and also where ag-cut closed the narrowing.
-          gaps.emplace_back(a->first, b->first);
-        } else if (!closed[vertex]) {
-          enclosed[a->first] = enclosed[b->first] = false;
+  // Calls `each(vertex, a, b, narrower)` for every pair of areas at a vertex
+  // whose opening's jambs matter.
+  auto for_each_pair = [&](auto each) {
+    for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
+      const std::map<int, VertexOpening>& at = openings[vertex];
+      for (auto a = at.begin(); a != at.end(); ++a) {
+        for (auto b = std::next(a); b != at.end(); ++b) {
+          const bool corridors = corridor_like[a->first] && corridor_like[b->first];
+          // ag-cut closes a narrowing between two wider spaces whose sides are
+          // structure; a bin against a corridor's wall makes one.
+          if (closed[vertex] && !corridors) continue;
+          each(vertex, a->first, b->first, corridors,
+               a->second.width_px <= b->second.width_px ? a->second : b->second);
         }
       }
     }
-  }
+  };
+  // The island values of every jamb's cells, asked at once.
+  IslandValues islands;
+  for_each_pair([&](int, int, int, bool, const VertexOpening& narrower) {
+    AddCellsAround(narrower.left, &islands.cells);
+    AddCellsAround(narrower.right, &islands.cells);
+  });
+  std::sort(islands.cells.begin(), islands.cells.end(), RowMajor);
+  islands.cells.erase(std::unique(islands.cells.begin(), islands.cells.end()), islands.cells.end());
+  islands.values = islands_at(islands.cells);
+  for_each_pair([&](int vertex, int a, int b, bool corridors, const VertexOpening& narrower) {
+    const int left = OnIsland(islands, narrower.left);
+    const int right = OnIsland(islands, narrower.right);
+    const bool small = std::min(size_m2[a], size_m2[b]) <= kMaxFurnitureGapPieceM2;
+    if ((left == 1 || right == 1) && !closed[vertex]) {
+      if (small) gaps.emplace_back(a, b);
+    } else if ((left == 2 || right == 2) && corridors) {
+      // A bin or a cabinet against a corridor's wall, whatever the
+      // corridor's size and also where ag-cut closed the narrowing.
+      gaps.emplace_back(a, b);
+    } else if (!closed[vertex]) {
+      enclosed[a] = enclosed[b] = false;
+    }
+  });
   const auto is_room = [&](int k) { return plan->areas[k].kind == proto::AREA_ROOM; };
   DisjointSets groups(area_count);
   // Rooms with rooms, and room-less areas that open only through gaps with

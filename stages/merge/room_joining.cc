@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -108,6 +109,13 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
     }
   }
   const int area_count = static_cast<int>(plan->areas.size());
+  // CorridorLike per area, found on first use (-1: not yet): it reads all
+  // the area's clearances, and the plan does not change in this loop.
+  std::vector<int8_t> corridor_like(area_count, -1);
+  auto is_corridor_like = [&](int k) {
+    if (corridor_like[k] < 0) corridor_like[k] = CorridorLike(graph, plan->areas[k]) ? 1 : 0;
+    return corridor_like[k] == 1;
+  };
   DisjointSets rooms(area_count);
   for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
     const std::map<int, Side>& at = sides[vertex];
@@ -115,8 +123,7 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
       for (auto b = std::next(a); b != at.end(); ++b) {
         const double opening = std::min(a->second.opening_px, b->second.opening_px);
         const double narrower_side = std::min(a->second.widest_px, b->second.widest_px);
-        if (closed[vertex] && !(CorridorLike(graph, plan->areas[a->first]) &&
-                                CorridorLike(graph, plan->areas[b->first]))) {
+        if (closed[vertex] && !(is_corridor_like(a->first) && is_corridor_like(b->first))) {
           continue;
         }
         if (opening > kDoorWidthShare * narrower_side) rooms.Union(a->first, b->first);

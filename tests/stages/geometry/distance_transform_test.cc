@@ -43,6 +43,24 @@ void ExpectSameAsOpenCv(const cv::Mat& mask) {
   }
   EXPECT_EQ(DeepestPerLabel(mask, labels, count), expected_deepest);
   EXPECT_EQ(DeepestPerLabel(mask, labels, count, expected), expected_deepest);
+  // The same regions as runs, the labels of every other row left out (their
+  // rows only pass the column distances on).
+  std::vector<PieceRun> runs;
+  std::vector<float> expected_of_runs(count, 0);
+  for (int r = 0; r < mask.rows; r += 2) {
+    for (int c = 0; c < mask.cols; ++c) {
+      const int label = labels.at<int>(r, c);
+      if (label == 0) continue;
+      if (!runs.empty() && runs.back().row == r && runs.back().end == c &&
+          runs.back().value == label) {
+        ++runs.back().end;
+      } else {
+        runs.push_back({r, c, c + 1, label});
+      }
+      expected_of_runs[label] = std::max(expected_of_runs[label], expected.at<float>(r, c));
+    }
+  }
+  EXPECT_EQ(DeepestPerRun(mask, runs, count), expected_of_runs);
 }
 
 // DistanceAtLeast(mask, reach) is OpenCV's distances thresholded at `reach`.

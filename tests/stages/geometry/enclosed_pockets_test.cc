@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
+#include <random>
 
 namespace areagraph {
 namespace {
@@ -35,6 +36,35 @@ TEST(EnclosedPockets, LeavesAnOpenOutlineAndTheBorderAlone) {
   EXPECT_EQ(obstacle.at<uint8_t>(9, 10), 0);
   EXPECT_EQ(obstacle.at<uint8_t>(3, 30), 0);
   EXPECT_EQ(obstacle.at<uint8_t>(25, 35), 255);  // the long ring is within 100
+}
+
+// Against OpenCV's labelling of the free cells (4-connected) and its boxes,
+// on random clutter where pockets of every size and shape form.
+TEST(EnclosedPockets, FillsWhatOpenCvsComponentsSay) {
+  std::mt19937 random(7);
+  for (int trial = 0; trial < 20; ++trial) {
+    cv::Mat obstacle(90, 130, CV_8U);
+    std::bernoulli_distribution wall(0.35 + 0.02 * trial);
+    for (int r = 0; r < obstacle.rows; ++r) {
+      for (int c = 0; c < obstacle.cols; ++c) obstacle.at<uint8_t>(r, c) = wall(random) ? 255 : 0;
+    }
+    const double max_pocket_px = 1 + trial % 7;
+    cv::Mat labels, stats, centroids;
+    cv::connectedComponentsWithStats(obstacle == 0, labels, stats, centroids, 4, CV_32S);
+    cv::Mat expected = obstacle.clone();
+    for (int r = 0; r < obstacle.rows; ++r) {
+      for (int c = 0; c < obstacle.cols; ++c) {
+        const int k = labels.at<int>(r, c);
+        if (k == 0) continue;
+        const int x = stats.at<int>(k, cv::CC_STAT_LEFT), y = stats.at<int>(k, cv::CC_STAT_TOP);
+        const int w = stats.at<int>(k, cv::CC_STAT_WIDTH), h = stats.at<int>(k, cv::CC_STAT_HEIGHT);
+        const bool border = x == 0 || y == 0 || x + w == obstacle.cols || y + h == obstacle.rows;
+        if (!border && std::max(w, h) <= max_pocket_px) expected.at<uint8_t>(r, c) = 255;
+      }
+    }
+    FillEnclosedPockets(max_pocket_px, &obstacle);
+    ASSERT_EQ(cv::countNonZero(obstacle != expected), 0) << "trial " << trial;
+  }
 }
 
 }  // namespace

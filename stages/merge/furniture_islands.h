@@ -1,0 +1,51 @@
+#pragma once
+
+#include <cstdint>
+#include <opencv2/core.hpp>
+#include <vector>
+
+#include "proto/artifacts.pb.h"
+
+namespace areagraph {
+
+// Obstacle regions (8-connected non-free cells) that touch no image border
+// and whose bounding box is at most this long (metres) are islands: desks,
+// cabinets, shelves and tables standing free. The building's walls are one
+// region with the map's outside, or longer.
+inline constexpr double kMaxFurnitureIslandM = 4.0;
+// Islands are at least this thick (metres; twice the depth of their deepest
+// cell) and kFurnitureWallRatio times the map's typical wall: noise specks
+// and pieces of wall between two doors are thinner.
+inline constexpr double kMinFurnitureThicknessM = 0.3;
+inline constexpr double kFurnitureWallRatio = 2.0;
+// Islands fill at least this share of their smallest enclosing rectangle: a
+// piece of wall with a T or a cabinet against it does not.
+inline constexpr double kMinFurnitureSolidity = 0.75;
+
+// Which obstacle cells belong to an island, as CV_8U the map's size (1 on
+// island cells). Cells that cleaning removed count as obstacles, so that a
+// wall it broke stays one region. Free pockets enclosed by obstacles and at
+// most `fill_pockets_m` long (merge.fill_furniture_outlines_m) count as
+// obstacles too, so that a desk drawn as a closed outline is one solid
+// island; 0 leaves them free.
+// Free-standing islands are 1. With `against_walls`
+// (merge.wall_furniture_islands), what stands against a thin wall is marked
+// 2: the same tests on what is left of the obstacles once everything thinner
+// than an island is taken away (a morphological opening with a disk as wide
+// as the least island thickness), so that a bin or a cabinet touching a
+// corridor's wall is no door's jamb. Islands are at most `max_elongation`
+// (merge.furniture_max_elongation) times as long as their smallest enclosing
+// rectangle is wide, 0 for any shape: a thick piece of wall between two
+// doors is no desk.
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
+                             bool against_walls, double max_elongation);
+
+// FurnitureIslandCells's values at `cells` only (0 for a cell outside the
+// map). Only the regions that hold one of them are walked, each only as far
+// as it can still be an island (a wall stops at the island's length): merge
+// asks about the jambs of its openings, a few thousand cells of millions.
+std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fill_pockets_m,
+                                        bool against_walls, double max_elongation,
+                                        const std::vector<cv::Point>& cells);
+
+}  // namespace areagraph
