@@ -27,10 +27,11 @@ inline constexpr size_t kWholeEncodingMaxBytes = size_t{8} << 20;
 // `message` serialized and encoded; above kWholeEncodingMaxBytes straight
 // into the zstd stream and the hash through a small buffer, without a copy
 // of the serialized bytes (133 MB for the Voronoi diagram of lab_a tiled
-// 8 x 8). Up to there the frame equals CompressPayload of SerializeAsString()
-// (and what the stream wrote before); beyond, the stream's frame may differ
-// from it (zstd can pick other matches) and decodes to the same bytes. Throws StoreError when the
-// message is over 2 GB or zstd fails.
+// 8 x 8). Up to there the frame is CompressPayload of SerializeAsString();
+// the stream's frame (above it, and at every size before) can differ from
+// that by a few bytes (5 of the 112 frames of areagraph/input, 1-10 bytes
+// each) and decodes to the same bytes. Throws StoreError when the message is
+// over 2 GB or zstd fails.
 EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message);
 
 // The same for bytes already serialized (ag-import's grid, merges, tests).

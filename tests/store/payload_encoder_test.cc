@@ -53,8 +53,8 @@ void ExpectSameAsOneShot(const EncodedPayload& encoded, const std::string& raw) 
   EXPECT_TRUE(encoded.frame == CompressPayload(raw)) << "the stored bytes changed";
 }
 
-// Past some size zstd's stream may pick other matches than its one call
-// (a 23-MB diagram here; an 11.6-MB one not): a frame of the same bytes.
+// zstd's stream can end up with a frame a few bytes off its one call's (this
+// 23-MB diagram; an 11.6-MB one not): a frame of the same bytes.
 TEST(PayloadEncoderTest, StreamedMessageEncodesItsBytes) {
   const proto::VoronoiDiagram diagram = RandomDiagram(300000);
   const std::string raw = diagram.SerializeAsString();
