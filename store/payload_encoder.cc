@@ -5,6 +5,7 @@
 #include <zstd.h>
 
 #include <climits>
+#include <memory>
 #include <vector>
 
 #include "common/error.h"
@@ -95,12 +96,33 @@ class EncodingStream : public google::protobuf::io::ZeroCopyOutputStream {
   Sha256 hash_;
 };
 
+// Hashes and compresses bytes that are all in memory: zstd's one call reads
+// them in place, where its stream copies them into its window and matches
+// across the wrap (ZSTD_compressBlock_fast_extDict). The same frame.
+EncodedPayload EncodeWhole(std::string_view raw) {
+  EncodedPayload payload;
+  payload.digest = Sha256Hex(raw);
+  payload.frame = CompressPayload(raw);
+  payload.raw_bytes = static_cast<int64_t>(raw.size());
+  return payload;
+}
+
 }  // namespace
 
 EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message) {
   const size_t raw_bytes = message.ByteSizeLong();
   if (raw_bytes > static_cast<size_t>(INT_MAX)) {
     throw StoreError("the artifact is too big to store (" + std::to_string(raw_bytes) + " bytes)");
+  }
+  if (raw_bytes <= kWholeEncodingMaxBytes) {
+    // Not zero-filled: every byte is written by the serializer.
+    const std::unique_ptr<uint8_t[]> raw(new uint8_t[raw_bytes]);
+    // The sizes ByteSizeLong just cached: no second pass over the message.
+    const uint8_t* end = message.SerializeWithCachedSizesToArray(raw.get());
+    if (end != raw.get() + raw_bytes) {
+      throw StoreError("a " + message.GetTypeName() + " changed size while it was serialized");
+    }
+    return EncodeWhole(std::string_view(reinterpret_cast<const char*>(raw.get()), raw_bytes));
   }
   EncodingStream stream(raw_bytes);
   {
@@ -115,9 +137,6 @@ EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message
   return stream.Finish();
 }
 
-EncodedPayload EncodeRawPayload(std::string_view raw) {
-  EncodingStream stream(raw.size());
-  return stream.Finish(raw);
-}
+EncodedPayload EncodeRawPayload(std::string_view raw) { return EncodeWhole(raw); }
 
 }  // namespace areagraph

@@ -79,6 +79,48 @@ SqliteArtifactStore::SqliteArtifactStore(const std::string& path, StoreMode mode
   PrepareStatements();
 }
 
+SqliteArtifactStore::SqliteArtifactStore(const std::string& path, UnpublishedFile)
+    : path_(path),
+      mode_(StoreMode::kReadWrite),
+      connection_(path, StoreMode::kReadWrite),
+      db_(connection_.get()) {
+  // Nobody else opens this file before it is whole, and a file cut short by
+  // a crash here is never published: neither a journal nor syncs buy anything.
+  Exec("PRAGMA journal_mode = OFF", "building a new store without a journal");
+  Exec("PRAGMA synchronous = OFF", "building a new store without syncs");
+  Exec("PRAGMA foreign_keys = ON", "enabling foreign keys");
+  sql_stmt_begin_ = Prepare(store_sql::kBegin, "starting a transaction");
+  sql_stmt_commit_ = Prepare(store_sql::kCommit, "committing a transaction");
+  sql_stmt_rollback_ = Prepare(store_sql::kRollback, "rolling back a transaction");
+  CreateOrUpgradeSchema();
+  // Last: the file's header then says WAL, as EnableWriteAheadLog leaves it.
+  if (JournalMode("PRAGMA journal_mode = WAL") != "wal") {
+    throw StoreError("store '" + path_ + "': the file system refuses the write-ahead log");
+  }
+  fold_on_close_ = false;  // the log is empty; SQLite's close removes it
+}
+
+void SqliteArtifactStore::BuildUnpublishedFile(const std::string& path) {
+  SqliteArtifactStore building(path, UnpublishedFile{});
+}
+
+std::string SqliteArtifactStore::JournalMode(const char* pragma, int* rc) {
+  std::string mode;
+  const int result = sqlite3_exec(
+      db_, pragma,
+      [](void* out, int, char** values, char**) {
+        if (values[0] != nullptr) *static_cast<std::string*>(out) = values[0];
+        return 0;
+      },
+      &mode, nullptr);
+  if (rc != nullptr) {
+    *rc = result;
+  } else {
+    CheckSqlite(db_, path_, result, "setting the journal mode");
+  }
+  return mode;
+}
+
 SqliteArtifactStore::SchemaState SqliteArtifactStore::ReadSchemaState() {
   // Raw calls: a file that is not SQLite fails here, and only here, with
   // NOTADB. One statement reads both values from one snapshot, so a process
@@ -133,14 +175,8 @@ void SqliteArtifactStore::EnableWriteAheadLog() {
   const auto give_up =
       std::chrono::steady_clock::now() + std::chrono::milliseconds(kStoreBusyTimeoutMs);
   while (true) {
-    std::string mode;
-    const int rc = sqlite3_exec(
-        db_, "PRAGMA journal_mode = WAL",
-        [](void* out, int, char** values, char**) {
-          if (values[0] != nullptr) *static_cast<std::string*>(out) = values[0];
-          return 0;
-        },
-        &mode, nullptr);
+    int rc = SQLITE_OK;
+    const std::string mode = JournalMode("PRAGMA journal_mode = WAL", &rc);
     if ((rc & 0xff) != SQLITE_BUSY || std::chrono::steady_clock::now() > give_up) {
       CheckSqlite(db_, path_, rc, "switching to the write-ahead log");
       // With WAL, NORMAL syncs at checkpoints only: a killed process loses
@@ -493,6 +529,7 @@ std::vector<FailureRecord> SqliteArtifactStore::ReadFailures() {
 }
 
 std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path, StoreMode mode) {
+  if (mode == StoreMode::kReadWrite) store_internal::CreateMissingStoreFile(path);
   return std::make_unique<SqliteArtifactStore>(path, mode);
 }
 

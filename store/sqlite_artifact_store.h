@@ -22,6 +22,10 @@ namespace areagraph {
 class SqliteArtifactStore : public ArtifactStore {
  public:
   SqliteArtifactStore(const std::string& path, StoreMode mode);
+  // Builds a new store's file at `path`, a fresh empty file no one else
+  // knows of: schema and WAL mode written without journal or syncs
+  // (sqlite_store_creation.cc makes it whole, then gives it its name).
+  static void BuildUnpublishedFile(const std::string& path);
   // A read-write store folds its write-ahead log into the file on close,
   // unless LeaveWriteAheadLogOnClose said otherwise.
   ~SqliteArtifactStore() override;
@@ -60,6 +64,9 @@ class SqliteArtifactStore : public ArtifactStore {
   void BackupTo(const std::string& path) override;
 
  private:
+  struct UnpublishedFile {};
+  SqliteArtifactStore(const std::string& path, UnpublishedFile);
+
   // Open-time steps, in the order that keeps a bad file untouched.
   struct SchemaState {
     int user_version = 0;
@@ -69,6 +76,9 @@ class SqliteArtifactStore : public ArtifactStore {
   void CheckIsAreagraphStore(const SchemaState& state, StoreMode mode);
   void Exec(const char* sql, const std::string& action);
   void EnableWriteAheadLog();
+  // Runs a journal_mode pragma and returns the mode it reports; SQLite's
+  // result code goes to `rc` when given, else a failure throws.
+  std::string JournalMode(const char* pragma, int* rc = nullptr);
   // Creates the schema, or upgrades an older one, in one transaction.
   void CreateOrUpgradeSchema();
   void CreateMapsTable();
@@ -161,6 +171,9 @@ inline const char* ForSchema(int version, const char* current, const char* befor
                              const char* before3) {
   return version >= 5 ? current : version >= 3 ? before5 : before3;
 }
+
+// Makes a new store file at `path` when none is there (sqlite_store_creation.cc).
+void CreateMissingStoreFile(const std::string& path);
 
 // Input keys are stored newline-joined.
 std::vector<std::string> SplitLines(const std::string& joined);

@@ -40,29 +40,52 @@ proto::VoronoiDiagram RandomDiagram(int vertex_count) {
   return diagram;
 }
 
-// What the store wrote before: the serialized copy, compressed in one go.
-void ExpectSameAsOneShot(const EncodedPayload& encoded, const std::string& raw) {
+// A frame of `raw` with its size and digest.
+void ExpectEncodes(const EncodedPayload& encoded, const std::string& raw) {
   EXPECT_EQ(encoded.raw_bytes, static_cast<int64_t>(raw.size()));
   EXPECT_EQ(encoded.digest, Sha256Hex(raw));
-  EXPECT_TRUE(encoded.frame == CompressPayload(raw)) << "the stored bytes changed";
   EXPECT_TRUE(DecodePayload(encoded.frame, kZstd) == raw);
 }
 
-TEST(PayloadEncoderTest, StreamedMessageEqualsOneShotCompressionOfItsBytes) {
-  const proto::VoronoiDiagram diagram = RandomDiagram(150000);
+// What the store wrote before: the serialized copy, compressed in one go.
+void ExpectSameAsOneShot(const EncodedPayload& encoded, const std::string& raw) {
+  ExpectEncodes(encoded, raw);
+  EXPECT_TRUE(encoded.frame == CompressPayload(raw)) << "the stored bytes changed";
+}
+
+// zstd's stream can end up with a frame a few bytes off its one call's (this
+// 23-MB diagram; an 11.6-MB one not): a frame of the same bytes.
+TEST(PayloadEncoderTest, StreamedMessageEncodesItsBytes) {
+  const proto::VoronoiDiagram diagram = RandomDiagram(300000);
+  const std::string raw = diagram.SerializeAsString();
+  ASSERT_GT(raw.size(), kWholeEncodingMaxBytes);  // the streamed path
+  ExpectEncodes(EncodeMessagePayload(diagram), raw);
+}
+
+TEST(PayloadEncoderTest, MessageSerializedWholeEqualsOneShot) {
+  const proto::VoronoiDiagram diagram = RandomDiagram(100000);
   const std::string raw = diagram.SerializeAsString();
   ASSERT_GT(raw.size(), size_t{4} << 20);
+  ASSERT_LE(raw.size(), kWholeEncodingMaxBytes);
   ExpectSameAsOneShot(EncodeMessagePayload(diagram), raw);
 }
 
-TEST(PayloadEncoderTest, LongBytesFieldEqualsOneShot) {
+// Cells of `width` x `height`, a third of them not free.
+proto::GridMap RandomGrid(int width, int height) {
   proto::GridMap grid;
-  grid.mutable_frame()->set_width_px(1500);
-  std::string cells(1500 * 1400, '\0');
+  grid.mutable_frame()->set_width_px(width);
+  std::string cells(static_cast<size_t>(width) * height, '\0');
   std::mt19937 random(3);
   for (char& cell : cells) cell = static_cast<char>(random() % 3 == 0 ? random() % 3 : 0);
   grid.set_cells(cells);
-  ExpectSameAsOneShot(EncodeMessagePayload(grid), grid.SerializeAsString());
+  return grid;
+}
+
+TEST(PayloadEncoderTest, LongBytesFieldEqualsOneShotOrEncodesItsBytesWhenStreamed) {
+  const proto::GridMap small = RandomGrid(1500, 1400);
+  ExpectSameAsOneShot(EncodeMessagePayload(small), small.SerializeAsString());
+  const proto::GridMap big = RandomGrid(3000, 3000);  // 9 MB: streamed
+  ExpectEncodes(EncodeMessagePayload(big), big.SerializeAsString());
 }
 
 TEST(PayloadEncoderTest, SmallAndEmptyMessagesEqualOneShot) {
