@@ -211,9 +211,22 @@ void Canvas::Label(const proto::Point2& at, const std::string& text, const cv::S
 
 void Canvas::PaintCells(const google::protobuf::RepeatedField<int32_t>& cells, int width,
                         const cv::Scalar& colour) {
+  // The pixel blocks are written directly: per cell, cv::rectangle's set-up
+  // costs more than its pixels (lab_a's clean picture: 74 -> 64 M instructions).
+  cv::Mat& picture = image();
+  const cv::Vec3b bgr(cv::saturate_cast<uint8_t>(colour[0]), cv::saturate_cast<uint8_t>(colour[1]),
+                      cv::saturate_cast<uint8_t>(colour[2]));
   for (const int32_t cell : cells) {
-    const cv::Rect rect((cell % width) * scale_, (cell / width) * scale_, scale_, scale_);
-    cv::rectangle(image(), rect, colour, cv::FILLED);
+    if (cell < 0 || width <= 0) continue;
+    // Clipped to the picture, as cv::rectangle clips.
+    const int64_t x0 = int64_t{cell % width} * scale_, y0 = int64_t{cell / width} * scale_;
+    if (x0 >= picture.cols || y0 >= picture.rows) continue;
+    const int x1 = static_cast<int>(std::min<int64_t>(x0 + scale_, picture.cols));
+    const int y1 = static_cast<int>(std::min<int64_t>(y0 + scale_, picture.rows));
+    for (int y = static_cast<int>(y0); y < y1; ++y) {
+      cv::Vec3b* row = picture.ptr<cv::Vec3b>(y);
+      for (int x = static_cast<int>(x0); x < x1; ++x) row[x] = bgr;
+    }
   }
 }
 

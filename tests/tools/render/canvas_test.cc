@@ -77,6 +77,30 @@ TEST(Canvas, AShortCellStringLeavesTheRestUnknown) {
   EXPECT_EQ(canvas.image().at<cv::Vec3b>(0, 1), cv::Vec3b(200, 200, 200));
 }
 
+// PaintCells writes the pixel blocks itself: the same picture as one
+// filled cv::rectangle per cell, and cells past the map (a damaged artifact)
+// are clipped away as cv::rectangle clips them.
+TEST(Canvas, PaintCellsIsAFilledRectanglePerCell) {
+  const int width = 9, height = 7;
+  google::protobuf::RepeatedField<int32_t> cells;
+  for (const int32_t cell : {0, 8, 10, 31, 62, 62, 63, 70, -1, 1 << 30}) cells.Add(cell);
+  const cv::Scalar colour(10, 200.4, 77.6);
+  for (const int scale : {1, 2, 5}) {
+    Canvas canvas(std::string(width * height, static_cast<char>(proto::CELL_FREE)), width, height,
+                  scale);
+    cv::Mat expected = canvas.image().clone();
+    for (const int32_t cell : cells) {
+      if (cell < 0 || cell >= width * height) continue;
+      cv::rectangle(expected,
+                    cv::Rect((cell % width) * scale, (cell / width) * scale, scale, scale), colour,
+                    cv::FILLED);
+    }
+    canvas.PaintCells(cells, width, colour);
+    EXPECT_EQ(cv::norm(canvas.image(), expected, cv::NORM_INF), 0) << "scale " << scale;
+    EXPECT_EQ(canvas.image().at<cv::Vec3b>(0, 0), cv::Vec3b(10, 200, 78));
+  }
+}
+
 TEST(Canvas, VoronoiEdgesAreDrawnInTheirExactColours) {
   proto::VoronoiDiagram voronoi;
   for (const auto& [x, y] : {std::pair{2, 10}, {38, 10}, {2, 15}, {38, 15}}) {
