@@ -1,7 +1,7 @@
 #include "stages/clean/cell_runs.h"
 
 #include "stages/clean/mask_runs.h"
-#include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
 
@@ -19,18 +19,9 @@ RunRegions FindRunRegions(const std::string& cells, int width, int height, uint8
   }
   row_start[height] = runs.size();
   // Runs of neighbouring rows join when they overlap or touch diagonally.
-  // Both rows' runs are in column order: one sweep.
-  DisjointSets regions(runs.size());
-  for (int r = 1; r < height; ++r) {
-    size_t above = row_start[r - 1];
-    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
-      while (above < row_start[r] && runs[above].end < runs[i].begin) ++above;
-      for (size_t a = above; a < row_start[r] && runs[a].begin <= runs[i].end; ++a) {
-        regions.Union(int(a), int(i));
-      }
-    }
-  }
-  found.region = regions.DenseLabels(&found.count);
+  found.region = JoinRowRuns(
+      runs, row_start, /*eight_connected=*/true,
+      [](const CellRun&, const CellRun&) { return true; }, &found.count);
   return found;
 }
 

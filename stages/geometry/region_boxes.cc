@@ -5,7 +5,6 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "stages/geometry/disjoint_sets.h"
 
 namespace areagraph {
 namespace {
@@ -29,20 +28,11 @@ int RunPiecesOf(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<i
     }
   }
   row_start[cells.rows] = runs->size();
-  DisjointSets pieces(runs->size());
-  for (int r = 1; r < cells.rows; ++r) {
-    // Both rows' runs are in column order: one sweep finds the overlaps.
-    size_t above = row_start[r - 1];
-    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
-      const PieceRun& run = (*runs)[i];
-      while (above < row_start[r] && (*runs)[above].end <= run.begin) ++above;
-      for (size_t a = above; a < row_start[r] && (*runs)[a].begin < run.end; ++a) {
-        if ((*runs)[a].value == run.value) pieces.Union(static_cast<int>(a), static_cast<int>(i));
-      }
-    }
-  }
   int count = 0;
-  *piece_of_run = pieces.DenseLabels(&count);
+  *piece_of_run = JoinRowRuns(
+      *runs, row_start, /*eight_connected=*/false,
+      [](const PieceRun& above, const PieceRun& below) { return above.value == below.value; },
+      &count);
   return count;
 }
 

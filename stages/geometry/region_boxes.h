@@ -3,6 +3,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "stages/geometry/disjoint_sets.h"
+
 namespace areagraph {
 
 // cv::connectedComponentsWithStats(mask, *labels, *stats, centroids,
@@ -43,5 +45,28 @@ struct PieceRun {
 // row-major order of their first cells (the order a row-major scan that
 // walks each piece it meets would find them). Returns the number of pieces.
 int RunPieces(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<int>* piece_of_run);
+
+// Joins runs (fields row, begin, end; row-major, each row's in column
+// order; row r's are runs[row_start[r], row_start[r + 1])) of neighbouring
+// rows that overlap, or also touch at a corner when `eight_connected`, and
+// for which same(above, below) holds. Returns per run its piece, numbered
+// in the order of the pieces' first runs; `count` gets the number.
+// One sweep per pair of rows: RunPieces' and clean's FindRunRegions' join.
+template <typename Run, typename Same>
+std::vector<int> JoinRowRuns(const std::vector<Run>& runs, const std::vector<size_t>& row_start,
+                             bool eight_connected, Same same, int* count) {
+  const int corner = eight_connected ? 1 : 0;
+  DisjointSets pieces(runs.size());
+  for (size_t r = 1; r + 1 < row_start.size(); ++r) {
+    size_t above = row_start[r - 1];
+    for (size_t i = row_start[r]; i < row_start[r + 1]; ++i) {
+      while (above < row_start[r] && runs[above].end + corner <= runs[i].begin) ++above;
+      for (size_t a = above; a < row_start[r] && runs[a].begin < runs[i].end + corner; ++a) {
+        if (same(runs[a], runs[i])) pieces.Union(static_cast<int>(a), static_cast<int>(i));
+      }
+    }
+  }
+  return pieces.DenseLabels(count);
+}
 
 }  // namespace areagraph
