@@ -1,5 +1,6 @@
 #include "stages/geometry/site_alpha_shape.h"
 
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -141,20 +142,30 @@ struct SiteAlphaShape::Impl {
       if (seed->info().*label >= 0 || !member(seed)) continue;
       seed->info().*label = count;
       stack.push_back(seed);
-      while (!stack.empty()) {
-        const Face face = stack.back();
-        stack.pop_back();
-        for (int i = 0; i < 3; ++i) {
-          const Face next = face->neighbor(i);
-          if (shape.is_infinite(next) || next->info().*label >= 0) continue;
-          if (!connects(face, i) || !member(next)) continue;
-          next->info().*label = count;
-          stack.push_back(next);
-        }
-      }
+      Spread(&stack, [&](const Face& face, int i, const Face& next) {
+        if (shape.is_infinite(next) || next->info().*label >= 0) return false;
+        if (!connects(face, i) || !member(next)) return false;
+        next->info().*label = count;
+        return true;
+      });
       ++count;
     }
     return count;
+  }
+
+  // Walks from the faces on `stack` (emptied) across their edges, depth
+  // first: join(face, i, next) decides, and marks, whether `next`, across
+  // edge i of `face`, is walked from too. Only the set reached matters.
+  template <typename Join>
+  static void Spread(std::vector<Face>* stack, const Join& join) {
+    while (!stack->empty()) {
+      const Face face = stack->back();
+      stack->pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const Face next = face->neighbor(i);
+        if (join(face, i, next)) stack->push_back(next);
+      }
+    }
   }
 
   // The closed boundary rings of every labelled region, keyed by label. Each
@@ -263,22 +274,16 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
   // Outside: what infinity reaches without crossing the alpha complex. Edges
   // of the complex (singular ones too) are walls, so a thin wall whose
   // sliver triangles are wider than alpha still closes the map.
-  // (Only the set reached matters, so the search runs depth first.)
   std::vector<Face> stack;
   for (Face face : impl.shape.all_face_handles()) {
     face->info().outside = impl.shape.is_infinite(face);
     if (face->info().outside) stack.push_back(face);
   }
-  while (!stack.empty()) {
-    const Face face = stack.back();
-    stack.pop_back();
-    for (int i = 0; i < 3; ++i) {
-      const Face next = face->neighbor(i);
-      if (next->info().outside || Impl::InComplex(face, i)) continue;
-      next->info().outside = true;
-      stack.push_back(next);
-    }
-  }
+  Impl::Spread(&stack, [](const Face& face, int i, const Face& next) {
+    if (next->info().outside || Impl::InComplex(face, i)) return false;
+    next->info().outside = true;
+    return true;
+  });
   impl.enclosed_regions =
       impl.LabelRegions([](const Face& face) { return !face->info().outside; },
                         [](const Face&, int) { return true; }, &FaceInfo::filled_region);
@@ -400,23 +405,18 @@ int SiteAlphaShape::DetectRooms(
     return room == -3;
   };
   int count = 0;
-  std::deque<Face> queue;
+  std::vector<Face> stack;
   for (Face seed : shape.finite_face_handles()) {
     if (seed->info().room < 0 && member(seed)) {
       seed->info().room = count;
       impl.room_areas.push_back(0.0);
-      queue.push_back(seed);
-      while (!queue.empty()) {
-        const Face face = queue.front();
-        queue.pop_front();
-        for (int i = 0; i < 3; ++i) {
-          const Face next = face->neighbor(i);
-          if (shape.is_infinite(next) || next->info().room >= 0) continue;
-          if (Impl::InComplex(face, i) || !member(next)) continue;
-          next->info().room = count;
-          queue.push_back(next);
-        }
-      }
+      stack.push_back(seed);
+      Impl::Spread(&stack, [&](const Face& face, int i, const Face& next) {
+        if (shape.is_infinite(next) || next->info().room >= 0) return false;
+        if (Impl::InComplex(face, i) || !member(next)) return false;
+        next->info().room = count;
+        return true;
+      });
       ++count;
     }
     if (seed->info().room < 0) {
@@ -463,10 +463,15 @@ std::vector<proto::Polygon> SiteAlphaShape::RoomOutlines() {
   std::vector<proto::Polygon> outlines;
   if (!impl_->HasFaces()) return outlines;
   // The faces take their rooms' ids now (the labels stay ids from here on).
-  for (Face face : impl_->shape.finite_face_handles()) face->info().room = impl_->RoomId(face);
-  for (size_t room = 0; room < impl_->room_ids.size(); ++room) {
-    impl_->room_ids[room] = static_cast<int>(room);
+  // (A renumbering may have given ids past the labels: the identity covers
+  // them all.)
+  int ids = 0;
+  for (Face face : impl_->shape.finite_face_handles()) {
+    face->info().room = impl_->RoomId(face);
+    ids = std::max(ids, face->info().room + 1);
   }
+  impl_->room_ids.resize(ids);
+  for (int room = 0; room < ids; ++room) impl_->room_ids[room] = room;
   const auto rings = impl_->RegionRings(&FaceInfo::room);
   for (const auto& [room, room_rings] : rings) {
     if (room >= static_cast<int>(outlines.size())) outlines.resize(room + 1);

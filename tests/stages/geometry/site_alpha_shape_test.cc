@@ -117,5 +117,32 @@ TEST(SiteAlphaShapeTest, RenumberedRoomsKeepTheirFacesAreasAndOutlines) {
   }
 }
 
+// A renumbering may give ids past the rooms' count: they hold through the
+// outlines, as when the faces carried the ids themselves.
+TEST(SiteAlphaShapeTest, IdsPastTheRoomCountHoldThroughTheOutlines) {
+  PointList sites;
+  AddBox(0, 0, 20, 12, &sites);
+  AddBox(30, 0, 10, 25, &sites);
+  SiteAlphaShape shape(sites, 1.5);
+  const int count = shape.DetectRooms([](const Eigen::Vector2d&) { return true; });
+  ASSERT_GE(count, 2);
+  const Eigen::Vector2d in_first(10, 6), in_second(35, 12);
+  const int first = shape.RoomAt(in_first), second = shape.RoomAt(in_second);
+  ASSERT_GE(first, 0);
+  ASSERT_GE(second, 0);
+  ASSERT_NE(first, second);
+  std::vector<int> ids(count, -1);
+  ids[first] = count + 6;
+  ids[second] = count + 2;
+  shape.RenumberRooms(ids);
+  EXPECT_EQ(shape.RoomAt(in_first), count + 6);
+  const std::vector<proto::Polygon> outlines = shape.RoomOutlines();
+  ASSERT_EQ(outlines.size(), static_cast<size_t>(count + 7));
+  EXPECT_GT(outlines[count + 6].outer().points_size(), 0);
+  EXPECT_GT(outlines[count + 2].outer().points_size(), 0);
+  EXPECT_EQ(shape.RoomAt(in_first), count + 6);
+  EXPECT_EQ(shape.RoomAt(in_second), count + 2);
+}
+
 }  // namespace
 }  // namespace areagraph
