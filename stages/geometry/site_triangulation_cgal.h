@@ -9,6 +9,7 @@
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <emmintrin.h>
 
 #include <Eigen/Core>
 #include <cstdint>
@@ -45,6 +46,9 @@ using Point = Kernel::Point_2;
 // Epick's. `on_half_grid` holds only when every point ever tested is a
 // multiple of 0.5 within +-kHalfGridLimit: set it only for a triangulation of
 // such sites (in-circle tests see its vertices and inserted points only).
+// Without it, each call checks its own four points (MixedHalfGrid): cut's
+// sites are cell centres but for the few hundred that close doors and gaps
+// along lines, and its grid quadruples would all take Epick's exact fallback.
 struct Traits : Kernel {
   static constexpr double kHalfGridLimit = 33554432.0;  // 2^25: int64 minors, int128 products
   bool on_half_grid = false;
@@ -57,7 +61,7 @@ struct Traits : Kernel {
     bool on_half_grid;
     CGAL::Oriented_side operator()(const Point& p, const Point& q, const Point& r,
                                    const Point& t) const {
-      if (!on_half_grid) return Kernel().side_of_oriented_circle_2_object()(p, q, r, t);
+      if (!on_half_grid) return MixedHalfGrid(p, q, r, t);
       // Epick's determinant (side_of_oriented_circleC2) on doubled, integral
       // coordinates: the sign is the same (scaled by 2^4).
       auto twice = [](double v) { return static_cast<int64_t>(2 * v); };
@@ -72,6 +76,43 @@ struct Traits : Kernel {
       const __int128 left = static_cast<__int128>(a) * d, right = static_cast<__int128>(b) * c;
       return left > right ? CGAL::ON_POSITIVE_SIDE
                           : (left < right ? CGAL::ON_NEGATIVE_SIDE : CGAL::ON_ORIENTED_BOUNDARY);
+    }
+
+    // The same sign for any four points: Epick's unless all are on the half
+    // grid within +-kMixedLimit. There the differences are multiples of 0.5
+    // below 2^14, so the four entries are exact in double (multiples of 0.25
+    // below 2^29) and, times 4, their products exact in 64-bit integers.
+    static constexpr double kMixedLimit = 8191.0;
+    static CGAL::Oriented_side MixedHalfGrid(const Point& p, const Point& q, const Point& r,
+                                             const Point& t) {
+      if (!NearOnHalfGrid(p, q, r, t))
+        return Kernel().side_of_oriented_circle_2_object()(p, q, r, t);
+      const double qpx = q.x() - p.x(), qpy = q.y() - p.y();
+      const double rpx = r.x() - p.x(), rpy = r.y() - p.y();
+      const double tpx = t.x() - p.x(), tpy = t.y() - p.y();
+      const double tqx = t.x() - q.x(), tqy = t.y() - q.y();
+      const double rqx = r.x() - q.x(), rqy = r.y() - q.y();
+      const auto a = static_cast<int64_t>(4 * (qpx * tpy - qpy * tpx));
+      const auto b = static_cast<int64_t>(4 * (tpx * tqx + tpy * tqy));
+      const auto c = static_cast<int64_t>(4 * (qpx * rpy - qpy * rpx));
+      const auto d = static_cast<int64_t>(4 * (rpx * rqx + rpy * rqy));
+      const int64_t ad = a * d, cb = c * b;
+      return ad > cb ? CGAL::ON_POSITIVE_SIDE
+                     : (ad < cb ? CGAL::ON_NEGATIVE_SIDE : CGAL::ON_ORIENTED_BOUNDARY);
+    }
+    // Whether every coordinate is a multiple of 0.5 with magnitude at most
+    // kMixedLimit; two coordinates at a time (NaN fails the comparisons).
+    static bool NearOnHalfGrid(const Point& p, const Point& q, const Point& r, const Point& t) {
+      const __m128d two = _mm_set1_pd(2.0), limit = _mm_set1_pd(2 * kMixedLimit);
+      const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
+      __m128d ok = _mm_castsi128_pd(_mm_set1_epi32(-1));
+      for (const Point* point : {&p, &q, &r, &t}) {
+        const __m128d twice = _mm_mul_pd(_mm_set_pd(point->y(), point->x()), two);
+        const __m128d whole = _mm_cvtepi32_pd(_mm_cvttpd_epi32(twice));
+        ok = _mm_and_pd(ok, _mm_cmpeq_pd(whole, twice));
+        ok = _mm_and_pd(ok, _mm_cmple_pd(_mm_and_pd(twice, magnitude), limit));
+      }
+      return _mm_movemask_pd(ok) == 3;
     }
   };
   Side_of_oriented_circle_2 side_of_oriented_circle_2_object() const { return {on_half_grid}; }

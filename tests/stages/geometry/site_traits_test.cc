@@ -40,5 +40,70 @@ TEST(SiteTraitsTest, TheTriangulationIsTheKernelsFaceByFace) {
   }
 }
 
+// Without the whole triangulation on the half grid (cut's sites: cell
+// centres and the off-grid sites that close doors), each call checks its own
+// four points: the sign is still Epick's, whichever way it is found.
+TEST(SiteTraitsTest, MixedSitesGiveTheKernelsSigns) {
+  std::mt19937 random(16);
+  std::uniform_int_distribution<int> cell(-6, 6), kind(0, 7);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  const site_cgal::Traits::Side_of_oriented_circle_2 ours =
+      site_cgal::Traits(false).side_of_oriented_circle_2_object();
+  const auto theirs = Kernel().side_of_oriented_circle_2_object();
+  const double limit = site_cgal::Traits::Side_of_oriented_circle_2::kMixedLimit;
+  int co_circular = 0, off_grid = 0;
+  for (const double origin :
+       {0.0, 4000.0, limit - 6, limit - 3, limit + 0.5, -limit - 0.5, -20000.0}) {
+    for (int i = 0; i < 100000; ++i) {
+      Point points[4];
+      bool on_grid = true;
+      for (Point& point : points) {
+        double x = origin + cell(random) + 0.5 * (kind(random) % 2);
+        double y = origin + cell(random) + 0.5 * (kind(random) % 2);
+        if (kind(random) == 0) {  // a door's line site, or one near the grid
+          x += kind(random) == 0 ? 1e-9 : fraction(random);
+          on_grid = false;
+        }
+        point = Point(x, y);
+      }
+      off_grid += !on_grid;
+      const CGAL::Oriented_side expected = theirs(points[0], points[1], points[2], points[3]);
+      co_circular += expected == CGAL::ON_ORIENTED_BOUNDARY;
+      ASSERT_EQ(ours(points[0], points[1], points[2], points[3]), expected)
+          << "origin " << origin << " quadruple " << i;
+    }
+  }
+  EXPECT_GT(co_circular, 3000) << "the degenerate cases were not exercised";
+  EXPECT_GT(off_grid, 100000);
+}
+
+TEST(SiteTraitsTest, MixedSitesTriangulateAsTheKernelFaceByFace) {
+  using KernelDelaunay = CGAL::Delaunay_triangulation_2<Kernel, site_cgal::Tds>;
+  std::mt19937 random(17);
+  std::uniform_int_distribution<int> cell(0, 70), kind(0, 50);
+  std::uniform_real_distribution<double> fraction(0.0, 1.0);
+  for (int round = 0; round < 6; ++round) {
+    std::vector<Point> sites;
+    const double origin = 1500.0 * round;
+    for (int i = 0; i < 3000; ++i) {
+      const bool line_site = kind(random) == 0;
+      sites.emplace_back(origin + cell(random) + (line_site ? fraction(random) : 0.5),
+                         origin + cell(random) + 0.5);
+    }
+    site_cgal::Delaunay ours{site_cgal::Traits(false)};
+    KernelDelaunay theirs;
+    ours.insert(sites.begin(), sites.end());
+    theirs.insert(sites.begin(), sites.end());
+    ASSERT_EQ(ours.number_of_faces(), theirs.number_of_faces());
+    auto face = theirs.finite_faces_begin();
+    for (const auto ours_face : ours.finite_face_handles()) {
+      for (int i = 0; i < 3; ++i) {
+        ASSERT_EQ(ours_face->vertex(i)->point(), face->vertex(i)->point()) << "round " << round;
+      }
+      ++face;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace areagraph
