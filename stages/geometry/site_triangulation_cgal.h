@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 #include "stages/geometry/site_triangulation.h"
@@ -59,11 +60,69 @@ struct Traits : Kernel {
   struct Side_of_oriented_circle_2 {
     using result_type = CGAL::Oriented_side;
     bool on_half_grid;
-    CGAL::Oriented_side operator()(const Point& p, const Point& q, const Point& r,
-                                   const Point& t) const {
-      if (!on_half_grid) return MixedHalfGrid(p, q, r, t);
-      // Epick's determinant (side_of_oriented_circleC2) on doubled, integral
-      // coordinates: the sign is the same (scaled by 2^4).
+    __attribute__((always_inline)) CGAL::Oriented_side operator()(const Point& p, const Point& q,
+                                                                  const Point& r,
+                                                                  const Point& t) const {
+      // All on the half grid: exact in integers (as cheap as the filter below
+      // and never in doubt).
+      if (on_half_grid) return OnHalfGridSign(p, q, r, t);
+      // Else Epick's determinant (side_of_oriented_circleC2) in double first:
+      // its sign is certain when it is farther from 0 than the rounding can
+      // move it, most calls (not the co-circular ones).
+      const double qpx = q.x() - p.x(), qpy = q.y() - p.y();
+      const double rpx = r.x() - p.x(), rpy = r.y() - p.y();
+      const double tpx = t.x() - p.x(), tpy = t.y() - p.y();
+      const double tqx = t.x() - q.x(), tqy = t.y() - q.y();
+      const double rqx = r.x() - q.x(), rqy = r.y() - q.y();
+      const double a = qpx * tpy - qpy * tpx, b = tpx * tqx + tpy * tqy;
+      const double c = qpx * rpy - qpy * rpx, d = rpx * rqx + rpy * rqy;
+      const double det = a * d - b * c;
+      const double bound = MaxMagnitude({qpx, qpy, rpx, rpy, tpx, tpy, tqx, tqy, rqx, rqy});
+      // With every difference at most `bound` in magnitude, the rounding
+      // error of `det` is below 80 u bound^4 (u = 2^-53: each difference and
+      // operation off by at most u relatively; the entries, at most 2 bound^2,
+      // are off by 8 u bound^2 each). Outside this range of `bound` the scale
+      // could overflow or underflow, and a NaN fails both comparisons: the
+      // exact tests decide.
+      if (bound >= 1e-60 && bound <= 1e60) {
+        const double squared = bound * bound;
+        const double error = squared * squared * (128.0 / 9007199254740992.0);
+        if (det > error) return CGAL::ON_POSITIVE_SIDE;
+        if (det < -error) return CGAL::ON_NEGATIVE_SIDE;
+      }
+      return Exact(p, q, r, t, a, b, c, d);
+    }
+
+    // The exact sign where the double determinant (entries a to d) is too
+    // close to 0; out of line, so that the common path stays small.
+    __attribute__((noinline)) static CGAL::Oriented_side Exact(const Point& p, const Point& q,
+                                                               const Point& r, const Point& t,
+                                                               double a, double b, double c,
+                                                               double d) {
+      if (NearOnHalfGrid(p, q, r, t)) {
+        // Differences of multiples of 0.5 below 2^14 are exact, so are the
+        // four entries (multiples of 0.25 below 2^29); times 4 they are whole
+        // and their products exact in 64-bit integers.
+        const auto ad = static_cast<int64_t>(4 * a) * static_cast<int64_t>(4 * d);
+        const auto bc = static_cast<int64_t>(4 * b) * static_cast<int64_t>(4 * c);
+        return ad > bc ? CGAL::ON_POSITIVE_SIDE
+                       : (ad < bc ? CGAL::ON_NEGATIVE_SIDE : CGAL::ON_ORIENTED_BOUNDARY);
+      }
+      return Kernel().side_of_oriented_circle_2_object()(p, q, r, t);
+    }
+
+    // The largest magnitude of `values` (a NaN may be skipped: it makes the
+    // determinant NaN anyway).
+    static double MaxMagnitude(std::initializer_list<double> values) {
+      double largest = 0;
+      for (const double value : values) largest = std::max(largest, std::abs(value));
+      return largest;
+    }
+
+    // The exact sign for points on the half grid within +-kHalfGridLimit:
+    // the determinant on doubled, integral coordinates (scaled by 2^4).
+    static CGAL::Oriented_side OnHalfGridSign(const Point& p, const Point& q, const Point& r,
+                                              const Point& t) {
       auto twice = [](double v) { return static_cast<int64_t>(2 * v); };
       const int64_t px = twice(p.x()), py = twice(p.y());
       const int64_t qpx = twice(q.x()) - px, qpy = twice(q.y()) - py;
@@ -78,30 +137,9 @@ struct Traits : Kernel {
                           : (left < right ? CGAL::ON_NEGATIVE_SIDE : CGAL::ON_ORIENTED_BOUNDARY);
     }
 
-    // The same sign for any four points: Epick's unless all are on the half
-    // grid within +-kMixedLimit. There the differences are multiples of 0.5
-    // below 2^14, so the four entries are exact in double (multiples of 0.25
-    // below 2^29) and, times 4, their products exact in 64-bit integers.
-    static constexpr double kMixedLimit = 8191.0;
-    static CGAL::Oriented_side MixedHalfGrid(const Point& p, const Point& q, const Point& r,
-                                             const Point& t) {
-      if (!NearOnHalfGrid(p, q, r, t))
-        return Kernel().side_of_oriented_circle_2_object()(p, q, r, t);
-      const double qpx = q.x() - p.x(), qpy = q.y() - p.y();
-      const double rpx = r.x() - p.x(), rpy = r.y() - p.y();
-      const double tpx = t.x() - p.x(), tpy = t.y() - p.y();
-      const double tqx = t.x() - q.x(), tqy = t.y() - q.y();
-      const double rqx = r.x() - q.x(), rqy = r.y() - q.y();
-      const auto a = static_cast<int64_t>(4 * (qpx * tpy - qpy * tpx));
-      const auto b = static_cast<int64_t>(4 * (tpx * tqx + tpy * tqy));
-      const auto c = static_cast<int64_t>(4 * (qpx * rpy - qpy * rpx));
-      const auto d = static_cast<int64_t>(4 * (rpx * rqx + rpy * rqy));
-      const int64_t ad = a * d, cb = c * b;
-      return ad > cb ? CGAL::ON_POSITIVE_SIDE
-                     : (ad < cb ? CGAL::ON_NEGATIVE_SIDE : CGAL::ON_ORIENTED_BOUNDARY);
-    }
     // Whether every coordinate is a multiple of 0.5 with magnitude at most
     // kMixedLimit; two coordinates at a time (NaN fails the comparisons).
+    static constexpr double kMixedLimit = 8191.0;
     static bool NearOnHalfGrid(const Point& p, const Point& q, const Point& r, const Point& t) {
       const __m128d two = _mm_set1_pd(2.0), limit = _mm_set1_pd(2 * kMixedLimit);
       const __m128d magnitude = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
