@@ -15,8 +15,24 @@ namespace {
 using site_cgal::Kernel;
 using site_cgal::Point;
 
+// The site triangulation of `sites` (with the traits' `on_half_grid`) has
+// Epick's faces in Epick's container order, vertex by vertex.
+void ExpectTheKernelsFaces(const std::vector<Point>& sites, bool on_half_grid, int round) {
+  site_cgal::Delaunay ours{site_cgal::Traits(on_half_grid)};
+  CGAL::Delaunay_triangulation_2<Kernel, site_cgal::Tds> theirs;
+  ours.insert(sites.begin(), sites.end());
+  theirs.insert(sites.begin(), sites.end());
+  ASSERT_EQ(ours.number_of_faces(), theirs.number_of_faces());
+  auto face = theirs.finite_faces_begin();
+  for (const auto ours_face : ours.finite_face_handles()) {
+    for (int i = 0; i < 3; ++i) {
+      ASSERT_EQ(ours_face->vertex(i)->point(), face->vertex(i)->point()) << "round " << round;
+    }
+    ++face;
+  }
+}
+
 TEST(SiteTraitsTest, TheTriangulationIsTheKernelsFaceByFace) {
-  using KernelDelaunay = CGAL::Delaunay_triangulation_2<Kernel, site_cgal::Tds>;
   std::mt19937 random(15);
   std::uniform_int_distribution<int> cell(0, 70), kind(0, 3);
   for (int round = 0; round < 10; ++round) {
@@ -27,18 +43,7 @@ TEST(SiteTraitsTest, TheTriangulationIsTheKernelsFaceByFace) {
       const double shift = kind(random) == 0 ? 0.0 : 0.5;
       sites.emplace_back(origin + cell(random) + shift, origin + cell(random) + shift);
     }
-    site_cgal::Delaunay ours{site_cgal::Traits(true)};
-    KernelDelaunay theirs;
-    ours.insert(sites.begin(), sites.end());
-    theirs.insert(sites.begin(), sites.end());
-    ASSERT_EQ(ours.number_of_faces(), theirs.number_of_faces());
-    auto face = theirs.finite_faces_begin();
-    for (const auto ours_face : ours.finite_face_handles()) {
-      for (int i = 0; i < 3; ++i) {
-        ASSERT_EQ(ours_face->vertex(i)->point(), face->vertex(i)->point()) << "round " << round;
-      }
-      ++face;
-    }
+    ExpectTheKernelsFaces(sites, true, round);
   }
 }
 
@@ -80,7 +85,6 @@ TEST(SiteTraitsTest, MixedSitesGiveTheKernelsSigns) {
 }
 
 TEST(SiteTraitsTest, MixedSitesTriangulateAsTheKernelFaceByFace) {
-  using KernelDelaunay = CGAL::Delaunay_triangulation_2<Kernel, site_cgal::Tds>;
   std::mt19937 random(17);
   std::uniform_int_distribution<int> cell(0, 70), kind(0, 50);
   std::uniform_real_distribution<double> fraction(0.0, 1.0);
@@ -92,18 +96,7 @@ TEST(SiteTraitsTest, MixedSitesTriangulateAsTheKernelFaceByFace) {
       sites.emplace_back(origin + cell(random) + (line_site ? fraction(random) : 0.5),
                          origin + cell(random) + 0.5);
     }
-    site_cgal::Delaunay ours{site_cgal::Traits(false)};
-    KernelDelaunay theirs;
-    ours.insert(sites.begin(), sites.end());
-    theirs.insert(sites.begin(), sites.end());
-    ASSERT_EQ(ours.number_of_faces(), theirs.number_of_faces());
-    auto face = theirs.finite_faces_begin();
-    for (const auto ours_face : ours.finite_face_handles()) {
-      for (int i = 0; i < 3; ++i) {
-        ASSERT_EQ(ours_face->vertex(i)->point(), face->vertex(i)->point()) << "round " << round;
-      }
-      ++face;
-    }
+    ExpectTheKernelsFaces(sites, false, round);
   }
 }
 
