@@ -70,21 +70,27 @@ struct PlainVoronoi {
   std::vector<double> clearances;
   std::vector<Edge> edges;
 
-  // `diagram` holds arrays (PackedVoronoi).
-  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram) {
+  // `diagram` holds arrays of matching lengths (PackedVoronoi), read here
+  // through their data pointers (millions of entries on a big map).
+  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram)
+      : clearances(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end()) {
+    const double* site_x = diagram.site_x().data();
+    const double* site_y = diagram.site_y().data();
     sites.reserve(diagram.site_x_size());
-    for (int s = 0; s < diagram.site_x_size(); ++s) {
-      sites.emplace_back(diagram.site_x(s), diagram.site_y(s));
-    }
+    for (int s = 0; s < diagram.site_x_size(); ++s) sites.emplace_back(site_x[s], site_y[s]);
+    const double* vertex_x = diagram.vertex_x().data();
+    const double* vertex_y = diagram.vertex_y().data();
     positions.reserve(diagram.vertex_x_size());
-    for (int v = 0; v < diagram.vertex_x_size(); ++v) {
-      positions.emplace_back(diagram.vertex_x(v), diagram.vertex_y(v));
-    }
-    clearances.assign(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end());
+    for (int v = 0; v < diagram.vertex_x_size(); ++v)
+      positions.emplace_back(vertex_x[v], vertex_y[v]);
+    const int* source = diagram.edge_source().data();
+    const int* target = diagram.edge_target().data();
+    const int* left = diagram.edge_left_site().data();
+    const int* right = diagram.edge_right_site().data();
+    const double* clearance = diagram.edge_clearance_px().data();
     edges.reserve(diagram.edge_source_size());
     for (int e = 0; e < diagram.edge_source_size(); ++e) {
-      edges.push_back({diagram.edge_source(e), diagram.edge_target(e), diagram.edge_left_site(e),
-                       diagram.edge_right_site(e), diagram.edge_clearance_px(e)});
+      edges.push_back({source[e], target[e], left[e], right[e], clearance[e]});
     }
   }
 };
