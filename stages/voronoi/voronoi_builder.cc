@@ -113,38 +113,29 @@ void AddDualOfTriangulation(SiteDelaunay& dt, const std::vector<Eigen::Vector2d>
   auto point = [&](int site) { return site_cgal::Point(sites[site].x(), sites[site].y()); };
 
   // One Voronoi vertex per circle, placed at the first face's circumcentre:
-  // vertices are numbered in order of their first face. Kept together (the
-  // edges below read a vertex's three numbers at once) and copied into the
-  // diagram's arrays after.
-  struct Place {
-    Eigen::Vector2d position;
-    double clearance;
-  };
-  std::vector<Place> places(vertex_count);
-  for (int f = 0, placed = 0; f < face_count && placed < vertex_count; ++f) {
-    if (f + kAhead < face_count) {
-      for (int i = 0; i < 3; ++i) {
-        __builtin_prefetch(&sites[faces.site[3 * static_cast<size_t>(f + kAhead) + i]]);
-      }
-    }
-    if (vertex_of_face[f] != placed) continue;
-    const int* site = &faces.site[3 * static_cast<size_t>(f)];
-    const site_cgal::Point first = point(site[0]);
-    const auto centre = dt.circumcenter(first, point(site[1]), point(site[2]));
-    places[placed++] = {Eigen::Vector2d(centre.x(), centre.y()),
-                        std::sqrt(CGAL::squared_distance(centre, first))};
-  }
+  // vertices are numbered in order of their first face. Written straight
+  // into the diagram (a copy beside it would be fresh pages to fault in).
   auto& xs = *diagram->mutable_vertex_x();
   auto& ys = *diagram->mutable_vertex_y();
   auto& clearances = *diagram->mutable_vertex_clearance_px();
   xs.Reserve(vertex_count);
   ys.Reserve(vertex_count);
   clearances.Reserve(vertex_count);
-  for (const Place& place : places) {
-    xs.AddAlreadyReserved(place.position.x());
-    ys.AddAlreadyReserved(place.position.y());
-    clearances.AddAlreadyReserved(place.clearance);
+  for (int f = 0; f < face_count && xs.size() < vertex_count; ++f) {
+    if (f + kAhead < face_count) {
+      for (int i = 0; i < 3; ++i) {
+        __builtin_prefetch(&sites[faces.site[3 * static_cast<size_t>(f + kAhead) + i]]);
+      }
+    }
+    if (vertex_of_face[f] != xs.size()) continue;
+    const int* site = &faces.site[3 * static_cast<size_t>(f)];
+    const site_cgal::Point first = point(site[0]);
+    const auto centre = dt.circumcenter(first, point(site[1]), point(site[2]));
+    xs.AddAlreadyReserved(centre.x());
+    ys.AddAlreadyReserved(centre.y());
+    clearances.AddAlreadyReserved(std::sqrt(CGAL::squared_distance(centre, first)));
   }
+  auto position = [&](int vertex) { return Eigen::Vector2d(xs[vertex], ys[vertex]); };
 
   // Each slot's edge, in place of the neighbour: its target vertex, kRay, or
   // kNotHere when the neighbour has the lower number (the edge is its). A
@@ -172,7 +163,11 @@ void AddDualOfTriangulation(SiteDelaunay& dt, const std::vector<Eigen::Vector2d>
     if (number + kAhead < face_count) {
       const size_t first = 3 * static_cast<size_t>(number + kAhead);
       for (size_t slot = first; slot < first + 3; ++slot) {
-        if (target_of[slot] >= 0) __builtin_prefetch(&places[target_of[slot]]);
+        if (const int target = target_of[slot]; target >= 0) {
+          __builtin_prefetch(&xs[target]);
+          __builtin_prefetch(&ys[target]);
+          __builtin_prefetch(&clearances[target]);
+        }
         __builtin_prefetch(&sites[faces.site[slot]]);
       }
     }
@@ -202,14 +197,11 @@ void AddDualOfTriangulation(SiteDelaunay& dt, const std::vector<Eigen::Vector2d>
         const Eigen::Vector2d direction = Eigen::Vector2d(along.y(), -along.x()).normalized();
         diagram->add_ray_direction_x(direction.x());
         diagram->add_ray_direction_y(direction.y());
-        const Place& from = places[source];
-        clearance = EdgeClearance(from.position, direction, INFINITY, from.clearance,
-                                  from.clearance, left_site, right_site);
+        clearance = EdgeClearance(position(source), direction, INFINITY, clearances[source],
+                                  clearances[source], left_site, right_site);
       } else {
-        const Place& from = places[source];
-        const Place& to = places[target];
-        clearance = EdgeClearance(from.position, to.position - from.position, 1.0, from.clearance,
-                                  to.clearance, left_site, right_site);
+        clearance = EdgeClearance(position(source), position(target) - position(source), 1.0,
+                                  clearances[source], clearances[target], left_site, right_site);
       }
       diagram->add_edge_source(source);
       diagram->add_edge_target(target);
