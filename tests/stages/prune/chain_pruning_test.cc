@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "stages/prune/chain_graph.h"
 
 namespace areagraph {
@@ -115,13 +117,20 @@ TEST(ChainPruningTest, CornerSpurGoesWhateverItsLength) {
   EXPECT_TRUE(graph.edges[3].removed);
 }
 
-TEST(ChainPruningTest, JunctionsCloserThanTheirClearanceMerge) {
+// Junctions 0 (clearance 20) and 1 (15), 10 px apart, each with two more
+// edges: 2 -> 0 and 3 -> 0, and `east` and `south` (to vertices 4 and 5) at 1.
+ChainGraph CloseJunctions(ChainEdge east, ChainEdge south) {
   ChainGraph graph;
   graph.vertices = {{{0, 0}, 20},    {{10, 0}, 15},  {{-100, 0}, 10},
                     {{0, -100}, 10}, {{110, 0}, 10}, {{10, 100}, 10}};
   graph.edges = {Chain(0, 1, {0, 0}, {10, 0}, 2, 15), Chain(2, 0, {-100, 0}, {0, 0}, 5, 10),
-                 Chain(3, 0, {0, -100}, {0, 0}, 5, 10), Chain(1, 4, {10, 0}, {110, 0}, 5, 10),
-                 Chain(1, 5, {10, 0}, {10, 100}, 5, 10)};
+                 Chain(3, 0, {0, -100}, {0, 0}, 5, 10), std::move(east), std::move(south)};
+  return graph;
+}
+
+TEST(ChainPruningTest, JunctionsCloserThanTheirClearanceMerge) {
+  ChainGraph graph =
+      CloseJunctions(Chain(1, 4, {10, 0}, {110, 0}, 5, 10), Chain(1, 5, {10, 0}, {10, 100}, 5, 10));
   EXPECT_EQ(MergeCloseJunctions(&graph), 1);
   ASSERT_EQ(graph.edges.size(), 4u);
   for (const ChainEdge& edge : graph.edges) {
@@ -147,12 +156,8 @@ proto::Polygon Triangle(double x) {
 // both carrying absorbed polygons: each becomes the merged edge followed by
 // itself, turned as it was, as copying Reversed() chains would make it.
 TEST(ChainPruningTest, MergedJunctionsEdgesKeepTheirWayAndPolygons) {
-  ChainGraph graph;
-  graph.vertices = {{{0, 0}, 20},    {{10, 0}, 15},  {{-100, 0}, 10},
-                    {{0, -100}, 10}, {{110, 0}, 10}, {{10, 100}, 10}};
-  graph.edges = {Chain(0, 1, {0, 0}, {10, 0}, 2, 15), Chain(2, 0, {-100, 0}, {0, 0}, 5, 10),
-                 Chain(3, 0, {0, -100}, {0, 0}, 5, 10), Chain(4, 1, {110, 0}, {10, 0}, 4, 10),
-                 Chain(1, 5, {10, 0}, {10, 100}, 3, 10)};
+  ChainGraph graph =
+      CloseJunctions(Chain(4, 1, {110, 0}, {10, 0}, 4, 10), Chain(1, 5, {10, 0}, {10, 100}, 3, 10));
   graph.edges[3].absorbed = {Triangle(1), Triangle(2)};
   graph.edges[4].absorbed = {Triangle(3)};
   graph.edges[4].clearance_px.back() = 7;  // tells the ends apart
