@@ -20,10 +20,11 @@ constexpr int kAhead = 16;
 // The finite faces as flat arrays, face k being the k-th of CGAL's finite
 // face iteration: its three vertices' site indices and its three
 // neighbours' numbers (-1: infinite), slot i for vertex i and the neighbour
-// across from it, as in the face itself. Walking these instead of following
-// the faces' pointers again in every pass is what keeps a big map's dual
-// cheap: 24 bytes a face against CGAL's 72 bytes a face and its vertices,
-// which no longer fit in the caches on lab_a tiled 8 x 8.
+// across from it, as in the face itself. Read in face order, with the few
+// random reads asked for ahead, these replace following the faces' pointers
+// in every pass: CGAL's faces (72 bytes each, in slots that insertion
+// reused, so neighbours lie anywhere) and vertices miss the caches on a big
+// map (lab_a tiled 8 x 8).
 struct FaceArrays {
   std::vector<int> site;
   std::vector<int> neighbor;
