@@ -50,11 +50,13 @@ FaceArrays NumberAndMergeFaces(SiteDelaunay& dt, DisjointSets* sets) {
   // CGAL reuses the slots of faces that insertion destroyed, so a face's
   // neighbours and vertices lie anywhere in memory: what they hold is asked
   // for kAhead faces early.
-  auto ahead = dt.finite_faces_begin();
-  for (int k = 0; k < kAhead && ahead != dt.finite_faces_end(); ++k) ++ahead;
+  // (All faces: cheaper to step through than the finite ones, and the few
+  // infinite ones only make a prefetch useless.)
+  auto ahead = dt.all_faces_begin();
+  for (int k = 0; k < kAhead && ahead != dt.all_faces_end(); ++k) ++ahead;
   int count = 0;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    if (ahead != dt.finite_faces_end()) {
+    if (ahead != dt.all_faces_end()) {
       for (int i = 0; i < 3; ++i) {
         __builtin_prefetch(&ahead->neighbor(i)->info());
         __builtin_prefetch(&*ahead->vertex(i));
