@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <numeric>
+#include <utility>
 
 namespace areagraph {
 namespace {
@@ -129,12 +130,16 @@ int MergeCloseJunctions(ChainGraph* graph) {
       // polygons stay valid (they overlap on the merged edge's faces).
       ChainEdge bridge = edge.source == keep ? edge : edge.Reversed();
       bridge.absorbed.clear();
+      // Turned in place and moved rather than copied: an edge's absorbed
+      // polygons are not copied twice and then dropped.
       for (const Incidence& moved : incidences[gone]) {
         ChainEdge& other = graph->edges[moved.edge];
         if (moved.edge == e || other.removed) continue;
         ChainEdge extended = bridge;
-        extended.Append(moved.at_target ? other.Reversed() : other);
-        other = moved.at_target ? extended.Reversed() : extended;
+        if (moved.at_target) other.Reverse();
+        extended.Append(std::move(other));
+        if (moved.at_target) extended.Reverse();
+        other = std::move(extended);
       }
       edge.removed = true;
       touched[keep] = touched[gone] = true;

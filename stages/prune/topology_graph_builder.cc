@@ -27,6 +27,18 @@ namespace {
 // many co-circular sites, whose Voronoi vertices coincide.
 constexpr double kSamePointPx = 1e-6;
 
+// How many vertices (or edges) ahead the loops over the diagram ask for the
+// memory they will read at random (__builtin_prefetch): on a big map the
+// grid, the vertices' positions and their flags do not fit in the caches.
+constexpr int kAhead = 16;
+
+// Asks for the grid's cell under `point` (as CellGrid::FreeAt reads it).
+inline void PrefetchCell(const CellGrid& grid, const Eigen::Vector2d& point) {
+  if (point.x() >= 0 && point.y() >= 0 && point.x() < grid.width() && point.y() < grid.height()) {
+    __builtin_prefetch(grid.CellRow(static_cast<int>(point.y())) + static_cast<int>(point.x()));
+  }
+}
+
 std::string Metres(double value) { return FormatNumber(value) + " m"; }
 
 [[noreturn]] __attribute__((noinline)) void ThrowBadIndex(int index, int size, const char* element,
@@ -58,21 +70,27 @@ struct PlainVoronoi {
   std::vector<double> clearances;
   std::vector<Edge> edges;
 
-  // `diagram` holds arrays (PackedVoronoi).
-  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram) {
+  // `diagram` holds arrays of matching lengths (PackedVoronoi), read here
+  // through their data pointers (millions of entries on a big map).
+  explicit PlainVoronoi(const proto::VoronoiDiagram& diagram)
+      : clearances(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end()) {
+    const double* site_x = diagram.site_x().data();
+    const double* site_y = diagram.site_y().data();
     sites.reserve(diagram.site_x_size());
-    for (int s = 0; s < diagram.site_x_size(); ++s) {
-      sites.emplace_back(diagram.site_x(s), diagram.site_y(s));
-    }
+    for (int s = 0; s < diagram.site_x_size(); ++s) sites.emplace_back(site_x[s], site_y[s]);
+    const double* vertex_x = diagram.vertex_x().data();
+    const double* vertex_y = diagram.vertex_y().data();
     positions.reserve(diagram.vertex_x_size());
-    for (int v = 0; v < diagram.vertex_x_size(); ++v) {
-      positions.emplace_back(diagram.vertex_x(v), diagram.vertex_y(v));
-    }
-    clearances.assign(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end());
+    for (int v = 0; v < diagram.vertex_x_size(); ++v)
+      positions.emplace_back(vertex_x[v], vertex_y[v]);
+    const int* source = diagram.edge_source().data();
+    const int* target = diagram.edge_target().data();
+    const int* left = diagram.edge_left_site().data();
+    const int* right = diagram.edge_right_site().data();
+    const double* clearance = diagram.edge_clearance_px().data();
     edges.reserve(diagram.edge_source_size());
     for (int e = 0; e < diagram.edge_source_size(); ++e) {
-      edges.push_back({diagram.edge_source(e), diagram.edge_target(e), diagram.edge_left_site(e),
-                       diagram.edge_right_site(e), diagram.edge_clearance_px(e)});
+      edges.push_back({source[e], target[e], left[e], right[e], clearance[e]});
     }
   }
 };
@@ -105,6 +123,7 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
   std::vector<char> keep(vertex_count, 0);
   std::vector<int> region(vertex_count, -1);
   for (int v = 0; v < vertex_count; ++v) {
+    if (v + kAhead < vertex_count) PrefetchCell(grid, diagram.positions[v + kAhead]);
     const Eigen::Vector2d& p = diagram.positions[v];
     if (!grid.FreeAt(p)) continue;
     region[v] = boundary_shape->EnclosedRegionAt(p, v);
@@ -113,7 +132,17 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
 
   DisjointSets same_point(vertex_count);
   std::vector<int> kept_edges;
-  for (int e = 0; e < static_cast<int>(diagram.edges.size()); ++e) {
+  const int edge_count = static_cast<int>(diagram.edges.size());
+  for (int e = 0; e < edge_count; ++e) {
+    if (e + kAhead < edge_count) {
+      const PlainVoronoi::Edge& ahead = diagram.edges[e + kAhead];
+      for (const int v : {ahead.source, ahead.target}) {
+        if (v >= 0 && v < vertex_count) {
+          __builtin_prefetch(&keep[v]);
+          __builtin_prefetch(&diagram.positions[v]);
+        }
+      }
+    }
     const PlainVoronoi::Edge& edge = diagram.edges[e];
     CheckIndex(edge.source, vertex_count, "vertex", e);
     if (edge.target < 0) continue;  // a ray
@@ -185,10 +214,11 @@ struct FreeSpaceParts {
 
 FreeSpaceParts LabelFreeSpace(const CellGrid& grid) {
   cv::Mat free_cells(grid.height(), grid.width(), CV_8U);
+  const int width = grid.width();  // a local: the byte stores cannot change it
   for (int r = 0; r < grid.height(); ++r) {
     uint8_t* row = free_cells.ptr<uint8_t>(r);
     const uint8_t* state = grid.CellRow(r);
-    for (int c = 0; c < grid.width(); ++c) row[c] = state[c] == proto::CELL_FREE ? 1 : 0;
+    for (int c = 0; c < width; ++c) row[c] = state[c] == proto::CELL_FREE ? 1 : 0;
   }
   FreeSpaceParts parts;
   cv::Mat stats;
@@ -257,7 +287,12 @@ proto::TopologyGraph ToProto(ChainGraph graph, const proto::MapFrame& frame,
     for (proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = std::move(polygon);
     edge->set_length_px(chain.Length());
     edge->set_min_clearance_px(chain.min_clearance_px);
-    UpdateEdgePolygons(edge);
+    // UpdateEdgePolygons' rings, from the chain's lists rather than read
+    // back out of the messages just written.
+    *edge->mutable_left_half()->mutable_outer() = HalfPolygonRing(chain.path, chain.left_sites);
+    *edge->mutable_right_half()->mutable_outer() = HalfPolygonRing(chain.path, chain.right_sites);
+    *edge->mutable_polygon()->mutable_outer() =
+        EdgePolygonRing(chain.path, chain.left_sites, chain.right_sites);
   }
   return out;
 }

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
+
 #include "stages/prune/chain_graph.h"
 
 namespace areagraph {
@@ -115,13 +117,20 @@ TEST(ChainPruningTest, CornerSpurGoesWhateverItsLength) {
   EXPECT_TRUE(graph.edges[3].removed);
 }
 
-TEST(ChainPruningTest, JunctionsCloserThanTheirClearanceMerge) {
+// Junctions 0 (clearance 20) and 1 (15), 10 px apart, each with two more
+// edges: 2 -> 0 and 3 -> 0, and `east` and `south` (to vertices 4 and 5) at 1.
+ChainGraph CloseJunctions(ChainEdge east, ChainEdge south) {
   ChainGraph graph;
   graph.vertices = {{{0, 0}, 20},    {{10, 0}, 15},  {{-100, 0}, 10},
                     {{0, -100}, 10}, {{110, 0}, 10}, {{10, 100}, 10}};
   graph.edges = {Chain(0, 1, {0, 0}, {10, 0}, 2, 15), Chain(2, 0, {-100, 0}, {0, 0}, 5, 10),
-                 Chain(3, 0, {0, -100}, {0, 0}, 5, 10), Chain(1, 4, {10, 0}, {110, 0}, 5, 10),
-                 Chain(1, 5, {10, 0}, {10, 100}, 5, 10)};
+                 Chain(3, 0, {0, -100}, {0, 0}, 5, 10), std::move(east), std::move(south)};
+  return graph;
+}
+
+TEST(ChainPruningTest, JunctionsCloserThanTheirClearanceMerge) {
+  ChainGraph graph =
+      CloseJunctions(Chain(1, 4, {10, 0}, {110, 0}, 5, 10), Chain(1, 5, {10, 0}, {10, 100}, 5, 10));
   EXPECT_EQ(MergeCloseJunctions(&graph), 1);
   ASSERT_EQ(graph.edges.size(), 4u);
   for (const ChainEdge& edge : graph.edges) {
@@ -132,6 +141,54 @@ TEST(ChainPruningTest, JunctionsCloserThanTheirClearanceMerge) {
   }
   // The edges of the dropped junction run along the merged edge to it.
   EXPECT_DOUBLE_EQ(graph.edges[2].Length() + graph.edges[3].Length(), 220);
+}
+
+proto::Polygon Triangle(double x) {
+  proto::Polygon polygon;
+  for (const Eigen::Vector2d& p :
+       {Eigen::Vector2d(x, 1), Eigen::Vector2d(x + 1, 1), Eigen::Vector2d(x, 2)}) {
+    *polygon.mutable_outer()->add_points() = ToProtoPoint(p);
+  }
+  return polygon;
+}
+
+// The dropped junction's edges, one ending there and one starting there,
+// both carrying absorbed polygons: each becomes the merged edge followed by
+// itself, turned as it was, as copying Reversed() chains would make it.
+TEST(ChainPruningTest, MergedJunctionsEdgesKeepTheirWayAndPolygons) {
+  ChainGraph graph =
+      CloseJunctions(Chain(4, 1, {110, 0}, {10, 0}, 4, 10), Chain(1, 5, {10, 0}, {10, 100}, 3, 10));
+  graph.edges[3].absorbed = {Triangle(1), Triangle(2)};
+  graph.edges[4].absorbed = {Triangle(3)};
+  graph.edges[4].clearance_px.back() = 7;  // tells the ends apart
+  ChainEdge bridge = graph.edges[0];
+  auto extended = [&](const ChainEdge& other, bool at_target) {
+    ChainEdge edge = bridge;
+    edge.Append(at_target ? other.Reversed() : other);
+    return at_target ? edge.Reversed() : edge;
+  };
+  const std::vector<ChainEdge> expected = {extended(graph.edges[3], true),
+                                           extended(graph.edges[4], false)};
+  ASSERT_EQ(MergeCloseJunctions(&graph), 1);
+  ASSERT_EQ(graph.edges.size(), 4u);
+  for (int k = 0; k < 2; ++k) {
+    const ChainEdge& got = graph.edges[2 + k];
+    const ChainEdge& want = expected[k];
+    EXPECT_EQ(got.source, want.source);
+    EXPECT_EQ(got.target, want.target);
+    EXPECT_EQ(got.path, want.path);
+    EXPECT_EQ(got.left_sites, want.left_sites);
+    EXPECT_EQ(got.right_sites, want.right_sites);
+    EXPECT_EQ(got.clearance_px, want.clearance_px);
+    EXPECT_EQ(got.min_clearance_px, want.min_clearance_px);
+    ASSERT_EQ(got.absorbed.size(), want.absorbed.size());
+    for (size_t i = 0; i < got.absorbed.size(); ++i) {
+      EXPECT_EQ(got.absorbed[i].SerializeAsString(), want.absorbed[i].SerializeAsString());
+    }
+  }
+  EXPECT_EQ(graph.edges[2].target, 0);  // 4 -> 1 became 4 -> 0
+  EXPECT_EQ(graph.edges[3].source, 0);  // 1 -> 5 became 0 -> 5
+  EXPECT_EQ(graph.edges[2].absorbed.size(), 2u);
 }
 
 }  // namespace
