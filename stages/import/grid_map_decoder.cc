@@ -37,11 +37,19 @@ GreyToCell MapServerRule(const MapYaml& yaml) {
 
 std::string ClassifyCells(const cv::Mat& grey, const GreyToCell& rule) {
   CV_Assert(grey.type() == CV_8UC1);
+  // A byte table and local pointers: the enum table is 4 bytes an entry, and
+  // stores through the string's chars may alias anything, so indexing the
+  // string reloaded its buffer per cell.
+  uint8_t byte_rule[256];
+  for (int grey_value = 0; grey_value < 256; ++grey_value) {
+    byte_rule[grey_value] = static_cast<uint8_t>(rule[grey_value]);
+  }
   std::string cells(static_cast<size_t>(grey.rows) * grey.cols, '\0');
-  size_t index = 0;
+  auto* out = reinterpret_cast<uint8_t*>(cells.data());
   for (int row = 0; row < grey.rows; ++row) {
     const uint8_t* pixels = grey.ptr<uint8_t>(row);
-    for (int col = 0; col < grey.cols; ++col) cells[index++] = static_cast<char>(rule[pixels[col]]);
+    for (int col = 0; col < grey.cols; ++col) out[col] = byte_rule[pixels[col]];
+    out += grey.cols;
   }
   return cells;
 }

@@ -170,5 +170,26 @@ TEST(MapYamlTest, YamlBesideTheImageIsFoundAndDigested) {
   EXPECT_EQ(ImportGridMap(with, proto::ImportOptions()).frame().resolution_m(), 0.5);
 }
 
+TEST(ClassifyCellsTest, EveryPixelByItsGreyRowByRow) {
+  // A view into a wider image: rows are not contiguous.
+  cv::Mat wide(37, 53, CV_8UC1);
+  cv::randu(wide, 0, 256);
+  const cv::Mat grey = wide(cv::Rect(3, 2, 41, 33));
+  MapYaml raw;
+  raw.mode = MapYaml::Mode::kRaw;
+  raw.negate = true;
+  for (const GreyToCell& rule :
+       {GreyThresholdRule(proto::ImportOptions()), MapServerRule(MapYaml()), MapServerRule(raw)}) {
+    const std::string cells = ClassifyCells(grey, rule);
+    ASSERT_EQ(cells.size(), size_t(grey.rows) * grey.cols);
+    for (int row = 0; row < grey.rows; ++row) {
+      for (int col = 0; col < grey.cols; ++col) {
+        ASSERT_EQ(cells[size_t(row) * grey.cols + col], char(rule[grey.at<uint8_t>(row, col)]))
+            << row << ", " << col;
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace areagraph

@@ -3,6 +3,7 @@
 #include "stages/import/png_grey_decoder.h"
 
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <filesystem>
 #include <fstream>
@@ -71,6 +72,47 @@ TEST(PngGreyDecoder, DeclinesDamagedFiles) {
   EXPECT_FALSE(DecodeCommonPngToGrey(truncated, &out));
   EXPECT_TRUE(out.empty());
   EXPECT_FALSE(DecodeCommonPngToGrey("P5\n1 1\n255\n\x01", &out));
+}
+
+// The PNG with the last IDAT chunk's final four data bytes (the zlib
+// stream's Adler-32) changed and that chunk's CRC-32 made right again.
+std::string WithWrongAdler32(std::string png) {
+  size_t last_idat = std::string::npos;
+  for (size_t at = 8; at + 12 <= png.size();) {
+    const uint32_t length = uint32_t(uint8_t(png[at])) << 24 |
+                            uint32_t(uint8_t(png[at + 1])) << 16 |
+                            uint32_t(uint8_t(png[at + 2])) << 8 | uint8_t(png[at + 3]);
+    if (png.compare(at + 4, 4, "IDAT") == 0) last_idat = at;
+    at += 12 + length;
+  }
+  EXPECT_NE(last_idat, std::string::npos);
+  const uint32_t length = uint32_t(uint8_t(png[last_idat])) << 24 |
+                          uint32_t(uint8_t(png[last_idat + 1])) << 16 |
+                          uint32_t(uint8_t(png[last_idat + 2])) << 8 | uint8_t(png[last_idat + 3]);
+  const size_t data_end = last_idat + 8 + length;
+  png[data_end - 1] = char(png[data_end - 1] ^ 0x5a);
+  const uLong crc =
+      crc32(0, reinterpret_cast<const Bytef*>(png.data() + last_idat + 4), uInt(length + 4));
+  for (int i = 0; i < 4; ++i) png[data_end + i] = char((crc >> (24 - 8 * i)) & 0xff);
+  return png;
+}
+
+TEST(PngGreyDecoder, LeavesTheAdler32ToTheChunkCrcs) {
+  // libpng skips zlib's Adler-32 (png_set_option PNG_IGNORE_ADLER32): the
+  // chunk CRC-32s cover the same bytes. A stream whose Adler-32 alone is
+  // wrong decodes to the right pixels; a chunk with a wrong CRC still fails.
+  cv::Mat bgr(23, 31, CV_8UC3);
+  cv::randu(bgr, 0, 256);
+  const std::string good = Encode(bgr);
+  const std::string wrong_adler = WithWrongAdler32(good);
+  ASSERT_NE(good, wrong_adler);
+  cv::Mat expected, decoded;
+  ASSERT_TRUE(DecodeCommonPngToGrey(good, &expected));
+  ASSERT_TRUE(DecodeCommonPngToGrey(wrong_adler, &decoded));
+  EXPECT_EQ(cv::countNonZero(decoded != expected), 0);
+  std::string wrong_crc = wrong_adler;
+  wrong_crc[wrong_crc.size() - 13] = char(wrong_crc[wrong_crc.size() - 13] ^ 1);
+  EXPECT_FALSE(DecodeCommonPngToGrey(wrong_crc, &decoded));
 }
 
 // Every PNG of ../shared/data (maps, ground truths, published results: grey,
