@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
@@ -178,8 +179,14 @@ TEST(ClassifyCellsTest, EveryPixelByItsGreyRowByRow) {
   MapYaml raw;
   raw.mode = MapYaml::Mode::kRaw;
   raw.negate = true;
-  for (const GreyToCell& rule :
-       {GreyThresholdRule(proto::ImportOptions()), MapServerRule(MapYaml()), MapServerRule(raw)}) {
+  // Rules of a few steps (sixteen pixels at a time) and of many (the table).
+  GreyToCell four_steps = GreyThresholdRule(proto::ImportOptions()), any;
+  for (int g = 0; g < 256; ++g) {
+    four_steps[g] = g < 3 ? O : g < 100 ? U : g < 101 ? F : g < 255 ? O : U;
+    any[g] = proto::CellState(std::rand() % 3);
+  }
+  for (const GreyToCell& rule : {GreyThresholdRule(proto::ImportOptions()),
+                                 MapServerRule(MapYaml()), MapServerRule(raw), four_steps, any}) {
     const std::string cells = ClassifyCells(grey, rule);
     ASSERT_EQ(cells.size(), size_t(grey.rows) * grey.cols);
     for (int row = 0; row < grey.rows; ++row) {
