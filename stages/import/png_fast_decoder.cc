@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <vector>
 #ifdef __SSE2__
 #include <immintrin.h>
@@ -167,17 +168,17 @@ bool ReadChunks(const std::string& bytes, uint32_t* width, uint32_t* height, int
   return header && !data->empty();
 }
 
-// Inflates `data` into exactly `out` but its last `spare` bytes: false if
-// the stream is damaged, shorter, or longer.
-bool InflateExactly(const std::vector<uint8_t>& data, std::vector<uint8_t>* out, size_t spare) {
+// Inflates `data` into exactly `size` bytes at `out`: false if the stream
+// is damaged, shorter, or longer.
+bool InflateExactly(const std::vector<uint8_t>& data, uint8_t* out, size_t size) {
   z_stream stream{};
   if (inflateInit(&stream) != Z_OK) return false;
   // Like libpng here (PNG_IGNORE_ADLER32): the chunk CRCs cover the bytes.
   inflateValidate(&stream, 0);
   stream.next_in = const_cast<Bytef*>(data.data());
   stream.avail_in = uInt(data.size());
-  stream.next_out = out->data();
-  stream.avail_out = uInt(out->size() - spare);
+  stream.next_out = out;
+  stream.avail_out = uInt(size);
   const int status = inflate(&stream, Z_FINISH);
   const bool exact = status == Z_STREAM_END && stream.avail_out == 0 && stream.avail_in == 0;
   inflateEnd(&stream);
@@ -194,19 +195,24 @@ bool DecodePlainPngToGrey(const std::string& bytes, cv::Mat* grey) {
   if (!ReadChunks(bytes, &width, &height, &channels, &data)) return false;
   const size_t row_bytes = size_t(width) * channels;
   if (row_bytes + 1 > (size_t(1) << 31) / height) return false;
-  // A byte to spare past the last row for PaethPixels's four-byte reads.
-  std::vector<uint8_t> raw((row_bytes + 1) * height + 1);
-  if (!InflateExactly(data, &raw, 1)) return false;
+  // Not zeroed first (inflate writes every byte; fresh pages cost enough),
+  // with a byte to spare past the last row for PaethPixels's four-byte reads.
+  const size_t raw_size = (row_bytes + 1) * height;
+  const std::unique_ptr<uint8_t[]> raw(new uint8_t[raw_size + 1]);
+  raw[raw_size] = 0;
+  if (!InflateExactly(data, raw.get(), raw_size)) return false;
   std::vector<uint8_t> zeros(row_bytes + 1, 0);
   cv::Mat out(int(height), int(width), CV_8UC1);
   for (uint32_t y = 0; y < height; ++y) {
-    uint8_t* row = raw.data() + y * (row_bytes + 1);
+    uint8_t* row = raw.get() + y * (row_bytes + 1);
     const uint8_t* prior = y == 0 ? zeros.data() : row - row_bytes;
     if (!Unfilter(row[0], row + 1, prior, row_bytes, channels)) return false;
     const uint8_t* in = row + 1;
     uint8_t* pixel = out.ptr<uint8_t>(int(y));
-    if (channels <= 2) {
-      for (uint32_t x = 0; x < width; ++x) pixel[x] = in[x * channels];
+    if (channels == 1) {
+      std::memcpy(pixel, in, width);
+    } else if (channels == 2) {
+      for (uint32_t x = 0; x < width; ++x) pixel[x] = in[2 * x];
     } else {
       for (uint32_t x = 0; x < width; ++x, in += channels) pixel[x] = Grey(in[0], in[1], in[2]);
     }
