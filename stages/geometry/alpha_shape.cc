@@ -1,13 +1,32 @@
 #include "stages/geometry/alpha_shape.h"
 
-#include "stages/geometry/cgal_types.h"
+#include <cstdint>
+
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/site_triangulation.h"
+#include "stages/geometry/site_triangulation_cgal.h"
 
 namespace areagraph {
 namespace {
 
-using cgal::SiteDelaunay;
+using SiteDelaunay = site_cgal::Delaunay;
 using Face = SiteDelaunay::Face_handle;
+using Point = site_cgal::Point;
+
+// Twice a coordinate on the half-pixel grid, as an integer.
+int64_t Twice(double value) { return static_cast<int64_t>(2 * value); }
+
+// Whether t lies strictly inside the circle with diameter pq, (t - p) . (t - q)
+// < 0: Epick's side_of_bounded_circle_2 == ON_BOUNDED_SIDE, in integers when
+// the points are on the half-pixel grid (most pairs of grid points tie).
+bool StrictlyInsideDiametralCircle(const Point& p, const Point& q, const Point& t,
+                                   bool on_half_grid) {
+  if (!on_half_grid) {
+    return site_cgal::Kernel().side_of_bounded_circle_2_object()(p, q, t) == CGAL::ON_BOUNDED_SIDE;
+  }
+  const int64_t tx = Twice(t.x()), ty = Twice(t.y());
+  return (tx - Twice(p.x())) * (tx - Twice(q.x())) + (ty - Twice(p.y())) * (ty - Twice(q.y())) < 0;
+}
 
 // Points on one line (or a single point): there are no faces, so join
 // consecutive points closer than the disk's diameter.
@@ -37,8 +56,11 @@ void CollinearComplex(const SiteDelaunay& dt, double alpha_radius, DisjointSets&
 AlphaComplex ComputeAlphaComplex(const std::vector<Eigen::Vector2d>& points, double alpha_radius) {
   AlphaComplex complex;
   DisjointSets sets(points.size());
-  const auto indexed = cgal::IndexedPoints(points);
-  SiteDelaunay dt(indexed.begin(), indexed.end());
+  // The site triangulation's traits: Epick with an integer in-circle test
+  // when every point is on the half-pixel grid (ag-clean's cell centres), the
+  // same exact signs, so the same triangulation.
+  const SiteTriangulationPtr triangulation = TriangulateIndexedSites(points);
+  SiteDelaunay& dt = triangulation->dt;
   if (dt.dimension() < 2) {
     CollinearComplex(dt, alpha_radius, sets, complex);
     complex.component_of_point = sets.DenseLabels(&complex.component_count);
@@ -48,25 +70,26 @@ AlphaComplex ComputeAlphaComplex(const std::vector<Eigen::Vector2d>& points, dou
   const double alpha = alpha_radius * alpha_radius;
   const auto& traits = dt.geom_traits();
   const auto squared_radius = traits.compute_squared_radius_2_object();
-  const auto side_of_bounded_circle = traits.side_of_bounded_circle_2_object();
   // Face info: the finite faces' numbers in iteration order, -1 for the
   // infinite ones.
   std::vector<char> interior;
   interior.reserve(dt.number_of_faces());
-  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = -1;
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info().number = -1;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    f->info() = int(interior.size());
+    f->info().number = int(interior.size());
     const double face_alpha =
         squared_radius(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
     interior.push_back(face_alpha <= alpha);
   }
-  auto is_interior = [&](const Face& face) { return face->info() >= 0 && interior[face->info()]; };
+  auto is_interior = [&](const Face& face) {
+    return face->info().number >= 0 && interior[face->info().number];
+  };
   // An opposite vertex strictly inside the edge's diametral circle.
   auto attached = [&](const Face& face, int i) {
-    return face->info() >= 0 &&
-           side_of_bounded_circle(face->vertex(SiteDelaunay::cw(i))->point(),
-                                  face->vertex(SiteDelaunay::ccw(i))->point(),
-                                  face->vertex(i)->point()) == CGAL::ON_BOUNDED_SIDE;
+    return face->info().number >= 0 &&
+           StrictlyInsideDiametralCircle(face->vertex(SiteDelaunay::cw(i))->point(),
+                                         face->vertex(SiteDelaunay::ccw(i))->point(),
+                                         face->vertex(i)->point(), traits.on_half_grid);
   };
 
   // Each edge once, from its finite face with the lower number. (CGAL's edge
@@ -75,7 +98,7 @@ AlphaComplex ComputeAlphaComplex(const std::vector<Eigen::Vector2d>& points, dou
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
     for (int k = 0; k < 3; ++k) {
       const Face neighbor = f->neighbor(k);
-      if (neighbor->info() >= 0 && neighbor->info() < f->info()) continue;
+      if (neighbor->info().number >= 0 && neighbor->info().number < f->info().number) continue;
       const int interior_faces = is_interior(f) + is_interior(neighbor);
       const auto a = f->vertex(SiteDelaunay::cw(k));
       const auto b = f->vertex(SiteDelaunay::ccw(k));

@@ -26,6 +26,58 @@ bool FitsIntegers(const cv::Mat& mask) { return mask.rows < kNoZero && mask.cols
 // Whether a row this wide alone breaks ColumnDistances's guard below.
 bool TooWideForIntegers(int cols) { return int64_t(cols - 1) * (cols - 1) >= (int64_t(1) << 24); }
 
+// One row of ColumnDistances's downward pass: out = 0 on zero cells of
+// `mask`, above + 1 elsewhere. Sixteen cells at a time where SSE2 is.
+void DownRow(const uint8_t* mask, const uint16_t* above, uint16_t* out, int cols) {
+  int c = 0;
+#ifdef __SSE2__
+  const __m128i zero = _mm_setzero_si128(), one = _mm_set1_epi16(1);
+  for (; c + 16 <= cols; c += 16) {
+    const __m128i is_zero =
+        _mm_cmpeq_epi8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(mask + c)), zero);
+    const __m128i low = _mm_unpacklo_epi8(is_zero, is_zero);
+    const __m128i high = _mm_unpackhi_epi8(is_zero, is_zero);
+    const __m128i a0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above + c));
+    const __m128i a1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(above + c + 8));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c),
+                     _mm_andnot_si128(low, _mm_add_epi16(a0, one)));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c + 8),
+                     _mm_andnot_si128(high, _mm_add_epi16(a1, one)));
+  }
+#endif
+  for (; c < cols; ++c) out[c] = mask[c] == 0 ? 0 : uint16_t(above[c] + 1);
+}
+
+// One row of ColumnDistances's upward pass: out = below = min(out, below + 1).
+// Returns the largest value under kNoZero, or -1 when there is none.
+int UpRow(uint16_t* out, uint16_t* below, int cols) {
+  int c = 0, farthest = -1;
+#ifdef __SSE2__
+  const __m128i one = _mm_set1_epi16(1);
+  __m128i largest = _mm_set1_epi16(-1);
+  for (; c + 8 <= cols; c += 8) {
+    const __m128i here = _mm_loadu_si128(reinterpret_cast<const __m128i*>(out + c));
+    const __m128i next =
+        _mm_add_epi16(_mm_loadu_si128(reinterpret_cast<const __m128i*>(below + c)), one);
+    // Unsigned minimum: here - max(here - next, 0).
+    const __m128i d = _mm_sub_epi16(here, _mm_subs_epu16(here, next));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out + c), d);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(below + c), d);
+    largest = _mm_max_epi16(largest, d);
+  }
+  int16_t lanes[8];
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(lanes), largest);
+  for (const int16_t lane : lanes) farthest = std::max<int>(farthest, lane);
+#endif
+  for (; c < cols; ++c) {
+    const uint16_t d = std::min<uint16_t>(out[c], below[c] + 1);
+    below[c] = d;
+    out[c] = d;
+    if (d < kNoZero) farthest = std::max<int>(farthest, d);
+  }
+  return farthest;
+}
+
 // The distance of every cell to the nearest zero cell of its column
 // (kNoZero or more when the column has none), row by row. Leaves it empty
 // when the result would not be OpenCV's: when the mask has no zero cell
@@ -46,26 +98,18 @@ std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
   // Downwards: the distance to the nearest zero cell above or at the cell.
   for (int c = 0; c < cols; ++c) distance[c] = mask.ptr<uint8_t>(0)[c] == 0 ? 0 : kNoZero;
   for (int r = 1; r < rows; ++r) {
-    const uint8_t* m = mask.ptr<uint8_t>(r);
-    uint16_t* out = distance.data() + size_t(r) * cols;
-    const uint16_t* above = out - cols;
-    for (int c = 0; c < cols; ++c) out[c] = m[c] == 0 ? 0 : uint16_t(above[c] + 1);
+    DownRow(mask.ptr<uint8_t>(r), distance.data() + size_t(r - 1) * cols,
+            distance.data() + size_t(r) * cols, cols);
   }
-  // Upwards: the nearer of that and the one below.
+  // Upwards: the nearer of that and the one below; the largest distance
+  // under kNoZero along the way (as int16, those at or above it are
+  // negative). A zero cell somewhere gives a distance 0 somewhere.
   std::vector<uint16_t> below(cols, kNoZero);
-  uint16_t farthest = 0;
-  bool any_zero = false;
+  int farthest = -1;
   for (int r = rows - 1; r >= 0; --r) {
-    uint16_t* out = distance.data() + size_t(r) * cols;
-    for (int c = 0; c < cols; ++c) {
-      const uint16_t d = std::min<uint16_t>(out[c], below[c] + 1);
-      below[c] = d;
-      out[c] = d;
-    }
+    farthest = std::max(farthest, UpRow(distance.data() + size_t(r) * cols, below.data(), cols));
   }
-  for (int c = 0; c < cols; ++c) any_zero |= below[c] < kNoZero;
-  for (const uint16_t d : distance) farthest = std::max<uint16_t>(farthest, d < kNoZero ? d : 0);
-  if (!any_zero || int64_t(farthest) * farthest + widest >= (int64_t(1) << 24)) return {};
+  if (farthest < 0 || int64_t(farthest) * farthest + widest >= (int64_t(1) << 24)) return {};
   return distance;
 }
 

@@ -9,9 +9,46 @@
 #include <random>
 
 #include "proto/artifacts.pb.h"
+#include "stages/clean/mask_runs.h"
 
 namespace areagraph {
 namespace {
+
+// The maximal runs of bytes with a bit of `bit`, byte by byte.
+std::vector<std::pair<int, int>> ReferenceRuns(const std::vector<uint8_t>& row, uint8_t bit) {
+  std::vector<std::pair<int, int>> runs;
+  for (int c = 0; c < int(row.size()); ++c) {
+    if ((row[c] & bit) == 0) continue;
+    if (!runs.empty() && runs.back().second == c) {
+      ++runs.back().second;
+    } else {
+      runs.push_back({c, c + 1});
+    }
+  }
+  return runs;
+}
+
+TEST(ForEachRun, TheMaximalRunsInOrderAcrossWordEdges) {
+  // Lengths around multiples of 64 (the word) and 16 (a load); rows of long
+  // stretches and of single cells; bytes 0..3 (CellStates) and 0 / 255.
+  std::mt19937 random(6);
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = trial < 200 ? trial : int(random() % 700);
+    const bool mask = trial % 3 == 0;
+    std::vector<uint8_t> row(n);
+    const int stretch = 1 + int(random() % 80);
+    uint8_t value = 0;
+    for (int c = 0; c < n; ++c) {
+      if (random() % stretch == 0) value = uint8_t(random() % 4);
+      row[c] = mask ? (value >= 2 ? 255 : 0) : value;
+    }
+    for (const uint8_t bit : {uint8_t(1), uint8_t(2), uint8_t(3), uint8_t(0xff)}) {
+      std::vector<std::pair<int, int>> runs;
+      ForEachRun(row.data(), n, bit, [&](int begin, int end) { runs.push_back({begin, end}); });
+      ASSERT_EQ(runs, ReferenceRuns(row, bit)) << "n " << n << ", bit " << int(bit);
+    }
+  }
+}
 
 TEST(CellRuns, RegionsAreOpenCvsEightConnectedComponents) {
   std::mt19937 random(7);

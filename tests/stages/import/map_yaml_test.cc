@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <opencv2/imgcodecs.hpp>
 #include <string>
 
@@ -168,6 +169,33 @@ TEST(MapYamlTest, YamlBesideTheImageIsFoundAndDigested) {
   EXPECT_EQ(*with.yaml_path, dir.File("row.yaml"));
   EXPECT_NE(with.Digest(), without.Digest());
   EXPECT_EQ(ImportGridMap(with, proto::ImportOptions()).frame().resolution_m(), 0.5);
+}
+
+TEST(ClassifyCellsTest, EveryPixelByItsGreyRowByRow) {
+  // A view into a wider image: rows are not contiguous.
+  cv::Mat wide(37, 53, CV_8UC1);
+  cv::randu(wide, 0, 256);
+  const cv::Mat grey = wide(cv::Rect(3, 2, 41, 33));
+  MapYaml raw;
+  raw.mode = MapYaml::Mode::kRaw;
+  raw.negate = true;
+  // Rules of a few steps (sixteen pixels at a time) and of many (the table).
+  GreyToCell four_steps = GreyThresholdRule(proto::ImportOptions()), any;
+  for (int g = 0; g < 256; ++g) {
+    four_steps[g] = g < 3 ? O : g < 100 ? U : g < 101 ? F : g < 255 ? O : U;
+    any[g] = proto::CellState(std::rand() % 3);
+  }
+  for (const GreyToCell& rule : {GreyThresholdRule(proto::ImportOptions()),
+                                 MapServerRule(MapYaml()), MapServerRule(raw), four_steps, any}) {
+    const std::string cells = ClassifyCells(grey, rule);
+    ASSERT_EQ(cells.size(), size_t(grey.rows) * grey.cols);
+    for (int row = 0; row < grey.rows; ++row) {
+      for (int col = 0; col < grey.cols; ++col) {
+        ASSERT_EQ(cells[size_t(row) * grey.cols + col], char(rule[grey.at<uint8_t>(row, col)]))
+            << row << ", " << col;
+      }
+    }
+  }
 }
 
 }  // namespace
