@@ -7,8 +7,6 @@
 #include <cstring>
 #include <vector>
 
-#include "stages/import/png_fast_decoder.h"
-
 namespace areagraph {
 namespace {
 
@@ -86,7 +84,6 @@ bool Decode(ReadStructs& structs, ByteReader& reader, cv::Mat* grey, std::vector
 }  // namespace
 
 bool DecodeCommonPngToGrey(const std::string& bytes, cv::Mat* grey) {
-  if (DecodePlainPngToGrey(bytes, grey)) return true;
   grey->release();
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8)) {
     return false;

@@ -14,8 +14,6 @@ namespace areagraph {
 // false, leaving `grey` empty, for anything else (Exif, damage of any
 // kind): the caller decodes those with OpenCV, which also
 // words the errors.
-// The plainest (8-bit, nothing bearing on colour) go through
-// DecodePlainPngToGrey (png_fast_decoder.h) first, to the same pixels.
 bool DecodeCommonPngToGrey(const std::string& bytes, cv::Mat* grey);
 
 }  // namespace areagraph

@@ -2,7 +2,6 @@
 
 #include <zlib.h>
 
-#include <cstdlib>
 #include <stdexcept>
 
 namespace areagraph::testing {
@@ -86,45 +85,6 @@ std::string GreyAlphaPng(int width, int height, const std::vector<uint16_t>& sam
 
 std::string HeaderOnlyPng(uint32_t width, uint32_t height) {
   return Png(Header(width, height, 8, /*grey*/ 0), {}, Deflate(std::string(64, '\0')));
-}
-
-std::string FilteredPng(int width, int height, int colour_type, const std::vector<uint8_t>& pixels,
-                        const std::vector<int>& filters) {
-  const int channels = colour_type == 0 ? 1 : colour_type == 4 ? 2 : colour_type == 2 ? 3 : 4;
-  const int row_bytes = width * channels;
-  std::string raw;
-  for (int row = 0; row < height; ++row) {
-    const int filter = filters[row % filters.size()];
-    raw.push_back(static_cast<char>(filter));
-    auto at = [&](int r, int i) -> int {
-      return r < 0 || i < 0 ? 0 : pixels[size_t(r) * row_bytes + i];
-    };
-    for (int i = 0; i < row_bytes; ++i) {
-      const int x = at(row, i), a = at(row, i - channels), b = at(row - 1, i);
-      const int c = at(row - 1, i - channels);
-      int predicted = 0;
-      switch (filter) {
-        case 1:
-          predicted = a;
-          break;
-        case 2:
-          predicted = b;
-          break;
-        case 3:
-          predicted = (a + b) / 2;
-          break;
-        case 4: {
-          const int p = a + b - c, pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
-          predicted = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-          break;
-        }
-        default:
-          break;
-      }
-      raw.push_back(static_cast<char>((x - predicted) & 0xff));
-    }
-  }
-  return Png(Header(width, height, 8, colour_type), {}, Deflate(raw));
 }
 
 }  // namespace areagraph::testing

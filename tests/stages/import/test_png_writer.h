@@ -25,10 +25,4 @@ std::string GreyAlphaPng(int width, int height, const std::vector<uint16_t>& sam
 // from the outside.
 std::string HeaderOnlyPng(uint32_t width, uint32_t height);
 
-// An 8-bit image of colour type 0, 4, 2 or 6 (`pixels`: its samples
-// row-major) whose rows are filtered with `filters` in turn (0 none, 1 sub,
-// 2 up, 3 average, 4 Paeth), as the PNG specification defines them.
-std::string FilteredPng(int width, int height, int colour_type, const std::vector<uint8_t>& pixels,
-                        const std::vector<int>& filters);
-
 }  // namespace areagraph::testing
