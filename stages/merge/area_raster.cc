@@ -8,6 +8,7 @@
 #include "stages/geometry/distance_transform.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/region_boxes.h"
+#include "stages/merge/path_cells.h"
 
 namespace areagraph {
 namespace {
@@ -222,12 +223,7 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   cv::Mat on_path = cv::Mat::zeros(size, CV_8U);
   // 4-connected, so that an area's paths hold its pieces together.
   auto draw_path = [&](const PointList& path, int area) {
-    std::vector<cv::Point> cells;
-    for (const Eigen::Vector2d& p : path) {
-      cells.emplace_back(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
-    }
-    cv::polylines(raster.labels, cells, /*isClosed=*/false, cv::Scalar(area + 1), 1, cv::LINE_4);
-    cv::polylines(on_path, cells, /*isClosed=*/false, cv::Scalar(1), 1, cv::LINE_4);
+    PaintPathCells(path, area + 1, &raster.labels, &on_path);
   };
   for (size_t k = 0; k < area_paths.size(); ++k) {
     for (const PointList& path : area_paths[k]) draw_path(path, static_cast<int>(k));
