@@ -5,9 +5,9 @@
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
-#include "stages/geometry/distance_transform.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/region_boxes.h"
+#include "stages/merge/core_cells.h"
 #include "stages/merge/path_cells.h"
 
 namespace areagraph {
@@ -130,25 +130,6 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
     int* row = labels->ptr<int>(run.row);
     std::fill(row + run.begin, row + run.end, 0);
   }
-}
-
-// The cores: domain cells at least min_gap_px / 2 from any non-free cell
-// (1, else 0).
-cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px) {
-  cv::Mat cells(domain.size(), CV_8U);
-  for (int r = 0; r < cells.rows; ++r) {
-    uint8_t* __restrict row = cells.ptr<uint8_t>(r);
-    const uint8_t* __restrict state = grid.CellRow(r);
-    for (int c = 0; c < cells.cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
-  }
-  // Only the threshold is asked: no distances.
-  cv::Mat core = DistanceAtLeast(cells, static_cast<float>(0.5 * min_gap_px));
-  for (int r = 0; r < core.rows; ++r) {
-    uint8_t* __restrict row = core.ptr<uint8_t>(r);
-    const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
-    for (int c = 0; c < core.cols; ++c) row[c] = (row[c] != 0) & (inside[c] != 0);
-  }
-  return core;
 }
 
 // Marks kUnreached on the unlabelled cells of the cores (`core`, see
