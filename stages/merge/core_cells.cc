@@ -62,26 +62,37 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
   if (nearer > kMaxNearer) return WholeMapCores(grid, domain, reach);
   // Column distances to the nearest non-free cell, counted up to `nearer`.
   const uint8_t cap = static_cast<uint8_t>(nearer);
+  // Without a non-free cell the transform is OpenCV's, not the exact one
+  // (most maps' first row already has one).
+  bool any_obstacle = false;
+  for (int r = 0; r < rows && !any_obstacle; ++r) {
+    const uint8_t* state = grid.CellRow(r);
+    any_obstacle =
+        std::any_of(state, state + cols, [](uint8_t s) { return s != proto::CELL_FREE; });
+  }
+  if (!any_obstacle) return WholeMapCores(grid, domain, reach);
   std::vector<uint8_t> column(static_cast<size_t>(rows) * cols);
-  uint8_t any_obstacle = 0;
   std::vector<uint8_t> none(cols, cap - 1);
   for (int r = 0; r < rows; ++r) {
     const uint8_t* __restrict state = grid.CellRow(r);
     uint8_t* __restrict out = column.data() + static_cast<size_t>(r) * cols;
     // Above the first row no column has an obstacle.
     const uint8_t* __restrict above = r > 0 ? out - cols : none.data();
+    // Byte arithmetic without a branch, which the compiler vectorises.
     for (int c = 0; c < cols; ++c) {
-      const uint8_t obstacle = state[c] != proto::CELL_FREE;
-      out[c] = obstacle ? 0 : std::min<uint8_t>(above[c] + 1, cap);
-      any_obstacle |= obstacle;
+      uint8_t d = static_cast<uint8_t>(above[c] + 1);
+      d = d < cap ? d : cap;
+      const uint8_t free = static_cast<uint8_t>(-(state[c] == proto::CELL_FREE));
+      out[c] = d & free;
     }
   }
-  // Without a non-free cell the transform is OpenCV's, not the exact one.
-  if (!any_obstacle) return WholeMapCores(grid, domain, reach);
   for (int r = rows - 2; r >= 0; --r) {
     uint8_t* __restrict out = column.data() + static_cast<size_t>(r) * cols;
     const uint8_t* __restrict below = out + cols;
-    for (int c = 0; c < cols; ++c) out[c] = std::min<uint8_t>(out[c], below[c] + 1);
+    for (int c = 0; c < cols; ++c) {
+      const uint8_t d = static_cast<uint8_t>(below[c] + 1);
+      out[c] = out[c] < d ? out[c] : d;
+    }
   }
   cv::Mat core(rows, cols, CV_8U);
   const uint64_t far_word = 0x0101010101010101ull * cap;

@@ -7,6 +7,9 @@
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
 
 namespace areagraph {
 namespace {
@@ -128,7 +131,13 @@ int LeftOf(const Corner& corner, int dir) {
   }
 }
 
-int PopCount(unsigned bits) { return __builtin_popcount(bits); }
+// The set bits of a direction mask (below 256). The baseline x86-64 has no
+// popcount instruction: __builtin_popcount is a library call.
+int PopCount(unsigned bits) {
+  bits = bits - ((bits >> 1) & 0x55u);
+  bits = (bits & 0x33u) + ((bits >> 2) & 0x33u);
+  return static_cast<int>((bits + (bits >> 4)) & 0x0Fu);
+}
 int LowestBit(unsigned bits) { return __builtin_ctz(bits); }
 
 // Appends `point`, dropping the previous point when it lies on the straight
@@ -203,6 +212,24 @@ class PartitionTracer {
     return at;
   }
 
+  // Whether the nine cells from `above` and from `below` all hold above[0]
+  // (the eight corners between them meet no border).
+  static bool Uniform(const int* above, const int* below) {
+#ifdef __SSE2__
+    const __m128i same = _mm_set1_epi32(above[0]);
+    auto equal = [&](const int* p) {
+      return _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), same);
+    };
+    const __m128i all = _mm_and_si128(_mm_and_si128(equal(above), equal(above + 4)),
+                                      _mm_and_si128(equal(below), equal(below + 4)));
+    return _mm_movemask_epi8(all) == 0xFFFF && above[8] == above[0] && below[8] == above[0];
+#else
+    int differ = 0;
+    for (int i = 0; i < 9; ++i) differ |= (above[i] ^ above[0]) | (below[i] ^ above[0]);
+    return differ == 0;
+#endif
+  }
+
   // Calls visit(x, y, corner) for every grid corner where borders meet,
   // reading each label row once.
   template <typename Visit>
@@ -213,15 +240,8 @@ class PartitionTracer {
       const int* below = y < height_ ? labels_.ptr<int>(y) : none.data();
       for (int x = 0; x <= width_; ++x) {
         // Eight corners at once where the two rows hold one label across
-        // nine cells (most of the map): a loop the compiler vectorises.
-        while (x > 0 && x + 8 < width_) {
-          const int same = above[x - 1];
-          int differ = 0;
-          for (int i = 0; i < 9; ++i)
-            differ |= (above[x - 1 + i] ^ same) | (below[x - 1 + i] ^ same);
-          if (differ != 0) break;
-          x += 8;
-        }
+        // nine cells (most of the map).
+        while (x > 0 && x + 8 < width_ && Uniform(above + x - 1, below + x - 1)) x += 8;
         const int tl = x > 0 ? above[x - 1] : 0, tr = x < width_ ? above[x] : 0;
         const int bl = x > 0 ? below[x - 1] : 0, br = x < width_ ? below[x] : 0;
         if (tl == tr && tl == bl && tl == br) continue;
