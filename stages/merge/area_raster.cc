@@ -8,6 +8,7 @@
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/region_boxes.h"
 #include "stages/merge/core_cells.h"
+#include "stages/merge/label_growth.h"
 #include "stages/merge/path_cells.h"
 
 namespace areagraph {
@@ -17,87 +18,10 @@ namespace {
 // growing; cleared to 0 afterwards.
 constexpr int kUnreached = -1;
 
-// Breadth-first growth of all labels (kUnreached too) into unlabelled domain
-// cells, seeded in row-major order, linear in the grid. Only labelled cells
-// beside an unlabelled domain cell are seeded (the others would add nothing
-// when their turn came, since labels are only ever set). The queue is held
-// as two fronts, this step's and the next's, in the order a single queue
-// would hold them: only the growing front is held, never the map. Each
-// entry keeps its column, so that no cell's index is divided out.
-void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
-  CV_Assert(domain.isContinuous() && labels->isContinuous());
-  const int cols = labels->cols, rows = labels->rows;
-  const int64_t cells = static_cast<int64_t>(cols) * rows;
-  const uint8_t* inside = domain.ptr<uint8_t>();
-  int* label = labels->ptr<int>();
-  auto open = [&](int q) { return inside[q] && label[q] == 0; };
-  struct Entry {
-    int index;
-    int col;
-  };
-  std::vector<Entry> front, next;
-  // The open cells of three rows (above, this one, below) as bytes with a
-  // closed cell at either end, so that the seed test runs over whole rows
-  // without bounds checks and vectorises: nearly every cell is labelled
-  // and only a few are seeds.
-  const int padded = cols + 2;
-  std::vector<uint8_t> open_rows(3 * static_cast<size_t>(padded), 0), seed(cols);
-  uint8_t* above = open_rows.data();
-  uint8_t* here = above + padded;
-  uint8_t* below = here + padded;
-  auto open_row = [&](int r, uint8_t* out) {
-    if (r >= rows) {
-      std::fill(out, out + padded, 0);
-      return;
-    }
-    const uint8_t* in = inside + static_cast<size_t>(r) * cols;
-    const int* row = label + static_cast<size_t>(r) * cols;
-    for (int c = 0; c < cols; ++c) out[c + 1] = (in[c] != 0) & (row[c] == 0);
-  };
-  open_row(0, here);
-  open_row(1, below);
-  for (int r = 0; r < rows; ++r) {
-    const int* row = label + static_cast<size_t>(r) * cols;
-    for (int c = 0; c < cols; ++c) {
-      seed[c] = (row[c] != 0) & (here[c] | here[c + 2] | above[c + 1] | below[c + 1]);
-    }
-    for (int c = 0; c < cols;) {
-      uint64_t eight = 0;
-      if (c + 8 <= cols) std::memcpy(&eight, &seed[c], 8);
-      if (c + 8 <= cols && eight == 0) {
-        c += 8;
-        continue;
-      }
-      if (seed[c]) front.push_back({r * cols + c, c});
-      ++c;
-    }
-    std::swap(above, here);
-    std::swap(here, below);
-    open_row(r + 2, below);
-  }
-  while (!front.empty()) {
-    next.clear();
-    for (const Entry& p : front) {
-      const int grown = label[p.index];
-      // The neighbours in the order +x, -x, +y, -y.
-      auto take = [&](int q, int col) {
-        if (!open(q)) return;
-        label[q] = grown;
-        next.push_back({q, col});
-      };
-      if (p.col + 1 < cols) take(p.index + 1, p.col + 1);
-      if (p.col > 0) take(p.index - 1, p.col - 1);
-      if (p.index + cols < cells) take(p.index + cols, p.col);
-      if (p.index >= cols) take(p.index - cols, p.col);
-    }
-    front.swap(next);
-  }
-}
-
 // Clears every cell that is not in the main 4-connected piece of its label:
 // the piece with most of the area's path cells (`on_path`), else the biggest
-// (ties to the piece that a row-major scan meets first).
-void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
+// (ties to the piece that a row-major scan meets first). Returns the runs cleared.
+std::vector<PieceRun> KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
   const int count = RunPieces(*labels, &runs, &piece_of_run);
@@ -124,12 +48,15 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
       best = id;
     }
   }
+  std::vector<PieceRun> cleared;
   for (size_t i = 0; i < runs.size(); ++i) {
     const PieceRun& run = runs[i];
     if (biggest[run.value] == piece_of_run[i]) continue;
     int* row = labels->ptr<int>(run.row);
     std::fill(row + run.begin, row + run.end, 0);
+    cleared.push_back(run);
   }
+  return cleared;
 }
 
 // Marks kUnreached on the unlabelled cells of the cores (`core`, see
@@ -217,9 +144,10 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   if (!core.empty()) MarkUnreachedCores(core, min_gap_px, &raster.labels);
   core.release();
   GrowLabels(domain, &raster.labels);
-  KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
+  const std::vector<PieceRun> cleared =
+      KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
   on_path.release();
-  GrowLabels(domain, &raster.labels);
+  GrowIntoCleared(cleared, domain, &raster.labels);
   for (size_t i = 0; i < cells; ++i) label[i] = label[i] == kUnreached ? 0 : label[i];
   raster.cell_count.assign(area_polygons.size(), 0);
   CountAreaCells(&raster);
