@@ -1,6 +1,7 @@
 #include "stages/merge/area_raster.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <opencv2/imgproc.hpp>
@@ -10,6 +11,7 @@
 #include "stages/merge/core_cells.h"
 #include "stages/merge/label_growth.h"
 #include "stages/merge/path_cells.h"
+#include "stages/merge/row_runs.h"
 
 namespace areagraph {
 namespace {
@@ -24,7 +26,7 @@ constexpr int kUnreached = -1;
 std::vector<PieceRun> KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
-  const int count = RunPieces(*labels, &runs, &piece_of_run);
+  const int count = PiecesOverRuns(*labels, &runs, &piece_of_run);
   struct Piece {
     int label = 0;
     int64_t size = 0;
@@ -67,7 +69,7 @@ void MarkUnreachedCores(const cv::Mat& core, double min_gap_px, cv::Mat* labels)
   const double min_core_cells = 4 * min_gap_px * min_gap_px;
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
-  const int count = RunPieces(core, &runs, &piece_of_run);
+  const int count = PiecesOverRuns(core, &runs, &piece_of_run);
   std::vector<int64_t> size(count, 0);
   std::vector<uint8_t> reached(count, 0);
   for (size_t i = 0; i < runs.size(); ++i) {
@@ -156,15 +158,31 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 
 void CountAreaCells(AreaRaster* raster) {
   const int count = static_cast<int>(raster->cell_count.size());
-  // Label k + 1 is area k; 0 and below are no area.
-  const cv::Mat stats = LabelBoxes(raster->labels, count + 1);
+  const cv::Mat& labels = raster->labels;
+  // Label k + 1 is area k; 0 and below are no area. Per area: leftmost and
+  // rightmost column, first and last row, cells.
+  std::vector<int> left(count, INT_MAX), right(count, INT_MIN), top(count, -1), bottom(count, 0);
+  std::vector<int64_t> cells(count, 0);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* row = labels.ptr<int>(r);
+    for (int c = 0; c < labels.cols;) {
+      const int end = RunEnd(row, c, labels.cols);
+      const int k = row[c] - 1;
+      if (k >= 0 && k < count) {
+        left[k] = std::min(left[k], c);
+        right[k] = std::max(right[k], end - 1);
+        if (top[k] < 0) top[k] = r;
+        bottom[k] = r;
+        cells[k] += end - c;
+      }
+      c = end;
+    }
+  }
   raster->boxes.assign(count, cv::Rect());
   for (int k = 0; k < count; ++k) {
-    const int* s = stats.ptr<int>(k + 1);
-    raster->cell_count[k] = s[cv::CC_STAT_AREA];
-    if (s[cv::CC_STAT_AREA] > 0) {
-      raster->boxes[k] = cv::Rect(s[cv::CC_STAT_LEFT], s[cv::CC_STAT_TOP], s[cv::CC_STAT_WIDTH],
-                                  s[cv::CC_STAT_HEIGHT]);
+    raster->cell_count[k] = cells[k];
+    if (cells[k] > 0) {
+      raster->boxes[k] = cv::Rect(left[k], top[k], right[k] - left[k] + 1, bottom[k] - top[k] + 1);
     }
   }
 }
