@@ -481,6 +481,9 @@ PlanarPartition BuildPlanarPartition(const cv::Mat& labels, int label_count) {
 PointList RingPoints(const std::vector<ChainSide>& ring,
                      const std::vector<PointList>& chain_points) {
   PointList points;
+  size_t total = 0;
+  for (const ChainSide& side : ring) total += chain_points[side.chain].size();
+  points.reserve(total);
   for (const ChainSide& side : ring) {
     const PointList& chain = chain_points[side.chain];
     const size_t n = chain.size();
