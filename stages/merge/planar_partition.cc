@@ -274,7 +274,10 @@ class PartitionTracer {
   // Returns the points and sets `ends`.
   PointList Walk(const Vertex& start, const Corner& start_corner, int dir, bool loop,
                  ChainEnds* ends) {
-    PointList points{Position(start, start_corner)};
+    // The points go to a buffer that keeps its capacity from walk to walk,
+    // and leave it in one allocation of their own size.
+    PointList& points = walk_points_;
+    points.assign(1, Position(start, start_corner));
     ends->start = start;
     ends->start_dir = dir;
     Vertex at = start;
@@ -297,7 +300,7 @@ class PartitionTracer {
       if (PopCount(out) != 2 || (loop && next == start)) {
         ends->end = next;
         ends->end_dir = dir;
-        return points;
+        return PointList(points.begin(), points.end());
       }
       dir = LowestBit(out & ~Bit(Reverse(dir)));
       at = next;
@@ -469,6 +472,7 @@ class PartitionTracer {
   };
   std::vector<BorderCorner> border_corners_;
   std::unordered_map<int64_t, ChainSide> side_from_;
+  PointList walk_points_;
 };
 
 }  // namespace
