@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #ifdef __SSE2__
 #include <immintrin.h>
@@ -171,6 +169,49 @@ struct ChainEnds {
   int start_dir = 0, end_dir = 0;
 };
 
+// Chain sides by the dart (a DartKey, >= 0) they start with, in open
+// addressing: an unordered_map allocated a node per dart.
+class DartSides {
+ public:
+  DartSides() : keys_(kInitial, kEmpty), sides_(kInitial) {}
+
+  const ChainSide* Find(int64_t key) const {
+    for (size_t i = Home(key);; i = (i + 1) & (keys_.size() - 1)) {
+      if (keys_[i] == key) return &sides_[i];
+      if (keys_[i] == kEmpty) return nullptr;
+    }
+  }
+  void Set(int64_t key, const ChainSide& side) {
+    if (2 * (count_ + 1) > keys_.size()) Grow();
+    size_t i = Home(key);
+    while (keys_[i] != kEmpty && keys_[i] != key) i = (i + 1) & (keys_.size() - 1);
+    if (keys_[i] == kEmpty) ++count_;
+    keys_[i] = key;
+    sides_[i] = side;
+  }
+
+ private:
+  static constexpr int64_t kEmpty = -1;
+  static constexpr size_t kInitial = 1024;
+  size_t Home(int64_t key) const {
+    uint64_t h = static_cast<uint64_t>(key) * 0x9E3779B97F4A7C15ull;
+    return static_cast<size_t>(h ^ (h >> 29)) & (keys_.size() - 1);
+  }
+  void Grow() {
+    std::vector<int64_t> keys(2 * keys_.size(), kEmpty);
+    std::vector<ChainSide> sides(keys.size());
+    keys.swap(keys_);
+    sides.swap(sides_);
+    count_ = 0;
+    for (size_t i = 0; i < keys.size(); ++i) {
+      if (keys[i] != kEmpty) Set(keys[i], sides[i]);
+    }
+  }
+  std::vector<int64_t> keys_;
+  std::vector<ChainSide> sides_;
+  size_t count_ = 0;
+};
+
 class PartitionTracer {
  public:
   explicit PartitionTracer(const cv::Mat& labels)
@@ -308,7 +349,6 @@ class PartitionTracer {
   }
 
   void TraceChainsBetweenJunctions() {
-    std::unordered_set<int64_t> used;
     ForEachBorderCorner([&](int x, int y, const Corner& corner) {
       border_corners_.push_back({x, y, corner.edges});
       for (int point = 0; point < (corner.cut == Cut::kNone ? 1 : 2); ++point) {
@@ -316,17 +356,16 @@ class PartitionTracer {
         if (PopCount(out) == 2) continue;
         const Vertex start{x, y, point};
         for (int dir = 0; dir < 8; ++dir) {
-          if (!(out & Bit(dir)) || used.count(DartKey(start, dir))) continue;
+          // A dart is used once a chain starts or ends with it.
+          if (!(out & Bit(dir)) || side_from_.Find(DartKey(start, dir))) continue;
           ChainEnds ends;
           BorderChain chain;
           chain.points = Walk(start, corner, dir, /*loop=*/false, &ends);
           chain.right = RightOf(corner, dir);
           chain.left = LeftOf(corner, dir);
-          used.insert(DartKey(start, dir));
-          used.insert(DartKey(ends.end, Reverse(ends.end_dir)));
-          side_from_[DartKey(start, dir)] = {static_cast<int>(partition_.chains.size()), false};
-          side_from_[DartKey(ends.end, Reverse(ends.end_dir))] = {
-              static_cast<int>(partition_.chains.size()), true};
+          const int index = static_cast<int>(partition_.chains.size());
+          side_from_.Set(DartKey(start, dir), {index, false});
+          side_from_.Set(DartKey(ends.end, Reverse(ends.end_dir)), {index, true});
           partition_.chains.push_back(std::move(chain));
           ends_.push_back(ends);
         }
@@ -428,9 +467,9 @@ class PartitionTracer {
     for (int turn = 1; turn < 8; ++turn) {
       const int dir = (back + 8 - turn) % 8;
       if (!(out & Bit(dir))) continue;
-      const auto it = side_from_.find(DartKey(at, dir));
-      if (it == side_from_.end()) break;
-      return it->second;
+      const ChainSide* side = side_from_.Find(DartKey(at, dir));
+      if (side == nullptr) break;
+      return *side;
     }
     throw std::logic_error("planar partition: a border chain has no successor");
   }
@@ -471,7 +510,7 @@ class PartitionTracer {
     unsigned edges;
   };
   std::vector<BorderCorner> border_corners_;
-  std::unordered_map<int64_t, ChainSide> side_from_;
+  DartSides side_from_;
   PointList walk_points_;
 };
 
