@@ -9,21 +9,12 @@
 
 #include <opencv2/imgproc.hpp>
 #include <random>
-#include <string>
 
 #include "stages/geometry/distance_transform.h"
+#include "tests/support/area_test_support.h"
 
 namespace areagraph::testing {
 namespace {
-
-proto::CleanedMap MapOf(const cv::Mat& cells) {
-  proto::CleanedMap map;
-  map.mutable_frame()->set_width_px(cells.cols);
-  map.mutable_frame()->set_height_px(cells.rows);
-  map.mutable_frame()->set_resolution_m(0.05);
-  map.set_cells(std::string(cells.datastart, cells.dataend));
-  return map;
-}
 
 cv::Mat RandomCells(cv::Size size, std::mt19937& random) {
   auto uniform = [&](int lo, int hi) { return std::uniform_int_distribution<int>(lo, hi)(random); };
@@ -50,7 +41,7 @@ cv::Mat Reference(const cv::Mat& cells, const cv::Mat& domain, double min_gap_px
 }
 
 void ExpectSame(const cv::Mat& cells, const cv::Mat& domain, double min_gap_px) {
-  const proto::CleanedMap map = MapOf(cells);
+  const proto::CleanedMap map = CleanedMapOfCells(cells);
   const cv::Mat got = CoreCells(CellGrid(map), domain, min_gap_px);
   const cv::Mat want = Reference(cells, domain, min_gap_px);
   ASSERT_EQ(got.type(), CV_8U);
@@ -71,7 +62,7 @@ TEST(CoreCells, SameAsDistanceAtLeastOnTheFreeCells) {
     for (const double gap : gaps) {
       ExpectSame(cells, domain, gap);
       if (gap == 10) {
-        cores += cv::countNonZero(CoreCells(CellGrid(MapOf(cells)), domain, gap));
+        cores += cv::countNonZero(CoreCells(CellGrid(CleanedMapOfCells(cells)), domain, gap));
       }
     }
   }

@@ -10,6 +10,7 @@
 #include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
+#include "tests/support/area_test_support.h"
 
 namespace areagraph::testing {
 namespace {
@@ -63,12 +64,7 @@ proto::CleanedMap WalledMap(const std::vector<cv::Rect>& obstacles) {
   std::vector<cv::Rect> walls{{2, 2, 156, 3}, {2, 115, 156, 3}, {2, 2, 3, 116}, {155, 2, 3, 116}};
   walls.insert(walls.end(), obstacles.begin(), obstacles.end());
   for (const cv::Rect& rect : walls) cells(rect).setTo(proto::CELL_OCCUPIED);
-  proto::CleanedMap map;
-  map.mutable_frame()->set_width_px(cells.cols);
-  map.mutable_frame()->set_height_px(cells.rows);
-  map.mutable_frame()->set_resolution_m(0.05);
-  map.set_cells(std::string(cells.datastart, cells.dataend));
-  return map;
+  return CleanedMapOfCells(cells);
 }
 
 TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
