@@ -6,6 +6,7 @@
 
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_area.h"
 #include "stages/geometry/ring_simplicity.h"
 
 namespace areagraph {
@@ -147,9 +148,11 @@ std::vector<double> AreaSizesM2(const proto::CutGraph& graph, const AreaPlan& pl
   const double cell_m2 = resolution_m * resolution_m;
   for (int e = 0; e < graph.edges_size(); ++e) {
     double& area = size[plan.area_of_edge[e]];
-    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
+    // Half of TwiceSignedArea is SignedArea's value bit for bit (the same
+    // products, summed in the same order), without a copy of the points.
+    area += cell_m2 * std::abs(0.5 * TwiceSignedArea(graph.edges(e).polygon().outer()));
     for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
-      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
+      area += cell_m2 * std::abs(0.5 * TwiceSignedArea(absorbed.outer()));
     }
   }
   return size;

@@ -1,13 +1,17 @@
 #include "stages/merge/area_raster.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
-#include "stages/geometry/distance_transform.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/region_boxes.h"
+#include "stages/merge/core_cells.h"
+#include "stages/merge/label_growth.h"
+#include "stages/merge/path_cells.h"
+#include "stages/merge/row_runs.h"
 
 namespace areagraph {
 namespace {
@@ -16,90 +20,13 @@ namespace {
 // growing; cleared to 0 afterwards.
 constexpr int kUnreached = -1;
 
-// Breadth-first growth of all labels (kUnreached too) into unlabelled domain
-// cells, seeded in row-major order, linear in the grid. Only labelled cells
-// beside an unlabelled domain cell are seeded (the others would add nothing
-// when their turn came, since labels are only ever set). The queue is held
-// as two fronts, this step's and the next's, in the order a single queue
-// would hold them: only the growing front is held, never the map. Each
-// entry keeps its column, so that no cell's index is divided out.
-void GrowLabels(const cv::Mat& domain, cv::Mat* labels) {
-  CV_Assert(domain.isContinuous() && labels->isContinuous());
-  const int cols = labels->cols, rows = labels->rows;
-  const int64_t cells = static_cast<int64_t>(cols) * rows;
-  const uint8_t* inside = domain.ptr<uint8_t>();
-  int* label = labels->ptr<int>();
-  auto open = [&](int q) { return inside[q] && label[q] == 0; };
-  struct Entry {
-    int index;
-    int col;
-  };
-  std::vector<Entry> front, next;
-  // The open cells of three rows (above, this one, below) as bytes with a
-  // closed cell at either end, so that the seed test runs over whole rows
-  // without bounds checks and vectorises: nearly every cell is labelled
-  // and only a few are seeds.
-  const int padded = cols + 2;
-  std::vector<uint8_t> open_rows(3 * static_cast<size_t>(padded), 0), seed(cols);
-  uint8_t* above = open_rows.data();
-  uint8_t* here = above + padded;
-  uint8_t* below = here + padded;
-  auto open_row = [&](int r, uint8_t* out) {
-    if (r >= rows) {
-      std::fill(out, out + padded, 0);
-      return;
-    }
-    const uint8_t* in = inside + static_cast<size_t>(r) * cols;
-    const int* row = label + static_cast<size_t>(r) * cols;
-    for (int c = 0; c < cols; ++c) out[c + 1] = (in[c] != 0) & (row[c] == 0);
-  };
-  open_row(0, here);
-  open_row(1, below);
-  for (int r = 0; r < rows; ++r) {
-    const int* row = label + static_cast<size_t>(r) * cols;
-    for (int c = 0; c < cols; ++c) {
-      seed[c] = (row[c] != 0) & (here[c] | here[c + 2] | above[c + 1] | below[c + 1]);
-    }
-    for (int c = 0; c < cols;) {
-      uint64_t eight = 0;
-      if (c + 8 <= cols) std::memcpy(&eight, &seed[c], 8);
-      if (c + 8 <= cols && eight == 0) {
-        c += 8;
-        continue;
-      }
-      if (seed[c]) front.push_back({r * cols + c, c});
-      ++c;
-    }
-    std::swap(above, here);
-    std::swap(here, below);
-    open_row(r + 2, below);
-  }
-  while (!front.empty()) {
-    next.clear();
-    for (const Entry& p : front) {
-      const int grown = label[p.index];
-      // The neighbours in the order +x, -x, +y, -y.
-      auto take = [&](int q, int col) {
-        if (!open(q)) return;
-        label[q] = grown;
-        next.push_back({q, col});
-      };
-      if (p.col + 1 < cols) take(p.index + 1, p.col + 1);
-      if (p.col > 0) take(p.index - 1, p.col - 1);
-      if (p.index + cols < cells) take(p.index + cols, p.col);
-      if (p.index >= cols) take(p.index - cols, p.col);
-    }
-    front.swap(next);
-  }
-}
-
 // Clears every cell that is not in the main 4-connected piece of its label:
 // the piece with most of the area's path cells (`on_path`), else the biggest
-// (ties to the piece that a row-major scan meets first).
-void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
+// (ties to the piece that a row-major scan meets first). Returns the runs cleared.
+std::vector<PieceRun> KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
-  const int count = RunPieces(*labels, &runs, &piece_of_run);
+  const int count = PiecesOverRuns(*labels, &runs, &piece_of_run);
   struct Piece {
     int label = 0;
     int64_t size = 0;
@@ -123,31 +50,15 @@ void KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
       best = id;
     }
   }
+  std::vector<PieceRun> cleared;
   for (size_t i = 0; i < runs.size(); ++i) {
     const PieceRun& run = runs[i];
     if (biggest[run.value] == piece_of_run[i]) continue;
     int* row = labels->ptr<int>(run.row);
     std::fill(row + run.begin, row + run.end, 0);
+    cleared.push_back(run);
   }
-}
-
-// The cores: domain cells at least min_gap_px / 2 from any non-free cell
-// (1, else 0).
-cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px) {
-  cv::Mat cells(domain.size(), CV_8U);
-  for (int r = 0; r < cells.rows; ++r) {
-    uint8_t* __restrict row = cells.ptr<uint8_t>(r);
-    const uint8_t* __restrict state = grid.CellRow(r);
-    for (int c = 0; c < cells.cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
-  }
-  // Only the threshold is asked: no distances.
-  cv::Mat core = DistanceAtLeast(cells, static_cast<float>(0.5 * min_gap_px));
-  for (int r = 0; r < core.rows; ++r) {
-    uint8_t* __restrict row = core.ptr<uint8_t>(r);
-    const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
-    for (int c = 0; c < core.cols; ++c) row[c] = (row[c] != 0) & (inside[c] != 0);
-  }
-  return core;
+  return cleared;
 }
 
 // Marks kUnreached on the unlabelled cells of the cores (`core`, see
@@ -158,7 +69,7 @@ void MarkUnreachedCores(const cv::Mat& core, double min_gap_px, cv::Mat* labels)
   const double min_core_cells = 4 * min_gap_px * min_gap_px;
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
-  const int count = RunPieces(core, &runs, &piece_of_run);
+  const int count = PiecesOverRuns(core, &runs, &piece_of_run);
   std::vector<int64_t> size(count, 0);
   std::vector<uint8_t> reached(count, 0);
   for (size_t i = 0; i < runs.size(); ++i) {
@@ -222,12 +133,7 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   cv::Mat on_path = cv::Mat::zeros(size, CV_8U);
   // 4-connected, so that an area's paths hold its pieces together.
   auto draw_path = [&](const PointList& path, int area) {
-    std::vector<cv::Point> cells;
-    for (const Eigen::Vector2d& p : path) {
-      cells.emplace_back(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
-    }
-    cv::polylines(raster.labels, cells, /*isClosed=*/false, cv::Scalar(area + 1), 1, cv::LINE_4);
-    cv::polylines(on_path, cells, /*isClosed=*/false, cv::Scalar(1), 1, cv::LINE_4);
+    PaintPathCells(path, area + 1, &raster.labels, &on_path);
   };
   for (size_t k = 0; k < area_paths.size(); ++k) {
     for (const PointList& path : area_paths[k]) draw_path(path, static_cast<int>(k));
@@ -240,9 +146,10 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   if (!core.empty()) MarkUnreachedCores(core, min_gap_px, &raster.labels);
   core.release();
   GrowLabels(domain, &raster.labels);
-  KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
+  const std::vector<PieceRun> cleared =
+      KeepMainPieces(on_path, &raster.labels, static_cast<int>(area_polygons.size()));
   on_path.release();
-  GrowLabels(domain, &raster.labels);
+  GrowIntoCleared(cleared, domain, &raster.labels);
   for (size_t i = 0; i < cells; ++i) label[i] = label[i] == kUnreached ? 0 : label[i];
   raster.cell_count.assign(area_polygons.size(), 0);
   CountAreaCells(&raster);
@@ -251,15 +158,31 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 
 void CountAreaCells(AreaRaster* raster) {
   const int count = static_cast<int>(raster->cell_count.size());
-  // Label k + 1 is area k; 0 and below are no area.
-  const cv::Mat stats = LabelBoxes(raster->labels, count + 1);
+  const cv::Mat& labels = raster->labels;
+  // Label k + 1 is area k; 0 and below are no area. Per area: leftmost and
+  // rightmost column, first and last row, cells.
+  std::vector<int> left(count, INT_MAX), right(count, INT_MIN), top(count, -1), bottom(count, 0);
+  std::vector<int64_t> cells(count, 0);
+  for (int r = 0; r < labels.rows; ++r) {
+    const int* row = labels.ptr<int>(r);
+    for (int c = 0; c < labels.cols;) {
+      const int end = RunEnd(row, c, labels.cols);
+      const int k = row[c] - 1;
+      if (k >= 0 && k < count) {
+        left[k] = std::min(left[k], c);
+        right[k] = std::max(right[k], end - 1);
+        if (top[k] < 0) top[k] = r;
+        bottom[k] = r;
+        cells[k] += end - c;
+      }
+      c = end;
+    }
+  }
   raster->boxes.assign(count, cv::Rect());
   for (int k = 0; k < count; ++k) {
-    const int* s = stats.ptr<int>(k + 1);
-    raster->cell_count[k] = s[cv::CC_STAT_AREA];
-    if (s[cv::CC_STAT_AREA] > 0) {
-      raster->boxes[k] = cv::Rect(s[cv::CC_STAT_LEFT], s[cv::CC_STAT_TOP], s[cv::CC_STAT_WIDTH],
-                                  s[cv::CC_STAT_HEIGHT]);
+    raster->cell_count[k] = cells[k];
+    if (cells[k] > 0) {
+      raster->boxes[k] = cv::Rect(left[k], top[k], right[k] - left[k] + 1, bottom[k] - top[k] + 1);
     }
   }
 }

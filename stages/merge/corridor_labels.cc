@@ -1,5 +1,7 @@
 #include "stages/merge/corridor_labels.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
@@ -13,9 +15,7 @@ namespace {
 // The shape of the non-zero cells of `mask` (CV_8U, a margin of zeros all
 // round), with holes filled. Changes `mask`.
 AreaShape ShapeOfMask(cv::Mat& mask) {
-  std::vector<std::vector<cv::Point>> outer;
-  cv::findContours(mask.clone(), outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
-  cv::drawContours(mask, outer, -1, cv::Scalar(255), cv::FILLED);
+  FillHoles(&mask);
   // Only the deepest cell counts: no distance image.
   const double deepest = DeepestDistance(mask);
   return {2 * deepest, static_cast<double>(cv::countNonZero(mask))};
@@ -28,6 +28,43 @@ AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
 }
 
 }  // namespace
+
+void FillHoles(cv::Mat* mask) {
+  CV_Assert(mask->type() == CV_8U);
+  const int rows = mask->rows, cols = mask->cols;
+  // The zero cells' runs, row by row.
+  std::vector<PieceRun> runs;
+  std::vector<size_t> row_start{0};
+  for (int r = 0; r < rows; ++r) {
+    const uint8_t* row = mask->ptr<uint8_t>(r);
+    for (int c = 0; c < cols;) {
+      if (row[c] != 0) {
+        ++c;
+        continue;
+      }
+      const int begin = c;
+      while (c < cols && row[c] == 0) ++c;
+      runs.push_back({r, begin, c, 0});
+    }
+    row_start.push_back(runs.size());
+  }
+  int count = 0;
+  const std::vector<int> piece = JoinRowRuns(
+      runs, row_start, /*eight_connected=*/false,
+      [](const PieceRun&, const PieceRun&) { return true; }, &count);
+  std::vector<uint8_t> open(count, 0);
+  for (size_t i = 0; i < runs.size(); ++i) {
+    const PieceRun& run = runs[i];
+    if (run.row == 0 || run.row == rows - 1 || run.begin == 0 || run.end == cols) {
+      open[piece[i]] = 1;
+    }
+  }
+  for (size_t i = 0; i < runs.size(); ++i) {
+    if (open[piece[i]]) continue;
+    uint8_t* row = mask->ptr<uint8_t>(runs[i].row);
+    std::fill(row + runs[i].begin, row + runs[i].end, 255);
+  }
+}
 
 std::vector<AreaShape> AreaShapes(const AreaRaster& raster) {
   std::vector<AreaShape> shapes;

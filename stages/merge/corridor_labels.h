@@ -21,6 +21,12 @@ struct AreaShape {
   double area_px = 0;
 };
 
+// Sets to 255 the zero cells of `mask` (CV_8U, a margin of zeros all round)
+// that no 4-connected path of zero cells joins to the mask's border: the
+// non-zero cells' holes. What filling the outer contours of the non-zero
+// cells (cv::findContours, cv::drawContours) paints, found over the rows' runs.
+void FillHoles(cv::Mat* mask);
+
 // The shape of every area of `raster` (zero for an area without cells).
 std::vector<AreaShape> AreaShapes(const AreaRaster& raster);
 

@@ -4,9 +4,10 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
-#include <unordered_set>
 #include <utility>
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
 
 namespace areagraph {
 namespace {
@@ -128,7 +129,13 @@ int LeftOf(const Corner& corner, int dir) {
   }
 }
 
-int PopCount(unsigned bits) { return __builtin_popcount(bits); }
+// The set bits of a direction mask (below 256). The baseline x86-64 has no
+// popcount instruction: __builtin_popcount is a library call.
+int PopCount(unsigned bits) {
+  bits = bits - ((bits >> 1) & 0x55u);
+  bits = (bits & 0x33u) + ((bits >> 2) & 0x33u);
+  return static_cast<int>((bits + (bits >> 4)) & 0x0Fu);
+}
 int LowestBit(unsigned bits) { return __builtin_ctz(bits); }
 
 // Appends `point`, dropping the previous point when it lies on the straight
@@ -160,6 +167,49 @@ struct ChainEnds {
   Vertex start, end;
   // Direction of the first step out of `start` and of the last step into `end`.
   int start_dir = 0, end_dir = 0;
+};
+
+// Chain sides by the dart (a DartKey, >= 0) they start with, in open
+// addressing: an unordered_map allocated a node per dart.
+class DartSides {
+ public:
+  DartSides() : keys_(kInitial, kEmpty), sides_(kInitial) {}
+
+  const ChainSide* Find(int64_t key) const {
+    for (size_t i = Home(key);; i = (i + 1) & (keys_.size() - 1)) {
+      if (keys_[i] == key) return &sides_[i];
+      if (keys_[i] == kEmpty) return nullptr;
+    }
+  }
+  void Set(int64_t key, const ChainSide& side) {
+    if (2 * (count_ + 1) > keys_.size()) Grow();
+    size_t i = Home(key);
+    while (keys_[i] != kEmpty && keys_[i] != key) i = (i + 1) & (keys_.size() - 1);
+    if (keys_[i] == kEmpty) ++count_;
+    keys_[i] = key;
+    sides_[i] = side;
+  }
+
+ private:
+  static constexpr int64_t kEmpty = -1;
+  static constexpr size_t kInitial = 1024;
+  size_t Home(int64_t key) const {
+    uint64_t h = static_cast<uint64_t>(key) * 0x9E3779B97F4A7C15ull;
+    return static_cast<size_t>(h ^ (h >> 29)) & (keys_.size() - 1);
+  }
+  void Grow() {
+    std::vector<int64_t> keys(2 * keys_.size(), kEmpty);
+    std::vector<ChainSide> sides(keys.size());
+    keys.swap(keys_);
+    sides.swap(sides_);
+    count_ = 0;
+    for (size_t i = 0; i < keys.size(); ++i) {
+      if (keys[i] != kEmpty) Set(keys[i], sides[i]);
+    }
+  }
+  std::vector<int64_t> keys_;
+  std::vector<ChainSide> sides_;
+  size_t count_ = 0;
 };
 
 class PartitionTracer {
@@ -203,6 +253,24 @@ class PartitionTracer {
     return at;
   }
 
+  // Whether the nine cells from `above` and from `below` all hold above[0]
+  // (the eight corners between them meet no border).
+  static bool Uniform(const int* above, const int* below) {
+#ifdef __SSE2__
+    const __m128i same = _mm_set1_epi32(above[0]);
+    auto equal = [&](const int* p) {
+      return _mm_cmpeq_epi32(_mm_loadu_si128(reinterpret_cast<const __m128i*>(p)), same);
+    };
+    const __m128i all = _mm_and_si128(_mm_and_si128(equal(above), equal(above + 4)),
+                                      _mm_and_si128(equal(below), equal(below + 4)));
+    return _mm_movemask_epi8(all) == 0xFFFF && above[8] == above[0] && below[8] == above[0];
+#else
+    int differ = 0;
+    for (int i = 0; i < 9; ++i) differ |= (above[i] ^ above[0]) | (below[i] ^ above[0]);
+    return differ == 0;
+#endif
+  }
+
   // Calls visit(x, y, corner) for every grid corner where borders meet,
   // reading each label row once.
   template <typename Visit>
@@ -213,15 +281,8 @@ class PartitionTracer {
       const int* below = y < height_ ? labels_.ptr<int>(y) : none.data();
       for (int x = 0; x <= width_; ++x) {
         // Eight corners at once where the two rows hold one label across
-        // nine cells (most of the map): a loop the compiler vectorises.
-        while (x > 0 && x + 8 < width_) {
-          const int same = above[x - 1];
-          int differ = 0;
-          for (int i = 0; i < 9; ++i)
-            differ |= (above[x - 1 + i] ^ same) | (below[x - 1 + i] ^ same);
-          if (differ != 0) break;
-          x += 8;
-        }
+        // nine cells (most of the map).
+        while (x > 0 && x + 8 < width_ && Uniform(above + x - 1, below + x - 1)) x += 8;
         const int tl = x > 0 ? above[x - 1] : 0, tr = x < width_ ? above[x] : 0;
         const int bl = x > 0 ? below[x - 1] : 0, br = x < width_ ? below[x] : 0;
         if (tl == tr && tl == bl && tl == br) continue;
@@ -254,7 +315,10 @@ class PartitionTracer {
   // Returns the points and sets `ends`.
   PointList Walk(const Vertex& start, const Corner& start_corner, int dir, bool loop,
                  ChainEnds* ends) {
-    PointList points{Position(start, start_corner)};
+    // The points go to a buffer that keeps its capacity from walk to walk,
+    // and leave it in one allocation of their own size.
+    PointList& points = walk_points_;
+    points.assign(1, Position(start, start_corner));
     ends->start = start;
     ends->start_dir = dir;
     Vertex at = start;
@@ -277,7 +341,7 @@ class PartitionTracer {
       if (PopCount(out) != 2 || (loop && next == start)) {
         ends->end = next;
         ends->end_dir = dir;
-        return points;
+        return PointList(points.begin(), points.end());
       }
       dir = LowestBit(out & ~Bit(Reverse(dir)));
       at = next;
@@ -285,7 +349,6 @@ class PartitionTracer {
   }
 
   void TraceChainsBetweenJunctions() {
-    std::unordered_set<int64_t> used;
     ForEachBorderCorner([&](int x, int y, const Corner& corner) {
       border_corners_.push_back({x, y, corner.edges});
       for (int point = 0; point < (corner.cut == Cut::kNone ? 1 : 2); ++point) {
@@ -293,17 +356,16 @@ class PartitionTracer {
         if (PopCount(out) == 2) continue;
         const Vertex start{x, y, point};
         for (int dir = 0; dir < 8; ++dir) {
-          if (!(out & Bit(dir)) || used.count(DartKey(start, dir))) continue;
+          // A dart is used once a chain starts or ends with it.
+          if (!(out & Bit(dir)) || side_from_.Find(DartKey(start, dir))) continue;
           ChainEnds ends;
           BorderChain chain;
           chain.points = Walk(start, corner, dir, /*loop=*/false, &ends);
           chain.right = RightOf(corner, dir);
           chain.left = LeftOf(corner, dir);
-          used.insert(DartKey(start, dir));
-          used.insert(DartKey(ends.end, Reverse(ends.end_dir)));
-          side_from_[DartKey(start, dir)] = {static_cast<int>(partition_.chains.size()), false};
-          side_from_[DartKey(ends.end, Reverse(ends.end_dir))] = {
-              static_cast<int>(partition_.chains.size()), true};
+          const int index = static_cast<int>(partition_.chains.size());
+          side_from_.Set(DartKey(start, dir), {index, false});
+          side_from_.Set(DartKey(ends.end, Reverse(ends.end_dir)), {index, true});
           partition_.chains.push_back(std::move(chain));
           ends_.push_back(ends);
         }
@@ -405,9 +467,9 @@ class PartitionTracer {
     for (int turn = 1; turn < 8; ++turn) {
       const int dir = (back + 8 - turn) % 8;
       if (!(out & Bit(dir))) continue;
-      const auto it = side_from_.find(DartKey(at, dir));
-      if (it == side_from_.end()) break;
-      return it->second;
+      const ChainSide* side = side_from_.Find(DartKey(at, dir));
+      if (side == nullptr) break;
+      return *side;
     }
     throw std::logic_error("planar partition: a border chain has no successor");
   }
@@ -448,7 +510,8 @@ class PartitionTracer {
     unsigned edges;
   };
   std::vector<BorderCorner> border_corners_;
-  std::unordered_map<int64_t, ChainSide> side_from_;
+  DartSides side_from_;
+  PointList walk_points_;
 };
 
 }  // namespace
@@ -461,6 +524,9 @@ PlanarPartition BuildPlanarPartition(const cv::Mat& labels, int label_count) {
 PointList RingPoints(const std::vector<ChainSide>& ring,
                      const std::vector<PointList>& chain_points) {
   PointList points;
+  size_t total = 0;
+  for (const ChainSide& side : ring) total += chain_points[side.chain].size();
+  points.reserve(total);
   for (const ChainSide& side : ring) {
     const PointList& chain = chain_points[side.chain];
     const size_t n = chain.size();

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "stages/merge/row_runs.h"
+
 namespace areagraph {
 namespace {
 
@@ -123,10 +125,17 @@ void ApplyFolds(FoldedAreas& folded, const std::vector<bool>& took_others, AreaP
   }
   std::vector<int> label_of(count + 1, 0);
   for (int k = 0; k < count; ++k) label_of[k + 1] = new_index[folded.Find(k)] + 1;
+  // Run by run, and only the runs whose label changes are written.
+  const int cols = raster->labels.cols;
   for (int r = 0; r < raster->labels.rows; ++r) {
     int* row = raster->labels.ptr<int>(r);
-    for (int c = 0; c < raster->labels.cols; ++c) {
-      if (row[c] > 0 && row[c] <= count) row[c] = label_of[row[c]];
+    for (int c = 0; c < cols;) {
+      const int end = RunEnd(row, c, cols);
+      const int label = row[c];
+      if (label > 0 && label <= count && label_of[label] != label) {
+        std::fill(row + c, row + end, label_of[label]);
+      }
+      c = end;
     }
   }
   raster->cell_count = std::move(cells);

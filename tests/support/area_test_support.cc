@@ -140,6 +140,16 @@ int64_t ReachableCells(const AreaRaster& raster, const proto::CleanedMap& map,
 
 }  // namespace
 
+proto::CleanedMap CleanedMapOfCells(const cv::Mat& cells, double resolution_m) {
+  CV_Assert(cells.type() == CV_8U && cells.isContinuous());
+  proto::CleanedMap map;
+  map.mutable_frame()->set_width_px(cells.cols);
+  map.mutable_frame()->set_height_px(cells.rows);
+  map.mutable_frame()->set_resolution_m(resolution_m);
+  map.set_cells(std::string(cells.datastart, cells.dataend));
+  return map;
+}
+
 proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) {
   proto::CleanedMap map;
   map.set_format_version(1);

@@ -14,6 +14,9 @@ namespace areagraph::testing {
 // than 100 is a wall, 250 and lighter free), origin at (0, 0).
 proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m = 0.05);
 
+// A CleanedMap of cell states (CV_8U, proto::CellState values), origin at (0, 0).
+proto::CleanedMap CleanedMapOfCells(const cv::Mat& cells, double resolution_m = 0.05);
+
 // The same drawing run through ag-clean (outlier and furniture removal) with
 // `options`, as the pipeline sees it.
 proto::CleanedMap CleanDrawnMap(const cv::Mat& grey, const proto::CleanOptions& options = {},

@@ -4,6 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+
+#include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_simplicity.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
 
 namespace areagraph::testing {
@@ -132,6 +137,51 @@ TEST(AreaAssignmentTest, MergeIntoMovesEdgesAndRenumbersLaterAreas) {
              {0, 2, 1, 2, 0, 1});
   plan.MergeInto(2, 0);  // into an earlier one
   ExpectPlan(plan, {{AREA_ROOM, 2, {0, 1, 3, 4}}, {AREA_ROOM, 5, {2, 5}}}, {0, 0, 1, 0, 0, 1});
+}
+
+}  // namespace
+}  // namespace areagraph::testing
+
+namespace areagraph::testing {
+namespace {
+
+// AreaSizesM2 sums half of each ring's TwiceSignedArea: the value
+// SignedArea(ToPointList(...)) gives, to the bit, on random rings.
+TEST(AreaAssignmentTest, AreaSizesAsSignedAreasOfThePolygons) {
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-300.0, 900.0);
+  auto random_ring = [&](proto::Ring* ring) {
+    const int n = std::uniform_int_distribution<int>(0, 12)(random);
+    for (int i = 0; i < n; ++i) {
+      proto::Point2* point = ring->add_points();
+      point->set_x(coordinate(random));
+      point->set_y(coordinate(random));
+    }
+  };
+  proto::CutGraph graph;
+  AreaPlan plan;
+  plan.areas.resize(4);
+  for (int e = 0; e < 60; ++e) {
+    proto::GraphEdge* edge = graph.add_edges();
+    random_ring(edge->mutable_polygon()->mutable_outer());
+    for (int k = 0; k < e % 3; ++k) random_ring(edge->add_absorbed()->mutable_outer());
+    plan.area_of_edge.push_back(e % 4);
+  }
+  const double resolution_m = 0.05, cell_m2 = resolution_m * resolution_m;
+  std::vector<double> want(4, 0);
+  for (int e = 0; e < graph.edges_size(); ++e) {
+    double& area = want[plan.area_of_edge[e]];
+    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
+    for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
+      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
+    }
+  }
+  const std::vector<double> got = AreaSizesM2(graph, plan, resolution_m);
+  ASSERT_EQ(got.size(), want.size());
+  for (size_t k = 0; k < want.size(); ++k) {
+    EXPECT_EQ(got[k], want[k]) << "area " << k;
+    EXPECT_GT(got[k], 0);
+  }
 }
 
 }  // namespace

@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
+#include <random>
 
 #include "proto/pipeline_options.pb.h"
 #include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
+#include "tests/support/area_test_support.h"
 
 namespace areagraph::testing {
 namespace {
@@ -62,12 +64,7 @@ proto::CleanedMap WalledMap(const std::vector<cv::Rect>& obstacles) {
   std::vector<cv::Rect> walls{{2, 2, 156, 3}, {2, 115, 156, 3}, {2, 2, 3, 116}, {155, 2, 3, 116}};
   walls.insert(walls.end(), obstacles.begin(), obstacles.end());
   for (const cv::Rect& rect : walls) cells(rect).setTo(proto::CELL_OCCUPIED);
-  proto::CleanedMap map;
-  map.mutable_frame()->set_width_px(cells.cols);
-  map.mutable_frame()->set_height_px(cells.rows);
-  map.mutable_frame()->set_resolution_m(0.05);
-  map.set_cells(std::string(cells.datastart, cells.dataend));
-  return map;
+  return CleanedMapOfCells(cells);
 }
 
 TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
@@ -120,6 +117,46 @@ TEST(FurnitureIslandsTest, WithAgainstWallsACabinetByAThinWallIsAnIsland) {
 TEST(CorridorStemsTest, TheWidthLimitIsTheCorridorWidthLimit) {
   EXPECT_EQ(proto::MergeOptions().corridor_stems_max_width_m(), kMaxCorridorWidthM);
   EXPECT_EQ(CorridorStemParams().max_corridor_width_m, kMaxCorridorWidthM);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
+
+namespace areagraph::testing {
+namespace {
+
+// FillHoles against what merge did before: fill the outer contours.
+TEST(FillHoles, SameAsFillingTheOuterContours) {
+  std::mt19937 random(12);
+  int filled_cells = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    const int cols = std::uniform_int_distribution<int>(3, 70)(random);
+    const int rows = std::uniform_int_distribution<int>(3, 50)(random);
+    cv::Mat inner(rows - 2, cols - 2, CV_8U);
+    // Sparse to dense noise, then blobs and rings with gaps.
+    const int percent = std::uniform_int_distribution<int>(5, 95)(random);
+    cv::randu(inner, 0, 100);
+    inner = inner < percent;
+    for (int k = 0; k < 3; ++k) {
+      const cv::Point centre(std::uniform_int_distribution<int>(0, cols)(random),
+                             std::uniform_int_distribution<int>(0, rows)(random));
+      const int radius = std::uniform_int_distribution<int>(1, 15)(random);
+      cv::circle(inner, centre, radius, cv::Scalar(255),
+                 std::uniform_int_distribution<int>(1, 2)(random),
+                 k == 0 ? cv::LINE_4 : cv::LINE_8);
+    }
+    cv::Mat mask = cv::Mat::zeros(rows, cols, CV_8U);
+    inner.copyTo(mask(cv::Rect(1, 1, cols - 2, rows - 2)));
+    cv::Mat want = mask.clone();
+    std::vector<std::vector<cv::Point>> outer;
+    cv::findContours(mask.clone(), outer, cv::RETR_EXTERNAL, cv::CHAIN_APPROX_NONE);
+    cv::drawContours(want, outer, -1, cv::Scalar(255), cv::FILLED);
+    cv::Mat got = mask.clone();
+    FillHoles(&got);
+    ASSERT_EQ(cv::countNonZero(got != want), 0) << "trial " << trial;
+    filled_cells += cv::countNonZero(got) - cv::countNonZero(mask);
+  }
+  EXPECT_GT(filled_cells, 5000);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "stages/geometry/wall_thickness.h"
+#include "tests/support/area_test_support.h"
 
 namespace areagraph::testing {
 namespace {
@@ -36,12 +37,7 @@ proto::CleanedMap ClutteredMap(unsigned seed) {
                 cv::Size(uniform(3, 12), uniform(3, 12)), uniform(0, 90), 0, 360,
                 cv::Scalar(proto::CELL_UNKNOWN), cv::FILLED);
   }
-  proto::CleanedMap map;
-  map.mutable_frame()->set_width_px(cells.cols);
-  map.mutable_frame()->set_height_px(cells.rows);
-  map.mutable_frame()->set_resolution_m(kResolutionM);
-  map.set_cells(std::string(cells.datastart, cells.dataend));
-  return map;
+  return CleanedMapOfCells(cells, kResolutionM);
 }
 
 // Marks `value` where it is 0 on the islands of `mask`, the whole map at once.

@@ -1,0 +1,146 @@
+#include "stages/merge/core_cells.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "stages/geometry/distance_transform.h"
+
+namespace areagraph {
+namespace {
+
+// Beyond this many cells of reach the capped column distances would not fit a byte.
+constexpr int kMaxNearer = 250;
+
+// The least squared integer distance d whose distance value,
+// sqrt(float(d)) as the exact transform rounds it, reaches `reach` (> 0).
+int64_t SquaredReach(float reach) {
+  int64_t d = static_cast<int64_t>(std::ceil(double(reach) * double(reach)));
+  while (d > 0 && std::sqrt(float(d - 1)) >= reach) --d;
+  while (std::sqrt(float(d)) < reach) ++d;
+  return d;
+}
+
+// DistanceAtLeast on the free cells, then the domain: any size, any reach.
+cv::Mat WholeMapCores(const CellGrid& grid, const cv::Mat& domain, float reach) {
+  cv::Mat cells(domain.size(), CV_8U);
+  for (int r = 0; r < cells.rows; ++r) {
+    uint8_t* __restrict row = cells.ptr<uint8_t>(r);
+    const uint8_t* __restrict state = grid.CellRow(r);
+    for (int c = 0; c < cells.cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
+  }
+  cv::Mat core = DistanceAtLeast(cells, reach);
+  for (int r = 0; r < core.rows; ++r) {
+    uint8_t* __restrict row = core.ptr<uint8_t>(r);
+    const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
+    for (int c = 0; c < core.cols; ++c) row[c] = (row[c] != 0) & (inside[c] != 0);
+  }
+  return core;
+}
+
+}  // namespace
+
+cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px) {
+  const int rows = grid.height(), cols = grid.width();
+  CV_Assert(domain.type() == CV_8U && domain.rows == rows && domain.cols == cols);
+  const float reach = static_cast<float>(0.5 * min_gap_px);
+  if (rows == 0 || cols == 0 || !(reach > 0) || !ComputedExactly(cv::Size(cols, rows))) {
+    return WholeMapCores(grid, domain, reach);
+  }
+  // A column whose nearest obstacle is v < nearer cells away keeps the cells
+  // of its row within spread[v] of it short of the reach.
+  const int64_t k = SquaredReach(reach);
+  std::vector<int> spread;
+  for (int64_t v = 0; v * v < k && v <= kMaxNearer; ++v) {
+    int64_t t = 0;
+    while ((t + 1) * (t + 1) < k - v * v) ++t;
+    spread.push_back(static_cast<int>(t));
+  }
+  const int nearer = static_cast<int>(spread.size());
+  if (nearer > kMaxNearer) return WholeMapCores(grid, domain, reach);
+  // Column distances to the nearest non-free cell, counted up to `nearer`.
+  const uint8_t cap = static_cast<uint8_t>(nearer);
+  // Without a non-free cell the transform is OpenCV's, not the exact one
+  // (most maps' first row already has one).
+  bool any_obstacle = false;
+  for (int r = 0; r < rows && !any_obstacle; ++r) {
+    const uint8_t* state = grid.CellRow(r);
+    any_obstacle =
+        std::any_of(state, state + cols, [](uint8_t s) { return s != proto::CELL_FREE; });
+  }
+  if (!any_obstacle) return WholeMapCores(grid, domain, reach);
+  std::vector<uint8_t> column(static_cast<size_t>(rows) * cols);
+  std::vector<uint8_t> none(cols, cap - 1);
+  for (int r = 0; r < rows; ++r) {
+    const uint8_t* __restrict state = grid.CellRow(r);
+    uint8_t* __restrict out = column.data() + static_cast<size_t>(r) * cols;
+    // Above the first row no column has an obstacle.
+    const uint8_t* __restrict above = r > 0 ? out - cols : none.data();
+    // Byte arithmetic without a branch, which the compiler vectorises.
+    for (int c = 0; c < cols; ++c) {
+      uint8_t d = static_cast<uint8_t>(above[c] + 1);
+      d = d < cap ? d : cap;
+      const uint8_t free = static_cast<uint8_t>(-(state[c] == proto::CELL_FREE));
+      out[c] = d & free;
+    }
+  }
+  for (int r = rows - 2; r >= 0; --r) {
+    uint8_t* __restrict out = column.data() + static_cast<size_t>(r) * cols;
+    const uint8_t* __restrict below = out + cols;
+    for (int c = 0; c < cols; ++c) {
+      const uint8_t d = static_cast<uint8_t>(below[c] + 1);
+      out[c] = out[c] < d ? out[c] : d;
+    }
+  }
+  cv::Mat core(rows, cols, CV_8U);
+  const uint64_t far_word = 0x0101010101010101ull * cap;
+  for (int r = 0; r < rows; ++r) {
+    const uint8_t* v = column.data() + static_cast<size_t>(r) * cols;
+    uint8_t* out = core.ptr<uint8_t>(r);
+    // From the left: cells that a column at or before them keeps short.
+    int kept_until = -1;
+    for (int q = 0; q < cols;) {
+      uint64_t eight = 1;
+      if (q + 8 <= cols) std::memcpy(&eight, v + q, 8);
+      if (eight == far_word && kept_until < q) {
+        std::memset(out + q, 1, 8);
+        q += 8;
+        continue;
+      }
+      if (eight == 0) {
+        kept_until = std::max(kept_until, q + 7 + spread[0]);
+        std::memset(out + q, 0, 8);
+        q += 8;
+        continue;
+      }
+      if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
+      out[q] = q > kept_until;
+      ++q;
+    }
+    // From the right: a cell already kept short stays so.
+    int kept_from = cols;
+    for (int q = cols - 1; q >= 0;) {
+      uint64_t eight = 1;
+      if (q >= 7) std::memcpy(&eight, v + q - 7, 8);
+      if (eight == far_word && kept_from > q) {
+        q -= 8;
+        continue;
+      }
+      if (eight == 0) {
+        kept_from = std::min(kept_from, q - 7 - spread[0]);
+        q -= 8;
+        continue;
+      }
+      if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
+      out[q] &= q < kept_from;
+      --q;
+    }
+    const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
+    for (int c = 0; c < cols; ++c) out[c] &= inside[c] != 0;
+  }
+  return core;
+}
+
+}  // namespace areagraph
