@@ -5,6 +5,10 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#ifdef __SSE2__
+#include <immintrin.h>
+#endif
+
 namespace areagraph {
 namespace {
 
@@ -17,13 +21,10 @@ int RunPiecesOf(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<i
   for (int r = 0; r < cells.rows; ++r) {
     row_start[r] = runs->size();
     const Cell* row = cells.ptr<Cell>(r);
-    int c = 0;
-    while (c < cells.cols) {
-      const Cell value = row[c];
-      const int start = c;
-      while (++c < cells.cols && row[c] == value) {
-      }
-      if (value > 0) runs->push_back({r, start, c, static_cast<int>(value)});
+    for (int c = 0; c < cells.cols;) {
+      const int end = RunEnd(row, c, cells.cols);
+      if (row[c] > 0) runs->push_back({r, c, end, static_cast<int>(row[c])});
+      c = end;
     }
   }
   row_start[cells.rows] = runs->size();
@@ -36,6 +37,34 @@ int RunPiecesOf(const cv::Mat& cells, std::vector<PieceRun>* runs, std::vector<i
 }
 
 }  // namespace
+
+int RunEnd(const int* row, int begin, int cols) {
+  const int value = row[begin];
+  int c = begin + 1;
+#ifdef __SSE2__
+  const __m128i same = _mm_set1_epi32(value);
+  for (; c + 4 <= cols; c += 4) {
+    const __m128i four = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + c));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi32(four, same)) != 0xFFFF) break;
+  }
+#endif
+  while (c < cols && row[c] == value) ++c;
+  return c;
+}
+
+int RunEnd(const uint8_t* row, int begin, int cols) {
+  const uint8_t value = row[begin];
+  int c = begin + 1;
+#ifdef __SSE2__
+  const __m128i same = _mm_set1_epi8(static_cast<char>(value));
+  for (; c + 16 <= cols; c += 16) {
+    const __m128i sixteen = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + c));
+    if (_mm_movemask_epi8(_mm_cmpeq_epi8(sixteen, same)) != 0xFFFF) break;
+  }
+#endif
+  while (c < cols && row[c] == value) ++c;
+  return c;
+}
 
 cv::Mat LabelBoxes(const cv::Mat& labels, int count) {
   const int width = labels.cols, height = labels.rows;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
 
@@ -30,6 +31,12 @@ cv::Mat LabelBoxes(const cv::Mat& labels, int count);
 // mask (255), with a margin of one zero cell all round, so that a distance
 // transform of the mask sees the region's outline.
 cv::Mat LabelMaskInBox(const cv::Mat& labels, int label, const cv::Rect& box);
+
+// The end of the run of cells equal to row[begin] (begin < cols): the first
+// column after `begin` that differs, or cols. Compares 4 labels or 16 bytes
+// at a time where SSE2 is: label rasters are mostly long runs.
+int RunEnd(const int* row, int begin, int cols);
+int RunEnd(const uint8_t* row, int begin, int cols);
 
 // A run of equal cells in one row: columns [begin, end) of `row`.
 struct PieceRun {

@@ -11,7 +11,6 @@
 #include "stages/merge/core_cells.h"
 #include "stages/merge/label_growth.h"
 #include "stages/merge/path_cells.h"
-#include "stages/merge/row_runs.h"
 
 namespace areagraph {
 namespace {
@@ -26,7 +25,7 @@ constexpr int kUnreached = -1;
 std::vector<PieceRun> KeepMainPieces(const cv::Mat& on_path, cv::Mat* labels, int label_count) {
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
-  const int count = PiecesOverRuns(*labels, &runs, &piece_of_run);
+  const int count = RunPieces(*labels, &runs, &piece_of_run);
   struct Piece {
     int label = 0;
     int64_t size = 0;
@@ -69,7 +68,7 @@ void MarkUnreachedCores(const cv::Mat& core, double min_gap_px, cv::Mat* labels)
   const double min_core_cells = 4 * min_gap_px * min_gap_px;
   std::vector<PieceRun> runs;
   std::vector<int> piece_of_run;
-  const int count = PiecesOverRuns(core, &runs, &piece_of_run);
+  const int count = RunPieces(core, &runs, &piece_of_run);
   std::vector<int64_t> size(count, 0);
   std::vector<uint8_t> reached(count, 0);
   for (size_t i = 0; i < runs.size(); ++i) {

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "stages/merge/row_runs.h"
+#include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
 namespace {

@@ -1,12 +1,12 @@
-// PiecesOverRuns against RunPieces, and CountAreaCells against LabelBoxes,
-// on random rasters of long runs (the SIMD steps) and noise (the last cells).
-#include "stages/merge/row_runs.h"
-
+// RunEnd (geometry's, under RunPieces and merge's run loops) against a cell
+// by cell scan, and CountAreaCells against LabelBoxes, on random rasters of
+// long runs (the SIMD steps) and noise (the last cells).
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "stages/geometry/region_boxes.h"
 #include "stages/merge/area_raster.h"
 
 namespace areagraph::testing {
@@ -32,27 +32,32 @@ cv::Mat RunsRaster(int type, std::mt19937& random, int lo, int hi) {
   return cells;
 }
 
-TEST(RowRuns, PiecesAsRunPieces) {
+// The end a cell by cell scan finds.
+template <typename Cell>
+int ScannedEnd(const Cell* row, int begin, int cols) {
+  int c = begin + 1;
+  while (c < cols && row[c] == row[begin]) ++c;
+  return c;
+}
+
+TEST(RowRuns, RunEndAsTheCellByCellScan) {
   std::mt19937 random(33);
-  int pieces = 0;
+  int long_runs = 0;
   for (int trial = 0; trial < 300; ++trial) {
     const int type = trial % 2 ? CV_8U : CV_32S;
     const cv::Mat cells = RunsRaster(type, random, type == CV_8U ? 0 : -2, 3);
-    std::vector<PieceRun> want_runs, got_runs;
-    std::vector<int> want_pieces, got_pieces;
-    const int want = RunPieces(cells, &want_runs, &want_pieces);
-    ASSERT_EQ(PiecesOverRuns(cells, &got_runs, &got_pieces), want);
-    ASSERT_EQ(got_runs.size(), want_runs.size());
-    for (size_t i = 0; i < want_runs.size(); ++i) {
-      EXPECT_EQ(got_runs[i].row, want_runs[i].row);
-      EXPECT_EQ(got_runs[i].begin, want_runs[i].begin);
-      EXPECT_EQ(got_runs[i].end, want_runs[i].end);
-      EXPECT_EQ(got_runs[i].value, want_runs[i].value);
+    for (int r = 0; r < cells.rows; ++r) {
+      for (int begin = 0; begin < cells.cols; ++begin) {
+        const int want = type == CV_8U ? ScannedEnd(cells.ptr<uint8_t>(r), begin, cells.cols)
+                                       : ScannedEnd(cells.ptr<int>(r), begin, cells.cols);
+        const int got = type == CV_8U ? RunEnd(cells.ptr<uint8_t>(r), begin, cells.cols)
+                                      : RunEnd(cells.ptr<int>(r), begin, cells.cols);
+        ASSERT_EQ(got, want) << "trial " << trial << ", row " << r << ", from " << begin;
+        if (want - begin > 16) ++long_runs;
+      }
     }
-    EXPECT_EQ(got_pieces, want_pieces);
-    pieces += want;
   }
-  EXPECT_GT(pieces, 1000);
+  EXPECT_GT(long_runs, 1000);  // the 16-byte and 4-label steps ran
 }
 
 TEST(RowRuns, AreaCellsAsLabelBoxes) {
