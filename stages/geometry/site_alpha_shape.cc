@@ -254,6 +254,28 @@ struct SiteAlphaShape::Impl {
   }
 };
 
+int SiteAlphaShape::NameVertexFaces(const PointList& positions) {
+  Impl& impl = *impl_;
+  if (!impl.HasFaces() || impl.vertex_faces_built) return 0;
+  // Voronoi's triangulation names every finite face.
+  if (impl.shape.finite_faces_begin()->info().number >= 0) return 0;
+  impl.vertex_faces_built = true;
+  impl.vertex_face.assign(positions.size(), Face());
+  // The circumcentre as voronoi computes it (same points, same order), so a
+  // vertex's first face gives its position exactly; later faces of a circle
+  // (and any mismatch) are passed over.
+  size_t vertex = 0;
+  for (Face face : impl.shape.finite_face_handles()) {
+    if (vertex == positions.size()) break;
+    const auto centre = impl.shape.circumcenter(face->vertex(0)->point(), face->vertex(1)->point(),
+                                                face->vertex(2)->point());
+    if (centre.x() == positions[vertex].x() && centre.y() == positions[vertex].y()) {
+      impl.vertex_face[vertex++] = face;
+    }
+  }
+  return static_cast<int>(vertex);
+}
+
 SiteAlphaShape::SiteAlphaShape(const PointList& sites, double alpha_radius_px)
     : impl_(std::make_unique<Impl>(TriangulateSites(sites), alpha_radius_px * alpha_radius_px)) {}
 

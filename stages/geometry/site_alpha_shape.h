@@ -47,6 +47,14 @@ class SiteAlphaShape {
   // at the vertex's Delaunay face when the triangulation is voronoi's, and
   // the answer is always EnclosedRegionAt's.
   int EnclosedRegionAt(const Eigen::Vector2d& point, int vertex);
+  // For a triangulation made here rather than voronoi's (whose faces name no
+  // Voronoi vertex): names each vertex's face by matching `positions`
+  // (BuildVoronoiDiagram's, one per circle at its first face's circumcentre,
+  // in face order) against the faces' circumcentres, so that the
+  // EnclosedRegionAt walks above start next to their point. Answers never
+  // depend on it (any start gives the same); a vertex left unmatched walks
+  // from the last hint. Returns the number named: none once faces are named.
+  int NameVertexFaces(const PointList& positions);
   // The outer ring of a region (rooms wider than alpha are inside it, not
   // holes); empty for an unknown region.
   proto::Polygon EnclosedRegionOutline(int region);

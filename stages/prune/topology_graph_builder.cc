@@ -323,10 +323,14 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   // triangulation is the voronoi stage's when this process made the diagram.
   const double alpha_radius_px = options.boundary_alpha_radius_m() / resolution;
   SiteTriangulationPtr voronoi_triangulation = TakeSiteTriangulation(plain.sites);
-  auto boundary_shape =
-      voronoi_triangulation != nullptr
-          ? std::make_unique<SiteAlphaShape>(std::move(voronoi_triangulation), alpha_radius_px)
-          : std::make_unique<SiteAlphaShape>(plain.sites, alpha_radius_px);
+  std::unique_ptr<SiteAlphaShape> boundary_shape;
+  if (voronoi_triangulation != nullptr) {
+    boundary_shape =
+        std::make_unique<SiteAlphaShape>(std::move(voronoi_triangulation), alpha_radius_px);
+  } else {
+    boundary_shape = std::make_unique<SiteAlphaShape>(plain.sites, alpha_radius_px);
+    boundary_shape->NameVertexFaces(plain.positions);
+  }
   const std::vector<double> region_area = boundary_shape->FindEnclosedRegions();
   if (region_area.empty()) {
     throw InputError("no Topology Graph: the obstacles enclose no space (no alpha shape with " +

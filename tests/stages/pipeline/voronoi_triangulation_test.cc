@@ -84,6 +84,38 @@ TEST(VoronoiTriangulationTest, RegionsByVoronoiVertexAreThePlainWalksOnes) {
   }
 }
 
+// A triangulation made in prune (the diagram came from the store) names its
+// vertices' faces by their circumcentres: every vertex is named, and the
+// answers stay the plain walks'.
+TEST(VoronoiTriangulationTest, VertexFacesNamedByCircumcentreGiveThePlainWalksAnswers) {
+  for (const uint32_t seed : {3u, 19u}) {
+    VoronoiRun run(seed);
+    const proto::PipelineOptions options;
+    const proto::VoronoiDiagram& diagram = run.diagram;
+    const double alpha_px =
+        options.prune().boundary_alpha_radius_m() / run.map.frame().resolution_m();
+    PointList positions;
+    for (int v = 0; v < diagram.vertex_x_size(); ++v) {
+      positions.emplace_back(diagram.vertex_x(v), diagram.vertex_y(v));
+    }
+    ASSERT_NE(run.kept, nullptr);
+    SiteAlphaShape on_voronois(std::move(run.kept), alpha_px);
+    EXPECT_EQ(on_voronois.NameVertexFaces(positions), 0) << "voronoi's faces are named already";
+    SiteAlphaShape named(run.sites, alpha_px);
+    ASSERT_EQ(named.NameVertexFaces(positions), diagram.vertex_x_size()) << "seed " << seed;
+    EXPECT_EQ(named.NameVertexFaces(positions), 0) << "named twice";
+    SiteAlphaShape plain(run.sites, alpha_px);
+    ASSERT_EQ(named.FindEnclosedRegions(), plain.FindEnclosedRegions());
+    int inside = 0;
+    for (int v = 0; v < diagram.vertex_x_size(); ++v) {
+      const int region = plain.EnclosedRegionAt(positions[v]);
+      ASSERT_EQ(named.EnclosedRegionAt(positions[v], v), region) << "seed " << seed << " v " << v;
+      inside += region >= 0;
+    }
+    EXPECT_GT(inside, 100) << "seed " << seed;
+  }
+}
+
 TEST(VoronoiTriangulationTest, APipelineThatStopsAtVoronoiKeepsNothing) {
   const proto::PipelineOptions options;
   auto store = OpenArtifactStore(":memory:");
