@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -36,5 +37,18 @@ EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message
 
 // The same for bytes already serialized (ag-import's grid, merges, tests).
 EncodedPayload EncodeRawPayload(std::string_view raw);
+
+// A message's serialized bytes in a buffer of their own, not zero-filled
+// first (the write-behind store's hand-over to its thread).
+struct SerializedMessage {
+  std::unique_ptr<uint8_t[]> bytes;
+  size_t size = 0;
+  std::string_view view() const {
+    return std::string_view(reinterpret_cast<const char*>(bytes.get()), size);
+  }
+};
+
+// `message` serialized whole. Throws StoreError as EncodeMessagePayload does.
+SerializedMessage SerializeMessage(const google::protobuf::MessageLite& message);
 
 }  // namespace areagraph
