@@ -31,7 +31,8 @@ struct WriteJob {
 
 class WriteBehindStore : public ArtifactStore {
  public:
-  explicit WriteBehindStore(const std::string& path) : path_(path), store_(OpenArtifactStore(path)) {}
+  explicit WriteBehindStore(const std::string& path)
+      : path_(path), store_(OpenArtifactStore(path)) {}
 
   ~WriteBehindStore() override {
     {
@@ -62,9 +63,7 @@ class WriteBehindStore : public ArtifactStore {
                                                     const std::string& cache_key) override {
     return AfterWriteOf(map_name, cache_key).ReadArtifactSummary(map_name, cache_key);
   }
-  void WriteArtifact(const NewArtifact& artifact) override {
-    Finished().WriteArtifact(artifact);
-  }
+  void WriteArtifact(const NewArtifact& artifact) override { Finished().WriteArtifact(artifact); }
   void WriteMessageArtifact(NewArtifact artifact,
                             const google::protobuf::MessageLite& message) override;
   void FinishWrites() override { Finished(); }
@@ -87,9 +86,8 @@ class WriteBehindStore : public ArtifactStore {
   }
 
   std::vector<VersionRecord> ReadVersions(const std::string& map_name) override {
-    return (PendingMatches([&](const PendingArtifact& p) {
-              return p.versioned && p.map_name == map_name;
-            })
+    return (PendingMatches(
+                [&](const PendingArtifact& p) { return p.versioned && p.map_name == map_name; })
                 ? Finished()
                 : *store_)
         .ReadVersions(map_name);
@@ -99,9 +97,7 @@ class WriteBehindStore : public ArtifactStore {
     return AfterWriteOf(map_name, cache_key).ReadVersion(map_name, cache_key);
   }
 
-  void RecordFailure(const FailureRecord& failure) override {
-    Finished().RecordFailure(failure);
-  }
+  void RecordFailure(const FailureRecord& failure) override { Finished().RecordFailure(failure); }
   void ClearFailure(const std::string& map_name) override { Finished().ClearFailure(map_name); }
   std::vector<FailureRecord> ReadFailures() override { return Finished().ReadFailures(); }
 
@@ -143,8 +139,8 @@ class WriteBehindStore : public ArtifactStore {
   }
   ArtifactStore& AfterWriteOf(const std::string& map_name, const std::string& cache_key) {
     return PendingMatches([&](const PendingArtifact& p) {
-             return p.map_name == map_name && p.cache_key == cache_key;
-           })
+      return p.map_name == map_name && p.cache_key == cache_key;
+    })
                ? Finished()
                : *store_;
   }

@@ -21,14 +21,18 @@ InputError MissingInput(ArtifactStore& store, const std::string& map_name, const
                     stage.name + " first");
 }
 
-// Whether the stored artifact is of `message`'s type: by the stage table's
-// name for the type when a stage writes it (protobuf's descriptors, which
-// GetTypeName builds, cost a short reader such as ag-render 0.9 M
-// instructions), else by GetTypeName.
+// The artifact's type name as the store records it: the stage table's name
+// for a type a stage writes (protobuf's descriptors, which GetTypeName
+// builds, cost a short reader such as ag-render 0.9 M instructions), else
+// GetTypeName.
+std::string TypeName(const google::protobuf::Message& artifact) {
+  const StageDefinition* stage = StageWritingType(artifact);
+  return stage != nullptr ? stage->proto_type : artifact.GetTypeName();
+}
+
+// Whether the stored artifact is of `message`'s type.
 bool IsOfType(const ArtifactRecord& record, const google::protobuf::Message& message) {
-  const StageDefinition* stage = StageWritingType(message);
-  return stage != nullptr ? record.proto_type == stage->proto_type
-                          : record.proto_type == message.GetTypeName();
+  return record.proto_type == TypeName(message);
 }
 
 // A cache hit's summary: from the row, or (for an artifact stored before the
@@ -61,7 +65,7 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.input_keys = inputs.digests;
   artifact.options_text = CanonicalText(options);
   artifact.stage_version = stage.info.version;
-  artifact.proto_type = stage.proto_type;  // GetTypeName would build descriptors
+  artifact.proto_type = TypeName(*result);
   artifact.elapsed_ms = run.elapsed_ms;
   artifact.summary_line = run.summary;
   artifact.source_path = inputs.source_path;
