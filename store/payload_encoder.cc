@@ -107,9 +107,11 @@ EncodedPayload EncodeWhole(std::string_view raw) {
   return payload;
 }
 
-// The message's size, as ByteSizeLong caches it for the serializer.
-size_t CheckedByteSize(const google::protobuf::MessageLite& message) {
-  const size_t raw_bytes = message.ByteSizeLong();
+// The message's size, as ByteSizeLong caches it for the serializer (or as
+// the caller's call to it did).
+size_t CheckedByteSize(const google::protobuf::MessageLite& message,
+                       std::optional<size_t> byte_size) {
+  const size_t raw_bytes = byte_size ? *byte_size : message.ByteSizeLong();
   if (raw_bytes > static_cast<size_t>(INT_MAX)) {
     throw StoreError("the artifact is too big to store (" + std::to_string(raw_bytes) + " bytes)");
   }
@@ -133,12 +135,14 @@ SerializedMessage SerializeWithCachedSizes(const google::protobuf::MessageLite& 
 
 }  // namespace
 
-SerializedMessage SerializeMessage(const google::protobuf::MessageLite& message) {
-  return SerializeWithCachedSizes(message, CheckedByteSize(message));
+SerializedMessage SerializeMessage(const google::protobuf::MessageLite& message,
+                                   std::optional<size_t> byte_size) {
+  return SerializeWithCachedSizes(message, CheckedByteSize(message, byte_size));
 }
 
-EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message) {
-  const size_t raw_bytes = CheckedByteSize(message);
+EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message,
+                                    std::optional<size_t> byte_size) {
+  const size_t raw_bytes = CheckedByteSize(message, byte_size);
   if (raw_bytes <= kWholeEncodingMaxBytes) {
     return EncodeWhole(SerializeWithCachedSizes(message, raw_bytes).view());
   }

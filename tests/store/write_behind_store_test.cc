@@ -72,10 +72,12 @@ TEST(WriteBehindStoreTest, PendingArtifactIsSeenByItsWriterAndStoredAsSerialized
 }
 
 // The same digest as a store that writes at once, also for a payload that
-// the latter streams (over kWholeEncodingMaxBytes).
+// the latter streams (over kWholeEncodingMaxBytes) and one written in the
+// caller's thread (over kWriteBehindMaxBytes).
 TEST(WriteBehindStoreTest, DigestsEqualThoseOfADirectWrite) {
   testing::TempDir dir;
-  for (const size_t cells : {size_t{100}, kWholeEncodingMaxBytes + 12345}) {
+  for (const size_t cells :
+       {size_t{100}, kWholeEncodingMaxBytes + 12345, kWriteBehindMaxBytes + 1}) {
     const proto::GridMap grid = Grid(cells, 2);
     const std::string key = "k" + std::to_string(cells);
     OpenArtifactStore(dir.File("direct.db"))->WriteMessageArtifact(Row("import", key), grid);
@@ -104,14 +106,16 @@ TEST(WriteBehindStoreTest, MessageChangedAfterTheCallDoesNotReachTheStore) {
 }
 
 // Artifacts are written in the order handed over: each waits for the one
-// before, so the store never holds a later stage without its input.
+// before, so the store never holds a later stage without its input; also
+// one too big for the thread (voronoi here) waits for the one pending.
 TEST(WriteBehindStoreTest, WritesLandInOrderAndEachMovesItsHead) {
   testing::TempDir dir;
   const std::string path = dir.File("store.db");
   const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(path);
   const char* stages[] = {"import", "clean", "voronoi", "prune"};
   for (int i = 0; i < 4; ++i) {
-    store->WriteMessageArtifact(Row(stages[i], "k" + std::to_string(i)), Grid(1 << 20, i));
+    const size_t cells = i == 2 ? kWriteBehindMaxBytes + 1 : size_t{1} << 20;
+    store->WriteMessageArtifact(Row(stages[i], "k" + std::to_string(i)), Grid(cells, i));
   }
   store->FinishWrites();
   const std::vector<ArtifactRecord> rows =
