@@ -184,12 +184,13 @@ void WriteBehindStore::WriteMessageArtifact(NewArtifact artifact,
   Finished();  // the previous artifact is in the store before this one starts
   PendingArtifact pending{job.artifact.map_name, job.artifact.stage, job.artifact.cache_key,
                           job.artifact.version.has_value()};
+  // Before anything is pending: a thread that cannot start throws here.
+  if (!thread_.joinable()) thread_ = std::thread([this] { RunWriter(); });
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     pending_ = std::move(pending);
     job_ = std::move(job);
   }
-  if (!thread_.joinable()) thread_ = std::thread([this] { RunWriter(); });
   changed_.notify_all();
 }
 
