@@ -149,6 +149,18 @@ class ArtifactStore {
   // head of its (map, stage), all in one transaction. Writing a key that the
   // map already has replaces that row.
   virtual void WriteArtifact(const NewArtifact& artifact) = 0;
+  // WriteArtifact with `message` serialized as the payload (`artifact`'s
+  // payload and encoded_payload are ignored). No reference to `message` is
+  // kept once this returns. Here the write is done when it returns; a
+  // write-behind store (write_behind_store.h) may finish it later.
+  virtual void WriteMessageArtifact(NewArtifact artifact,
+                                    const google::protobuf::MessageLite& message) {
+    artifact.encoded_payload = EncodeMessagePayload(message);
+    WriteArtifact(artifact);
+  }
+  // Returns once every artifact handed to this store is in it; throws the
+  // error of one that failed. Nothing to do where every write is done at once.
+  virtual void FinishWrites() {}
   // Makes an existing artifact the head of its (map, stage); for cache hits.
   virtual void UpdateHead(const std::string& map_name, const std::string& cache_key) = 0;
 

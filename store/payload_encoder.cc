@@ -107,26 +107,47 @@ EncodedPayload EncodeWhole(std::string_view raw) {
   return payload;
 }
 
-}  // namespace
-
-EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message) {
-  const size_t raw_bytes = message.ByteSizeLong();
+// The message's size, as ByteSizeLong caches it for the serializer (or as
+// the caller's call to it did).
+size_t CheckedByteSize(const google::protobuf::MessageLite& message,
+                       std::optional<size_t> byte_size) {
+  const size_t raw_bytes = byte_size ? *byte_size : message.ByteSizeLong();
   if (raw_bytes > static_cast<size_t>(INT_MAX)) {
     throw StoreError("the artifact is too big to store (" + std::to_string(raw_bytes) + " bytes)");
   }
+  return raw_bytes;
+}
+
+// Serializes with the sizes CheckedByteSize just cached: no second pass over
+// the message.
+SerializedMessage SerializeWithCachedSizes(const google::protobuf::MessageLite& message,
+                                           size_t raw_bytes) {
+  SerializedMessage raw;
+  // Not zero-filled: every byte is written by the serializer.
+  raw.bytes.reset(new uint8_t[raw_bytes]);
+  raw.size = raw_bytes;
+  const uint8_t* end = message.SerializeWithCachedSizesToArray(raw.bytes.get());
+  if (end != raw.bytes.get() + raw_bytes) {
+    throw StoreError("a " + message.GetTypeName() + " changed size while it was serialized");
+  }
+  return raw;
+}
+
+}  // namespace
+
+SerializedMessage SerializeMessage(const google::protobuf::MessageLite& message,
+                                   std::optional<size_t> byte_size) {
+  return SerializeWithCachedSizes(message, CheckedByteSize(message, byte_size));
+}
+
+EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message,
+                                    std::optional<size_t> byte_size) {
+  const size_t raw_bytes = CheckedByteSize(message, byte_size);
   if (raw_bytes <= kWholeEncodingMaxBytes) {
-    // Not zero-filled: every byte is written by the serializer.
-    const std::unique_ptr<uint8_t[]> raw(new uint8_t[raw_bytes]);
-    // The sizes ByteSizeLong just cached: no second pass over the message.
-    const uint8_t* end = message.SerializeWithCachedSizesToArray(raw.get());
-    if (end != raw.get() + raw_bytes) {
-      throw StoreError("a " + message.GetTypeName() + " changed size while it was serialized");
-    }
-    return EncodeWhole(std::string_view(reinterpret_cast<const char*>(raw.get()), raw_bytes));
+    return EncodeWhole(SerializeWithCachedSizes(message, raw_bytes).view());
   }
   EncodingStream stream(raw_bytes);
   {
-    // The sizes ByteSizeLong just cached: no second pass over the message.
     google::protobuf::io::CodedOutputStream coded(&stream);
     message.SerializeWithCachedSizes(&coded);
     if (coded.HadError()) throw StoreError("could not serialize a " + message.GetTypeName());

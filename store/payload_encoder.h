@@ -4,6 +4,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -32,9 +34,27 @@ inline constexpr size_t kWholeEncodingMaxBytes = size_t{8} << 20;
 // that by a few bytes (5 of the 112 frames of areagraph/input, 1-10 bytes
 // each) and decodes to the same bytes. Throws StoreError when the message is
 // over 2 GB or zstd fails.
-EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message);
+// `byte_size`, when given, is what message.ByteSizeLong() just returned (its
+// sizes are then cached): the message is not sized again.
+EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message,
+                                    std::optional<size_t> byte_size = std::nullopt);
 
 // The same for bytes already serialized (ag-import's grid, merges, tests).
 EncodedPayload EncodeRawPayload(std::string_view raw);
+
+// A message's serialized bytes in a buffer of their own, not zero-filled
+// first (the write-behind store's hand-over to its thread).
+struct SerializedMessage {
+  std::unique_ptr<uint8_t[]> bytes;
+  size_t size = 0;
+  std::string_view view() const {
+    return std::string_view(reinterpret_cast<const char*>(bytes.get()), size);
+  }
+};
+
+// `message` serialized whole; `byte_size` as for EncodeMessagePayload.
+// Throws StoreError as EncodeMessagePayload does.
+SerializedMessage SerializeMessage(const google::protobuf::MessageLite& message,
+                                   std::optional<size_t> byte_size = std::nullopt);
 
 }  // namespace areagraph

@@ -137,6 +137,7 @@ MapOutcome RunOneMap(ArtifactStore& store, FailureLog& failures, const std::stri
     };
     ArtifactMemo memo;
     RunStages(store, map_name, import, options, settings, counting, memo);
+    store.FinishWrites();  // the map is done once its artifacts are stored
     outcome.fully_cached = outcome.stages_run > 0 && outcome.cache_hits == outcome.stages_run;
     if (makes_graph) {
       std::string key;

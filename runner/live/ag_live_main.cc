@@ -10,7 +10,7 @@
 #include "runner/live/live_map_server.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
-#include "store/artifact_store.h"
+#include "store/write_behind_store.h"
 
 namespace areagraph {
 namespace {
@@ -30,7 +30,7 @@ int Live(const LiveFlags& flags) {
   }
   // Everything that can fail without the network fails before LCM starts.
   const std::string url = ReceivingLcmUrl(flags.url);
-  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.stage.store_path);
+  const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(flags.stage.store_path);
   AreaGraphPublisher publisher(url);
   LiveMapServer server(*store, publisher, options, std::cout, std::cerr);
   server.set_publish_diffs(flags.diffs);

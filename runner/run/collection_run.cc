@@ -76,7 +76,7 @@ int RunCollection(const RunFlags& flags) {
         PipelineObserver observer;
         observer.on_start = [&](const StageInfo& stage) {
           events.Write(StageStartedEvent(stage));
-          MaybeInjectCrash(tasks[task].entry.name, stage);
+          MaybeInjectCrash(tasks[task].entry.name, stage, [&] { worker->FinishWrites(); });
         };
         observer.on_done = [&](const StageInfo& stage, const StageRun& run) {
           events.Write(StageDoneEvent(stage, run));

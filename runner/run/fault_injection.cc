@@ -7,11 +7,15 @@
 
 namespace areagraph {
 
-void MaybeInjectCrash(const std::string& map_name, const StageInfo& stage) {
+void MaybeInjectCrash(const std::string& map_name, const StageInfo& stage,
+                      const std::function<void()>& before_fault) {
   static const char* fault = std::getenv("AG_RUN_FAULT");
   if (fault == nullptr) return;
-  if (std::string(fault) == "crash:" + map_name + ":" + stage.name) std::raise(SIGSEGV);
-  while (std::string(fault) == "stall:" + map_name + ":" + stage.name) pause();
+  const std::string at = map_name + ":" + stage.name;
+  if (std::string(fault) != "crash:" + at && std::string(fault) != "stall:" + at) return;
+  before_fault();
+  if (std::string(fault) == "crash:" + at) std::raise(SIGSEGV);
+  while (true) pause();
 }
 
 }  // namespace areagraph

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "stages/common/stage_info.h"
@@ -10,7 +11,10 @@ namespace areagraph {
 // of SIGSEGV when that stage of that map starts, standing in for a crash
 // inside CGAL, so that tests can check that crashes stay isolated. With
 // stall:<map>:<stage> the worker waits there until a signal ends it, so that
-// a test can cancel a job mid-run at a known point.
-void MaybeInjectCrash(const std::string& map_name, const StageInfo& stage);
+// a test can cancel a job mid-run at a known point. Either calls
+// `before_fault` first: the artifacts written behind (the previous stage's)
+// are then in the store, so that a test knows what the store holds.
+void MaybeInjectCrash(const std::string& map_name, const StageInfo& stage,
+                      const std::function<void()>& before_fault);
 
 }  // namespace areagraph

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "stages/import/import_stage.h"
+#include "store/write_behind_store.h"
 
 namespace areagraph {
 
@@ -15,10 +16,18 @@ void MapWorker::CloseStore() {
   store_.reset();
 }
 
+void MapWorker::FinishWrites() {
+  if (!store_) return;
+  try {
+    store_->FinishWrites();
+  } catch (const std::exception&) {
+  }
+}
+
 MapOutcome MapWorker::Run(const MapTask& task, const PipelineObserver& observer) {
   if (!store_) {
     try {
-      store_ = OpenArtifactStore(settings_.store_path);
+      store_ = OpenWriteBehindStore(settings_.store_path);
       failures_ = std::make_unique<FailureLog>(*store_);
     } catch (const std::exception& error) {
       store_.reset();  // the runner records the failure once the workers are gone

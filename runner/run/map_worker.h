@@ -22,17 +22,21 @@ struct RunSettings {
   MapRunSettings map;
 };
 
-// Runs maps one after another on one store connection, opened on first use.
-// A worker process owns one; failures are recorded in the store and
-// returned, never thrown.
+// Runs maps one after another on one store, opened on first use: a
+// write-behind store (store/write_behind_store.h), whose thread writes each
+// artifact while the next stage computes. A worker process owns one;
+// failures are recorded in the store and returned, never thrown.
 class MapWorker {
  public:
   MapWorker(RunSettings settings, GraphPublisher publish);
   MapOutcome Run(const MapTask& task, const PipelineObserver& observer);
-  // Closes the store connection, which folds the write-ahead log into the
+  // Closes the store, which folds the write-ahead log into the
   // file: the last worker's job (ProcessPool's OnWorkerEnd), while the log's
   // index is still in its memory.
   void CloseStore();
+  // Returns once the artifacts handed to the store are in it (errors are
+  // left to the map's run, which reports them).
+  void FinishWrites();
 
  private:
   RunSettings settings_;

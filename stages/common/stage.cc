@@ -21,14 +21,18 @@ InputError MissingInput(ArtifactStore& store, const std::string& map_name, const
                     stage.name + " first");
 }
 
-// Whether the stored artifact is of `message`'s type: by the stage table's
-// name for the type when a stage writes it (protobuf's descriptors, which
-// GetTypeName builds, cost a short reader such as ag-render 0.9 M
-// instructions), else by GetTypeName.
+// The artifact's type name as the store records it: the stage table's name
+// for a type a stage writes (protobuf's descriptors, which GetTypeName
+// builds, cost a short reader such as ag-render 0.9 M instructions), else
+// GetTypeName.
+std::string TypeName(const google::protobuf::Message& artifact) {
+  const StageDefinition* stage = StageWritingType(artifact);
+  return stage != nullptr ? stage->proto_type : artifact.GetTypeName();
+}
+
+// Whether the stored artifact is of `message`'s type.
 bool IsOfType(const ArtifactRecord& record, const google::protobuf::Message& message) {
-  const StageDefinition* stage = StageWritingType(message);
-  return stage != nullptr ? record.proto_type == stage->proto_type
-                          : record.proto_type == message.GetTypeName();
+  return record.proto_type == TypeName(message);
 }
 
 // A cache hit's summary: from the row, or (for an artifact stored before the
@@ -61,16 +65,14 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.input_keys = inputs.digests;
   artifact.options_text = CanonicalText(options);
   artifact.stage_version = stage.info.version;
-  artifact.proto_type = result->GetTypeName();
-  // Serialized straight into the frame and the hash: on large maps a
-  // serialized copy would be a good part of the peak.
-  artifact.encoded_payload = EncodeMessagePayload(*result);
+  artifact.proto_type = TypeName(*result);
   artifact.elapsed_ms = run.elapsed_ms;
   artifact.summary_line = run.summary;
   artifact.source_path = inputs.source_path;
   artifact.source_digest = inputs.source_digest;
   artifact.version = inputs.version;
-  store.WriteArtifact(artifact);
+  // A write-behind store finishes the write while the next stage computes.
+  store.WriteMessageArtifact(std::move(artifact), *result);
   if (memo != nullptr) memo->Keep(stage.info.name, run.cache_key, std::move(result));
   return run;
 }
@@ -86,18 +88,25 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
   run.cache_key =
       StageCacheKey(stage.info, stage_options, CacheKeyInputs(inputs.digests, inputs.version));
   try {
-    if (!force) {
-      // Key lookups only: a hit costs no payload read. A damaged payload
-      // shows when a later stage reads it (or with ag-store verify).
-      const bool is_head = store.ReadHeadKey(map_name, stage.info.name) == run.cache_key;
-      if (is_head || store.HasArtifact(map_name, run.cache_key)) {
-        if (!is_head) store.UpdateHead(map_name, run.cache_key);
-        run.cache_hit = true;
-        run.summary = SummaryOfStored(store, map_name, stage, run.cache_key);
-        return run;
+    try {
+      if (!force) {
+        // Key lookups only: a hit costs no payload read. A damaged payload
+        // shows when a later stage reads it (or with ag-store verify).
+        const bool is_head = store.ReadHeadKey(map_name, stage.info.name) == run.cache_key;
+        if (is_head || store.HasArtifact(map_name, run.cache_key)) {
+          if (!is_head) store.UpdateHead(map_name, run.cache_key);
+          run.cache_hit = true;
+          run.summary = SummaryOfStored(store, map_name, stage, run.cache_key);
+          return run;
+        }
       }
+      return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run, memo);
+    } catch (...) {
+      // An earlier stage's write that failed meanwhile (write_behind_store.h)
+      // is the error: run one by one, it would have stopped the map first.
+      store.FinishWrites();
+      throw;
     }
-    return ComputeAndStore(store, map_name, stage, stage_options, inputs, compute, run, memo);
   } catch (const MapStepError&) {
     throw;
   } catch (const std::bad_alloc&) {

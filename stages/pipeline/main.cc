@@ -6,7 +6,7 @@
 #include "common/text.h"
 #include "stages/common/command_line.h"
 #include "stages/pipeline/map_pipeline.h"
-#include "store/artifact_store.h"
+#include "store/write_behind_store.h"
 
 using namespace areagraph;
 
@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   AddStageFlags(app, flags);
   return RunCommand("ag-pipeline", app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
-    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
+    const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(flags.store_path);
     std::string last_summary;
     RunMapPipeline(*store, flags.map_name, options, flags.force,
                    [&](const StageInfo& stage, const StageRun& run) {

@@ -79,6 +79,7 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
     }
     ReturnFreedMemory();
   }
+  store.FinishWrites();
 }
 
 void RunMapPipeline(ArtifactStore& store, const std::string& map_name,

@@ -36,7 +36,8 @@ struct PipelineObserver {
 // run first when an input is missing. Each computed artifact goes to the
 // next stages in memory (through `memo`, which may already hold the import's
 // artifact, or a memo of its own when null) and is dropped once no later
-// stage reads it; `last`'s stays in `memo` when it was computed.
+// stage reads it; `last`'s stays in `memo` when it was computed. Returns once
+// every artifact is in the store (ArtifactStore::FinishWrites).
 void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
                     const proto::PipelineOptions& options, bool force,
                     const PipelineObserver& observer, const StageInfo& first, const StageInfo& last,

@@ -1,5 +1,6 @@
 // Processes that die mid-write, and processes that write at the same time.
 
+#include <google/protobuf/wrappers.pb.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -14,6 +15,7 @@
 #include <thread>
 
 #include "store/artifact_store.h"
+#include "store/write_behind_store.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {
@@ -21,6 +23,17 @@ namespace {
 
 constexpr char kMap[] = "crash";
 constexpr int kSlots = 4;
+
+// The payload of generation g, as a message for WriteMessageArtifact.
+google::protobuf::BytesValue GenerationMessage(int64_t generation) {
+  // Large enough that a write spans many pages and takes a while.
+  const size_t size = 512 * 1024 + (generation % 7) * 65536;
+  std::string bytes(size, '\0');
+  for (size_t i = 0; i < size; ++i) bytes[i] = static_cast<char>((generation * 131 + i * 7) & 0xff);
+  google::protobuf::BytesValue message;
+  message.set_value(bytes);
+  return message;
+}
 
 // Generation g goes to slot g % 4 and stage "even"/"odd"; every field is a
 // function of g, so a row mixing two writes can be recognized.
@@ -33,23 +46,29 @@ NewArtifact GenerationArtifact(int64_t generation) {
   artifact.options_text = std::to_string(generation);
   artifact.stage_version = static_cast<int>(generation % 1000);
   artifact.proto_type = "test.Generation";
-  // Large enough that a write spans many pages and takes a while.
-  const size_t size = 512 * 1024 + (generation % 7) * 65536;
-  artifact.payload.resize(size);
-  for (size_t i = 0; i < size; ++i) {
-    artifact.payload[i] = static_cast<char>((generation * 131 + i * 7) & 0xff);
-  }
+  artifact.payload = GenerationMessage(generation).SerializeAsString();
   artifact.elapsed_ms = static_cast<double>(generation);
   return artifact;
 }
 
 // Runs in a forked child: writes generations [first, first + count) and
-// exits 0, or prints the error and exits 1. Never returns.
-[[noreturn]] void WriteGenerations(const std::string& path, int64_t first, int64_t count) {
+// exits 0, or prints the error and exits 1. Never returns. `behind`: through
+// a write-behind store, which writes each on its thread while the next is
+// made.
+[[noreturn]] void WriteGenerations(const std::string& path, int64_t first, int64_t count,
+                                   bool behind = false) {
   int exit_code = 0;
   try {
-    std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path);
-    for (int64_t g = first; g < first + count; ++g) store->WriteArtifact(GenerationArtifact(g));
+    std::unique_ptr<ArtifactStore> store =
+        behind ? OpenWriteBehindStore(path) : OpenArtifactStore(path);
+    for (int64_t g = first; g < first + count; ++g) {
+      if (behind) {
+        store->WriteMessageArtifact(GenerationArtifact(g), GenerationMessage(g));
+      } else {
+        store->WriteArtifact(GenerationArtifact(g));
+      }
+    }
+    store->FinishWrites();
   } catch (const std::exception& error) {
     std::fprintf(stderr, "writer: %s\n", error.what());
     exit_code = 1;
@@ -96,7 +115,7 @@ void ExpectWholeGenerations(const std::string& path, int64_t* latest) {
 
 // SIGKILL at varied moments, including while the store file is first being
 // created; after each kill the store must open and hold whole writes only.
-TEST(StoreCrashTest, KilledWriterLeavesOldOrNewStateOnly) {
+void KillWritersAtVariedMoments(bool behind) {
   testing::TempDir dir;
   const std::string path = dir.File("store.db");
   std::mt19937 random(20240601);  // fixed: the same delays on every run
@@ -105,7 +124,7 @@ TEST(StoreCrashTest, KilledWriterLeavesOldOrNewStateOnly) {
   for (int round = 0; round < 20; ++round) {
     const pid_t child = fork();
     ASSERT_GE(child, 0);
-    if (child == 0) WriteGenerations(path, latest + 1, 1000000);
+    if (child == 0) WriteGenerations(path, latest + 1, 1000000, behind);
     std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms(random)));
     kill(child, SIGKILL);
     int status = 0;
@@ -114,19 +133,27 @@ TEST(StoreCrashTest, KilledWriterLeavesOldOrNewStateOnly) {
 
     const int64_t before = latest;
     ExpectWholeGenerations(path, &latest);
-    if (HasFailure()) FAIL() << "after the kill of round " << round;
+    if (::testing::Test::HasFailure()) FAIL() << "after the kill of round " << round;
     EXPECT_GE(latest, before) << "a committed write was lost";
   }
   // A writer that is not killed finishes, and the store moves on from there.
   const int64_t before = latest;
   const pid_t child = fork();
   ASSERT_GE(child, 0);
-  if (child == 0) WriteGenerations(path, latest + 1, 5);
+  if (child == 0) WriteGenerations(path, latest + 1, 5, behind);
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   ExpectWholeGenerations(path, &latest);
   EXPECT_EQ(latest, before + 5);
+}
+
+TEST(StoreCrashTest, KilledWriterLeavesOldOrNewStateOnly) { KillWritersAtVariedMoments(false); }
+
+// The same with the write pending on the store's thread (ag-run's workers):
+// whole generations only, in order, none after a missing one.
+TEST(StoreCrashTest, KilledWriteBehindStoreLeavesWholeWritesInOrder) {
+  KillWritersAtVariedMoments(true);
 }
 
 // Runs in a forked child: writes `count` artifacts of its own stage.
