@@ -8,6 +8,13 @@
 
 namespace areagraph {
 
+// The largest serialized artifact handed to the thread. The hand-over holds
+// the serialized bytes besides the message (the stream of a direct write
+// holds neither), and for big maps that is the peak: lab_a tiled 8 x 8 went
+// from 576 to 614-635 MB with its 101-MB Voronoi diagram written behind.
+// Every artifact of areagraph/input's 16 maps is under 6 MB.
+inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
+
 // Opens a store whose WriteMessageArtifact returns once the message is
 // serialized: hashing, compressing and the insert happen on a thread of the
 // store's own, over a second SQLite connection, while the caller computes
@@ -27,13 +34,6 @@ namespace areagraph {
 // or such a read), once; the artifacts handed over after it are dropped
 // unwritten. ":memory:" stores, which a second connection cannot share, are
 // opened as OpenArtifactStore does (every write in the caller's thread).
-// The largest serialized artifact handed to the thread. The hand-over holds
-// the serialized bytes besides the message (the stream of a direct write
-// holds neither), and for big maps that is the peak: lab_a tiled 8 x 8 went
-// from 576 to 614-635 MB with its 101-MB Voronoi diagram written behind.
-// Every artifact of areagraph/input's 16 maps is under 6 MB.
-inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
-
 std::unique_ptr<ArtifactStore> OpenWriteBehindStore(const std::string& path);
 
 }  // namespace areagraph
