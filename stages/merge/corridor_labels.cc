@@ -1,11 +1,11 @@
 #include "stages/merge/corridor_labels.h"
 
-#include <algorithm>
-#include <cstdint>
+#include <limits>
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "stages/geometry/distance_transform.h"
+#include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
@@ -31,39 +31,8 @@ AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
 
 void FillHoles(cv::Mat* mask) {
   CV_Assert(mask->type() == CV_8U);
-  const int rows = mask->rows, cols = mask->cols;
-  // The zero cells' runs, row by row.
-  std::vector<PieceRun> runs;
-  std::vector<size_t> row_start{0};
-  for (int r = 0; r < rows; ++r) {
-    const uint8_t* row = mask->ptr<uint8_t>(r);
-    for (int c = 0; c < cols;) {
-      if (row[c] != 0) {
-        ++c;
-        continue;
-      }
-      const int begin = c;
-      while (c < cols && row[c] == 0) ++c;
-      runs.push_back({r, begin, c, 0});
-    }
-    row_start.push_back(runs.size());
-  }
-  int count = 0;
-  const std::vector<int> piece = JoinRowRuns(
-      runs, row_start, /*eight_connected=*/false,
-      [](const PieceRun&, const PieceRun&) { return true; }, &count);
-  std::vector<uint8_t> open(count, 0);
-  for (size_t i = 0; i < runs.size(); ++i) {
-    const PieceRun& run = runs[i];
-    if (run.row == 0 || run.row == rows - 1 || run.begin == 0 || run.end == cols) {
-      open[piece[i]] = 1;
-    }
-  }
-  for (size_t i = 0; i < runs.size(); ++i) {
-    if (open[piece[i]]) continue;
-    uint8_t* row = mask->ptr<uint8_t>(runs[i].row);
-    std::fill(row + runs[i].begin, row + runs[i].end, 255);
-  }
+  // The holes are the enclosed pockets of any size.
+  FillEnclosedPockets(std::numeric_limits<double>::infinity(), mask);
 }
 
 std::vector<AreaShape> AreaShapes(const AreaRaster& raster) {
