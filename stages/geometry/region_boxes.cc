@@ -73,12 +73,9 @@ cv::Mat LabelBoxes(const cv::Mat& labels, int count) {
   std::vector<int> area(count, 0);
   for (int r = 0; r < height; ++r) {
     const int* row = labels.ptr<int>(r);
-    int c = 0;
-    while (c < width) {
-      const int label = row[c];
-      const int start = c;
-      while (++c < width && row[c] == label) {
-      }
+    for (int start = 0, c = 0; start < width; start = c) {
+      c = RunEnd(row, start, width);
+      const int label = row[start];
       if (label < 0 || label >= count) continue;
       left[label] = std::min(left[label], start);
       right[label] = std::max(right[label], c - 1);

@@ -1,7 +1,6 @@
 #include "stages/merge/area_raster.h"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
 #include <cstring>
 #include <opencv2/imgproc.hpp>
@@ -157,31 +156,15 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
 
 void CountAreaCells(AreaRaster* raster) {
   const int count = static_cast<int>(raster->cell_count.size());
-  const cv::Mat& labels = raster->labels;
-  // Label k + 1 is area k; 0 and below are no area. Per area: leftmost and
-  // rightmost column, first and last row, cells.
-  std::vector<int> left(count, INT_MAX), right(count, INT_MIN), top(count, -1), bottom(count, 0);
-  std::vector<int64_t> cells(count, 0);
-  for (int r = 0; r < labels.rows; ++r) {
-    const int* row = labels.ptr<int>(r);
-    for (int c = 0; c < labels.cols;) {
-      const int end = RunEnd(row, c, labels.cols);
-      const int k = row[c] - 1;
-      if (k >= 0 && k < count) {
-        left[k] = std::min(left[k], c);
-        right[k] = std::max(right[k], end - 1);
-        if (top[k] < 0) top[k] = r;
-        bottom[k] = r;
-        cells[k] += end - c;
-      }
-      c = end;
-    }
-  }
+  // Label k + 1 is area k; 0 and below are no area.
+  const cv::Mat stats = LabelBoxes(raster->labels, count + 1);
   raster->boxes.assign(count, cv::Rect());
   for (int k = 0; k < count; ++k) {
-    raster->cell_count[k] = cells[k];
-    if (cells[k] > 0) {
-      raster->boxes[k] = cv::Rect(left[k], top[k], right[k] - left[k] + 1, bottom[k] - top[k] + 1);
+    const int* s = stats.ptr<int>(k + 1);
+    raster->cell_count[k] = s[cv::CC_STAT_AREA];
+    if (s[cv::CC_STAT_AREA] > 0) {
+      raster->boxes[k] = cv::Rect(s[cv::CC_STAT_LEFT], s[cv::CC_STAT_TOP], s[cv::CC_STAT_WIDTH],
+                                  s[cv::CC_STAT_HEIGHT]);
     }
   }
 }
