@@ -8,6 +8,8 @@
 #include <numeric>
 #include <opencv2/imgproc.hpp>
 #include <vector>
+
+#include "stages/geometry/parallel_ranges.h"
 #ifdef __SSE2__
 #include <immintrin.h>
 #endif
@@ -113,6 +115,23 @@ std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
   return distance;
 }
 
+// At least this many cells per parallel range of rows or columns (and 8
+// rows or columns): a smaller range costs more to start than it gains.
+constexpr size_t kMinRangeCells = size_t(1) << 16;
+
+// How many parallel ranges `rows` rows of `cols` cells are split into.
+int RowRangeCount(int rows, int cols) {
+  return ParallelRangeCount(size_t(rows), std::max<size_t>(8, kMinRangeCells / std::max(cols, 1)));
+}
+
+// Calls body(begin, end) for RowRangeCount contiguous ranges of [0, rows), in
+// parallel (each row's work is its own).
+template <typename Body>
+void ForEachRowRange(int rows, int cols, const Body& body) {
+  ForEachRange(size_t(rows), RowRangeCount(rows, cols),
+               [&](size_t begin, size_t end, int) { body(int(begin), int(end)); });
+}
+
 // One row of ColumnDistances, squared.
 void SquareRow(const uint16_t* distance, int cols, int32_t* f) {
   for (int c = 0; c < cols; ++c) {
@@ -204,51 +223,79 @@ void ForEachNonZeroCell(const uint8_t* mask, const int32_t* f, int cols, LowerEn
 // single precision in that order, and the square root of (q - p)^2 + f[p].
 // Ours for speed on large masks: OpenCV walks each column down the whole mask
 // (a cache miss per cell once a column outgrows the cache: lab_a tiled 8 x 8
-// spent 2 s of merge's 8 there); here the columns go row by row. Tests hold it
-// to OpenCV bit for bit, masks over 4096 wide included.
-class SinglePrecisionRows {
+// spent 2 s of merge's 8 there); here the columns go row by row, and the
+// rows, each on its own once the column distances are known, in parallel
+// ranges. Tests hold it to OpenCV bit for bit, masks over 4096 wide included.
+class SinglePrecisionTables {
  public:
-  SinglePrecisionRows(int rows, int cols)
-      : rows_(rows),
-        cols_(cols),
-        square_(std::max(rows, cols)),
-        half_inverse_(cols, 0.f),
-        f_(cols),
-        z_(size_t(cols) + 1),
-        v_(cols),
-        below_(cols, std::numeric_limits<int>::max() - 1) {
+  SinglePrecisionTables(int rows, int cols)
+      : rows_(rows), cols_(cols), square_(std::max(rows, cols)), half_inverse_(cols, 0.f) {
     for (size_t i = 0; i < square_.size(); ++i) square_[i] = float(int(i) * int(i));
     for (int i = 1; i < cols; ++i) half_inverse_[i] = float(0.5 / i);
   }
 
-  // Every cell's distance to the nearest zero cell above or at it in its
-  // column into `row(r)` (T* rows of the mask's size); `rows` or more where
-  // there is none.
+  int rows() const { return rows_; }
+  int cols() const { return cols_; }
+
+  // Every cell's distance to the nearest zero cell of its column into
+  // `row(r)` (T* rows of the mask's size); `rows` or more where the column
+  // has none. Column ranges in parallel: each walks down, then up.
   template <typename T, typename Row>
-  void DownDistances(const cv::Mat& mask, Row row) const {
-    for (int r = 0; r < rows_; ++r) {
-      const uint8_t* m = mask.ptr<uint8_t>(r);
-      T* out = row(r);
-      const T* above = r > 0 ? row(r - 1) : nullptr;
-      for (int c = 0; c < cols_; ++c) out[c] = m[c] == 0 ? 0 : (above ? T(above[c] + 1) : T(rows_));
-    }
+  void ColumnPass(const cv::Mat& mask, Row row) const {
+    const int rows = rows_;
+    ForEachRange(size_t(cols_), RowRangeCount(cols_, rows), [&](size_t begin, size_t end, int) {
+      const int c0 = int(begin), c1 = int(end);
+      for (int r = 0; r < rows; ++r) {
+        const uint8_t* m = mask.ptr<uint8_t>(r);
+        T* out = row(r);
+        const T* above = r > 0 ? row(r - 1) : nullptr;
+        for (int c = c0; c < c1; ++c) {
+          out[c] = m[c] == 0 ? 0 : (above ? T(above[c] + 1) : T(rows));
+        }
+      }
+      for (int r = rows - 2; r >= 0; --r) {
+        T* out = row(r);
+        const T* below = row(r + 1);
+        for (int c = c0; c < c1; ++c) out[c] = std::min<T>(out[c], T(below[c] + 1));
+      }
+    });
   }
 
-  // Squares' column step alone, for a row whose distances are not wanted.
-  template <typename T>
-  void PassRow(const T* down) {
-    for (int c = 0; c < cols_; ++c) below_[c] = std::min(int(down[c]), below_[c] + 1);
-  }
+  // How many ranges ForEachRowRange splits the rows into.
+  int RowRanges() const { return RowRangeCount(rows_, cols_); }
+
+  // Calls each_range(begin, end, index, envelope) for RowRanges() contiguous
+  // ranges of rows, in parallel; the envelope's Squares gives those rows'
+  // squared distances.
+  template <typename EachRange>
+  void ForEachRowRange(const EachRange& each_range) const;
+
+  const float* square() const { return square_.data(); }
+  const float* half_inverse() const { return half_inverse_.data(); }
+
+ private:
+  int rows_, cols_;
+  std::vector<float> square_, half_inverse_;
+};
+
+// One thread's lower envelope along rows of SinglePrecisionTables.
+class SinglePrecisionEnvelope {
+ public:
+  explicit SinglePrecisionEnvelope(const SinglePrecisionTables& tables)
+      : rows_(tables.rows()),
+        cols_(tables.cols()),
+        square_(tables.square()),
+        half_inverse_(tables.half_inverse()),
+        f_(cols_),
+        z_(size_t(cols_) + 1),
+        v_(cols_) {}
 
   // One row's squared distances, (q - p)^2 + f[p] before the square root,
-  // from its DownDistances; rows go from the last up (each takes the nearer
-  // of its own and the one below's plus 1, as OpenCV's upward pass does).
-  // `out` may be `down` itself.
+  // from its column distances (ColumnPass). `out` may be `column` itself.
   template <typename T>
-  void Squares(const T* down, float* out) {
+  void Squares(const T* column, float* out) {
     for (int c = 0; c < cols_; ++c) {
-      const int d = std::min(int(down[c]), below_[c] + 1);
-      below_[c] = d;
+      const int d = int(column[c]);
       f_[c] = d < rows_ ? square_[d] : kInfinity;
     }
     // The top parabola stays in registers (OpenCV's loop reads it back from
@@ -286,9 +333,19 @@ class SinglePrecisionRows {
  private:
   static constexpr float kInfinity = 1e15f;
   int rows_, cols_;
-  std::vector<float> square_, half_inverse_, f_, z_;
-  std::vector<int> v_, below_;
+  const float* square_;
+  const float* half_inverse_;
+  std::vector<float> f_, z_;
+  std::vector<int> v_;
 };
+
+template <typename EachRange>
+void SinglePrecisionTables::ForEachRowRange(const EachRange& each_range) const {
+  ForEachRange(size_t(rows_), RowRanges(), [&](size_t begin, size_t end, int index) {
+    SinglePrecisionEnvelope envelope(*this);
+    each_range(int(begin), int(end), index, envelope);
+  });
+}
 
 // x = sqrt(x) for n floats. Four at a time where SSE is: sqrtps rounds as
 // sqrtss does (correctly), and std::sqrt's loop stays scalar for errno.
@@ -329,34 +386,40 @@ void DeepestAlongRow(const int* label, const float* value, int n, float* deepest
 }
 
 cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
-  SinglePrecisionRows rows(mask.rows, mask.cols);
+  const SinglePrecisionTables tables(mask.rows, mask.cols);
   // The column distances first go where the result will be (no second
   // buffer: on this project's virtual machines each new page costs a fault
   // of 20-50 microseconds), as int32.
   cv::Mat distance(mask.rows, mask.cols, CV_32F);
-  rows.DownDistances<int32_t>(mask, [&](int r) { return distance.ptr<int32_t>(r); });
-  for (int r = mask.rows - 1; r >= 0; --r) {
-    float* out = distance.ptr<float>(r);
-    rows.Squares(distance.ptr<int32_t>(r), out);
-    SquareRoots(out, mask.cols);
-  }
+  tables.ColumnPass<int32_t>(mask, [&](int r) { return distance.ptr<int32_t>(r); });
+  tables.ForEachRowRange([&](int begin, int end, int, SinglePrecisionEnvelope& envelope) {
+    for (int r = begin; r < end; ++r) {
+      float* out = distance.ptr<float>(r);
+      envelope.Squares(distance.ptr<int32_t>(r), out);
+      SquareRoots(out, mask.cols);
+    }
+  });
   return distance;
 }
 
-// Calls each_row(r, squares) with row r's squared single-precision distances
-// (SinglePrecisionDistances before the square root), without the float image:
-// the column distances take half its size. For callers that threshold or take
-// maxima: the square root, correctly rounded, keeps the order of its inputs.
+// Calls each_row(r, squares, range) with row r's squared single-precision
+// distances (SinglePrecisionDistances before the square root), without the
+// float image (the column distances take half its size): rows in
+// `tables.RowRanges()` parallel ranges, in order within each, `range` the
+// range's index. For callers that threshold or take maxima: the square root,
+// correctly rounded, keeps the order of its inputs.
 template <typename EachRow>
-void ForEachSinglePrecisionRow(const cv::Mat& mask, EachRow each_row) {
-  SinglePrecisionRows rows(mask.rows, mask.cols);
+void ForEachSinglePrecisionRow(const cv::Mat& mask, const SinglePrecisionTables& tables,
+                               EachRow each_row) {
   std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
-  rows.DownDistances<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
-  std::vector<float> squares(mask.cols);
-  for (int r = mask.rows - 1; r >= 0; --r) {
-    rows.Squares(columns.data() + size_t(r) * mask.cols, squares.data());
-    each_row(r, squares.data());
-  }
+  tables.ColumnPass<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  tables.ForEachRowRange([&](int begin, int end, int index, SinglePrecisionEnvelope& envelope) {
+    std::vector<float> squares(mask.cols);
+    for (int r = begin; r < end; ++r) {
+      envelope.Squares(columns.data() + size_t(r) * mask.cols, squares.data());
+      each_row(r, squares.data(), index);
+    }
+  });
 }
 
 // The least float x with std::sqrt(x) >= reach (> 0).
@@ -396,14 +459,16 @@ cv::Mat ExactDistanceTransform(const cv::Mat& mask) {
   if (columns.empty()) return OpenCvDistances(mask);
   const int rows = mask.rows, cols = mask.cols;
   cv::Mat distance = cv::Mat::zeros(rows, cols, CV_32F);
-  std::vector<int32_t> f(cols);
-  LowerEnvelope envelope(cols);
-  for (int r = 0; r < rows; ++r) {
-    SquareRow(columns.data() + size_t(r) * cols, cols, f.data());
-    float* out = distance.ptr<float>(r);
-    ForEachNonZeroCell(mask.ptr<uint8_t>(r), f.data(), cols, envelope,
-                       [&](int q, int p) { out[q] = DistanceValue(f.data(), q, p); });
-  }
+  ForEachRowRange(rows, cols, [&](int begin, int end) {
+    std::vector<int32_t> f(cols);
+    LowerEnvelope envelope(cols);
+    for (int r = begin; r < end; ++r) {
+      SquareRow(columns.data() + size_t(r) * cols, cols, f.data());
+      float* out = distance.ptr<float>(r);
+      ForEachNonZeroCell(mask.ptr<uint8_t>(r), f.data(), cols, envelope,
+                         [&](int q, int p) { out[q] = DistanceValue(f.data(), q, p); });
+    }
+  });
   return distance;
 }
 
@@ -417,11 +482,13 @@ double DeepestDistance(const cv::Mat& mask) {
       cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
       return deepest;
     }
-    float deepest_squared = 0;
-    ForEachSinglePrecisionRow(mask, [&](int, const float* squares) {
-      deepest_squared = std::max(deepest_squared, LargestOf(squares, mask.cols));
+    // Each range's maximum, then theirs (maxima do not depend on the order).
+    const SinglePrecisionTables tables(mask.rows, mask.cols);
+    std::vector<float> deepest_squared(tables.RowRanges(), 0.f);
+    ForEachSinglePrecisionRow(mask, tables, [&](int, const float* squares, int range) {
+      deepest_squared[range] = std::max(deepest_squared[range], LargestOf(squares, mask.cols));
     });
-    return std::sqrt(deepest_squared);
+    return std::sqrt(*std::max_element(deepest_squared.begin(), deepest_squared.end()));
   }
   const int rows = mask.rows, cols = mask.cols;
   // No cell is deeper than its distance along its row or its column: rows in
@@ -474,10 +541,16 @@ std::vector<float> DeepestPerLabel(const cv::Mat& mask, const cv::Mat& labels, i
   std::vector<float> deepest(count, 0);
   if (mask.empty()) return deepest;
   if (depth.empty() && FitsIntegers(mask) && TooWideForIntegers(mask.cols)) {
-    // Maxima of the squares, then their roots (the root keeps the order).
-    ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
-      DeepestAlongRow(labels.ptr<int>(r), squares, mask.cols, deepest.data());
+    // Maxima of the squares per range, then theirs, then their roots (the
+    // root keeps the order).
+    const SinglePrecisionTables tables(mask.rows, mask.cols);
+    std::vector<std::vector<float>> per_range(tables.RowRanges(), deepest);
+    ForEachSinglePrecisionRow(mask, tables, [&](int r, const float* squares, int range) {
+      DeepestAlongRow(labels.ptr<int>(r), squares, mask.cols, per_range[range].data());
     });
+    for (const std::vector<float>& range : per_range) {
+      for (int k = 0; k < count; ++k) deepest[k] = std::max(deepest[k], range[k]);
+    }
     for (float& d : deepest) d = std::sqrt(d);
     return deepest;
   }
@@ -502,27 +575,34 @@ std::vector<float> DeepestPerRun(const cv::Mat& mask, const std::vector<PieceRun
     return deepest;
   }
   // Every cell's value is OpenCV's, which the exact transform also gives
-  // where it applies: the maxima of the squares, then their roots.
+  // where it applies: the maxima of the squares (per range of rows, then
+  // theirs), then their roots. Only rows that hold a run get their squares.
   std::vector<int> order(runs.size());
   std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return runs[a].row > runs[b].row; });
-  SinglePrecisionRows rows(mask.rows, mask.cols);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int a, int b) { return runs[a].row < runs[b].row; });
+  const SinglePrecisionTables tables(mask.rows, mask.cols);
   std::vector<uint16_t> columns(size_t(mask.rows) * mask.cols);
-  rows.DownDistances<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
-  std::vector<float> squares(mask.cols), deepest(count, 0);
-  size_t next = 0;
-  for (int r = mask.rows - 1; r >= 0; --r) {
-    const uint16_t* down = columns.data() + size_t(r) * mask.cols;
-    if (next == order.size() || runs[order[next]].row != r) {
-      rows.PassRow(down);
-      continue;
+  tables.ColumnPass<uint16_t>(mask, [&](int r) { return columns.data() + size_t(r) * mask.cols; });
+  std::vector<std::vector<float>> per_range(tables.RowRanges(), std::vector<float>(count, 0.f));
+  tables.ForEachRowRange([&](int begin, int end, int index, SinglePrecisionEnvelope& envelope) {
+    std::vector<float> squares(mask.cols);
+    std::vector<float>& deepest = per_range[index];
+    auto next = std::lower_bound(order.begin(), order.end(), begin,
+                                 [&](int i, int row) { return runs[i].row < row; });
+    while (next != order.end() && runs[*next].row < end) {
+      const int r = runs[*next].row;
+      envelope.Squares(columns.data() + size_t(r) * mask.cols, squares.data());
+      for (; next != order.end() && runs[*next].row == r; ++next) {
+        const PieceRun& run = runs[*next];
+        float& d = deepest[run.value];
+        d = std::max(d, LargestOf(squares.data() + run.begin, run.end - run.begin));
+      }
     }
-    rows.Squares(down, squares.data());
-    for (; next < order.size() && runs[order[next]].row == r; ++next) {
-      const PieceRun& run = runs[order[next]];
-      float& d = deepest[run.value];
-      d = std::max(d, LargestOf(squares.data() + run.begin, run.end - run.begin));
-    }
+  });
+  std::vector<float> deepest(count, 0.f);
+  for (const std::vector<float>& range : per_range) {
+    for (int k = 0; k < count; ++k) deepest[k] = std::max(deepest[k], range[k]);
   }
   for (float& d : deepest) d = std::sqrt(d);
   return deepest;
@@ -537,7 +617,8 @@ cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
   const std::vector<uint16_t> columns = ColumnDistances(mask);
   if (columns.empty() && FitsIntegers(mask)) {
     const float threshold = SquaredThreshold(reach);
-    ForEachSinglePrecisionRow(mask, [&](int r, const float* squares) {
+    const SinglePrecisionTables tables(rows, cols);
+    ForEachSinglePrecisionRow(mask, tables, [&](int r, const float* squares, int) {
       uint8_t* out = at_least.ptr<uint8_t>(r);
       for (int c = 0; c < cols; ++c) out[c] = squares[c] >= threshold ? 1 : 0;
     });
@@ -562,22 +643,24 @@ cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
     spread.push_back(int(t));
   }
   const int nearer = int(spread.size());
-  for (int r = 0; r < rows; ++r) {
-    const uint16_t* v = columns.data() + size_t(r) * cols;
-    uint8_t* out = at_least.ptr<uint8_t>(r);
-    // From the left: cells that a column at or before them keeps short.
-    int kept_until = -1;
-    for (int q = 0; q < cols; ++q) {
-      if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
-      out[q] = q > kept_until;
+  ForEachRowRange(rows, cols, [&](int begin, int end) {
+    for (int r = begin; r < end; ++r) {
+      const uint16_t* v = columns.data() + size_t(r) * cols;
+      uint8_t* out = at_least.ptr<uint8_t>(r);
+      // From the left: cells that a column at or before them keeps short.
+      int kept_until = -1;
+      for (int q = 0; q < cols; ++q) {
+        if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
+        out[q] = q > kept_until;
+      }
+      // From the right.
+      int kept_from = cols;
+      for (int q = cols - 1; q >= 0; --q) {
+        if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
+        out[q] &= q < kept_from;
+      }
     }
-    // From the right.
-    int kept_from = cols;
-    for (int q = cols - 1; q >= 0; --q) {
-      if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
-      out[q] &= q < kept_from;
-    }
-  }
+  });
   return at_least;
 }
 

@@ -7,10 +7,14 @@
 #include <vector>
 
 #include "stages/geometry/distance_transform.h"
+#include "stages/geometry/parallel_ranges.h"
 
 namespace areagraph {
 namespace {
 
+// At least this many cells per parallel range of rows: a smaller range
+// costs more to start than it gains.
+constexpr size_t kMinRangeCells = size_t(1) << 16;
 // Beyond this many cells of reach the capped column distances would not fit a byte.
 constexpr int kMaxNearer = 250;
 
@@ -96,50 +100,54 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
   }
   cv::Mat core(rows, cols, CV_8U);
   const uint64_t far_word = 0x0101010101010101ull * cap;
-  for (int r = 0; r < rows; ++r) {
-    const uint8_t* v = column.data() + static_cast<size_t>(r) * cols;
-    uint8_t* out = core.ptr<uint8_t>(r);
-    // From the left: cells that a column at or before them keeps short.
-    int kept_until = -1;
-    for (int q = 0; q < cols;) {
-      uint64_t eight = 1;
-      if (q + 8 <= cols) std::memcpy(&eight, v + q, 8);
-      if (eight == far_word && kept_until < q) {
-        std::memset(out + q, 1, 8);
-        q += 8;
-        continue;
+  // Each row on its own: ranges of rows in parallel.
+  const size_t min_rows = std::max<size_t>(8, kMinRangeCells / static_cast<size_t>(cols));
+  ForEachRange(rows, ParallelRangeCount(rows, min_rows), [&](size_t begin, size_t end, int) {
+    for (int r = static_cast<int>(begin); r < static_cast<int>(end); ++r) {
+      const uint8_t* v = column.data() + static_cast<size_t>(r) * cols;
+      uint8_t* out = core.ptr<uint8_t>(r);
+      // From the left: cells that a column at or before them keeps short.
+      int kept_until = -1;
+      for (int q = 0; q < cols;) {
+        uint64_t eight = 1;
+        if (q + 8 <= cols) std::memcpy(&eight, v + q, 8);
+        if (eight == far_word && kept_until < q) {
+          std::memset(out + q, 1, 8);
+          q += 8;
+          continue;
+        }
+        if (eight == 0) {
+          kept_until = std::max(kept_until, q + 7 + spread[0]);
+          std::memset(out + q, 0, 8);
+          q += 8;
+          continue;
+        }
+        if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
+        out[q] = q > kept_until;
+        ++q;
       }
-      if (eight == 0) {
-        kept_until = std::max(kept_until, q + 7 + spread[0]);
-        std::memset(out + q, 0, 8);
-        q += 8;
-        continue;
+      // From the right: a cell already kept short stays so.
+      int kept_from = cols;
+      for (int q = cols - 1; q >= 0;) {
+        uint64_t eight = 1;
+        if (q >= 7) std::memcpy(&eight, v + q - 7, 8);
+        if (eight == far_word && kept_from > q) {
+          q -= 8;
+          continue;
+        }
+        if (eight == 0) {
+          kept_from = std::min(kept_from, q - 7 - spread[0]);
+          q -= 8;
+          continue;
+        }
+        if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
+        out[q] &= q < kept_from;
+        --q;
       }
-      if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
-      out[q] = q > kept_until;
-      ++q;
+      const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
+      for (int c = 0; c < cols; ++c) out[c] &= inside[c] != 0;
     }
-    // From the right: a cell already kept short stays so.
-    int kept_from = cols;
-    for (int q = cols - 1; q >= 0;) {
-      uint64_t eight = 1;
-      if (q >= 7) std::memcpy(&eight, v + q - 7, 8);
-      if (eight == far_word && kept_from > q) {
-        q -= 8;
-        continue;
-      }
-      if (eight == 0) {
-        kept_from = std::min(kept_from, q - 7 - spread[0]);
-        q -= 8;
-        continue;
-      }
-      if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
-      out[q] &= q < kept_from;
-      --q;
-    }
-    const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
-    for (int c = 0; c < cols; ++c) out[c] &= inside[c] != 0;
-  }
+  });
   return core;
 }
 

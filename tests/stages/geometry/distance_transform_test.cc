@@ -12,6 +12,16 @@
 namespace areagraph {
 namespace {
 
+// Restores OpenCV's thread count when a test changes it.
+class ThreadCount {
+ public:
+  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
+  ~ThreadCount() { cv::setNumThreads(saved_); }
+
+ private:
+  int saved_;
+};
+
 cv::Mat OpenCvDistances(const cv::Mat& mask) {
   cv::Mat distance;
   cv::distanceTransform(mask, distance, cv::DIST_L2, cv::DIST_MASK_PRECISE);
@@ -290,6 +300,27 @@ TEST(DeepestDistance, EqualsOpenCvsMaximumOnShapes) {
     double deepest = 0;
     cv::minMaxLoc(OpenCvDistances(mask), nullptr, &deepest);
     ASSERT_EQ(DeepestDistance(mask), deepest) << trial;
+  }
+}
+
+// The rows (and the columns' passes) go in parallel ranges of at least 2^16
+// cells: masks of several such ranges, exact and in OpenCV's rounding, give
+// OpenCV's values on one, two and three threads.
+TEST(ExactDistanceTransform, EqualsOpenCvOnOneTwoAndThreeThreads) {
+  std::mt19937 random(1414);
+  const cv::Mat wide = RoomsMask(random, 240, 4700, false);
+  const cv::Mat wide_distance = OpenCvDistances(wide);
+  const cv::Mat exact = RoomsMask(random, 900, 1000, true);
+  const cv::Mat exact_distance = OpenCvDistances(exact);
+  for (const int threads : {1, 2, 3}) {
+    SCOPED_TRACE(threads);
+    ThreadCount count(threads);
+    ExpectSameAsOpenCv(wide);
+    ExpectSameAsOpenCv(exact);
+    for (const float reach : {1.0f, 4.5f}) {
+      ExpectThresholdedOpenCv(wide, wide_distance, reach);
+      ExpectThresholdedOpenCv(exact, exact_distance, reach);
+    }
   }
 }
 

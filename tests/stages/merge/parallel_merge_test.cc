@@ -1,0 +1,61 @@
+// Merge's compute splits rows and areas over OpenCV's pool: on one thread
+// and on two it must give the same bytes.
+#include <gtest/gtest.h>
+
+#include <opencv2/core.hpp>
+#include <string>
+
+#include "proto/pipeline_options.pb.h"
+#include "stages/merge/area_graph_builder.h"
+#include "tests/support/area_test_support.h"
+#include "tools/example_maps/random_floor_plan.h"
+
+namespace areagraph::testing {
+namespace {
+
+// Restores OpenCV's thread count when a test changes it.
+class ThreadCount {
+ public:
+  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
+  ~ThreadCount() { cv::setNumThreads(saved_); }
+
+ private:
+  int saved_;
+};
+
+struct MergeResult {
+  std::string graph;
+  cv::Mat labels;
+};
+
+MergeResult MergeOn(int threads, const AreaStages& stages, const proto::CleanedMap& map) {
+  ThreadCount count(threads);
+  MergeResult result;
+  AreaRaster raster;
+  proto::AreaGraph graph = BuildAreaGraph(stages.cut, map, stages.options.merge(), &raster);
+  EXPECT_TRUE(graph.SerializeToString(&result.graph));
+  result.labels = raster.labels;
+  return result;
+}
+
+TEST(ParallelMergeTest, OneThreadAndTwoGiveTheSameAreaGraph) {
+  // 60 x 40 m at 0.05 m/px: 1200 x 800 cells, rows and room boxes enough for
+  // several ranges of every split (at least 2^16 cells a range).
+  const floorplan::FloorPlan plan = floorplan::LargeOfficePlan(60, 40, /*seed=*/5);
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image());
+  ASSERT_GE(map.frame().width_px() * map.frame().height_px(), 1 << 19);
+  const AreaStages stages = RunAreaStages(map);
+  const MergeResult one = MergeOn(1, stages, map);
+  const MergeResult two = MergeOn(2, stages, map);
+  ASSERT_GT(stages.areas.areas_size(), 20);
+  EXPECT_EQ(one.graph, two.graph);
+  ASSERT_EQ(one.labels.size(), two.labels.size());
+  EXPECT_EQ(cv::countNonZero(one.labels != two.labels), 0);
+  // And both are what the stages gave with the default thread count.
+  std::string default_graph;
+  ASSERT_TRUE(stages.areas.SerializeToString(&default_graph));
+  EXPECT_EQ(one.graph, default_graph);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
