@@ -122,12 +122,13 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
   }
   cv::Mat core;
   if (min_gap_px > 0) core = CoreCells(grid, domain, min_gap_px);
-  raster.labels = cv::Mat::zeros(size, CV_32S);
+  std::vector<std::pair<const proto::Polygon*, int>> polygons;
   for (size_t k = 0; k < area_polygons.size(); ++k) {
     for (const proto::Polygon* polygon : area_polygons[k]) {
-      FillPolygon(*polygon, static_cast<int>(k) + 1, &raster.labels);
+      polygons.emplace_back(polygon, static_cast<int>(k) + 1);
     }
   }
+  raster.labels = PolygonLabels(polygons, size);
   cv::Mat on_path = cv::Mat::zeros(size, CV_8U);
   // 4-connected, so that an area's paths hold its pieces together.
   auto draw_path = [&](const PointList& path, int area) {
