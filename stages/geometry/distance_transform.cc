@@ -445,6 +445,25 @@ int64_t SquaredReach(float reach) {
   return k;
 }
 
+// One row of DistanceAtLeast's exact path: `v` its column distances, a
+// column `v` < `nearer` away from its zero cell keeping the cells within
+// spread[v] of it short. Plain arguments: in a lambda, every byte stored
+// would reload the captures.
+void AtLeastRow(const uint16_t* v, uint8_t* out, int cols, int nearer, const int* spread) {
+  // From the left: cells that a column at or before them keeps short.
+  int kept_until = -1;
+  for (int q = 0; q < cols; ++q) {
+    if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
+    out[q] = q > kept_until;
+  }
+  // From the right.
+  int kept_from = cols;
+  for (int q = cols - 1; q >= 0; --q) {
+    if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
+    out[q] &= q < kept_from;
+  }
+}
+
 }  // namespace
 
 bool ComputedExactly(cv::Size size) {
@@ -620,7 +639,9 @@ cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
     const SinglePrecisionTables tables(rows, cols);
     ForEachSinglePrecisionRow(mask, tables, [&](int r, const float* squares, int) {
       uint8_t* out = at_least.ptr<uint8_t>(r);
-      for (int c = 0; c < cols; ++c) out[c] = squares[c] >= threshold ? 1 : 0;
+      const int n = cols;
+      const float at = threshold;
+      for (int c = 0; c < n; ++c) out[c] = squares[c] >= at ? 1 : 0;
     });
     return at_least;
   }
@@ -645,20 +666,8 @@ cv::Mat DistanceAtLeast(const cv::Mat& mask, float reach) {
   const int nearer = int(spread.size());
   ForEachRowRange(rows, cols, [&](int begin, int end) {
     for (int r = begin; r < end; ++r) {
-      const uint16_t* v = columns.data() + size_t(r) * cols;
-      uint8_t* out = at_least.ptr<uint8_t>(r);
-      // From the left: cells that a column at or before them keeps short.
-      int kept_until = -1;
-      for (int q = 0; q < cols; ++q) {
-        if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
-        out[q] = q > kept_until;
-      }
-      // From the right.
-      int kept_from = cols;
-      for (int q = cols - 1; q >= 0; --q) {
-        if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
-        out[q] &= q < kept_from;
-      }
+      AtLeastRow(columns.data() + size_t(r) * cols, at_least.ptr<uint8_t>(r), cols, nearer,
+                 spread.data());
     }
   });
   return at_least;

@@ -13,12 +13,11 @@ namespace areagraph {
 void FillPolygon(const proto::Polygon& polygon, int value, cv::Mat* image);
 
 // A CV_32S image of `size`: 0, then FillPolygon(*polygons[i].first,
-// polygons[i].second) in order, for values that do not fall along the list
-// (each at least 1): a cell gets the largest value whose polygon paints it.
-// The polygons are painted each into a box of its own, in parallel ranges,
-// and the boxes joined by their maxima in parallel ranges of rows: the same
-// cells as FillPolygon, whose painting does not depend on where the polygon
-// lies, only on the image's edges, which a box shares where it reaches them.
+// polygons[i].second) for i in order. The polygons are painted each into a
+// box of its own, in parallel ranges, and the boxes copied in order in
+// parallel ranges of rows: the same cells as FillPolygon, whose painting does
+// not depend on where the polygon lies, only on the image's edges, which a
+// box shares where it reaches them.
 cv::Mat PolygonLabels(const std::vector<std::pair<const proto::Polygon*, int>>& polygons,
                       cv::Size size);
 

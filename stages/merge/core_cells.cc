@@ -44,6 +44,51 @@ cv::Mat WholeMapCores(const CellGrid& grid, const cv::Mat& domain, float reach) 
   return core;
 }
 
+// One row of CoreCells: `v` its capped column distances, `inside` its domain.
+// Plain arguments: in a lambda, every byte stored would reload the captures.
+void CoreRow(const uint8_t* v, const uint8_t* __restrict inside, uint8_t* out, int cols, int nearer,
+             const int* spread, uint64_t far_word) {
+  // From the left: cells that a column at or before them keeps short.
+  int kept_until = -1;
+  for (int q = 0; q < cols;) {
+    uint64_t eight = 1;
+    if (q + 8 <= cols) std::memcpy(&eight, v + q, 8);
+    if (eight == far_word && kept_until < q) {
+      std::memset(out + q, 1, 8);
+      q += 8;
+      continue;
+    }
+    if (eight == 0) {
+      kept_until = std::max(kept_until, q + 7 + spread[0]);
+      std::memset(out + q, 0, 8);
+      q += 8;
+      continue;
+    }
+    if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
+    out[q] = q > kept_until;
+    ++q;
+  }
+  // From the right: a cell already kept short stays so.
+  int kept_from = cols;
+  for (int q = cols - 1; q >= 0;) {
+    uint64_t eight = 1;
+    if (q >= 7) std::memcpy(&eight, v + q - 7, 8);
+    if (eight == far_word && kept_from > q) {
+      q -= 8;
+      continue;
+    }
+    if (eight == 0) {
+      kept_from = std::min(kept_from, q - 7 - spread[0]);
+      q -= 8;
+      continue;
+    }
+    if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
+    out[q] &= q < kept_from;
+    --q;
+  }
+  for (int c = 0; c < cols; ++c) out[c] &= inside[c] != 0;
+}
+
 }  // namespace
 
 cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px) {
@@ -102,52 +147,17 @@ cv::Mat CoreCells(const CellGrid& grid, const cv::Mat& domain, double min_gap_px
   const uint64_t far_word = 0x0101010101010101ull * cap;
   // Each row on its own: ranges of rows in parallel.
   const size_t min_rows = std::max<size_t>(8, kMinRangeCells / static_cast<size_t>(cols));
-  ForEachRange(rows, ParallelRangeCount(rows, min_rows), [&](size_t begin, size_t end, int) {
-    for (int r = static_cast<int>(begin); r < static_cast<int>(end); ++r) {
-      const uint8_t* v = column.data() + static_cast<size_t>(r) * cols;
-      uint8_t* out = core.ptr<uint8_t>(r);
-      // From the left: cells that a column at or before them keeps short.
-      int kept_until = -1;
-      for (int q = 0; q < cols;) {
-        uint64_t eight = 1;
-        if (q + 8 <= cols) std::memcpy(&eight, v + q, 8);
-        if (eight == far_word && kept_until < q) {
-          std::memset(out + q, 1, 8);
-          q += 8;
-          continue;
-        }
-        if (eight == 0) {
-          kept_until = std::max(kept_until, q + 7 + spread[0]);
-          std::memset(out + q, 0, 8);
-          q += 8;
-          continue;
-        }
-        if (v[q] < nearer) kept_until = std::max(kept_until, q + spread[v[q]]);
-        out[q] = q > kept_until;
-        ++q;
-      }
-      // From the right: a cell already kept short stays so.
-      int kept_from = cols;
-      for (int q = cols - 1; q >= 0;) {
-        uint64_t eight = 1;
-        if (q >= 7) std::memcpy(&eight, v + q - 7, 8);
-        if (eight == far_word && kept_from > q) {
-          q -= 8;
-          continue;
-        }
-        if (eight == 0) {
-          kept_from = std::min(kept_from, q - 7 - spread[0]);
-          q -= 8;
-          continue;
-        }
-        if (v[q] < nearer) kept_from = std::min(kept_from, q - spread[v[q]]);
-        out[q] &= q < kept_from;
-        --q;
-      }
-      const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
-      for (int c = 0; c < cols; ++c) out[c] &= inside[c] != 0;
-    }
-  });
+  // The lambda takes pointers, not the vectors: a vector whose address
+  // escapes is reloaded after every byte stored, in the passes above too.
+  const uint8_t* distances = column.data();
+  const int* spreads = spread.data();
+  ForEachRange(rows, ParallelRangeCount(rows, min_rows),
+               [=, &domain, &core](size_t begin, size_t end, int) {
+                 for (int r = static_cast<int>(begin); r < static_cast<int>(end); ++r) {
+                   CoreRow(distances + static_cast<size_t>(r) * cols, domain.ptr<uint8_t>(r),
+                           core.ptr<uint8_t>(r), cols, nearer, spreads, far_word);
+                 }
+               });
   return core;
 }
 

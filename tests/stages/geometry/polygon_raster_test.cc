@@ -80,8 +80,9 @@ TEST(PolygonLabelsTest, EqualsFillPolygonInOrder) {
   polygons.push_back(degenerate);
   std::vector<std::pair<const proto::Polygon*, int>> in_order;
   for (size_t i = 0; i < polygons.size(); ++i) {
-    // Values that repeat (an area's several polygons) and rise.
-    in_order.emplace_back(&polygons[i], 1 + static_cast<int>(i / 3));
+    // Values that repeat (an area's several polygons), rise and fall: the
+    // later polygon wins.
+    in_order.emplace_back(&polygons[i], 1 + static_cast<int>((i / 3) * 7 % 50));
   }
   const std::vector<std::pair<const proto::Polygon*, int>>& all = in_order;
   // Without the two that cover everything too: the last would hide the rest.
