@@ -9,18 +9,12 @@
 #include <random>
 #include <vector>
 
+#include "tests/support/thread_count.h"
+
 namespace areagraph {
 namespace {
 
-// Restores OpenCV's thread count when a test changes it.
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+using areagraph::testing::ThreadCount;
 
 cv::Mat OpenCvDistances(const cv::Mat& mask) {
   cv::Mat distance;

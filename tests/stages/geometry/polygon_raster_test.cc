@@ -8,18 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include "tests/support/thread_count.h"
+
 namespace areagraph {
 namespace {
 
-// Restores OpenCV's thread count when a test changes it.
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+using areagraph::testing::ThreadCount;
 
 void AddRing(const std::vector<std::pair<double, double>>& points, proto::Ring* ring) {
   for (const auto& [x, y] : points) {

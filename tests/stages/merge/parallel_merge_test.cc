@@ -8,20 +8,11 @@
 #include "proto/pipeline_options.pb.h"
 #include "stages/merge/area_graph_builder.h"
 #include "tests/support/area_test_support.h"
+#include "tests/support/thread_count.h"
 #include "tools/example_maps/random_floor_plan.h"
 
 namespace areagraph::testing {
 namespace {
-
-// Restores OpenCV's thread count when a test changes it.
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
 
 struct MergeResult {
   std::string graph;
