@@ -13,8 +13,9 @@ namespace areagraph {
 // exact (tests/stages/geometry/distance_transform_test.cc compares them), but
 // computed here on squared integer distances (Felzenszwalb and Huttenlocher's
 // separable transform), rows split over OpenCV's pool (the results do not
-// depend on the split), and only where the caller needs them: a cell next to zero cells costs a few
-// operations, and the deepest distance or a threshold test skip most of the work.
+// depend on the split), and only where the caller needs them: a cell next to
+// zero cells costs a few operations, and the deepest distance or a threshold
+// test skip most of the work.
 
 // Every cell's distance, as CV_32F the mask's size (0 on zero cells).
 cv::Mat ExactDistanceTransform(const cv::Mat& mask);
