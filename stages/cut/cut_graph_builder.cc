@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "common/error.h"
 #include "stages/common/freed_memory.h"
@@ -51,6 +52,9 @@ void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count
   shape->RenumberRooms(renumber);
   *room_count = kept;
 }
+
+// Edges per range of WallGapSites' tasks (about 2 M instructions at 8 x 8).
+constexpr size_t kGapEdgesPerRange = 32;
 
 // Everything cut needs before its room shape: W, the boundary mask and the
 // sites, in rounds of independent tasks on the pool (each writes only its
@@ -102,21 +106,30 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
     free_spaces = LabelFreeSpaces(map.cells(), width, height);
   }
   const cv::Mat* spaces = free_spaces.empty() ? nullptr : &free_spaces;
-  PointList gaps;
-  RunTasks({
-      [&] {
-        if (options.close_wall_doors()) {
-          in.closing = DoorClosingSites(in.room_width, obstacles, resolution_m, spaces);
-        }
-      },
-      [&] {
-        if (options.close_wall_gaps_max_m() > 0) {
-          gaps = WallGapSites(topology, obstacles, resolution_m, options.close_wall_gaps_max_m(),
-                              options.close_wall_gaps_short_tips(), spaces);
-        }
-      },
-  });
-  in.closing.insert(in.closing.end(), gaps.begin(), gaps.end());
+  // The door sites beside the gap sites' edge ranges.
+  std::unique_ptr<WallGapFinder> gap_finder;
+  if (options.close_wall_gaps_max_m() > 0) {
+    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m,
+                                                 options.close_wall_gaps_max_m(),
+                                                 options.close_wall_gaps_short_tips(), spaces);
+  }
+  const size_t edge_count = static_cast<size_t>(topology.edges_size());
+  const int gap_ranges = gap_finder ? ParallelRangeCount(edge_count, kGapEdgesPerRange) : 0;
+  std::vector<PointList> gaps(gap_ranges);
+  std::vector<std::function<void()>> tasks = {[&] {
+    if (options.close_wall_doors()) {
+      in.closing = DoorClosingSites(in.room_width, obstacles, resolution_m, spaces);
+    }
+  }};
+  for (int range = 0; range < gap_ranges; ++range) {
+    tasks.push_back([&, range] {
+      gaps[range] = gap_finder->Sites(
+          static_cast<int>(ParallelRangeBegin(edge_count, gap_ranges, range)),
+          static_cast<int>(ParallelRangeBegin(edge_count, gap_ranges, range + 1)));
+    });
+  }
+  RunTasks(tasks);
+  for (const PointList& part : gaps) in.closing.insert(in.closing.end(), part.begin(), part.end());
   in.sites.insert(in.sites.end(), in.closing.begin(), in.closing.end());
   return in;
 }
@@ -153,9 +166,6 @@ std::vector<proto::GraphEdge> CutEdge(const proto::GraphEdge& edge,
   if (given != nullptr) proto::GraphEdge().Swap(given);
   return pieces;
 }
-
-// Edges per range of the pieces' tasks (a few hundred microseconds each).
-constexpr size_t kEdgesPerTask = 64;
 
 }  // namespace
 
@@ -212,27 +222,21 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   for (const auto& [old_id, new_id] : room_ids) renumber[old_id] = new_id;
   shape.RenumberRooms(renumber);
 
-  // The room outlines beside the edges' pieces (the shape is not read by
-  // those), the pieces in ranges of edges whose results join in edge order.
+  // The edges' pieces on this thread (see RunTasks) beside the room outlines
+  // (the shape is not read by the pieces).
   std::vector<proto::Polygon> outlines;
-  const size_t piece_tasks = (static_cast<size_t>(edge_count) + kEdgesPerTask - 1) / kEdgesPerTask;
-  std::vector<std::vector<std::vector<proto::GraphEdge>>> cut(piece_tasks);
-  std::vector<std::function<void()>> tasks = {[&] { outlines = shape.RoomOutlines(); }};
-  for (size_t task = 0; task < piece_tasks; ++task) {
-    tasks.push_back([&, task] {
-      const int begin = static_cast<int>(task * kEdgesPerTask);
-      const int end = std::min(edge_count, begin + static_cast<int>(kEdgesPerTask));
-      for (int e = begin; e < end; ++e) {
-        cut[task].push_back(CutEdge(topology.edges(e), plans[e],
-                                    owned != nullptr ? owned->mutable_edges(e) : nullptr));
-      }
-    });
-  }
-  RunTasks(tasks);
+  std::vector<std::vector<proto::GraphEdge>> cut(edge_count);
+  RunTasks({[&] {
+              for (int e = 0; e < edge_count; ++e) {
+                cut[e] = CutEdge(topology.edges(e), plans[e],
+                                 owned != nullptr ? owned->mutable_edges(e) : nullptr);
+              }
+            },
+            [&] { outlines = shape.RoomOutlines(); }},
+           /*on_caller=*/1);
 
   for (int edge_index = 0; edge_index < edge_count; ++edge_index) {
-    std::vector<proto::GraphEdge>& pieces =
-        cut[edge_index / kEdgesPerTask][edge_index % kEdgesPerTask];
+    std::vector<proto::GraphEdge>& pieces = cut[edge_index];
     const std::vector<EdgePiece>& plan = plans[edge_index];
     int from_vertex = ends[edge_index].first;
     for (size_t k = 0; k < pieces.size(); ++k) {

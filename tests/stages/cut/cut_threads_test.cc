@@ -1,5 +1,5 @@
-// BuildCutGraph on OpenCV's pool (its site and piece tasks, the sites'
-// spatial sort): the Cut Graph is the same byte for byte on one thread and
+// BuildCutGraph on OpenCV's pool (its site tasks, pieces beside outlines, the
+// sites' spatial sort): the Cut Graph is the same byte for byte on one thread and
 // on two, whether the caller keeps the Topology Graph or gives it up.
 #include <gtest/gtest.h>
 
@@ -26,7 +26,7 @@ class ThreadCount {
 
 // A floor of 6 x 5 rooms, 4 m square, with doors to their neighbours, a desk
 // standing free in every other room (islands) and sensor noise: over 8 192
-// sites (the sort's tasks) and over 64 edges (more than one piece task).
+// sites (the sort's tasks) and over 64 edges (two or more wall gap ranges).
 floorplan::FloorPlan OfficeFloor() {
   constexpr int kCols = 6, kRows = 5;
   floorplan::FloorPlan plan(kCols * 4.0 + 1, kRows * 4.0 + 1);
