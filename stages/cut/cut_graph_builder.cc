@@ -78,18 +78,23 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   const bool closes_lines = options.close_wall_doors() || options.close_wall_gaps_max_m() > 0;
   std::vector<int> site_cells;
   IslandDepth island_depth;
-  // Longest first (ChooseRoomWidth is also the first that may throw).
+  // The obstacle depth (whole-map rasters, mappings of their own) on the
+  // pool beside the rest on this thread (see RunTasks; the boundary mask
+  // and the site cells live on, and a pool thread's malloc arena would take
+  // fresh memory for them). ChooseRoomWidth is also the first that may throw.
   RunTasks({
-      [&] { in.room_width = ChooseRoomWidth(options, map.frame(), topology); },
-      [&] {
-        if (islands) island_depth = IslandDepthOf(map.cells(), width, height, resolution_m);
-      },
-      [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
-      [&] {
-        in.inside =
-            BoundaryMask(topology.part_boundaries(), topology.boundary(), cv::Size(width, height));
-      },
-  });
+               [&] { in.room_width = ChooseRoomWidth(options, map.frame(), topology); },
+               [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
+               [&] {
+                 in.inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
+                                          cv::Size(width, height));
+               },
+               [&] {
+                 if (islands)
+                   island_depth = IslandDepthOf(map.cells(), width, height, resolution_m);
+               },
+           },
+           /*on_caller=*/3);
   // The estimate's scratch is gone; the rasters below come from new mappings.
   ReturnFreedMemory();
   // The obstacles labelled once for the three site finders.
