@@ -3,26 +3,19 @@
 // on two, whether the caller keeps the Topology Graph or gives it up.
 #include <gtest/gtest.h>
 
-#include <opencv2/core/utility.hpp>
 #include <string>
 
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "stages/voronoi/voronoi_stage.h"
 #include "tests/support/area_test_support.h"
+#include "tests/support/thread_count.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph {
 namespace {
 
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+using testing::ThreadCount;
 
 // A floor of 6 x 5 rooms, 4 m square, with doors to their neighbours, a desk
 // standing free in every other room (islands) and sensor noise: over 8 192

@@ -5,24 +5,17 @@
 
 #include <gtest/gtest.h>
 
-#include <opencv2/core/utility.hpp>
 #include <random>
 #include <vector>
 
 #include "stages/geometry/site_triangulation.h"
 #include "stages/geometry/site_triangulation_cgal.h"
+#include "tests/support/thread_count.h"
 
 namespace areagraph {
 namespace {
 
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+using testing::ThreadCount;
 
 // Cell centres of a random map (many equal x and y: the median splits meet
 // ties) and a few points off the grid, as cut's sites are.
