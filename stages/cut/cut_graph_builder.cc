@@ -58,10 +58,10 @@ constexpr size_t kGapEdgesPerRange = 32;
 
 // Everything cut needs before its room shape: W, the boundary mask and the
 // sites, in rounds of independent tasks on the pool (each writes only its
-// own result; the site list is joined in the serial order). At most one of
-// the three whole-map rasters that the serial steps never held at once (the
-// obstacle depth and the free spaces; the obstacle labels beside either) is
-// alive at a time, so the stage's peak memory stays the serial one's.
+// own result; the site list is joined in the serial order). The obstacle
+// depth and the free-space labels, which the serial steps never held at
+// once, are not alive at once here either (the obstacle labels live beside
+// each, as before), so the stage's peak memory stays the serial one's.
 struct CutInputs {
   proto::RoomWidthEstimate room_width;
   cv::Mat inside;  // BoundaryMask
