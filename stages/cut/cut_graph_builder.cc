@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "common/error.h"
 #include "stages/common/freed_memory.h"
@@ -9,12 +10,15 @@
 #include "stages/cut/absorbed_polygons.h"
 #include "stages/cut/closed_passages.h"
 #include "stages/cut/cut_planning.h"
+#include "stages/cut/cut_tasks.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
 #include "stages/cut/narrow_tails.h"
 #include "stages/cut/room_width.h"
 #include "stages/cut/structure_sites.h"
 #include "stages/geometry/cell_grid.h"
+#include "stages/geometry/obstacle_regions.h"
+#include "stages/geometry/obstacle_sites.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/site_alpha_shape.h"
 
@@ -49,55 +53,141 @@ void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count
   *room_count = kept;
 }
 
+// Edges per range of WallGapSites' tasks (about 2 M instructions at 8 x 8).
+constexpr size_t kGapEdgesPerRange = 32;
+
+// Everything cut needs before its room shape: W, the boundary mask and the
+// sites, in rounds of independent tasks on the pool (each writes only its
+// own result; the site list is joined in the serial order). The obstacle
+// depth and the free-space labels, which the serial steps never held at
+// once, are not alive at once here either (the obstacle labels live beside
+// each, as before), so the stage's peak memory stays the serial one's.
+struct CutInputs {
+  proto::RoomWidthEstimate room_width;
+  cv::Mat inside;  // BoundaryMask
+  PointList sites;
+  PointList closing;  // the sites that close doors and wall gaps on purpose
+};
+
+CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
+                          const proto::CutOptions& options, const CellGrid& grid) {
+  CutInputs in;
+  const int width = grid.width(), height = grid.height();
+  const double resolution_m = grid.resolution_m();
+  const bool islands = options.room_island_max_m() > 0;
+  const bool closes_lines = options.close_wall_doors() || options.close_wall_gaps_max_m() > 0;
+  std::vector<int> site_cells;
+  IslandDepth island_depth;
+  // The obstacle depth (whole-map rasters, mappings of their own) on the
+  // pool beside the rest on this thread (see RunTasks; the boundary mask
+  // and the site cells live on, and a pool thread's malloc arena would take
+  // fresh memory for them). ChooseRoomWidth is also the first that may throw.
+  RunTasks({
+               [&] { in.room_width = ChooseRoomWidth(options, map.frame(), topology); },
+               [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
+               [&] {
+                 in.inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
+                                          cv::Size(width, height));
+               },
+               [&] {
+                 if (islands)
+                   island_depth = IslandDepthOf(map.cells(), width, height, resolution_m);
+               },
+           },
+           /*on_caller=*/3);
+  // The estimate's scratch is gone; the rasters below come from new mappings.
+  ReturnFreedMemory();
+  // The obstacles labelled once for the three site finders.
+  ObstacleLabels obstacles;
+  if (islands || closes_lines) obstacles = LabelObstacles(map.cells(), width, height);
+  in.sites =
+      StructureSitesFrom(site_cells, island_depth, width, resolution_m, options.room_island_max_m(),
+                         options.island_end_on_face() ? options.island_end_on_face_share() : 0,
+                         options.island_wall_piece_both_ends(), obstacles);
+  island_depth = IslandDepth();
+  std::vector<int>().swap(site_cells);
+  cv::Mat free_spaces;
+  if (options.jamb_wall_behind_line() && closes_lines) {
+    free_spaces = LabelFreeSpaces(map.cells(), width, height);
+  }
+  const cv::Mat* spaces = free_spaces.empty() ? nullptr : &free_spaces;
+  // The door sites beside the gap sites' edge ranges.
+  std::unique_ptr<WallGapFinder> gap_finder;
+  if (options.close_wall_gaps_max_m() > 0) {
+    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m,
+                                                 options.close_wall_gaps_max_m(),
+                                                 options.close_wall_gaps_short_tips(), spaces);
+  }
+  const size_t edge_count = static_cast<size_t>(topology.edges_size());
+  const int gap_ranges = gap_finder ? ParallelRangeCount(edge_count, kGapEdgesPerRange) : 0;
+  std::vector<PointList> gaps(gap_ranges);
+  std::vector<std::function<void()>> tasks = {[&] {
+    if (options.close_wall_doors()) {
+      in.closing = DoorClosingSites(in.room_width, obstacles, resolution_m, spaces);
+    }
+  }};
+  for (int range = 0; range < gap_ranges; ++range) {
+    tasks.push_back([&, range] {
+      gaps[range] = gap_finder->Sites(
+          static_cast<int>(ParallelRangeBegin(edge_count, gap_ranges, range)),
+          static_cast<int>(ParallelRangeBegin(edge_count, gap_ranges, range + 1)));
+    });
+  }
+  RunTasks(tasks);
+  for (const PointList& part : gaps) in.closing.insert(in.closing.end(), part.begin(), part.end());
+  in.sites.insert(in.sites.end(), in.closing.begin(), in.closing.end());
+  return in;
+}
+
+// One edge cut by its plan into pieces (room ids, ends and ids are set when
+// the pieces join the Cut Graph), its absorbed polygons moved to the nearest
+// piece. `given`: the edge itself when the caller gave the graph up.
+std::vector<proto::GraphEdge> CutEdge(const proto::GraphEdge& edge,
+                                      const std::vector<EdgePiece>& plan, proto::GraphEdge* given) {
+  const EdgeTrack track(edge);
+  // A graph the caller gave up hands its edge over (`edge` is then empty).
+  google::protobuf::RepeatedPtrField<proto::Polygon> absorbed;
+  if (given != nullptr) {
+    absorbed.Swap(given->mutable_absorbed());
+  } else {
+    absorbed = edge.absorbed();
+  }
+  std::vector<proto::GraphEdge> pieces;
+  if (plan.size() == 1) {
+    if (given != nullptr) {
+      pieces.push_back(std::move(*given));
+    } else {
+      pieces.push_back(edge);
+      pieces.back().clear_absorbed();
+    }
+  } else {
+    for (const EdgePiece& piece : plan) pieces.push_back(track.Piece(piece.begin, piece.end));
+  }
+  for (proto::Polygon& polygon : absorbed) {
+    const size_t k = pieces.size() == 1 ? 0 : NearestPiece(pieces, polygon.outer());
+    *pieces[k].add_absorbed() = std::move(polygon);
+  }
+  // Freed as soon as it is read no more: the pieces take the memory.
+  if (given != nullptr) proto::GraphEdge().Swap(given);
+  return pieces;
+}
+
 }  // namespace
 
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
                               const proto::CutOptions& options, proto::TopologyGraph* owned) {
   const CellGrid grid(map);
   CheckTopology(topology);
-  const proto::RoomWidthEstimate room_width = ChooseRoomWidth(options, map.frame(), topology);
+  CutInputs in = GatherCutInputs(topology, map, options, grid);
+  const proto::RoomWidthEstimate& room_width = in.room_width;
   const double room_width_px = room_width.room_width_m() / grid.resolution_m();
-  // The estimate's rasters are gone; the obstacle rasters below come from
-  // new mappings, so on a big map its freed pages would add to this stage's peak.
-  ReturnFreedMemory();
-
-  const cv::Mat inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
-                                      cv::Size(grid.width(), grid.height()));
   auto inside_boundary = [&](const Eigen::Vector2d& p) {
     const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
-    return grid.Contains(col, row) && inside.at<uint8_t>(row, col) != 0;
+    return grid.Contains(col, row) && in.inside.at<uint8_t>(row, col) != 0;
   };
-  // The obstacles labelled once for the three site finders.
-  const bool closes_lines = options.close_wall_doors() || options.close_wall_gaps_max_m() > 0;
-  ObstacleLabels obstacles;
-  if (options.room_island_max_m() > 0 || closes_lines) {
-    obstacles = LabelObstacles(map.cells(), grid.width(), grid.height());
-  }
-  PointList sites = StructureSites(
-      map.cells(), grid.width(), grid.height(), grid.resolution_m(), options.room_island_max_m(),
-      options.island_end_on_face() ? options.island_end_on_face_share() : 0,
-      options.island_wall_piece_both_ends(), obstacles);
-  PointList closing;  // the sites that close doors and wall gaps on purpose
-  cv::Mat free_spaces;
-  if (options.jamb_wall_behind_line() && closes_lines) {
-    free_spaces = LabelFreeSpaces(map.cells(), grid.width(), grid.height());
-  }
-  const cv::Mat* spaces = free_spaces.empty() ? nullptr : &free_spaces;
-  if (options.close_wall_doors()) {
-    closing = DoorClosingSites(room_width, obstacles, grid.resolution_m(), spaces);
-  }
-  if (options.close_wall_gaps_max_m() > 0) {
-    const PointList gaps =
-        WallGapSites(topology, obstacles, grid.resolution_m(), options.close_wall_gaps_max_m(),
-                     options.close_wall_gaps_short_tips(), spaces);
-    closing.insert(closing.end(), gaps.begin(), gaps.end());
-  }
-  obstacles = ObstacleLabels();
-  free_spaces.release();
-  sites.insert(sites.end(), closing.begin(), closing.end());
-  const ClosedLines closed_lines(closing, grid.resolution_m());
+  const ClosedLines closed_lines(in.closing, grid.resolution_m());
   const ClosedLines* kept_tips = options.keep_closed_room_tips() ? &closed_lines : nullptr;
-  SiteAlphaShape shape(std::move(sites), room_width_px / 2);
+  SiteAlphaShape shape(std::move(in.sites), room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);
   auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };
@@ -113,50 +203,53 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   *out.mutable_vertices() = topology.vertices();
   *out.mutable_room_width() = room_width;
 
-  std::map<int, int> room_ids;  // old room id -> kept room id
-  auto keep_room = [&](int room) {
-    if (room < 0) return -1;
-    auto [it, added] = room_ids.emplace(room, static_cast<int>(room_ids.size()));
-    return it->second;
-  };
-
-  for (int edge_index = 0; edge_index < topology.edges_size(); ++edge_index) {
+  // The plans in edge order: each RoomAt walk starts where the last ended,
+  // and a point on a Delaunay edge gets the face its walk stops in.
+  const int edge_count = topology.edges_size();
+  std::vector<std::vector<EdgePiece>> plans(edge_count);
+  // The edges' ends, read before a given edge is emptied.
+  std::vector<std::pair<int, int>> ends(edge_count);
+  std::map<int, int> room_ids;  // old room id -> kept room id, by first piece
+  for (int edge_index = 0; edge_index < edge_count; ++edge_index) {
     const proto::GraphEdge& edge = topology.edges(edge_index);
-    const int source = edge.source(), target = edge.target();
     const EdgeTrack track(edge);
-    const bool source_dead = topology.vertices(source).kind() == proto::VERTEX_DEAD_END;
-    const bool target_dead = topology.vertices(target).kind() == proto::VERTEX_DEAD_END;
-    std::vector<EdgePiece> plan =
-        PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
+    ends[edge_index] = {edge.source(), edge.target()};
+    const bool source_dead = topology.vertices(edge.source()).kind() == proto::VERTEX_DEAD_END;
+    const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
+    std::vector<EdgePiece>& plan = plans[edge_index];
+    plan = PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
     if (options.cut_narrow_tails()) CutNarrowTails(track, source_dead, target_dead, &plan);
+    for (const EdgePiece& piece : plan) {
+      if (piece.room >= 0) room_ids.emplace(piece.room, static_cast<int>(room_ids.size()));
+    }
+  }
+  std::vector<int> renumber(room_count, -1);
+  for (const auto& [old_id, new_id] : room_ids) renumber[old_id] = new_id;
+  shape.RenumberRooms(renumber);
 
-    // The edge's absorbed polygons, and its pieces without them. A graph
-    // the caller gave up hands its edge over (`edge` is then empty).
-    proto::GraphEdge* given = owned != nullptr ? owned->mutable_edges(edge_index) : nullptr;
-    google::protobuf::RepeatedPtrField<proto::Polygon> absorbed;
-    if (given != nullptr) {
-      absorbed.Swap(given->mutable_absorbed());
-    } else {
-      absorbed = edge.absorbed();
-    }
-    std::vector<proto::GraphEdge> pieces;
-    if (plan.size() == 1) {
-      if (given != nullptr) {
-        pieces.push_back(std::move(*given));
-      } else {
-        pieces.push_back(edge);
-        pieces.back().clear_absorbed();
-      }
-    } else {
-      for (const EdgePiece& piece : plan) pieces.push_back(track.Piece(piece.begin, piece.end));
-    }
-    int from_vertex = source;
+  // The edges' pieces on this thread (see RunTasks) beside the room outlines
+  // (the shape is not read by the pieces).
+  std::vector<proto::Polygon> outlines;
+  std::vector<std::vector<proto::GraphEdge>> cut(edge_count);
+  RunTasks({[&] {
+              for (int e = 0; e < edge_count; ++e) {
+                cut[e] = CutEdge(topology.edges(e), plans[e],
+                                 owned != nullptr ? owned->mutable_edges(e) : nullptr);
+              }
+            },
+            [&] { outlines = shape.RoomOutlines(); }},
+           /*on_caller=*/1);
+
+  for (int edge_index = 0; edge_index < edge_count; ++edge_index) {
+    std::vector<proto::GraphEdge>& pieces = cut[edge_index];
+    const std::vector<EdgePiece>& plan = plans[edge_index];
+    int from_vertex = ends[edge_index].first;
     for (size_t k = 0; k < pieces.size(); ++k) {
       proto::GraphEdge& piece = pieces[k];
-      piece.set_room_id(keep_room(plan[k].room));
+      piece.set_room_id(plan[k].room < 0 ? -1 : room_ids.at(plan[k].room));
       piece.set_source(from_vertex);
       if (k + 1 == pieces.size()) {
-        piece.set_target(target);
+        piece.set_target(ends[edge_index].second);
         break;
       }
       // A cut: a new passage vertex between this piece and the next.
@@ -173,22 +266,12 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
       piece.set_target(vertex->id());
       from_vertex = vertex->id();
     }
-    for (proto::Polygon& polygon : absorbed) {
-      const size_t k = pieces.size() == 1 ? 0 : NearestPiece(pieces, polygon.outer());
-      *pieces[k].add_absorbed() = std::move(polygon);
-    }
     for (proto::GraphEdge& piece : pieces) {
       piece.set_id(out.edges_size());
       *out.add_edges() = std::move(piece);
     }
-    // Freed as soon as it is read no more: the pieces take the memory.
-    if (given != nullptr) proto::GraphEdge().Swap(given);
   }
 
-  std::vector<int> renumber(room_count, -1);
-  for (const auto& [old_id, new_id] : room_ids) renumber[old_id] = new_id;
-  shape.RenumberRooms(renumber);
-  std::vector<proto::Polygon> outlines = shape.RoomOutlines();
   outlines.resize(room_ids.size());
   for (proto::Polygon& outline : outlines) *out.add_room_shapes() = std::move(outline);
   MarkClosedPassages(closed_lines, &out);

@@ -239,28 +239,52 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 
 }  // namespace
 
-PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces) {
+struct WallGapFinder::Impl {
+  Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
+       double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
+      : topology(topology),
+        walls(obstacles, kMinWallRegionM / resolution_m, free_spaces),
+        arcs(topology),
+        short_tips(short_tips),
+        run_px(kJambRunM / resolution_m),
+        reach_px(kDoorReachM / resolution_m),
+        rise_px(kDoorRiseM / resolution_m),
+        max_thickness_px(kMaxTipWallM / resolution_m),
+        max_gap_px(max_gap_m / resolution_m + 1),
+        min_gap_px(kMinGapM / resolution_m + 1),
+        min_tip_px(kMinShortTipM / resolution_m) {}
+
+  const proto::TopologyGraph& topology;
+  const WallStructure walls;
+  const EdgeArcs arcs;
+  const bool short_tips;
+  const double run_px, reach_px, rise_px, max_thickness_px, max_gap_px, min_gap_px, min_tip_px;
+};
+
+WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
+                             double resolution_m, double max_gap_m, bool short_tips,
+                             const cv::Mat* free_spaces)
+    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, max_gap_m, short_tips,
+                                   free_spaces)) {}
+
+WallGapFinder::~WallGapFinder() = default;
+
+PointList WallGapFinder::Sites(int begin, int end) const {
+  const Impl& in = *impl_;
+  const proto::TopologyGraph& topology = in.topology;
+  const WallStructure& walls = in.walls;
+  const double run_px = in.run_px, max_thickness_px = in.max_thickness_px;
   PointList sites;
-  if (max_gap_m <= 0) return sites;
-  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
-  const double run_px = kJambRunM / resolution_m;
-  const double reach_px = kDoorReachM / resolution_m, rise_px = kDoorRiseM / resolution_m;
-  const double max_thickness_px = kMaxTipWallM / resolution_m;
-  const double max_gap_px = max_gap_m / resolution_m + 1, min_gap_px = kMinGapM / resolution_m + 1;
-  const double min_tip_px = kMinShortTipM / resolution_m;
-  const EdgeArcs arcs(topology);
-  for (int e = 0; e < topology.edges_size(); ++e) {
+  for (int e = begin; e < end; ++e) {
     const proto::GraphEdge& edge = topology.edges(e);
-    const std::vector<double>& arc = arcs.arcs[e];
+    const std::vector<double>& arc = in.arcs.arcs[e];
     const int segments =
         std::min({edge.path_size() - 1, edge.left_sites_size(), edge.right_sites_size()});
     for (int s = 0; s < segments; ++s) {
       const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
       const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
       const double span = (b - a).norm();
-      if (span > max_gap_px || span < min_gap_px) continue;
+      if (span > in.max_gap_px || span < in.min_gap_px) continue;
       // The gap's middle must lie on this segment: its narrowest crossing.
       const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
       const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
@@ -284,15 +308,25 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabel
       // With short_tips, a thin wall end facing the structure may be a short
       // piece of wall (between two doors, a partition, a block of a row).
       auto jamb = [&](bool wall, bool tip, int label) {
-        return wall || (short_tips && tip && walls.Longest(label) >= min_tip_px);
+        return wall || (in.short_tips && tip && walls.Longest(label) >= in.min_tip_px);
       };
       if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) continue;
       const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
-      if (!WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px)) continue;
+      if (!WidensOnOneSide(topology, in.arcs, e, at_px, span - 1, in.reach_px, in.rise_px)) {
+        continue;
+      }
       AddLineSites(a, b, &sites);
     }
   }
   return sites;
+}
+
+PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
+                       double resolution_m, double max_gap_m, bool short_tips,
+                       const cv::Mat* free_spaces) {
+  if (max_gap_m <= 0) return PointList();
+  return WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
+      .Sites(0, topology.edges_size());
 }
 
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "proto/artifacts.pb.h"
@@ -53,6 +54,23 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
                        const cv::Mat* free_spaces = nullptr);
+
+// WallGapSites edge range by edge range (max_gap_m > 0), for callers that
+// run ranges as tasks: the sites of all ranges in edge order are
+// WallGapSites'. Reads its arguments, which must outlive it.
+class WallGapFinder {
+ public:
+  WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
+                double resolution_m, double max_gap_m, bool short_tips,
+                const cv::Mat* free_spaces = nullptr);
+  ~WallGapFinder();
+  // The sites that close gaps found on edges [begin, end).
+  PointList Sites(int begin, int end) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // A wall end is at most this thick across the door's line (metres).
 inline constexpr double kMaxTipWallM = 0.6;

@@ -153,19 +153,26 @@ ObstacleRegions CandidateRegions(const ObstacleLabels& obstacles, const cv::Mat&
 
 }  // namespace
 
-PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
-                         double max_island_m, double end_on_face_share, bool wall_piece_both_ends,
-                         const ObstacleLabels& obstacles) {
-  const std::vector<int> site_cells = ObstacleSiteCells(cells, width, height);
+IslandDepth IslandDepthOf(const std::string& cells, int width, int height, double resolution_m) {
+  IslandDepth island_depth;
+  island_depth.depth = ObstacleDepth(ObstacleMask(cells, width, height));
+  island_depth.min_thickness_px =
+      std::max(kMinIslandThicknessM / resolution_m,
+               kIslandWallRatio *
+                   TypicalWallThickness(island_depth.depth, kMaxWallThicknessM / resolution_m));
+  return island_depth;
+}
+
+PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDepth& island_depth,
+                             int width, double resolution_m, double max_island_m,
+                             double end_on_face_share, bool wall_piece_both_ends,
+                             const ObstacleLabels& obstacles) {
   std::vector<uint8_t> island;
   ObstacleRegions regions;
   if (max_island_m > 0) {
     const double max_island_px = max_island_m / resolution_m;
-    const cv::Mat depth = ObstacleDepth(ObstacleMask(cells, width, height));
-    const double min_thickness =
-        std::max(kMinIslandThicknessM / resolution_m,
-                 kIslandWallRatio * TypicalWallThickness(depth, kMaxWallThicknessM / resolution_m));
-    regions = CandidateRegions(obstacles, depth, site_cells, max_island_px, &island);
+    const double min_thickness = island_depth.min_thickness_px;
+    regions = CandidateRegions(obstacles, island_depth.depth, site_cells, max_island_px, &island);
     const double gap_px = kWallGapM / resolution_m;
     const double run_px = kEndOnRunM / resolution_m;
     for (size_t region = 1; region < regions.shapes.size(); ++region) {
@@ -187,6 +194,16 @@ PointList StructureSites(const std::string& cells, int width, int height, double
     sites.push_back(CellCentre(index % width, index / width));
   }
   return sites;
+}
+
+PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
+                         double max_island_m, double end_on_face_share, bool wall_piece_both_ends,
+                         const ObstacleLabels& obstacles) {
+  const IslandDepth island_depth =
+      max_island_m > 0 ? IslandDepthOf(cells, width, height, resolution_m) : IslandDepth();
+  return StructureSitesFrom(ObstacleSiteCells(cells, width, height), island_depth, width,
+                            resolution_m, max_island_m, end_on_face_share, wall_piece_both_ends,
+                            obstacles);
 }
 
 }  // namespace areagraph

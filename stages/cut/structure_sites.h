@@ -1,6 +1,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/obstacle_regions.h"
@@ -32,6 +33,21 @@ namespace areagraph {
 PointList StructureSites(const std::string& cells, int width, int height, double resolution_m,
                          double max_island_m, double end_on_face_share, bool wall_piece_both_ends,
                          const ObstacleLabels& obstacles);
+
+// StructureSites in steps, for callers that run them beside other work:
+// the obstacle depth (ObstacleDepth) and the least island thickness (px)
+// from the map's typical wall, needed only when max_island_m > 0 ...
+struct IslandDepth {
+  cv::Mat depth;
+  double min_thickness_px = 0;
+};
+IslandDepth IslandDepthOf(const std::string& cells, int width, int height, double resolution_m);
+// ... and StructureSites from those, `site_cells` (ObstacleSiteCells of the
+// cells) and the labels.
+PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDepth& island_depth,
+                             int width, double resolution_m, double max_island_m,
+                             double end_on_face_share, bool wall_piece_both_ends,
+                             const ObstacleLabels& obstacles);
 
 // Walls are thinner than this (metres); furniture islands are not.
 inline constexpr double kMinIslandThicknessM = 0.8;

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "stages/geometry/site_triangulation_cgal.h"
+#include "stages/geometry/spatial_sort_on_pool.h"
 
 namespace areagraph {
 namespace {
@@ -42,10 +43,15 @@ std::vector<site_cgal::Point> KernelPoints(const std::vector<Eigen::Vector2d>& s
   return points;
 }
 
-// One spatially sorted range insert (as Alpha_shape_2's constructor does).
+// One spatially sorted range insert (as Alpha_shape_2's constructor does):
+// Delaunay_triangulation_2::insert(first, last) of CGAL 5.5 step for step,
+// with its spatial sort's parts on the pool (the same order).
 SiteTriangulationPtr TriangulatePoints(std::vector<site_cgal::Point> points, bool on_half_grid) {
   SiteTriangulationPtr triangulation(new SiteTriangulation(on_half_grid));
-  triangulation->dt.insert(points.begin(), points.end());
+  site_cgal::Delaunay& dt = triangulation->dt;
+  SpatialSortOnPool(points.begin(), points.end(), dt.geom_traits());
+  site_cgal::Delaunay::Face_handle hint;
+  for (const site_cgal::Point& point : points) hint = dt.insert(point, hint)->face();
   return triangulation;
 }
 
@@ -61,14 +67,27 @@ size_t SiteTriangulationBytes(const SiteTriangulation& triangulation) {
          tds.number_of_faces() * sizeof(site_cgal::Tds::Face);
 }
 
+// The range insert of (point, index) pairs, Delaunay_triangulation_2's
+// insert_with_info of CGAL 5.5 step for step, with the spatial sort of the
+// indices on the pool (the same order).
 SiteTriangulationPtr TriangulateIndexedSites(const std::vector<Eigen::Vector2d>& sites) {
-  std::vector<std::pair<site_cgal::Point, int>> indexed;
-  indexed.reserve(sites.size());
-  for (size_t i = 0; i < sites.size(); ++i) {
-    indexed.emplace_back(site_cgal::Point(sites[i].x(), sites[i].y()), static_cast<int>(i));
-  }
+  const std::vector<site_cgal::Point> points = KernelPoints(sites);
+  std::vector<size_t> order(points.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
   SiteTriangulationPtr triangulation(new SiteTriangulation(OnHalfGrid(sites)));
-  triangulation->dt.insert(indexed.begin(), indexed.end());
+  site_cgal::Delaunay& dt = triangulation->dt;
+  using PointMap = CGAL::Pointer_property_map<site_cgal::Point>::const_type;
+  using SortTraits = CGAL::Spatial_sort_traits_adapter_2<site_cgal::Traits, PointMap>;
+  SpatialSortOnPool(order.begin(), order.end(),
+                    SortTraits(CGAL::make_property_map(points), dt.geom_traits()));
+  site_cgal::Delaunay::Face_handle hint;
+  for (const size_t index : order) {
+    const site_cgal::Delaunay::Vertex_handle vertex = dt.insert(points[index], hint);
+    if (vertex != site_cgal::Delaunay::Vertex_handle()) {
+      vertex->info() = static_cast<int>(index);
+      hint = vertex->face();
+    }
+  }
   return triangulation;
 }
 
