@@ -120,15 +120,14 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
                                    double min_clearance_px) {
   const int vertex_count = static_cast<int>(diagram.positions.size());
   const int site_count = static_cast<int>(diagram.sites.size());
-  std::vector<char> keep(vertex_count, 0);
-  std::vector<int> region(vertex_count, -1);
-  for (int v = 0; v < vertex_count; ++v) {
+  // The region of every vertex on a free cell (over ranges of the vertices
+  // in parallel; the grid is only read).
+  const std::vector<int> region = boundary_shape->EnclosedRegionsAt(diagram.positions, [&](int v) {
     if (v + kAhead < vertex_count) PrefetchCell(grid, diagram.positions[v + kAhead]);
-    const Eigen::Vector2d& p = diagram.positions[v];
-    if (!grid.FreeAt(p)) continue;
-    region[v] = boundary_shape->EnclosedRegionAt(p, v);
-    keep[v] = region[v] >= 0;
-  }
+    return grid.FreeAt(diagram.positions[v]);
+  });
+  std::vector<char> keep(vertex_count, 0);
+  for (int v = 0; v < vertex_count; ++v) keep[v] = region[v] >= 0;
 
   DisjointSets same_point(vertex_count);
   std::vector<int> kept_edges;
