@@ -15,6 +15,7 @@
 #include "stages/common/voronoi_arrays.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/region_boxes.h"
 #include "stages/geometry/site_alpha_shape.h"
 #include "stages/prune/chain_graph.h"
@@ -31,6 +32,11 @@ constexpr double kSamePointPx = 1e-6;
 // memory they will read at random (__builtin_prefetch): on a big map the
 // grid, the vertices' positions and their flags do not fit in the caches.
 constexpr int kAhead = 16;
+
+// Below this many chains per range ToProto builds the edges' messages in the
+// calling thread (a range is a task on OpenCV's pool; each chain's messages
+// are a few dozen allocations).
+constexpr size_t kMinEdgesPerRange = 256;
 
 // Asks for the grid's cell under `point` (as CellGrid::FreeAt reads it).
 inline void PrefetchCell(const CellGrid& grid, const Eigen::Vector2d& point) {
@@ -273,25 +279,44 @@ proto::TopologyGraph ToProto(ChainGraph graph, const proto::MapFrame& frame,
     vertex->set_kind(incidences[v].size() == 1 ? proto::VERTEX_DEAD_END : proto::VERTEX_JUNCTION);
     vertex->set_clearance_px(graph.vertices[v].clearance_px);
   }
-  for (ChainEdge& chain : graph.edges) {
-    if (chain.removed) continue;
-    proto::GraphEdge* edge = out.add_edges();
-    edge->set_id(out.edges_size() - 1);
-    edge->set_source(new_id[chain.source]);
-    edge->set_target(new_id[chain.target]);
-    AppendPoints(chain.path, edge->mutable_path());
-    AppendPoints(chain.left_sites, edge->mutable_left_sites());
-    AppendPoints(chain.right_sites, edge->mutable_right_sites());
-    for (double c : chain.clearance_px) edge->add_clearance_px(c);
-    for (proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = std::move(polygon);
-    edge->set_length_px(chain.Length());
-    edge->set_min_clearance_px(chain.min_clearance_px);
-    // UpdateEdgePolygons' rings, from the chain's lists rather than read
-    // back out of the messages just written.
-    *edge->mutable_left_half()->mutable_outer() = HalfPolygonRing(chain.path, chain.left_sites);
-    *edge->mutable_right_half()->mutable_outer() = HalfPolygonRing(chain.path, chain.right_sites);
-    *edge->mutable_polygon()->mutable_outer() =
-        EdgePolygonRing(chain.path, chain.left_sites, chain.right_sites);
+  // The edges' messages (a heap allocation per point: most of the encoding)
+  // are built over ranges of the chains in parallel, and taken over in order.
+  std::vector<int> edge_id(graph.edges.size(), -1);
+  int kept = 0;
+  for (size_t e = 0; e < graph.edges.size(); ++e) {
+    if (!graph.edges[e].removed) edge_id[e] = kept++;
+  }
+  auto built = MapRanges<std::vector<std::unique_ptr<proto::GraphEdge>>>(
+      graph.edges.size(), kMinEdgesPerRange, [&](size_t begin, size_t end) {
+        std::vector<std::unique_ptr<proto::GraphEdge>> edges;
+        for (size_t e = begin; e < end; ++e) {
+          ChainEdge& chain = graph.edges[e];
+          if (chain.removed) continue;
+          proto::GraphEdge* edge = edges.emplace_back(new proto::GraphEdge()).get();
+          edge->set_id(edge_id[e]);
+          edge->set_source(new_id[chain.source]);
+          edge->set_target(new_id[chain.target]);
+          AppendPoints(chain.path, edge->mutable_path());
+          AppendPoints(chain.left_sites, edge->mutable_left_sites());
+          AppendPoints(chain.right_sites, edge->mutable_right_sites());
+          for (double c : chain.clearance_px) edge->add_clearance_px(c);
+          for (proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = std::move(polygon);
+          edge->set_length_px(chain.Length());
+          edge->set_min_clearance_px(chain.min_clearance_px);
+          // UpdateEdgePolygons' rings, from the chain's lists rather than read
+          // back out of the messages just written.
+          *edge->mutable_left_half()->mutable_outer() =
+              HalfPolygonRing(chain.path, chain.left_sites);
+          *edge->mutable_right_half()->mutable_outer() =
+              HalfPolygonRing(chain.path, chain.right_sites);
+          *edge->mutable_polygon()->mutable_outer() =
+              EdgePolygonRing(chain.path, chain.left_sites, chain.right_sites);
+        }
+        return edges;
+      });
+  out.mutable_edges()->Reserve(kept);
+  for (auto& edges : built) {
+    for (auto& edge : edges) out.mutable_edges()->AddAllocated(edge.release());
   }
   return out;
 }

@@ -29,6 +29,8 @@ constexpr int kAhead = 16;
 struct FaceArrays {
   std::vector<int> site;
   std::vector<int> neighbor;
+  // Where each range of ParallelRangeCount(faces, kMinFacesPerRange) starts.
+  std::vector<SiteDelaunay::Finite_faces_iterator> range_start;
 
   int Count() const { return static_cast<int>(site.size() / 3); }
 };
@@ -54,7 +56,7 @@ FaceArrays NumberAndMergeFaces(SiteDelaunay& dt, DisjointSets* sets) {
   faces.site.resize(3 * face_count);
   faces.neighbor.resize(3 * face_count);
   const int ranges = ParallelRangeCount(face_count, kMinFacesPerRange);
-  std::vector<SiteDelaunay::Finite_faces_iterator> range_start;
+  std::vector<SiteDelaunay::Finite_faces_iterator>& range_start = faces.range_start;
   range_start.reserve(ranges);
   int count = 0;
   for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
@@ -284,10 +286,13 @@ void AddDualOfTriangulation(SiteDelaunay& dt, const std::vector<Eigen::Vector2d>
     }
   });
   // Each face now names its Voronoi vertex (prune's locate walks start there).
-  int number = 0;
-  for (auto face = dt.finite_faces_begin(); face != dt.finite_faces_end(); ++face) {
-    face->info().number = vertex_of_face[number++];
-  }
+  ForEachRange(face_count, static_cast<int>(faces.range_start.size()),
+               [&](size_t begin, size_t end, int range) {
+                 auto face = faces.range_start[range];
+                 for (size_t number = begin; number < end; ++number, ++face) {
+                   face->info().number = vertex_of_face[number];
+                 }
+               });
 }
 
 }  // namespace
