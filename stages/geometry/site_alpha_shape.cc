@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <type_traits>
 #include <vector>
 
 #include "stages/geometry/parallel_ranges.h"
@@ -70,6 +71,8 @@ struct SiteAlphaShape::Impl {
   std::vector<Face> vertex_face;
   bool vertex_faces_built = false;
   int enclosed_regions = 0;  // found by FindEnclosedRegions
+  // Where ranges of all faces start (FaceRangeStarts), once found.
+  std::vector<Delaunay::All_faces_iterator> face_range_starts;
   // Rooms: the id each face label (DetectRooms') has now, RenumberRooms
   // composed here instead of rewriting every face; the faces take them when
   // RoomOutlines walks them. And the rooms' areas, summed as DetectRooms
@@ -107,8 +110,7 @@ struct SiteAlphaShape::Impl {
     const auto side_of_bounded_circle = traits.side_of_bounded_circle_2_object();
     // Two passes over ranges of the faces: each face's flags are its own,
     // the second pass reads the neighbours' first.
-    const std::vector<Delaunay::All_faces_iterator> starts = FaceRangeStarts();
-    ForEachFaceRange(starts, [&](Delaunay::All_faces_iterator face, size_t count) {
+    ForEachFaceRange([&](Delaunay::All_faces_iterator face, size_t count) {
       for (; count > 0; --count, ++face) {
         face->info().interior = !shape.is_infinite(face) &&
                                 squared_radius(face->vertex(0)->point(), face->vertex(1)->point(),
@@ -121,7 +123,7 @@ struct SiteAlphaShape::Impl {
                                     face->vertex(Delaunay::ccw(i))->point(),
                                     face->vertex(i)->point()) == CGAL::ON_BOUNDED_SIDE;
     };
-    ForEachFaceRange(starts, [&](Delaunay::All_faces_iterator it, size_t count) {
+    ForEachFaceRange([&](Delaunay::All_faces_iterator it, size_t count) {
       for (; count > 0; --count, ++it) {
         const Face face = it;
         unsigned char bits = 0;
@@ -140,13 +142,15 @@ struct SiteAlphaShape::Impl {
     });
   }
 
-  // Where each range of all faces starts (ParallelRangeCount's split), and
-  // the end: one pass through the face container.
-  std::vector<Delaunay::All_faces_iterator> FaceRangeStarts() const {
+  // Where each range of all faces starts (ParallelRangeCount's split): one
+  // pass through the face container, on first use (the triangulation does
+  // not change here, so they stay valid).
+  const std::vector<Delaunay::All_faces_iterator>& FaceRangeStarts() {
+    if (!face_range_starts.empty()) return face_range_starts;
     const size_t count = shape.tds().number_of_faces();
     const int ranges = ParallelRangeCount(count, kMinFacesPerRange);
-    std::vector<Delaunay::All_faces_iterator> starts;
-    starts.reserve(ranges + 1);
+    std::vector<Delaunay::All_faces_iterator>& starts = face_range_starts;
+    starts.reserve(ranges);
     starts.push_back(shape.all_faces_begin());
     if (ranges > 1) {
       size_t index = 0;
@@ -160,14 +164,29 @@ struct SiteAlphaShape::Impl {
     return starts;
   }
 
-  // body(first, count) for each range of FaceRangeStarts, in parallel.
+  // body(first, count, range) for each range of all faces (FaceRangeStarts),
+  // in parallel: what each writes must be its own faces'.
   template <typename Body>
-  void ForEachFaceRange(const std::vector<Delaunay::All_faces_iterator>& starts,
-                        const Body& body) const {
-    const size_t count = shape.tds().number_of_faces();
-    const int ranges = static_cast<int>(starts.size());
-    ForEachRange(count, ranges,
-                 [&](size_t begin, size_t end, int range) { body(starts[range], end - begin); });
+  void ForEachFaceRange(const Body& body) {
+    const std::vector<Delaunay::All_faces_iterator>& starts = FaceRangeStarts();
+    ForEachRange(shape.tds().number_of_faces(), static_cast<int>(starts.size()),
+                 [&](size_t begin, size_t end, int range) {
+                   if constexpr (std::is_invocable_v<Body, Delaunay::All_faces_iterator, size_t>) {
+                     body(starts[range], end - begin);
+                   } else {
+                     body(starts[range], end - begin, range);
+                   }
+                 });
+  }
+
+  // Sets `field` of every face (finite only, unless `infinite_too`).
+  template <typename Field, typename Value>
+  void ResetFaces(Field FaceInfo::*field, Value value, bool infinite_too) {
+    ForEachFaceRange([&](Delaunay::All_faces_iterator face, size_t count) {
+      for (; count > 0; --count, ++face) {
+        if (infinite_too || !shape.is_infinite(face)) face->info().*field = value;
+      }
+    });
   }
 
   // Alpha_shape_2::classify(face) != EXTERIOR.
@@ -182,7 +201,7 @@ struct SiteAlphaShape::Impl {
   template <typename Member, typename Connects>
   int LabelRegions(const Member& member, const Connects& connects, int FaceInfo::*label) {
     int count = 0;
-    for (Face face : shape.finite_face_handles()) face->info().*label = -1;
+    ResetFaces(label, -1, /*infinite_too=*/false);
     std::vector<Face> stack;
     for (Face seed : shape.finite_face_handles()) {
       if (seed->info().*label >= 0 || !member(seed)) continue;
@@ -218,7 +237,7 @@ struct SiteAlphaShape::Impl {
   // ring keeps its region on the left; at a vertex where the region touches
   // itself the walk stays within the faces it came through.
   std::map<int, std::vector<PointList>> RegionRings(int FaceInfo::*label, int only = -1) {
-    for (Face face : shape.all_face_handles()) face->info().walked = 0;
+    ResetFaces(&FaceInfo::walked, static_cast<unsigned char>(0), /*infinite_too=*/true);
     std::map<int, std::vector<PointList>> rings;
     auto on_boundary = [&](const Face& face, int i) {
       const Face other = face->neighbor(i);
@@ -425,11 +444,18 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
   // Outside: what infinity reaches without crossing the alpha complex. Edges
   // of the complex (singular ones too) are walls, so a thin wall whose
   // sliver triangles are wider than alpha still closes the map.
+  // (The flags over ranges of the faces; the walk's result does not depend
+  // on the order of its starts.)
+  std::vector<std::vector<Face>> infinite(impl.FaceRangeStarts().size());
+  impl.ForEachFaceRange([&](Delaunay::All_faces_iterator face, size_t count, int range) {
+    for (; count > 0; --count, ++face) {
+      face->info().outside = impl.shape.is_infinite(face);
+      if (face->info().outside) infinite[range].push_back(face);
+    }
+  });
   std::vector<Face> stack;
-  for (Face face : impl.shape.all_face_handles()) {
-    face->info().outside = impl.shape.is_infinite(face);
-    if (face->info().outside) stack.push_back(face);
-  }
+  for (const std::vector<Face>& faces : infinite)
+    stack.insert(stack.end(), faces.begin(), faces.end());
   Impl::Spread(&stack, [](const Face& face, int i, const Face& next) {
     if (next->info().outside || Impl::InComplex(face, i)) return false;
     next->info().outside = true;
