@@ -16,15 +16,17 @@
 namespace areagraph::testing {
 namespace {
 
-// Sets OpenCV's thread count for a scope, and restores it.
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+// run() with OpenCV's pool at `threads` threads; the count is restored
+// afterwards, also when run() throws.
+template <typename Run>
+auto WithThreads(int threads, const Run& run) {
+  struct Restore {
+    int saved = cv::getNumThreads();
+    ~Restore() { cv::setNumThreads(saved); }
+  } restore;
+  cv::setNumThreads(threads);
+  return run();
+}
 
 // An office plan tiled n x n into one map (5 x 5: about 55 000 Voronoi
 // vertices and more Delaunay faces, several ranges of each).
@@ -41,8 +43,7 @@ struct StageOutputs {
   int vertices = 0;
 };
 
-StageOutputs RunStages(const proto::CleanedMap& map, int threads) {
-  ThreadCount count(threads);
+StageOutputs RunStages(const proto::CleanedMap& map) {
   const proto::PipelineOptions options;
   StageOutputs out;
   const proto::VoronoiDiagram diagram = ComputeVoronoiStage(map, options.voronoi());
@@ -57,8 +58,8 @@ StageOutputs RunStages(const proto::CleanedMap& map, int threads) {
 TEST(ParallelPruneTest, VoronoiAndPruneOnTwoThreadsGiveOneThreadsBytes) {
   for (const uint32_t seed : {5u, 23u}) {
     const proto::CleanedMap map = TiledOffice(seed, 5);
-    const StageOutputs one = RunStages(map, 1);
-    const StageOutputs two = RunStages(map, 2);
+    const StageOutputs one = WithThreads(1, [&] { return RunStages(map); });
+    const StageOutputs two = WithThreads(2, [&] { return RunStages(map); });
     // Past two ranges of the dual's faces (16 384 each, and there are more
     // faces than vertices) and of the look-ups (4 096 points each).
     ASSERT_GT(one.vertices, 2 * 16384) << "seed " << seed << ": too small to be split";
@@ -73,7 +74,6 @@ TEST(ParallelPruneTest, VoronoiAndPruneOnTwoThreadsGiveOneThreadsBytes) {
 // vertex by vertex, and leaves the walks' start where those calls leave it:
 // plain walks afterwards (whose answer on an edge depends on it) agree.
 TEST(ParallelPruneTest, BatchRegionLookUpsAreTheOneByOneCalls) {
-  ThreadCount count(2);
   const proto::CleanedMap map = TiledOffice(11, 3);
   const proto::PipelineOptions options;
   const proto::VoronoiDiagram diagram = ComputeVoronoiStage(map, options.voronoi());
@@ -95,7 +95,8 @@ TEST(ParallelPruneTest, BatchRegionLookUpsAreTheOneByOneCalls) {
   PointList points = positions;
   for (size_t v = 2; v < points.size(); v += 5) points[v] = sites[v * 7919 % sites.size()];
   auto wanted = [](int v) { return v % 3 != 1; };
-  const std::vector<int> regions = batch.EnclosedRegionsAt(points, wanted);
+  const std::vector<int> regions =
+      WithThreads(2, [&] { return batch.EnclosedRegionsAt(points, wanted); });
   ASSERT_EQ(regions.size(), points.size());
   int inside = 0;
   for (size_t v = 0; v < points.size(); ++v) {
