@@ -36,7 +36,10 @@ constexpr int kAhead = 16;
 // Below this many chains per range ToProto builds the edges' messages in the
 // calling thread (a range is a task on OpenCV's pool; each chain's messages
 // are a few dozen allocations).
-constexpr size_t kMinEdgesPerRange = 256;
+constexpr size_t kMinEdgesPerRange = 64;
+// Below this many Voronoi edges per range the filter runs in the calling
+// thread.
+constexpr size_t kMinEdgesPerFilterRange = 16384;
 
 // Asks for the grid's cell under `point` (as CellGrid::FreeAt reads it).
 inline void PrefetchCell(const CellGrid& grid, const Eigen::Vector2d& point) {
@@ -135,34 +138,63 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
   std::vector<char> keep(vertex_count, 0);
   for (int v = 0; v < vertex_count; ++v) keep[v] = region[v] >= 0;
 
+  // The edges over ranges in parallel: each range keeps its edges and the
+  // pairs of vertices at one point, in edge order, and stops at its first
+  // bad index; the first range's error is thrown, as the serial loop would.
+  struct RangeEdges {
+    std::vector<int> kept;
+    std::vector<std::pair<int, int>> same;
+    int bad_edge = -1;  // the first edge naming a missing vertex or site
+  };
+  const int edge_count = static_cast<int>(diagram.edges.size());
+  const auto ranges =
+      MapRanges<RangeEdges>(edge_count, kMinEdgesPerFilterRange, [&](size_t begin, size_t end) {
+        RangeEdges out;
+        auto bad = [](int index, int size) { return index < 0 || index >= size; };
+        for (size_t e = begin; e < end; ++e) {
+          if (e + kAhead < end) {
+            const PlainVoronoi::Edge& ahead = diagram.edges[e + kAhead];
+            for (const int v : {ahead.source, ahead.target}) {
+              if (v >= 0 && v < vertex_count) {
+                __builtin_prefetch(&keep[v]);
+                __builtin_prefetch(&diagram.positions[v]);
+              }
+            }
+          }
+          const PlainVoronoi::Edge& edge = diagram.edges[e];
+          if (bad(edge.source, vertex_count) ||
+              (edge.target >= 0 &&
+               (bad(edge.target, vertex_count) || bad(edge.left_site, site_count) ||
+                bad(edge.right_site, site_count)))) {
+            out.bad_edge = static_cast<int>(e);
+            break;
+          }
+          if (edge.target < 0) continue;  // a ray
+          if (!keep[edge.source] || !keep[edge.target]) continue;
+          if (!(edge.clearance_px >= min_clearance_px)) continue;
+          const Eigen::Vector2d& a = diagram.positions[edge.source];
+          const Eigen::Vector2d& b = diagram.positions[edge.target];
+          if ((a - b).norm() < kSamePointPx) {
+            out.same.emplace_back(edge.source, edge.target);
+          } else {
+            out.kept.push_back(static_cast<int>(e));
+          }
+        }
+        return out;
+      });
   DisjointSets same_point(vertex_count);
   std::vector<int> kept_edges;
-  const int edge_count = static_cast<int>(diagram.edges.size());
-  for (int e = 0; e < edge_count; ++e) {
-    if (e + kAhead < edge_count) {
-      const PlainVoronoi::Edge& ahead = diagram.edges[e + kAhead];
-      for (const int v : {ahead.source, ahead.target}) {
-        if (v >= 0 && v < vertex_count) {
-          __builtin_prefetch(&keep[v]);
-          __builtin_prefetch(&diagram.positions[v]);
-        }
-      }
+  for (const RangeEdges& range : ranges) {
+    if (range.bad_edge >= 0) {
+      const int e = range.bad_edge;
+      const PlainVoronoi::Edge& edge = diagram.edges[e];
+      CheckIndex(edge.source, vertex_count, "vertex", e);
+      CheckIndex(edge.target, vertex_count, "vertex", e);
+      CheckIndex(edge.left_site, site_count, "site", e);
+      CheckIndex(edge.right_site, site_count, "site", e);
     }
-    const PlainVoronoi::Edge& edge = diagram.edges[e];
-    CheckIndex(edge.source, vertex_count, "vertex", e);
-    if (edge.target < 0) continue;  // a ray
-    CheckIndex(edge.target, vertex_count, "vertex", e);
-    CheckIndex(edge.left_site, site_count, "site", e);
-    CheckIndex(edge.right_site, site_count, "site", e);
-    if (!keep[edge.source] || !keep[edge.target]) continue;
-    if (!(edge.clearance_px >= min_clearance_px)) continue;
-    const Eigen::Vector2d& a = diagram.positions[edge.source];
-    const Eigen::Vector2d& b = diagram.positions[edge.target];
-    if ((a - b).norm() < kSamePointPx) {
-      same_point.Union(edge.source, edge.target);
-    } else {
-      kept_edges.push_back(e);
-    }
+    for (const auto& [a, b] : range.same) same_point.Union(a, b);
+    kept_edges.insert(kept_edges.end(), range.kept.begin(), range.kept.end());
   }
 
   FilteredGraph filtered;
