@@ -40,6 +40,9 @@ constexpr size_t kMinEdgesPerRange = 64;
 // Below this many Voronoi edges per range the filter runs in the calling
 // thread.
 constexpr size_t kMinEdgesPerFilterRange = 16384;
+// Below this many entries per range the diagram's arrays are copied in the
+// calling thread.
+constexpr size_t kMinCopiesPerRange = 32768;
 
 // Asks for the grid's cell under `point` (as CellGrid::FreeAt reads it).
 inline void PrefetchCell(const CellGrid& grid, const Eigen::Vector2d& point) {
@@ -68,6 +71,7 @@ inline void CheckIndex(int index, int size, const char* element, int edge) {
 // boundary shape is built: on a big map the two would be most of the peak.
 struct PlainVoronoi {
   struct Edge {
+    Edge() {}  // left unset: the copy below fills every entry, over ranges
     int source;
     int target;
     int left_site;
@@ -80,27 +84,41 @@ struct PlainVoronoi {
   std::vector<Edge> edges;
 
   // `diagram` holds arrays of matching lengths (PackedVoronoi), read here
-  // through their data pointers (millions of entries on a big map).
+  // through their data pointers (millions of entries on a big map), over
+  // ranges in parallel: the sized arrays are not written until then, so
+  // their fresh pages are touched in the ranges too.
   explicit PlainVoronoi(const proto::VoronoiDiagram& diagram)
       : clearances(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end()) {
-    const double* site_x = diagram.site_x().data();
-    const double* site_y = diagram.site_y().data();
-    sites.reserve(diagram.site_x_size());
-    for (int s = 0; s < diagram.site_x_size(); ++s) sites.emplace_back(site_x[s], site_y[s]);
-    const double* vertex_x = diagram.vertex_x().data();
-    const double* vertex_y = diagram.vertex_y().data();
-    positions.reserve(diagram.vertex_x_size());
-    for (int v = 0; v < diagram.vertex_x_size(); ++v)
-      positions.emplace_back(vertex_x[v], vertex_y[v]);
+    CopyPoints(diagram.site_x().data(), diagram.site_y().data(), diagram.site_x_size(), &sites);
+    CopyPoints(diagram.vertex_x().data(), diagram.vertex_y().data(), diagram.vertex_x_size(),
+               &positions);
     const int* source = diagram.edge_source().data();
     const int* target = diagram.edge_target().data();
     const int* left = diagram.edge_left_site().data();
     const int* right = diagram.edge_right_site().data();
     const double* clearance = diagram.edge_clearance_px().data();
-    edges.reserve(diagram.edge_source_size());
-    for (int e = 0; e < diagram.edge_source_size(); ++e) {
-      edges.push_back({source[e], target[e], left[e], right[e], clearance[e]});
-    }
+    const size_t count = diagram.edge_source_size();
+    edges.resize(count);
+    ForEachRange(count, ParallelRangeCount(count, kMinCopiesPerRange),
+                 [&](size_t begin, size_t end, int) {
+                   for (size_t e = begin; e < end; ++e) {
+                     Edge& edge = edges[e];
+                     edge.source = source[e];
+                     edge.target = target[e];
+                     edge.left_site = left[e];
+                     edge.right_site = right[e];
+                     edge.clearance_px = clearance[e];
+                   }
+                 });
+  }
+
+  static void CopyPoints(const double* x, const double* y, size_t count, PointList* out) {
+    out->resize(count);  // Eigen's vectors stay unset
+    Eigen::Vector2d* points = out->data();
+    ForEachRange(count, ParallelRangeCount(count, kMinCopiesPerRange),
+                 [&](size_t begin, size_t end, int) {
+                   for (size_t i = begin; i < end; ++i) points[i] = Eigen::Vector2d(x[i], y[i]);
+                 });
   }
 };
 
