@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <map>
+#include <type_traits>
 #include <vector>
 
+#include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/site_triangulation_cgal.h"
 
 namespace areagraph {
@@ -13,6 +15,13 @@ using FaceInfo = SiteFaceInfo;
 using Kernel = site_cgal::Kernel;
 using Delaunay = site_cgal::Delaunay;
 using Face = Delaunay::Face_handle;
+
+// Below these counts per range the work runs in the calling thread (a
+// range is a task on OpenCV's pool, which costs some microseconds to wake).
+constexpr size_t kMinPointsPerRange = 4096;
+constexpr size_t kMinFacesPerRange = 16384;
+// How many points ahead EnclosedRegionsAt asks for their start faces.
+constexpr int kAhead = 8;
 
 Eigen::Vector2d ToVector(const Kernel::Point_2& point) { return {point.x(), point.y()}; }
 
@@ -62,6 +71,8 @@ struct SiteAlphaShape::Impl {
   std::vector<Face> vertex_face;
   bool vertex_faces_built = false;
   int enclosed_regions = 0;  // found by FindEnclosedRegions
+  // Where ranges of all faces start (FaceRangeStarts), once found.
+  std::vector<Delaunay::All_faces_iterator> face_range_starts;
   // Rooms: the id each face label (DetectRooms') has now, RenumberRooms
   // composed here instead of rewriting every face; the faces take them when
   // RoomOutlines walks them. And the rooms' areas, summed as DetectRooms
@@ -97,31 +108,85 @@ struct SiteAlphaShape::Impl {
     const auto& traits = shape.geom_traits();
     const auto squared_radius = traits.compute_squared_radius_2_object();
     const auto side_of_bounded_circle = traits.side_of_bounded_circle_2_object();
-    for (Face face : shape.all_face_handles()) {
-      face->info().interior = !shape.is_infinite(face) &&
-                              squared_radius(face->vertex(0)->point(), face->vertex(1)->point(),
-                                             face->vertex(2)->point()) <= alpha;
-    }
+    // Two passes over ranges of the faces: each face's flags are its own,
+    // the second pass reads the neighbours' first.
+    ForEachFaceRange([&](Delaunay::All_faces_iterator face, size_t count) {
+      for (; count > 0; --count, ++face) {
+        face->info().interior = !shape.is_infinite(face) &&
+                                squared_radius(face->vertex(0)->point(), face->vertex(1)->point(),
+                                               face->vertex(2)->point()) <= alpha;
+      }
+    });
     auto attached = [&](const Face& face, int i) {
       return !shape.is_infinite(face) &&
              side_of_bounded_circle(face->vertex(Delaunay::cw(i))->point(),
                                     face->vertex(Delaunay::ccw(i))->point(),
                                     face->vertex(i)->point()) == CGAL::ON_BOUNDED_SIDE;
     };
-    for (Face face : shape.all_face_handles()) {
-      unsigned char bits = 0;
-      for (int i = 0; i < 3; ++i) {
-        const Face neighbor = face->neighbor(i);
-        bool in_complex = face->info().interior || neighbor->info().interior;
-        if (!in_complex && !shape.is_infinite(face, i)) {
-          in_complex = squared_radius(face->vertex(Delaunay::ccw(i))->point(),
-                                      face->vertex(Delaunay::cw(i))->point()) <= alpha &&
-                       !attached(face, i) && !attached(neighbor, neighbor->index(face));
+    ForEachFaceRange([&](Delaunay::All_faces_iterator it, size_t count) {
+      for (; count > 0; --count, ++it) {
+        const Face face = it;
+        unsigned char bits = 0;
+        for (int i = 0; i < 3; ++i) {
+          const Face neighbor = face->neighbor(i);
+          bool in_complex = face->info().interior || neighbor->info().interior;
+          if (!in_complex && !shape.is_infinite(face, i)) {
+            in_complex = squared_radius(face->vertex(Delaunay::ccw(i))->point(),
+                                        face->vertex(Delaunay::cw(i))->point()) <= alpha &&
+                         !attached(face, i) && !attached(neighbor, neighbor->index(face));
+          }
+          if (in_complex) bits |= static_cast<unsigned char>(1 << i);
         }
-        if (in_complex) bits |= static_cast<unsigned char>(1 << i);
+        face->info().in_complex = bits;
       }
-      face->info().in_complex = bits;
+    });
+  }
+
+  // Where each range of all faces starts (ParallelRangeCount's split): one
+  // pass through the face container, on first use (the triangulation does
+  // not change here, so they stay valid).
+  const std::vector<Delaunay::All_faces_iterator>& FaceRangeStarts() {
+    if (!face_range_starts.empty()) return face_range_starts;
+    const size_t count = shape.tds().number_of_faces();
+    const int ranges = ParallelRangeCount(count, kMinFacesPerRange);
+    std::vector<Delaunay::All_faces_iterator>& starts = face_range_starts;
+    starts.reserve(ranges);
+    starts.push_back(shape.all_faces_begin());
+    if (ranges > 1) {
+      size_t index = 0;
+      for (auto face = shape.all_faces_begin(); face != shape.all_faces_end(); ++face, ++index) {
+        if (index == ParallelRangeBegin(count, ranges, static_cast<int>(starts.size()))) {
+          starts.push_back(face);
+          if (static_cast<int>(starts.size()) == ranges) break;
+        }
+      }
     }
+    return starts;
+  }
+
+  // body(first, count, range) for each range of all faces (FaceRangeStarts),
+  // in parallel: what each writes must be its own faces'.
+  template <typename Body>
+  void ForEachFaceRange(const Body& body) {
+    const std::vector<Delaunay::All_faces_iterator>& starts = FaceRangeStarts();
+    ForEachRange(shape.tds().number_of_faces(), static_cast<int>(starts.size()),
+                 [&](size_t begin, size_t end, int range) {
+                   if constexpr (std::is_invocable_v<Body, Delaunay::All_faces_iterator, size_t>) {
+                     body(starts[range], end - begin);
+                   } else {
+                     body(starts[range], end - begin, range);
+                   }
+                 });
+  }
+
+  // Sets `field` of every face (finite only, unless `infinite_too`).
+  template <typename Field, typename Value>
+  void ResetFaces(Field FaceInfo::*field, Value value, bool infinite_too) {
+    ForEachFaceRange([&](Delaunay::All_faces_iterator face, size_t count) {
+      for (; count > 0; --count, ++face) {
+        if (infinite_too || !shape.is_infinite(face)) face->info().*field = value;
+      }
+    });
   }
 
   // Alpha_shape_2::classify(face) != EXTERIOR.
@@ -136,7 +201,7 @@ struct SiteAlphaShape::Impl {
   template <typename Member, typename Connects>
   int LabelRegions(const Member& member, const Connects& connects, int FaceInfo::*label) {
     int count = 0;
-    for (Face face : shape.finite_face_handles()) face->info().*label = -1;
+    ResetFaces(label, -1, /*infinite_too=*/false);
     std::vector<Face> stack;
     for (Face seed : shape.finite_face_handles()) {
       if (seed->info().*label >= 0 || !member(seed)) continue;
@@ -172,7 +237,7 @@ struct SiteAlphaShape::Impl {
   // ring keeps its region on the left; at a vertex where the region touches
   // itself the walk stays within the faces it came through.
   std::map<int, std::vector<PointList>> RegionRings(int FaceInfo::*label, int only = -1) {
-    for (Face face : shape.all_face_handles()) face->info().walked = 0;
+    ResetFaces(&FaceInfo::walked, static_cast<unsigned char>(0), /*infinite_too=*/true);
     std::map<int, std::vector<PointList>> rings;
     auto on_boundary = [&](const Face& face, int i) {
       const Face other = face->neighbor(i);
@@ -237,6 +302,89 @@ struct SiteAlphaShape::Impl {
     return shape.is_infinite(face) ? -1 : face->info().filled_region;
   }
 
+  // What EnclosedRegionAt(point, vertex) finds walking from the vertex's
+  // face `start` (const: no state read or written), and what the state
+  // between calls needs of it (Apply). A point inside a face has one answer,
+  // however the walk starts, so the short walk from the vertex's own face
+  // gives it (kFace: the plain walk would end there too). A point on an edge
+  // or vertex (or outside the hull) gets the face where the plain walk from
+  // `hint` stops; when all the faces it could stop in agree, that walk
+  // (needed only as the next start) is put off (kAgree), else it runs
+  // (kWalk), after those put off before. Without `start`: kWalk.
+  enum class Kind : char { kFace, kAgree, kWalk };
+  struct Probe {
+    Kind kind;
+    int region;
+    Face face;
+  };
+  Probe ProbeAt(const Eigen::Vector2d& point, const Face& start) const {
+    if (start == Face()) return {Kind::kWalk, -1, Face()};
+    const Kernel::Point_2 at(point.x(), point.y());
+    Face found = shape.inexact_locate(at, start);
+    Delaunay::Locate_type type = Delaunay::OUTSIDE_CONVEX_HULL;
+    int index = 4;
+    if (!shape.is_infinite(found)) {
+      // Where `at` lies in the face the inexact walk found, exactly (as the
+      // exact walk classifies it); a negative side means it is not there.
+      const auto orientation = shape.geom_traits().orientation_2_object();
+      const Kernel::Point_2& a = found->vertex(0)->point();
+      const Kernel::Point_2& b = found->vertex(1)->point();
+      const Kernel::Point_2& c = found->vertex(2)->point();
+      const CGAL::Orientation o0 = orientation(a, b, at), o1 = orientation(b, c, at),
+                              o2 = orientation(c, a, at);
+      if (o0 == CGAL::NEGATIVE || o1 == CGAL::NEGATIVE || o2 == CGAL::NEGATIVE) {
+        found = shape.locate(at, type, index, found);
+      } else {
+        const int zeros = (o0 == CGAL::ZERO) + (o1 == CGAL::ZERO) + (o2 == CGAL::ZERO);
+        if (zeros == 0) {
+          type = Delaunay::FACE;
+        } else if (zeros == 1) {
+          type = Delaunay::EDGE;
+          index = o0 == CGAL::ZERO ? 2 : (o1 == CGAL::ZERO ? 0 : 1);
+        } else {
+          type = Delaunay::VERTEX;
+          index = o0 != CGAL::ZERO ? 2 : (o1 != CGAL::ZERO ? 0 : 1);
+        }
+      }
+    } else {
+      found = shape.locate(at, type, index, found);
+    }
+    if (type == Delaunay::FACE) return {Kind::kFace, found->info().filled_region, found};
+    const int region = FilledRegion(shape, found);
+    bool agree = true;
+    if (type == Delaunay::EDGE) {
+      agree = FilledRegion(shape, found->neighbor(index)) == region;
+    } else if (type == Delaunay::VERTEX) {
+      auto around = shape.incident_faces(found->vertex(index)), end = around;
+      do {
+        agree = FilledRegion(shape, around) == region;
+      } while (agree && ++around != end);
+    }
+    return {agree ? Kind::kAgree : Kind::kWalk, region, Face()};
+  }
+
+  // The state change of a probe of `point`, and its answer (kWalk walks).
+  int Apply(const Probe& probe, const Eigen::Vector2d& point) {
+    switch (probe.kind) {
+      case Kind::kFace:
+        unwalked.clear();
+        hint = probe.face;
+        return probe.region;
+      case Kind::kAgree:
+        unwalked.emplace_back(point.x(), point.y());
+        return probe.region;
+      case Kind::kWalk:
+        break;
+    }
+    return FilledRegion(shape, Locate(point));
+  }
+
+  void PrefetchVertexFace(int vertex) const {
+    if (vertex < static_cast<int>(vertex_face.size()) && vertex_face[vertex] != Face()) {
+      __builtin_prefetch(&*vertex_face[vertex]);
+    }
+  }
+
   // The face of Voronoi vertex `vertex`, or null.
   Face VertexFace(int vertex) {
     if (!vertex_faces_built) {
@@ -296,11 +444,18 @@ std::vector<double> SiteAlphaShape::FindEnclosedRegions() {
   // Outside: what infinity reaches without crossing the alpha complex. Edges
   // of the complex (singular ones too) are walls, so a thin wall whose
   // sliver triangles are wider than alpha still closes the map.
+  // (The flags over ranges of the faces; the walk's result does not depend
+  // on the order of its starts.)
+  std::vector<std::vector<Face>> infinite(impl.FaceRangeStarts().size());
+  impl.ForEachFaceRange([&](Delaunay::All_faces_iterator face, size_t count, int range) {
+    for (; count > 0; --count, ++face) {
+      face->info().outside = impl.shape.is_infinite(face);
+      if (face->info().outside) infinite[range].push_back(face);
+    }
+  });
   std::vector<Face> stack;
-  for (Face face : impl.shape.all_face_handles()) {
-    face->info().outside = impl.shape.is_infinite(face);
-    if (face->info().outside) stack.push_back(face);
-  }
+  for (const std::vector<Face>& faces : infinite)
+    stack.insert(stack.end(), faces.begin(), faces.end());
   Impl::Spread(&stack, [](const Face& face, int i, const Face& next) {
     if (next->info().outside || Impl::InComplex(face, i)) return false;
     next->info().outside = true;
@@ -324,64 +479,55 @@ int SiteAlphaShape::EnclosedRegionAt(const Eigen::Vector2d& point) {
 int SiteAlphaShape::EnclosedRegionAt(const Eigen::Vector2d& point, int vertex) {
   Impl& impl = *impl_;
   if (!impl.HasFaces() || impl.enclosed_regions == 0) return -1;
-  const Face start = impl.VertexFace(vertex);
-  if (start == Face()) return EnclosedRegionAt(point);
-  // The answer is that of the plain walk from `hint` (where the last one
-  // ended). A point inside a face has one answer, however the walk starts,
-  // so the short walk from the vertex's own face gives it. A point on an
-  // edge or vertex (or outside the hull) gets the face where the plain walk
-  // stops; when all the faces it could stop in agree, that walk (needed only
-  // as the next start) is put off, else it runs, after those put off before.
-  const Kernel::Point_2 at(point.x(), point.y());
-  Face found = impl.shape.inexact_locate(at, start);
-  Delaunay::Locate_type type = Delaunay::OUTSIDE_CONVEX_HULL;
-  int index = 4;
-  if (!impl.shape.is_infinite(found)) {
-    // Where `at` lies in the face the inexact walk found, exactly (as the
-    // exact walk classifies it); a negative side means it is not there.
-    const auto orientation = impl.shape.geom_traits().orientation_2_object();
-    const Kernel::Point_2& a = found->vertex(0)->point();
-    const Kernel::Point_2& b = found->vertex(1)->point();
-    const Kernel::Point_2& c = found->vertex(2)->point();
-    const CGAL::Orientation o0 = orientation(a, b, at), o1 = orientation(b, c, at),
-                            o2 = orientation(c, a, at);
-    if (o0 == CGAL::NEGATIVE || o1 == CGAL::NEGATIVE || o2 == CGAL::NEGATIVE) {
-      found = impl.shape.locate(at, type, index, found);
-    } else {
-      const int zeros = (o0 == CGAL::ZERO) + (o1 == CGAL::ZERO) + (o2 == CGAL::ZERO);
-      if (zeros == 0) {
-        type = Delaunay::FACE;
-      } else if (zeros == 1) {
-        type = Delaunay::EDGE;
-        index = o0 == CGAL::ZERO ? 2 : (o1 == CGAL::ZERO ? 0 : 1);
-      } else {
-        type = Delaunay::VERTEX;
-        index = o0 != CGAL::ZERO ? 2 : (o1 != CGAL::ZERO ? 0 : 1);
-      }
+  const Impl::Probe probe = impl.ProbeAt(point, impl.VertexFace(vertex));
+  return impl.Apply(probe, point);
+}
+
+std::vector<int> SiteAlphaShape::EnclosedRegionsAt(const PointList& points,
+                                                   const std::function<bool(int)>& wanted) {
+  Impl& impl = *impl_;
+  std::vector<int> regions(points.size(), -1);
+  if (!impl.HasFaces() || impl.enclosed_regions == 0) return regions;
+  impl.VertexFace(-1);  // built before the ranges read it
+  // Each range probes its points from their own faces (const walks) and
+  // keeps, in order, what the state between calls needs: the walks put off
+  // and those that depend on the last hint, after the last face found
+  // before them (earlier ones are overwritten by it). Replayed in order
+  // below, they leave the answers and `hint` as the calls one by one do.
+  struct Event {
+    int index;
+    Impl::Kind kind;
+    Face face;
+  };
+  const auto events = MapRanges<std::vector<Event>>(
+      points.size(), kMinPointsPerRange, [&](size_t begin, size_t end) {
+        std::vector<Event> kept;
+        Face last_face;
+        for (size_t i = begin; i < end; ++i) {
+          if (i + kAhead < end) impl.PrefetchVertexFace(static_cast<int>(i + kAhead));
+          if (!wanted(static_cast<int>(i))) continue;
+          const Impl::Probe probe = impl.ProbeAt(points[i], impl.VertexFace(static_cast<int>(i)));
+          if (probe.kind == Impl::Kind::kFace) {
+            last_face = probe.face;
+            regions[i] = probe.region;
+            continue;
+          }
+          if (last_face != Face()) kept.push_back({-1, Impl::Kind::kFace, last_face});
+          last_face = Face();
+          if (probe.kind == Impl::Kind::kAgree) regions[i] = probe.region;
+          kept.push_back({static_cast<int>(i), probe.kind, Face()});
+        }
+        if (last_face != Face()) kept.push_back({-1, Impl::Kind::kFace, last_face});
+        return kept;
+      });
+  for (const std::vector<Event>& range : events) {
+    for (const Event& event : range) {
+      const Eigen::Vector2d& point = event.index >= 0 ? points[event.index] : Eigen::Vector2d();
+      const int region = impl.Apply({event.kind, -1, event.face}, point);
+      if (event.kind == Impl::Kind::kWalk) regions[event.index] = region;
     }
-  } else {
-    found = impl.shape.locate(at, type, index, found);
   }
-  if (type == Delaunay::FACE) {
-    impl.unwalked.clear();
-    impl.hint = found;
-    return found->info().filled_region;
-  }
-  const int region = Impl::FilledRegion(impl.shape, found);
-  bool agree = true;
-  if (type == Delaunay::EDGE) {
-    agree = Impl::FilledRegion(impl.shape, found->neighbor(index)) == region;
-  } else if (type == Delaunay::VERTEX) {
-    auto around = impl.shape.incident_faces(found->vertex(index)), end = around;
-    do {
-      agree = Impl::FilledRegion(impl.shape, around) == region;
-    } while (agree && ++around != end);
-  }
-  if (agree) {
-    impl.unwalked.push_back(at);
-    return region;
-  }
-  return Impl::FilledRegion(impl.shape, impl.Locate(point));
+  return regions;
 }
 
 proto::Polygon SiteAlphaShape::EnclosedRegionOutline(int region) {

@@ -47,6 +47,12 @@ class SiteAlphaShape {
   // at the vertex's Delaunay face when the triangulation is voronoi's, and
   // the answer is always EnclosedRegionAt's.
   int EnclosedRegionAt(const Eigen::Vector2d& point, int vertex);
+  // EnclosedRegionAt(points[v], v) for every v that `wanted` accepts, in
+  // order (-1 for the others), with the same answers and the same state
+  // left for later calls; the walks run over ranges of the points in
+  // parallel (OpenCV's pool), so `wanted` is called from several threads.
+  std::vector<int> EnclosedRegionsAt(const PointList& points,
+                                     const std::function<bool(int)>& wanted);
   // For a triangulation made here rather than voronoi's (whose faces name no
   // Voronoi vertex): names each vertex's face by matching `positions`
   // (BuildVoronoiDiagram's, one per circle at its first face's circumcentre,

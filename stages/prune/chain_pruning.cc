@@ -6,6 +6,8 @@
 #include <numeric>
 #include <utility>
 
+#include "stages/geometry/parallel_ranges.h"
+
 namespace areagraph {
 namespace {
 
@@ -27,8 +29,12 @@ std::vector<int> Degrees(const std::vector<std::vector<Incidence>>& incidences) 
 std::vector<int> EdgesByLength(const ChainGraph& graph) {
   std::vector<int> order(graph.edges.size());
   std::iota(order.begin(), order.end(), 0);
+  // The lengths over ranges of the chains in parallel (each its own).
   std::vector<double> length(graph.edges.size());
-  for (size_t e = 0; e < graph.edges.size(); ++e) length[e] = graph.edges[e].Length();
+  ForEachRange(graph.edges.size(), ParallelRangeCount(graph.edges.size(), 256),
+               [&](size_t begin, size_t end, int) {
+                 for (size_t e = begin; e < end; ++e) length[e] = graph.edges[e].Length();
+               });
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return length[a] < length[b]; });
   return order;
 }

@@ -15,6 +15,7 @@
 #include "stages/common/voronoi_arrays.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/region_boxes.h"
 #include "stages/geometry/site_alpha_shape.h"
 #include "stages/prune/chain_graph.h"
@@ -31,6 +32,17 @@ constexpr double kSamePointPx = 1e-6;
 // memory they will read at random (__builtin_prefetch): on a big map the
 // grid, the vertices' positions and their flags do not fit in the caches.
 constexpr int kAhead = 16;
+
+// Below this many chains per range ToProto builds the edges' messages in the
+// calling thread (a range is a task on OpenCV's pool; each chain's messages
+// are a few dozen allocations).
+constexpr size_t kMinEdgesPerRange = 64;
+// Below this many Voronoi edges per range the filter runs in the calling
+// thread.
+constexpr size_t kMinEdgesPerFilterRange = 16384;
+// Below this many entries per range the diagram's arrays are copied in the
+// calling thread.
+constexpr size_t kMinCopiesPerRange = 32768;
 
 // Asks for the grid's cell under `point` (as CellGrid::FreeAt reads it).
 inline void PrefetchCell(const CellGrid& grid, const Eigen::Vector2d& point) {
@@ -59,6 +71,7 @@ inline void CheckIndex(int index, int size, const char* element, int edge) {
 // boundary shape is built: on a big map the two would be most of the peak.
 struct PlainVoronoi {
   struct Edge {
+    Edge() {}  // left unset: the copy below fills every entry, over ranges
     int source;
     int target;
     int left_site;
@@ -71,27 +84,41 @@ struct PlainVoronoi {
   std::vector<Edge> edges;
 
   // `diagram` holds arrays of matching lengths (PackedVoronoi), read here
-  // through their data pointers (millions of entries on a big map).
+  // through their data pointers (millions of entries on a big map), over
+  // ranges in parallel: the sized arrays are not written until then, so
+  // their fresh pages are touched in the ranges too.
   explicit PlainVoronoi(const proto::VoronoiDiagram& diagram)
       : clearances(diagram.vertex_clearance_px().begin(), diagram.vertex_clearance_px().end()) {
-    const double* site_x = diagram.site_x().data();
-    const double* site_y = diagram.site_y().data();
-    sites.reserve(diagram.site_x_size());
-    for (int s = 0; s < diagram.site_x_size(); ++s) sites.emplace_back(site_x[s], site_y[s]);
-    const double* vertex_x = diagram.vertex_x().data();
-    const double* vertex_y = diagram.vertex_y().data();
-    positions.reserve(diagram.vertex_x_size());
-    for (int v = 0; v < diagram.vertex_x_size(); ++v)
-      positions.emplace_back(vertex_x[v], vertex_y[v]);
+    CopyPoints(diagram.site_x().data(), diagram.site_y().data(), diagram.site_x_size(), &sites);
+    CopyPoints(diagram.vertex_x().data(), diagram.vertex_y().data(), diagram.vertex_x_size(),
+               &positions);
     const int* source = diagram.edge_source().data();
     const int* target = diagram.edge_target().data();
     const int* left = diagram.edge_left_site().data();
     const int* right = diagram.edge_right_site().data();
     const double* clearance = diagram.edge_clearance_px().data();
-    edges.reserve(diagram.edge_source_size());
-    for (int e = 0; e < diagram.edge_source_size(); ++e) {
-      edges.push_back({source[e], target[e], left[e], right[e], clearance[e]});
-    }
+    const size_t count = diagram.edge_source_size();
+    edges.resize(count);
+    ForEachRange(count, ParallelRangeCount(count, kMinCopiesPerRange),
+                 [&](size_t begin, size_t end, int) {
+                   for (size_t e = begin; e < end; ++e) {
+                     Edge& edge = edges[e];
+                     edge.source = source[e];
+                     edge.target = target[e];
+                     edge.left_site = left[e];
+                     edge.right_site = right[e];
+                     edge.clearance_px = clearance[e];
+                   }
+                 });
+  }
+
+  static void CopyPoints(const double* x, const double* y, size_t count, PointList* out) {
+    out->resize(count);  // Eigen's vectors stay unset
+    Eigen::Vector2d* points = out->data();
+    ForEachRange(count, ParallelRangeCount(count, kMinCopiesPerRange),
+                 [&](size_t begin, size_t end, int) {
+                   for (size_t i = begin; i < end; ++i) points[i] = Eigen::Vector2d(x[i], y[i]);
+                 });
   }
 };
 
@@ -120,44 +147,72 @@ FilteredGraph FilteredVoronoiGraph(const PlainVoronoi& diagram, const CellGrid& 
                                    double min_clearance_px) {
   const int vertex_count = static_cast<int>(diagram.positions.size());
   const int site_count = static_cast<int>(diagram.sites.size());
-  std::vector<char> keep(vertex_count, 0);
-  std::vector<int> region(vertex_count, -1);
-  for (int v = 0; v < vertex_count; ++v) {
+  // The region of every vertex on a free cell (over ranges of the vertices
+  // in parallel; the grid is only read).
+  const std::vector<int> region = boundary_shape->EnclosedRegionsAt(diagram.positions, [&](int v) {
     if (v + kAhead < vertex_count) PrefetchCell(grid, diagram.positions[v + kAhead]);
-    const Eigen::Vector2d& p = diagram.positions[v];
-    if (!grid.FreeAt(p)) continue;
-    region[v] = boundary_shape->EnclosedRegionAt(p, v);
-    keep[v] = region[v] >= 0;
-  }
+    return grid.FreeAt(diagram.positions[v]);
+  });
+  std::vector<char> keep(vertex_count, 0);
+  for (int v = 0; v < vertex_count; ++v) keep[v] = region[v] >= 0;
 
+  // The edges over ranges in parallel: each range keeps its edges and the
+  // pairs of vertices at one point, in edge order, and stops at its first
+  // bad index; the first range's error is thrown, as the serial loop would.
+  struct RangeEdges {
+    std::vector<int> kept;
+    std::vector<std::pair<int, int>> same;
+    int bad_edge = -1;  // the first edge naming a missing vertex or site
+  };
+  const int edge_count = static_cast<int>(diagram.edges.size());
+  const auto ranges =
+      MapRanges<RangeEdges>(edge_count, kMinEdgesPerFilterRange, [&](size_t begin, size_t end) {
+        RangeEdges out;
+        auto bad = [](int index, int size) { return index < 0 || index >= size; };
+        for (size_t e = begin; e < end; ++e) {
+          if (e + kAhead < end) {
+            const PlainVoronoi::Edge& ahead = diagram.edges[e + kAhead];
+            for (const int v : {ahead.source, ahead.target}) {
+              if (v >= 0 && v < vertex_count) {
+                __builtin_prefetch(&keep[v]);
+                __builtin_prefetch(&diagram.positions[v]);
+              }
+            }
+          }
+          const PlainVoronoi::Edge& edge = diagram.edges[e];
+          if (bad(edge.source, vertex_count) ||
+              (edge.target >= 0 &&
+               (bad(edge.target, vertex_count) || bad(edge.left_site, site_count) ||
+                bad(edge.right_site, site_count)))) {
+            out.bad_edge = static_cast<int>(e);
+            break;
+          }
+          if (edge.target < 0) continue;  // a ray
+          if (!keep[edge.source] || !keep[edge.target]) continue;
+          if (!(edge.clearance_px >= min_clearance_px)) continue;
+          const Eigen::Vector2d& a = diagram.positions[edge.source];
+          const Eigen::Vector2d& b = diagram.positions[edge.target];
+          if ((a - b).norm() < kSamePointPx) {
+            out.same.emplace_back(edge.source, edge.target);
+          } else {
+            out.kept.push_back(static_cast<int>(e));
+          }
+        }
+        return out;
+      });
   DisjointSets same_point(vertex_count);
   std::vector<int> kept_edges;
-  const int edge_count = static_cast<int>(diagram.edges.size());
-  for (int e = 0; e < edge_count; ++e) {
-    if (e + kAhead < edge_count) {
-      const PlainVoronoi::Edge& ahead = diagram.edges[e + kAhead];
-      for (const int v : {ahead.source, ahead.target}) {
-        if (v >= 0 && v < vertex_count) {
-          __builtin_prefetch(&keep[v]);
-          __builtin_prefetch(&diagram.positions[v]);
-        }
-      }
+  for (const RangeEdges& range : ranges) {
+    if (range.bad_edge >= 0) {
+      const int e = range.bad_edge;
+      const PlainVoronoi::Edge& edge = diagram.edges[e];
+      CheckIndex(edge.source, vertex_count, "vertex", e);
+      CheckIndex(edge.target, vertex_count, "vertex", e);
+      CheckIndex(edge.left_site, site_count, "site", e);
+      CheckIndex(edge.right_site, site_count, "site", e);
     }
-    const PlainVoronoi::Edge& edge = diagram.edges[e];
-    CheckIndex(edge.source, vertex_count, "vertex", e);
-    if (edge.target < 0) continue;  // a ray
-    CheckIndex(edge.target, vertex_count, "vertex", e);
-    CheckIndex(edge.left_site, site_count, "site", e);
-    CheckIndex(edge.right_site, site_count, "site", e);
-    if (!keep[edge.source] || !keep[edge.target]) continue;
-    if (!(edge.clearance_px >= min_clearance_px)) continue;
-    const Eigen::Vector2d& a = diagram.positions[edge.source];
-    const Eigen::Vector2d& b = diagram.positions[edge.target];
-    if ((a - b).norm() < kSamePointPx) {
-      same_point.Union(edge.source, edge.target);
-    } else {
-      kept_edges.push_back(e);
-    }
+    for (const auto& [a, b] : range.same) same_point.Union(a, b);
+    kept_edges.insert(kept_edges.end(), range.kept.begin(), range.kept.end());
   }
 
   FilteredGraph filtered;
@@ -274,25 +329,44 @@ proto::TopologyGraph ToProto(ChainGraph graph, const proto::MapFrame& frame,
     vertex->set_kind(incidences[v].size() == 1 ? proto::VERTEX_DEAD_END : proto::VERTEX_JUNCTION);
     vertex->set_clearance_px(graph.vertices[v].clearance_px);
   }
-  for (ChainEdge& chain : graph.edges) {
-    if (chain.removed) continue;
-    proto::GraphEdge* edge = out.add_edges();
-    edge->set_id(out.edges_size() - 1);
-    edge->set_source(new_id[chain.source]);
-    edge->set_target(new_id[chain.target]);
-    AppendPoints(chain.path, edge->mutable_path());
-    AppendPoints(chain.left_sites, edge->mutable_left_sites());
-    AppendPoints(chain.right_sites, edge->mutable_right_sites());
-    for (double c : chain.clearance_px) edge->add_clearance_px(c);
-    for (proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = std::move(polygon);
-    edge->set_length_px(chain.Length());
-    edge->set_min_clearance_px(chain.min_clearance_px);
-    // UpdateEdgePolygons' rings, from the chain's lists rather than read
-    // back out of the messages just written.
-    *edge->mutable_left_half()->mutable_outer() = HalfPolygonRing(chain.path, chain.left_sites);
-    *edge->mutable_right_half()->mutable_outer() = HalfPolygonRing(chain.path, chain.right_sites);
-    *edge->mutable_polygon()->mutable_outer() =
-        EdgePolygonRing(chain.path, chain.left_sites, chain.right_sites);
+  // The edges' messages (a heap allocation per point: most of the encoding)
+  // are built over ranges of the chains in parallel, and taken over in order.
+  std::vector<int> edge_id(graph.edges.size(), -1);
+  int kept = 0;
+  for (size_t e = 0; e < graph.edges.size(); ++e) {
+    if (!graph.edges[e].removed) edge_id[e] = kept++;
+  }
+  auto built = MapRanges<std::vector<std::unique_ptr<proto::GraphEdge>>>(
+      graph.edges.size(), kMinEdgesPerRange, [&](size_t begin, size_t end) {
+        std::vector<std::unique_ptr<proto::GraphEdge>> edges;
+        for (size_t e = begin; e < end; ++e) {
+          ChainEdge& chain = graph.edges[e];
+          if (chain.removed) continue;
+          proto::GraphEdge* edge = edges.emplace_back(new proto::GraphEdge()).get();
+          edge->set_id(edge_id[e]);
+          edge->set_source(new_id[chain.source]);
+          edge->set_target(new_id[chain.target]);
+          AppendPoints(chain.path, edge->mutable_path());
+          AppendPoints(chain.left_sites, edge->mutable_left_sites());
+          AppendPoints(chain.right_sites, edge->mutable_right_sites());
+          for (double c : chain.clearance_px) edge->add_clearance_px(c);
+          for (proto::Polygon& polygon : chain.absorbed) *edge->add_absorbed() = std::move(polygon);
+          edge->set_length_px(chain.Length());
+          edge->set_min_clearance_px(chain.min_clearance_px);
+          // UpdateEdgePolygons' rings, from the chain's lists rather than read
+          // back out of the messages just written.
+          *edge->mutable_left_half()->mutable_outer() =
+              HalfPolygonRing(chain.path, chain.left_sites);
+          *edge->mutable_right_half()->mutable_outer() =
+              HalfPolygonRing(chain.path, chain.right_sites);
+          *edge->mutable_polygon()->mutable_outer() =
+              EdgePolygonRing(chain.path, chain.left_sites, chain.right_sites);
+        }
+        return edges;
+      });
+  out.mutable_edges()->Reserve(kept);
+  for (auto& edges : built) {
+    for (auto& edge : edges) out.mutable_edges()->AddAllocated(edge.release());
   }
   return out;
 }
