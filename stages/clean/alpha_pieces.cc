@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
+#include <limits>
 
 #include "stages/geometry/alpha_shape.h"
 #include "stages/geometry/cell_states.h"
@@ -65,13 +66,94 @@ ClusterShape ShapeOfCluster(const std::vector<int>& cells, int width, double alp
   return shape;
 }
 
-// A run of point cells in one row: columns [begin, end), points first ...
-struct PointRun {
-  int row;
-  int begin;
-  int end;
-  int first;
+// Per point its loose and strict cluster (see FurniturePiecesByClusters),
+// numbered by first point.
+struct PointClusters {
+  std::vector<int> loose, strict;
+  int loose_count = 0, strict_count = 0;
 };
+
+// Points in square buckets small enough that any two of one bucket are
+// strictly close; buckets joined when two of their points are close enough
+// (pairs tested only while the buckets are apart in either relation).
+PointClusters ClusterPoints(const std::vector<int>& cells, int width, int height, double loose,
+                            double strict) {
+  long side = 1;  // bucket side - 1: its diagonal's square 2 side^2 < strict
+  while (2.0 * double((side + 1) * (side + 1)) < strict) ++side;
+  const int bucket = int(side) + 1;
+  const int columns = (width + bucket - 1) / bucket, rows = (height + bucket - 1) / bucket;
+  // Buckets whose nearest cells lie within the loose distance.
+  const int reach = int(std::ceil(std::sqrt(loose))) / bucket + 1;
+  std::vector<int> bucket_of(cells.size());
+  std::vector<int> start(size_t(columns) * rows + 1, 0);
+  for (size_t p = 0; p < cells.size(); ++p) {
+    bucket_of[p] = (cells[p] / width / bucket) * columns + (cells[p] % width) / bucket;
+    ++start[bucket_of[p] + 1];
+  }
+  for (size_t b = 0; b + 1 < start.size(); ++b) start[b + 1] += start[b];
+  // Points bucket by bucket: their columns and rows, and each bucket's box.
+  std::vector<int> col(cells.size()), row(cells.size());
+  std::vector<int> box(4 * (start.size() - 1));  // min col, max col, min row, max row
+  {
+    std::vector<int> next(start.begin(), start.end() - 1);
+    for (size_t p = 0; p < cells.size(); ++p) {
+      const int b = bucket_of[p], at = next[b]++;
+      col[at] = cells[p] % width;
+      row[at] = cells[p] / width;
+      int* bounds = &box[4 * size_t(b)];
+      if (at == start[b]) {
+        bounds[0] = bounds[1] = col[at];
+        bounds[2] = bounds[3] = row[at];
+      }
+      bounds[0] = std::min(bounds[0], col[at]);
+      bounds[1] = std::max(bounds[1], col[at]);
+      bounds[3] = row[at];  // rows come in order
+    }
+  }
+  DisjointSets loose_sets(size_t(columns) * rows), strict_sets(size_t(columns) * rows);
+  for (int b = 0; b < columns * rows; ++b) {
+    if (start[b] == start[b + 1]) continue;
+    const int bx = b % columns, by = b / columns;
+    const int* a_box = &box[4 * size_t(b)];
+    for (int dy = 0; dy <= reach && by + dy < rows; ++dy) {
+      for (int dx = dy == 0 ? 1 : -reach; dx <= reach; ++dx) {
+        if (bx + dx < 0 || bx + dx >= columns) continue;
+        const int o = b + dy * columns + dx;
+        if (start[o] == start[o + 1]) continue;
+        // The boxes' gap bounds every pair's distance from below.
+        const int* o_box = &box[4 * size_t(o)];
+        const long gap_c = std::max({0, o_box[0] - a_box[1], a_box[0] - o_box[1]});
+        const long gap_r = std::max({0, o_box[2] - a_box[3], a_box[2] - o_box[3]});
+        if (double(gap_c * gap_c + gap_r * gap_r) > loose) continue;
+        const bool loose_apart = loose_sets.Find(b) != loose_sets.Find(o);
+        const bool strict_apart = strict_sets.Find(b) != strict_sets.Find(o);
+        if (!loose_apart && !strict_apart) continue;
+        long nearest = std::numeric_limits<long>::max();
+        for (int i = start[b]; i < start[b + 1] && double(nearest) >= strict; ++i) {
+          for (int j = start[o]; j < start[o + 1]; ++j) {
+            const long dc = col[j] - col[i], dr = row[j] - row[i];
+            nearest = std::min(nearest, dc * dc + dr * dr);
+          }
+        }
+        if (double(nearest) <= loose) loose_sets.Union(b, o);
+        if (double(nearest) < strict) strict_sets.Union(b, o);
+      }
+    }
+  }
+  PointClusters clusters;
+  clusters.loose.resize(cells.size());
+  clusters.strict.resize(cells.size());
+  std::vector<int> loose_number(size_t(columns) * rows, -1), strict_number(loose_number);
+  for (size_t p = 0; p < cells.size(); ++p) {
+    int& l = loose_number[loose_sets.Find(bucket_of[p])];
+    if (l < 0) l = clusters.loose_count++;
+    clusters.loose[p] = l;
+    int& s = strict_number[strict_sets.Find(bucket_of[p])];
+    if (s < 0) s = clusters.strict_count++;
+    clusters.strict[p] = s;
+  }
+  return clusters;
+}
 
 // Enough points for two threads to pay (a cluster's triangulation costs
 // some microseconds per point).
@@ -143,72 +225,29 @@ bool FurniturePiecesByClusters(const std::vector<int>& point_cells, int width, i
   const double loose = 4 * alpha * (1 + 1e-9);
   const double strict = 4 * alpha * (1 - 1e-9);
 
-  // The points' runs; a run's cells are one region's (neighbours are).
-  std::vector<PointRun> runs;
-  std::vector<int> row_start(size_t(height) + 1, 0);
+  const PointClusters clusters = ClusterPoints(point_cells, width, height, loose, strict);
+  std::vector<uint8_t> strict_outline(clusters.strict_count, 0);
   for (size_t p = 0; p < point_cells.size(); ++p) {
-    const int row = point_cells[p] / width;
-    const int col = point_cells[p] % width;
-    if (!runs.empty() && runs.back().row == row && runs.back().end == col) {
-      ++runs.back().end;
-    } else {
-      runs.push_back({row, col, col + 1, int(p)});
-      ++row_start[row + 1];
-    }
-  }
-  for (int row = 0; row < height; ++row) row_start[row + 1] += row_start[row];
-
-  // Runs join when their nearest cells are close enough.
-  DisjointSets loose_sets(runs.size()), strict_sets(runs.size());
-  const int reach = int(std::floor(std::sqrt(loose)));
-  for (size_t i = 0; i < runs.size(); ++i) {
-    const PointRun& a = runs[i];
-    for (int dr = 0; dr <= reach && a.row + dr < height; ++dr) {
-      const long dr2 = long(dr) * dr;
-      const int span = int(std::floor(std::sqrt(loose - double(dr2))));
-      const auto row_end = runs.begin() + row_start[a.row + dr + 1];
-      auto b = dr == 0 ? runs.begin() + long(i) + 1
-                       : std::lower_bound(
-                             runs.begin() + row_start[a.row + dr], row_end, a.begin - span,
-                             [](const PointRun& run, int col) { return run.end - 1 < col; });
-      for (; b != row_end && b->begin <= a.end - 1 + span; ++b) {
-        const long gap = std::max({0, b->begin - (a.end - 1), a.begin - (b->end - 1)});
-        const double d2 = double(gap * gap + dr2);
-        const int j = int(b - runs.begin());
-        if (d2 <= loose) loose_sets.Union(int(i), j);
-        if (d2 < strict) strict_sets.Union(int(i), j);
-      }
-    }
-  }
-  int loose_count = 0, strict_count = 0;
-  const std::vector<int> loose_of_run = loose_sets.DenseLabels(&loose_count);
-  const std::vector<int> strict_of_run = strict_sets.DenseLabels(&strict_count);
-  std::vector<uint8_t> strict_outline(strict_count, 0);
-  for (size_t i = 0; i < runs.size(); ++i) {
-    const int row_offset = runs[i].row * width;
-    for (int col = runs[i].begin; col < runs[i].end; ++col) {
-      strict_outline[strict_of_run[i]] |= outline[label[row_offset + col]];
-    }
+    strict_outline[clusters.strict[p]] |= outline[label[point_cells[p]]];
   }
   // A loose cluster is triangulated when one of its strict clusters has no
   // outline point; its points in order.
-  std::vector<uint8_t> needed(loose_count, 0);
-  for (size_t i = 0; i < runs.size(); ++i)
-    needed[loose_of_run[i]] |= !strict_outline[strict_of_run[i]];
-  std::vector<int> slot(loose_count, -1);
+  std::vector<uint8_t> needed(clusters.loose_count, 0);
+  for (size_t p = 0; p < point_cells.size(); ++p) {
+    needed[clusters.loose[p]] |= !strict_outline[clusters.strict[p]];
+  }
+  std::vector<int> slot(clusters.loose_count, -1);
   std::vector<std::vector<int>> cluster_points;
   size_t needed_points = 0;
-  for (size_t i = 0; i < runs.size(); ++i) {
-    if (!needed[loose_of_run[i]]) continue;
-    int& s = slot[loose_of_run[i]];
+  for (size_t p = 0; p < point_cells.size(); ++p) {
+    if (!needed[clusters.loose[p]]) continue;
+    int& s = slot[clusters.loose[p]];
     if (s < 0) {
       s = int(cluster_points.size());
       cluster_points.emplace_back();
     }
-    for (int p = runs[i].first; p < runs[i].first + (runs[i].end - runs[i].begin); ++p) {
-      cluster_points[s].push_back(p);
-    }
-    needed_points += runs[i].end - runs[i].begin;
+    cluster_points[s].push_back(int(p));
+    ++needed_points;
   }
 
   // Each cluster's shape in its own slot: no order depends on the threads.
