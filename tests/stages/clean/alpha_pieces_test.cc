@@ -5,9 +5,10 @@
 
 #include <gtest/gtest.h>
 
-#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 #include <random>
+
+#include "tests/support/thread_count.h"
 
 namespace areagraph {
 namespace {
@@ -124,15 +125,18 @@ TEST(AlphaPieces, SameOnOneThreadAndOnTwo) {
   // Enough points for the parallel path (several thousand).
   const PointSet set = RandomPoints(random, 400, 300, 900, 0.5);
   ASSERT_GT(set.cells.size(), 5000u);
-  const int threads = cv::getNumThreads();
   FurniturePieces one, two;
-  cv::setNumThreads(1);
-  const bool one_decided = FurniturePiecesByClusters(set.cells, 400, 300, set.labels.ptr<int>(),
-                                                     set.outline, 3.0, 40.0, &one);
-  cv::setNumThreads(2);
-  const bool two_decided = FurniturePiecesByClusters(set.cells, 400, 300, set.labels.ptr<int>(),
-                                                     set.outline, 3.0, 40.0, &two);
-  cv::setNumThreads(threads);
+  bool one_decided = false, two_decided = false;
+  {
+    testing::ScopedThreadCount threads(1);
+    one_decided = FurniturePiecesByClusters(set.cells, 400, 300, set.labels.ptr<int>(), set.outline,
+                                            3.0, 40.0, &one);
+  }
+  {
+    testing::ScopedThreadCount threads(2);
+    two_decided = FurniturePiecesByClusters(set.cells, 400, 300, set.labels.ptr<int>(), set.outline,
+                                            3.0, 40.0, &two);
+  }
   ASSERT_TRUE(one_decided);
   ASSERT_TRUE(two_decided);
   EXPECT_EQ(one.count, two.count);

@@ -1,11 +1,11 @@
 // Clean's compute on one pool thread and on two: the same bytes.
 #include <gtest/gtest.h>
 
-#include <opencv2/core/utility.hpp>
 #include <random>
 
 #include "stages/clean/clean_stage.h"
 #include "tests/support/test_grids.h"
+#include "tests/support/thread_count.h"
 
 namespace areagraph {
 namespace {
@@ -37,12 +37,15 @@ TEST(CleanThreads, OneThreadAndTwoGiveTheSameMap) {
   std::mt19937 random(21);
   const testing::TestGrid grid = ClutteredRooms(random, 900, 600);
   const proto::GridMap map = grid.ToGridMap();
-  const int threads = cv::getNumThreads();
-  cv::setNumThreads(1);
-  const proto::CleanedMap one = CleanGridMap(map, proto::CleanOptions());
-  cv::setNumThreads(2);
-  const proto::CleanedMap two = CleanGridMap(map, proto::CleanOptions());
-  cv::setNumThreads(threads);
+  proto::CleanedMap one, two;
+  {
+    testing::ScopedThreadCount threads(1);
+    one = CleanGridMap(map, proto::CleanOptions());
+  }
+  {
+    testing::ScopedThreadCount threads(2);
+    two = CleanGridMap(map, proto::CleanOptions());
+  }
   EXPECT_GT(one.removed_outlier_cells_size(), 100);
   EXPECT_GT(one.furniture_shapes_size(), 50);
   EXPECT_EQ(one.SerializeAsString(), two.SerializeAsString());

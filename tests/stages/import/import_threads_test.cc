@@ -3,7 +3,6 @@
 // decode error keeps its type.
 #include <gtest/gtest.h>
 
-#include <opencv2/core/utility.hpp>
 #include <opencv2/imgcodecs.hpp>
 #include <random>
 #include <vector>
@@ -12,18 +11,12 @@
 #include "stages/import/import_stage.h"
 #include "store/digest.h"
 #include "tests/support/test_support.h"
+#include "tests/support/thread_count.h"
 
 namespace areagraph {
 namespace {
 
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+using testing::ScopedThreadCount;
 
 std::string NoisyPng() {
   std::mt19937 random(3);
@@ -45,11 +38,11 @@ TEST(ImportThreads, OneThreadAndTwoGiveTheSameGridAndDigest) {
   expected.Update(bytes);
   std::string one, two, known;
   {
-    ThreadCount threads(1);
+    ScopedThreadCount threads(1);
     one = ImportGridMap(ReadImportSource(path), proto::ImportOptions()).SerializeAsString();
   }
   {
-    ThreadCount threads(2);
+    ScopedThreadCount threads(2);
     const ImportSource source = ReadImportSource(path);
     ASSERT_FALSE(source.HasDigest());
     const proto::GridMap grid = ImportGridMap(source, proto::ImportOptions());
@@ -71,7 +64,7 @@ TEST(ImportThreads, ADecodeErrorOnTwoThreadsIsStillAnInputError) {
   std::string bytes = NoisyPng();
   for (size_t i = bytes.size() / 2; i < bytes.size() / 2 + 64; ++i) bytes[i] = char(~bytes[i]);
   testing::WriteFile(path, bytes);
-  ThreadCount threads(2);
+  ScopedThreadCount threads(2);
   EXPECT_THROW(ImportGridMap(ReadImportSource(path), proto::ImportOptions()), InputError);
 }
 
