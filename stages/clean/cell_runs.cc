@@ -12,9 +12,9 @@ RunRegions FindRunRegions(const std::string& cells, int width, int height, uint8
   RunRegions found;
   std::vector<CellRun>& runs = found.runs;
   const auto* state = reinterpret_cast<const uint8_t*>(cells.data());
-  // The rows' runs in bands of rows on the pool (a band at least 64 Ki
+  // The rows' runs in bands of rows on the pool (a band at least 256 Ki
   // cells), joined in band order: row-major as one pass finds them.
-  const size_t min_rows = std::max<size_t>(1, (size_t{1} << 16) / size_t(std::max(width, 1)));
+  const size_t min_rows = std::max<size_t>(1, (size_t{1} << 18) / size_t(std::max(width, 1)));
   std::vector<std::vector<CellRun>> bands =
       MapRanges<std::vector<CellRun>>(size_t(height), min_rows, [&](size_t begin, size_t end) {
         std::vector<CellRun> band;
