@@ -1,6 +1,9 @@
 #include "stages/clean/cell_runs.h"
 
+#include <algorithm>
+
 #include "stages/clean/mask_runs.h"
+#include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/region_boxes.h"
 
 namespace areagraph {
@@ -9,15 +12,32 @@ RunRegions FindRunRegions(const std::string& cells, int width, int height, uint8
   RunRegions found;
   std::vector<CellRun>& runs = found.runs;
   const auto* state = reinterpret_cast<const uint8_t*>(cells.data());
+  // The rows' runs in bands of rows on the pool (a band at least 256 Ki
+  // cells), joined in band order: row-major as one pass finds them.
+  const size_t min_rows = std::max<size_t>(1, (size_t{1} << 18) / size_t(std::max(width, 1)));
+  std::vector<std::vector<CellRun>> bands =
+      MapRanges<std::vector<CellRun>>(size_t(height), min_rows, [&](size_t begin, size_t end) {
+        std::vector<CellRun> band;
+        for (int r = int(begin); r < int(end); ++r) {
+          ForEachRun(state + size_t(r) * width, width, bit, [&](int first, int last) {
+            band.push_back({r, first, last});
+          });
+        }
+        return band;
+      });
+  if (bands.size() == 1) {
+    runs = std::move(bands[0]);
+  } else {
+    size_t total = 0;
+    for (const std::vector<CellRun>& band : bands) total += band.size();
+    runs.reserve(total);
+    for (const std::vector<CellRun>& band : bands)
+      runs.insert(runs.end(), band.begin(), band.end());
+  }
   // Where each row's runs start in `runs` (one more entry for the end).
   std::vector<size_t> row_start(size_t(height) + 1, 0);
-  for (int r = 0; r < height; ++r) {
-    row_start[r] = runs.size();
-    ForEachRun(state + size_t(r) * width, width, bit, [&](int begin, int end) {
-      runs.push_back({r, begin, end});
-    });
-  }
-  row_start[height] = runs.size();
+  for (const CellRun& run : runs) ++row_start[size_t(run.row) + 1];
+  for (int r = 0; r < height; ++r) row_start[r + 1] += row_start[r];
   // Runs of neighbouring rows join when they overlap or touch diagonally.
   found.region = JoinRowRuns(
       runs, row_start, /*eight_connected=*/true,

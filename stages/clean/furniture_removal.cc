@@ -5,11 +5,10 @@
 #include <limits>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/clean/alpha_pieces.h"
 #include "stages/clean/cell_runs.h"
 #include "stages/clean/mask_runs.h"
-#include "stages/geometry/alpha_shape.h"
 #include "stages/geometry/cell_states.h"
-#include "stages/geometry/disjoint_sets.h"
 
 namespace areagraph {
 namespace {
@@ -137,41 +136,21 @@ FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, doub
       AlphaShapeCells(cells, width, height, obstacles, labels, outline, 2 * alpha_radius_px);
   FurnitureRemoval removal;
   if (point_cells.empty()) return removal;
-  std::vector<Eigen::Vector2d> points;
-  points.reserve(point_cells.size());
-  for (const int index : point_cells) points.push_back(CellCentre(index % width, index / width));
-
-  // Pieces: alpha-shape components joined through shared obstacle regions.
-  const AlphaComplex complex = ComputeAlphaComplex(points, alpha_radius_px);
-  const std::vector<double> component_perimeters = ComponentPerimeters(points, complex);
-  DisjointSets pieces(complex.component_count);
-  std::vector<int> component_of_region(region_count, -1);
-  for (size_t p = 0; p < points.size(); ++p) {
-    int& first = component_of_region[label[point_cells[p]]];
-    if (first < 0) first = complex.component_of_point[p];
-    pieces.Union(first, complex.component_of_point[p]);
-  }
-  int piece_count = 0;
-  const std::vector<int> piece_of_component = pieces.DenseLabels(&piece_count);
-  std::vector<double> perimeter(piece_count, 0.0);
-  for (int c = 0; c < complex.component_count; ++c) {
-    perimeter[piece_of_component[c]] += component_perimeters[c];
-  }
-  std::vector<bool> is_outline(piece_count, false);
-  for (int region = 1; region < region_count; ++region) {
-    if (outline[region] && component_of_region[region] >= 0) {
-      is_outline[piece_of_component[component_of_region[region]]] = true;
-    }
+  FurniturePieces pieces;
+  if (!FurniturePiecesByClusters(point_cells, width, height, label, outline, alpha_radius_px,
+                                 max_perimeter_px, &pieces)) {
+    pieces = FurniturePiecesOfWholeShape(point_cells, width, label, outline, alpha_radius_px,
+                                         max_perimeter_px);
   }
 
   // Every cell of a furniture piece's regions becomes free. Regions that are
   // not outline entered the alpha shape in full, so their cells are points.
   std::vector<int> furniture_cells;
-  for (const int index : point_cells) {
-    if (outline[label[index]]) continue;
-    const int piece = piece_of_component[component_of_region[label[index]]];
-    if (is_outline[piece] || perimeter[piece] >= max_perimeter_px) continue;
-    furniture_cells.push_back(index);
+  std::vector<int> furniture_piece;
+  for (size_t p = 0; p < point_cells.size(); ++p) {
+    if (pieces.piece_of_point[p] < 0) continue;
+    furniture_cells.push_back(point_cells[p]);
+    furniture_piece.push_back(pieces.piece_of_point[p]);
   }
   // Pieces of wall stay.
   std::vector<uint8_t> wall_piece;
@@ -179,10 +158,11 @@ FurnitureRemoval RemoveFurniture(std::string& cells, int width, int height, doub
     wall_piece =
         WallPieceRegions(cells, width, height, labels, region_count, furniture_cells, *wall_pieces);
   }
-  std::vector<std::vector<int>> piece_cells(piece_count);
-  for (const int index : furniture_cells) {
+  std::vector<std::vector<int>> piece_cells(pieces.count);
+  for (size_t i = 0; i < furniture_cells.size(); ++i) {
+    const int index = furniture_cells[i];
     if (!wall_piece.empty() && wall_piece[label[index]]) continue;
-    piece_cells[piece_of_component[component_of_region[label[index]]]].push_back(index);
+    piece_cells[furniture_piece[i]].push_back(index);
   }
   for (const std::vector<int>& piece : piece_cells) {
     if (piece.empty()) continue;

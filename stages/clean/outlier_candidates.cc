@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "stages/geometry/parallel_ranges.h"
+
 namespace areagraph {
 namespace {
 
@@ -12,6 +14,10 @@ namespace {
 // padded by as much; the few cells with fewer occupied cells that close
 // search the rows in growing disks instead.
 constexpr int kNear = 12;
+
+// Cells per range on the pool: a cell costs some tens to a thousand
+// instructions, the pool's start some microseconds.
+constexpr size_t kParallelCells = 4096;
 
 struct Offset {
   long delta;  // in the padded grid
@@ -135,21 +141,34 @@ std::vector<OutlierCandidate> FindOutlierCandidates(const OccupiedRows& occupied
   const std::vector<Offset> axes = NearOffsets(padded_width, true);
   const std::vector<Offset> near = NearOffsets(padded_width, false);
 
+  // Every cell is scored alone: ranges of cells on the pool, their
+  // candidates joined in range order (row-major, as one pass gives them).
+  const std::vector<std::vector<OutlierCandidate>> parts = MapRanges<std::vector<OutlierCandidate>>(
+      cells.size(), kParallelCells, [&](size_t begin, size_t end) {
+        std::vector<OutlierCandidate> found;
+        for (size_t i = begin; i < end; ++i) {
+          const int cell = cells[i];
+          const uint8_t* here =
+              padded.data() + origin + (cell / width) * padded_width + cell % width;
+          long sum = 0;
+          int reach2 = 0;
+          // Any `points` occupied cells bound the score from above: when the
+          // nearest ones along the axes already score low, the cell is no outlier.
+          if (AxesNearestSum(here, padded_width, axes, points, &sum, &reach2) == points &&
+              double(sum) / points < threshold_score) {
+            continue;
+          }
+          const OutlierCandidate candidate =
+              NearestSum(here, near, points, &sum, &reach2) == points
+                  ? OutlierCandidate{cell, double(sum) / points, reach2}
+                  : ScoreFarCell(occupied, cell, points);
+          if (candidate.score >= threshold_score) found.push_back(candidate);
+        }
+        return found;
+      });
   std::vector<OutlierCandidate> candidates;
-  for (const int cell : cells) {
-    const uint8_t* here = padded.data() + origin + (cell / width) * padded_width + cell % width;
-    long sum = 0;
-    int reach2 = 0;
-    // Any `points` occupied cells bound the score from above: when the
-    // nearest ones along the axes already score low, the cell is no outlier.
-    if (AxesNearestSum(here, padded_width, axes, points, &sum, &reach2) == points &&
-        double(sum) / points < threshold_score) {
-      continue;
-    }
-    const OutlierCandidate candidate = NearestSum(here, near, points, &sum, &reach2) == points
-                                           ? OutlierCandidate{cell, double(sum) / points, reach2}
-                                           : ScoreFarCell(occupied, cell, points);
-    if (candidate.score >= threshold_score) candidates.push_back(candidate);
+  for (const std::vector<OutlierCandidate>& part : parts) {
+    candidates.insert(candidates.end(), part.begin(), part.end());
   }
   return candidates;
 }

@@ -1,5 +1,6 @@
 #include "stages/import/import_stage.h"
 
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -8,6 +9,7 @@
 
 #include "common/error.h"
 #include "stages/common/pipeline_options_check.h"
+#include "stages/geometry/parallel_ranges.h"
 #include "stages/import/grey_image.h"
 #include "stages/import/grid_map_decoder.h"
 #include "store/digest.h"
@@ -36,10 +38,13 @@ bool IsYamlPath(const std::string& path) {
 }  // namespace
 
 std::string ImportSource::Digest() const {
-  Sha256 digest;
-  digest.Update(image_bytes);
-  digest.Update(yaml_bytes);
-  return digest.FinishHex();
+  if (digest_memo.empty()) {
+    Sha256 digest;
+    digest.Update(image_bytes);
+    digest.Update(yaml_bytes);
+    digest_memo = digest.FinishHex();
+  }
+  return digest_memo;
 }
 
 ImportSource ReadImportSource(const std::string& path) {
@@ -73,7 +78,26 @@ std::string DefaultMapName(const std::string& path) { return fs::path(path).stem
 proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOptions& options) {
   CheckImportOptions(options);
   const GreyToCell rule = source.yaml ? MapServerRule(*source.yaml) : GreyThresholdRule(options);
-  const cv::Mat grey = DecodeGreyImage(source.image_bytes, source.image_path, options.max_pixels());
+  // ag-run has the digest from the cache key; elsewhere it is found beside
+  // the decode, which only reads the bytes too.
+  cv::Mat grey;
+  std::exception_ptr failure[2];  // rethrown here, with their own types
+  ForEachRange(2, source.HasDigest() ? 1 : 2, [&](size_t begin, size_t end, int) {
+    for (size_t task = begin; task < end; ++task) {
+      try {
+        if (task == 0) {
+          grey = DecodeGreyImage(source.image_bytes, source.image_path, options.max_pixels());
+        } else {
+          source.Digest();
+        }
+      } catch (...) {
+        failure[task] = std::current_exception();
+      }
+    }
+  });
+  for (const std::exception_ptr& error : failure) {
+    if (error) std::rethrow_exception(error);
+  }
 
   proto::GridMap grid;
   grid.set_format_version(kGridMapFormatVersion);

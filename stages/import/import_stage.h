@@ -23,8 +23,13 @@ struct ImportSource {
   std::optional<MapYaml> yaml;
 
   // SHA-256 (hex) of the image bytes followed by the YAML bytes: the input
-  // digest of the import's cache key and GridMap.source_digest.
+  // digest of the import's cache key and GridMap.source_digest. Computed
+  // once (the bytes are not changed after reading) and kept.
   std::string Digest() const;
+  bool HasDigest() const { return !digest_memo.empty(); }
+
+  // Digest()'s answer, once computed.
+  mutable std::string digest_memo;
 };
 
 // Reads a map given as an image (using <stem>.yaml beside it when present)
@@ -38,6 +43,8 @@ std::string DefaultMapName(const std::string& path);
 // Decodes and classifies the image. With a YAML, its resolution, origin and
 // thresholds apply; without, options.resolution_m, a zero origin and the
 // grey thresholds of GreyThresholdRule. Throws InputError or OptionsError.
+// The source's digest, unless already known, is computed beside the decode
+// (on OpenCV's pool).
 proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOptions& options);
 
 // What enters the import's cache key and map row for `source`.
