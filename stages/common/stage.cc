@@ -146,10 +146,6 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
         if (!stage.reads_previous_version()) {
           const InputRelease release(
               [&](size_t i) {
-                // Freed where the stage frees it, not once the store has
-                // written it (prune releases the Voronoi diagram at its
-                // start; held on, it lifted lab_a 8 x 8's peak by 2-7 MB).
-                if (held.at(i).use_count() != 1) store.FinishWrites();
                 views.at(i) = nullptr;
                 held.at(i).reset();
               },
