@@ -158,15 +158,6 @@ class ArtifactStore {
     artifact.encoded_payload = EncodeMessagePayload(message);
     WriteArtifact(artifact);
   }
-  // The same for a message the store may go on reading after this returns:
-  // a write-behind store streams a big one into the payload on its thread
-  // instead of in the caller's (lab_a tiled 8 x 8's Voronoi diagram, its
-  // Topology Graph and its CutGraph: 0.4-0.7 s each). The caller must not
-  // change the message before FinishWrites returns; reading it is fine.
-  virtual void WriteSharedMessageArtifact(
-      NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) {
-    WriteMessageArtifact(std::move(artifact), *message);
-  }
   // Returns once every artifact handed to this store is in it; throws the
   // error of one that failed. Nothing to do where every write is done at once.
   virtual void FinishWrites() {}

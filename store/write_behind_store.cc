@@ -25,12 +25,10 @@ struct PendingArtifact {
 };
 
 // A write handed to the thread: the row, and the serialized payload that
-// the thread hashes and compresses, or the message (sized) that it streams.
+// the thread hashes and compresses.
 struct WriteJob {
   NewArtifact artifact;
   SerializedMessage raw;
-  std::shared_ptr<const google::protobuf::MessageLite> message;
-  size_t message_bytes = 0;
 };
 
 class WriteBehindStore : public ArtifactStore {
@@ -70,8 +68,6 @@ class WriteBehindStore : public ArtifactStore {
   void WriteArtifact(const NewArtifact& artifact) override { Finished().WriteArtifact(artifact); }
   void WriteMessageArtifact(NewArtifact artifact,
                             const google::protobuf::MessageLite& message) override;
-  void WriteSharedMessageArtifact(
-      NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) override;
   void FinishWrites() override { Finished(); }
   void UpdateHead(const std::string& map_name, const std::string& cache_key) override {
     Finished().UpdateHead(map_name, cache_key);
@@ -150,8 +146,6 @@ class WriteBehindStore : public ArtifactStore {
                ? Finished()
                : *store_;
   }
-  // Makes `job` the pending write once the previous one is done.
-  void HandOver(WriteJob job);
   void RunWriter();
   void Write(WriteJob& job);
 
@@ -186,24 +180,7 @@ void WriteBehindStore::WriteMessageArtifact(NewArtifact artifact,
   }
   // Serialized here, the one step that reads `message`: the caller may
   // change or free it as soon as this returns.
-  HandOver({std::move(artifact), SerializeMessage(message, byte_size), nullptr, 0});
-}
-
-void WriteBehindStore::WriteSharedMessageArtifact(
-    NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) {
-  // Sized here: the thread's serializer then only reads the message, as the
-  // caller's next stage does.
-  const size_t byte_size = message->ByteSizeLong();
-  if (byte_size <= kWriteBehindMaxBytes) {
-    HandOver({std::move(artifact), SerializeMessage(*message, byte_size), nullptr, 0});
-    return;
-  }
-  // Neither copy nor bytes held: the message lives on until the thread has
-  // streamed it, at most until the next stage's first write or FinishWrites.
-  HandOver({std::move(artifact), SerializedMessage(), std::move(message), byte_size});
-}
-
-void WriteBehindStore::HandOver(WriteJob job) {
+  WriteJob job{std::move(artifact), SerializeMessage(message, byte_size)};
   Finished();  // the previous artifact is in the store before this one starts
   PendingArtifact pending{job.artifact.map_name, job.artifact.stage, job.artifact.cache_key,
                           job.artifact.version.has_value()};
@@ -248,12 +225,7 @@ void WriteBehindStore::RunWriter() {
 }
 
 void WriteBehindStore::Write(WriteJob& job) {
-  if (job.message) {
-    job.artifact.encoded_payload = EncodeMessagePayload(*job.message, job.message_bytes);
-    job.message.reset();  // the caller may take it over once the write is done
-  } else {
-    job.artifact.encoded_payload = EncodeRawPayload(job.raw.view());
-  }
+  job.artifact.encoded_payload = EncodeRawPayload(job.raw.view());
   job.raw = SerializedMessage();  // not held through the insert
   if (!writer_) {
     writer_ = OpenArtifactStore(path_);

@@ -8,12 +8,10 @@
 
 namespace areagraph {
 
-// The largest serialized artifact handed to the thread as bytes. The
-// hand-over holds the serialized bytes besides the message (the stream of a
-// direct write holds neither), and for big maps that is the peak: lab_a
-// tiled 8 x 8 went from 576 to 614-635 MB with its 101-MB Voronoi diagram
-// written behind that way. Bigger ones go as the message itself
-// (WriteSharedMessageArtifact) or are written in the caller's thread.
+// The largest serialized artifact handed to the thread. The hand-over holds
+// the serialized bytes besides the message (the stream of a direct write
+// holds neither), and for big maps that is the peak: lab_a tiled 8 x 8 went
+// from 576 to 614-635 MB with its 101-MB Voronoi diagram written behind.
 // Every artifact of areagraph/input's 16 maps is under 6 MB.
 inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
 
@@ -29,9 +27,7 @@ inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
 // without the pending artifact.
 //
 // A payload over kWriteBehindMaxBytes is written in the caller's thread,
-// streamed as OpenArtifactStore's store does, unless it comes through
-// WriteSharedMessageArtifact: the thread then streams it from the message,
-// which it holds (no bytes) until the write is done.
+// streamed as OpenArtifactStore's store does.
 //
 // A failed write is thrown, as a MapStepError naming the artifact's map and
 // stage, by the next call that waits for it (FinishWrites, the next write,

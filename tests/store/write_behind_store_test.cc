@@ -5,7 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <memory>
 #include <string>
 
 #include "common/error.h"
@@ -104,40 +103,6 @@ TEST(WriteBehindStoreTest, MessageChangedAfterTheCallDoesNotReachTheStore) {
   grid.set_cells(std::string(grid.cells().size(), 'x'));
   store->FinishWrites();
   EXPECT_EQ(StoredArtifact(path, "k1").payload_digest, Sha256Hex(original));
-}
-
-// A shared message over kWriteBehindMaxBytes is streamed by the thread: the
-// store holds a reference until the write is done, drops it then, and
-// stores what a direct write stores; a small one is serialized at once.
-TEST(WriteBehindStoreTest, SharedBigMessageIsStreamedOnTheThreadAndReleasedAfter) {
-  testing::TempDir dir;
-  for (const size_t cells : {size_t{100}, kWriteBehindMaxBytes + 1}) {
-    const std::string key = "k" + std::to_string(cells);
-    auto grid = std::make_shared<const proto::GridMap>(Grid(cells, 10));
-    OpenArtifactStore(dir.File("direct.db"))->WriteMessageArtifact(Row("import", key), *grid);
-    const std::unique_ptr<ArtifactStore> behind = OpenWriteBehindStore(dir.File("behind.db"));
-    behind->WriteSharedMessageArtifact(Row("import", key), grid);
-    if (cells <= kWriteBehindMaxBytes) {
-      EXPECT_EQ(grid.use_count(), 1) << "a small message is serialized at once";
-    }
-    EXPECT_EQ(behind->ReadHeadKey(kMap, "import"), key);
-    behind->FinishWrites();
-    EXPECT_EQ(grid.use_count(), 1) << cells;
-    const ArtifactRecord direct = StoredArtifact(dir.File("direct.db"), key);
-    const ArtifactRecord written = StoredArtifact(dir.File("behind.db"), key);
-    EXPECT_EQ(written.payload_digest, direct.payload_digest) << cells;
-    EXPECT_EQ(written.payload_digest, Sha256Hex(grid->SerializeAsString())) << cells;
-  }
-}
-
-// A plain store writes a shared message at once.
-TEST(WriteBehindStoreTest, PlainStoreWritesASharedMessageAtOnce) {
-  testing::TempDir dir;
-  auto grid = std::make_shared<const proto::GridMap>(Grid(1000, 11));
-  OpenArtifactStore(dir.File("plain.db"))->WriteSharedMessageArtifact(Row("import", "k1"), grid);
-  EXPECT_EQ(grid.use_count(), 1);
-  EXPECT_EQ(StoredArtifact(dir.File("plain.db"), "k1").payload_digest,
-            Sha256Hex(grid->SerializeAsString()));
 }
 
 // Artifacts are written in the order handed over: each waits for the one
