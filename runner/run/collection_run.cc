@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <thread>
 
 #include "common/json.h"
 #include "runner/live/area_graph_publisher.h"
@@ -15,6 +16,7 @@
 #include "runner/run/shard.h"
 #include "runner/run/worker_events.h"
 #include "runner/run/worker_heap.h"
+#include "runner/run/worker_threads.h"
 #include "stages/common/pipeline_options_check.h"
 
 namespace areagraph {
@@ -64,6 +66,10 @@ int RunCollection(const RunFlags& flags) {
   ProgressDisplay progress(static_cast<int>(tasks.size()), isatty(STDERR_FILENO) == 1);
   RunReport report(tasks, progress);
   std::unique_ptr<MapWorker> worker;  // made in each worker process
+  // ProcessPool starts no more workers than there are maps.
+  const int workers = std::max(1, std::min(flags.jobs, static_cast<int>(tasks.size())));
+  const int threads = ThreadsPerMap(flags.threads_per_map,
+                                    static_cast<int>(std::thread::hardware_concurrency()), workers);
   ProcessPool pool(
       flags.jobs,
       [&](int task, EventWriter& events) {
@@ -71,6 +77,7 @@ int RunCollection(const RunFlags& flags) {
           // Before the first map, which decides for the process: a small
           // map's buffers then come from huge pages.
           if (GetsHugePageHeap(tasks[task].entry.path)) PrepareWorkerHeap();
+          UseThreadsPerMap(threads);
           worker = std::make_unique<MapWorker>(settings, publish);
         }
         PipelineObserver observer;

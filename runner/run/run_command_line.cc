@@ -24,6 +24,11 @@ void AddRunFlags(CLI::App& app, RunFlags& flags) {
   app.add_flag("--force", flags.stage.force, "recompute even when the cache holds the result");
   app.add_option("--jobs,-j", flags.jobs, "maps processed in parallel (worker processes)")
       ->capture_default_str();
+  app.add_option("--threads-per-map", flags.threads_per_map,
+                 "threads each map's stages may use (OpenCV's pool); 0 gives every worker process "
+                 "an equal share of the cores: max(1, cores / workers), workers being the smaller "
+                 "of --jobs and the number of maps")
+      ->capture_default_str();
   app.add_option("--shard", flags.shard,
                  "K/N: run only the maps whose name hashes to K modulo N (0 <= K < N)");
   app.add_flag("--publish", flags.publish,
@@ -46,6 +51,10 @@ void CheckRunFlags(const CLI::App& app, const RunFlags& flags) {
   }
   if (flags.jobs < 1 || flags.jobs > 1024) {
     throw OptionsError("--jobs " + std::to_string(flags.jobs) + " must be between 1 and 1024");
+  }
+  if (flags.threads_per_map < 0 || flags.threads_per_map > 1024) {
+    throw OptionsError("--threads-per-map " + std::to_string(flags.threads_per_map) +
+                       " must be between 0 (a share of the cores) and 1024");
   }
 }
 

@@ -16,6 +16,7 @@ struct RunFlags {
   std::string from_stage;
   std::string only_stage;
   int jobs = 0;
+  int threads_per_map = 0;  // 0: ThreadsPerMap's share of the cores
   std::string shard;
   bool publish = false;
   std::string url;
@@ -24,11 +25,11 @@ struct RunFlags {
 };
 
 // Adds ag-run's flags and MAP arguments to `app`; --jobs defaults to the
-// number of cores.
+// number of cores, --threads-per-map to 0 (each worker's share of them).
 void AddRunFlags(CLI::App& app, RunFlags& flags);
 
-// Checks what needs no map: MAP given unless --print-options, --jobs, stage names, --url without
-// --publish. Throws OptionsError.
+// Checks what needs no map: MAP given unless --print-options, --jobs, --threads-per-map, stage
+// names, --url without --publish. Throws OptionsError.
 void CheckRunFlags(const CLI::App& app, const RunFlags& flags);
 
 // The run settings that --store, --from, --only and --force ask for.
