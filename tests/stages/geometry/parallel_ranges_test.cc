@@ -7,18 +7,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "tests/support/thread_count.h"
+
 namespace areagraph {
 namespace {
 
-// Restores OpenCV's thread count when a test changes it.
-class ThreadCount {
- public:
-  explicit ThreadCount(int threads) : saved_(cv::getNumThreads()) { cv::setNumThreads(threads); }
-  ~ThreadCount() { cv::setNumThreads(saved_); }
-
- private:
-  int saved_;
-};
+using testing::ThreadCount;
 
 TEST(ParallelRangesTest, RangesCoverEveryItemOnceInOrder) {
   ThreadCount threads(2);

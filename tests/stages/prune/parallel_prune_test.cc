@@ -11,6 +11,7 @@
 #include "stages/prune/topology_graph_builder.h"
 #include "stages/voronoi/voronoi_stage.h"
 #include "tests/support/area_test_support.h"
+#include "tests/support/thread_count.h"
 #include "tools/example_maps/random_floor_plan.h"
 
 namespace areagraph::testing {
@@ -20,11 +21,7 @@ namespace {
 // afterwards, also when run() throws.
 template <typename Run>
 auto WithThreads(int threads, const Run& run) {
-  struct Restore {
-    int saved = cv::getNumThreads();
-    ~Restore() { cv::setNumThreads(saved); }
-  } restore;
-  cv::setNumThreads(threads);
+  const ThreadCount count(threads);
   return run();
 }
 
