@@ -15,25 +15,15 @@ RunRegions FindRunRegions(const std::string& cells, int width, int height, uint8
   // The rows' runs in bands of rows on the pool (a band at least 256 Ki
   // cells), joined in band order: row-major as one pass finds them.
   const size_t min_rows = std::max<size_t>(1, (size_t{1} << 18) / size_t(std::max(width, 1)));
-  std::vector<std::vector<CellRun>> bands =
-      MapRanges<std::vector<CellRun>>(size_t(height), min_rows, [&](size_t begin, size_t end) {
-        std::vector<CellRun> band;
-        for (int r = int(begin); r < int(end); ++r) {
-          ForEachRun(state + size_t(r) * width, width, bit, [&](int first, int last) {
-            band.push_back({r, first, last});
-          });
-        }
-        return band;
+  runs = ConcatRanges<CellRun>(size_t(height), min_rows, [&](size_t begin, size_t end) {
+    std::vector<CellRun> band;
+    for (int r = int(begin); r < int(end); ++r) {
+      ForEachRun(state + size_t(r) * width, width, bit, [&](int first, int last) {
+        band.push_back({r, first, last});
       });
-  if (bands.size() == 1) {
-    runs = std::move(bands[0]);
-  } else {
-    size_t total = 0;
-    for (const std::vector<CellRun>& band : bands) total += band.size();
-    runs.reserve(total);
-    for (const std::vector<CellRun>& band : bands)
-      runs.insert(runs.end(), band.begin(), band.end());
-  }
+    }
+    return band;
+  });
   // Where each row's runs start in `runs` (one more entry for the end).
   std::vector<size_t> row_start(size_t(height) + 1, 0);
   for (const CellRun& run : runs) ++row_start[size_t(run.row) + 1];

@@ -143,7 +143,7 @@ std::vector<OutlierCandidate> FindOutlierCandidates(const OccupiedRows& occupied
 
   // Every cell is scored alone: ranges of cells on the pool, their
   // candidates joined in range order (row-major, as one pass gives them).
-  const std::vector<std::vector<OutlierCandidate>> parts = MapRanges<std::vector<OutlierCandidate>>(
+  return ConcatRanges<OutlierCandidate>(
       cells.size(), kParallelCells, [&](size_t begin, size_t end) {
         std::vector<OutlierCandidate> found;
         for (size_t i = begin; i < end; ++i) {
@@ -166,11 +166,6 @@ std::vector<OutlierCandidate> FindOutlierCandidates(const OccupiedRows& occupied
         }
         return found;
       });
-  std::vector<OutlierCandidate> candidates;
-  for (const std::vector<OutlierCandidate>& part : parts) {
-    candidates.insert(candidates.end(), part.begin(), part.end());
-  }
-  return candidates;
 }
 
 }  // namespace areagraph

@@ -10,7 +10,6 @@
 #include "stages/cut/absorbed_polygons.h"
 #include "stages/cut/closed_passages.h"
 #include "stages/cut/cut_planning.h"
-#include "stages/cut/cut_tasks.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
 #include "stages/cut/narrow_tails.h"
@@ -20,6 +19,7 @@
 #include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/obstacle_sites.h"
 #include "stages/geometry/polygon_raster.h"
+#include "stages/geometry/pool_tasks.h"
 #include "stages/geometry/site_alpha_shape.h"
 
 namespace areagraph {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <opencv2/core/utility.hpp>
 #include <vector>
 
@@ -60,6 +61,23 @@ std::vector<T> MapRanges(size_t count, size_t min_items, const Body& body) {
     results[static_cast<size_t>(index)] = body(begin, end);
   });
   return results;
+}
+
+// MapRanges' per-range vectors joined in range order: the items in the
+// order one pass over [0, count) gives them.
+template <typename T, typename Body>
+std::vector<T> ConcatRanges(size_t count, size_t min_items, const Body& body) {
+  std::vector<std::vector<T>> parts = MapRanges<std::vector<T>>(count, min_items, body);
+  if (parts.size() == 1) return std::move(parts[0]);
+  size_t total = 0;
+  for (const std::vector<T>& part : parts) total += part.size();
+  std::vector<T> joined;
+  joined.reserve(total);
+  for (std::vector<T>& part : parts) {
+    joined.insert(joined.end(), std::make_move_iterator(part.begin()),
+                  std::make_move_iterator(part.end()));
+  }
+  return joined;
 }
 
 }  // namespace areagraph

@@ -1,15 +1,16 @@
 #include "stages/import/import_stage.h"
 
-#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <memory>
 #include <system_error>
+#include <vector>
 
 #include "common/error.h"
 #include "stages/common/pipeline_options_check.h"
-#include "stages/geometry/parallel_ranges.h"
+#include "stages/geometry/pool_tasks.h"
 #include "stages/import/grey_image.h"
 #include "stages/import/grid_map_decoder.h"
 #include "store/digest.h"
@@ -81,23 +82,10 @@ proto::GridMap ImportGridMap(const ImportSource& source, const proto::ImportOpti
   // ag-run has the digest from the cache key; elsewhere it is found beside
   // the decode, which only reads the bytes too.
   cv::Mat grey;
-  std::exception_ptr failure[2];  // rethrown here, with their own types
-  ForEachRange(2, source.HasDigest() ? 1 : 2, [&](size_t begin, size_t end, int) {
-    for (size_t task = begin; task < end; ++task) {
-      try {
-        if (task == 0) {
-          grey = DecodeGreyImage(source.image_bytes, source.image_path, options.max_pixels());
-        } else {
-          source.Digest();
-        }
-      } catch (...) {
-        failure[task] = std::current_exception();
-      }
-    }
-  });
-  for (const std::exception_ptr& error : failure) {
-    if (error) std::rethrow_exception(error);
-  }
+  std::vector<std::function<void()>> tasks = {
+      [&] { grey = DecodeGreyImage(source.image_bytes, source.image_path, options.max_pixels()); }};
+  if (!source.HasDigest()) tasks.push_back([&] { source.Digest(); });
+  RunTasks(tasks);  // rethrows a task's exception with its own type
 
   proto::GridMap grid;
   grid.set_format_version(kGridMapFormatVersion);

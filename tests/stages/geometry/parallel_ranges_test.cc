@@ -58,6 +58,24 @@ TEST(ParallelRangesTest, MapRangesKeepsRangeOrder) {
   EXPECT_EQ(joined, values);
 }
 
+TEST(ParallelRangesTest, ConcatRangesJoinsTheRangesInOrder) {
+  ThreadCount threads(2);
+  for (size_t count : {0, 1, 150, 10000}) {
+    // Every third item, as one pass over [0, count) would collect them.
+    std::vector<size_t> expected;
+    for (size_t i = 0; i < count; i += 3) expected.push_back(i);
+    const std::vector<size_t> joined =
+        ConcatRanges<size_t>(count, 100, [](size_t begin, size_t end) {
+          std::vector<size_t> kept;
+          for (size_t i = begin; i < end; ++i) {
+            if (i % 3 == 0) kept.push_back(i);
+          }
+          return kept;
+        });
+    EXPECT_EQ(joined, expected) << count << " items";
+  }
+}
+
 TEST(ParallelRangesTest, ABodysExceptionReachesTheCaller) {
   ThreadCount threads(2);
   EXPECT_THROW(ForEachRange(100, 4,

@@ -1,7 +1,7 @@
-// RunTasks (stages/cut/cut_tasks.h): every task runs once, the first
+// RunTasks (stages/geometry/pool_tasks.h): every task runs once, the first
 // `on_caller` on the calling thread, and the first failing task's exception
 // in list order reaches the caller.
-#include "stages/cut/cut_tasks.h"
+#include "stages/geometry/pool_tasks.h"
 
 #include <gtest/gtest.h>
 
