@@ -21,6 +21,7 @@
 #include <string>
 
 #include "store/sqlite_artifact_store.h"
+#include "store/sqlite_store_creation.h"
 
 namespace areagraph {
 namespace store_internal {
@@ -43,28 +44,32 @@ bool SyncFileData(const std::string& path) {
 
 }  // namespace
 
-void CreateMissingStoreFile(const std::string& path) {
-  if (path.empty() || path == kMemoryStorePath) return;
+}  // namespace store_internal
+
+bool CreateNewStoreFile(const std::string& path) {
+  if (path.empty() || path == kMemoryStorePath) return false;
   struct stat info {};
-  if (lstat(path.c_str(), &info) == 0 || errno != ENOENT) return;  // an empty file too
+  if (lstat(path.c_str(), &info) == 0 || errno != ENOENT) return false;  // an empty file too
   static std::atomic<int> serial{0};
   const std::string temporary =
       path + ".new-" + std::to_string(getpid()) + "-" + std::to_string(serial++);
   // Any failure leaves the work to the ordinary open, which reports it.
   const int fd = open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) return;
+  if (fd < 0) return false;
   close(fd);
   try {
     SqliteArtifactStore::BuildUnpublishedFile(temporary);
   } catch (const std::exception&) {
-    RemoveTemporary(temporary);
-    return;
+    store_internal::RemoveTemporary(temporary);
+    return false;
   }
   // On a link error other than EEXIST (a file system without hard links)
   // the ordinary open creates the store instead.
-  if (SyncFileData(temporary)) link(temporary.c_str(), path.c_str());
-  RemoveTemporary(temporary);
+  const bool made = store_internal::SyncFileData(temporary) && link(temporary.c_str(), path.c_str()) == 0;
+  store_internal::RemoveTemporary(temporary);
+  return made;
 }
 
-}  // namespace store_internal
+void store_internal::CreateMissingStoreFile(const std::string& path) { CreateNewStoreFile(path); }
+
 }  // namespace areagraph

@@ -18,6 +18,7 @@
 #include "runner/run/worker_heap.h"
 #include "runner/run/worker_threads.h"
 #include "stages/common/pipeline_options_check.h"
+#include "store/sqlite_store_creation.h"
 
 namespace areagraph {
 namespace {
@@ -61,7 +62,12 @@ int RunCollection(const RunFlags& flags) {
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork(). Its log
   // stays for the workers: the last of them folds it, syncing the file once.
-  OpenArtifactStore(settings.store_path)->LeaveWriteAheadLogOnClose();
+  // A store made just now has nothing to check (sqlite_store_creation.h):
+  // not opening it saves a connection, the log's and index's creation and a
+  // schema read per cold run; the first worker's open does that work anyway.
+  if (!CreateNewStoreFile(settings.store_path)) {
+    OpenArtifactStore(settings.store_path)->LeaveWriteAheadLogOnClose();
+  }
 
   ProgressDisplay progress(static_cast<int>(tasks.size()), isatty(STDERR_FILENO) == 1);
   RunReport report(tasks, progress);

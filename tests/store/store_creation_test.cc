@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "store/artifact_store.h"
+#include "store/sqlite_store_creation.h"
 #include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 
@@ -92,6 +93,26 @@ TEST(StoreCreationTest, StrayTemporaryFileOfAKilledCreatorIsHarmless) {
   OpenArtifactStore(path)->WriteArtifact(MakeArtifact("m", "clean", "k", "payload"));
   EXPECT_EQ(OpenArtifactStore(path, StoreMode::kReadOnly)->ReadHead("m", "clean")->payload,
             "payload");
+}
+
+TEST(StoreCreationTest, CreateNewStoreFileSaysWhetherThisCallMadeTheStore) {
+  TempDir dir;
+  const std::string path = dir.File("s.db");
+  ASSERT_TRUE(CreateNewStoreFile(path));
+  // Made whole by this call: the current schema in WAL mode, nothing beside.
+  EXPECT_EQ(FileNames(dir.path()), std::set<std::string>{"s.db"});
+  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version")[0], "5");
+  EXPECT_EQ(QueryColumn(path, "PRAGMA journal_mode")[0], "wal");
+  // A store that is there already, even an empty file, is not this call's.
+  OpenArtifactStore(path)->WriteArtifact(MakeArtifact("m", "clean", "k", "payload"));
+  EXPECT_FALSE(CreateNewStoreFile(path));
+  EXPECT_EQ(OpenArtifactStore(path, StoreMode::kReadOnly)->ReadHead("m", "clean")->payload,
+            "payload");
+  const std::string empty = dir.File("empty.db");
+  testing::WriteFile(empty, "");
+  EXPECT_FALSE(CreateNewStoreFile(empty));
+  EXPECT_FALSE(CreateNewStoreFile(dir.File("no-such-dir/s.db")));
+  EXPECT_FALSE(CreateNewStoreFile(":memory:"));
 }
 
 }  // namespace
