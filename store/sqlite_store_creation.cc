@@ -11,6 +11,8 @@
 // first writer, whose new log syncs the directory anyway; until then the
 // store holds nothing a power cut could lose.
 
+#include "store/sqlite_store_creation.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -21,7 +23,6 @@
 #include <string>
 
 #include "store/sqlite_artifact_store.h"
-#include "store/sqlite_store_creation.h"
 
 namespace areagraph {
 namespace store_internal {
@@ -65,7 +66,8 @@ bool CreateNewStoreFile(const std::string& path) {
   }
   // On a link error other than EEXIST (a file system without hard links)
   // the ordinary open creates the store instead.
-  const bool made = store_internal::SyncFileData(temporary) && link(temporary.c_str(), path.c_str()) == 0;
+  const bool made =
+      store_internal::SyncFileData(temporary) && link(temporary.c_str(), path.c_str()) == 0;
   store_internal::RemoveTemporary(temporary);
   return made;
 }
