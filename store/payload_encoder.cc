@@ -2,9 +2,8 @@
 
 #include <google/protobuf/io/coded_stream.h>
 #include <google/protobuf/io/zero_copy_stream.h>
-#include <zstd.h>
-
 #include <pthread.h>
+#include <zstd.h>
 
 #include <array>
 #include <climits>
