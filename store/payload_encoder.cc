@@ -2,10 +2,16 @@
 
 #include <google/protobuf/io/coded_stream.h>
 #include <google/protobuf/io/zero_copy_stream.h>
+#include <pthread.h>
 #include <zstd.h>
 
+#include <array>
 #include <climits>
+#include <condition_variable>
+#include <exception>
 #include <memory>
+#include <mutex>
+#include <thread>
 #include <vector>
 
 #include "common/error.h"
@@ -15,69 +21,125 @@
 namespace areagraph {
 namespace {
 
-// The bytes protobuf writes go, one buffer at a time, into SHA-256 and a
-// zstd stream whose frame is pledged `raw_bytes` (so it records its content
-// size, as DecodePayload needs).
-class EncodingStream : public google::protobuf::io::ZeroCopyOutputStream {
+// Compresses pieces of one payload into one zstd frame that is pledged
+// `raw_bytes` (so it records its content size, as DecodePayload needs). With
+// `threaded`, on a thread of its own: the caller serializes and hashes the
+// next piece meanwhile (zstd was about half of a big write's time on the
+// calling thread, docs/performance.md, seventeenth pass). zstd's buffered
+// stream makes the same frame whatever the pieces' sizes, so the frame is the
+// one the serial stream made before.
+class FrameCompressor {
  public:
-  explicit EncodingStream(uint64_t raw_bytes)
-      : context_(PayloadCompressionContext()), buffer_(kBufferBytes), out_(ZSTD_CStreamOutSize()) {
-    Check(ZSTD_CCtx_reset(context_, ZSTD_reset_session_and_parameters));
-    Check(ZSTD_CCtx_setParameter(context_, ZSTD_c_compressionLevel, kPayloadZstdLevel));
-    Check(ZSTD_CCtx_setPledgedSrcSize(context_, raw_bytes));
-    // Reserved, not filled: only the pages the frame uses become resident.
+  // The pieces in flight: one being filled, the others queued or compressed.
+  static constexpr size_t kPieces = 4;
+  static constexpr size_t kPieceBytes = size_t{1} << 20;
+
+  FrameCompressor(uint64_t raw_bytes, bool threaded) : raw_bytes_(raw_bytes) {
+    // Allocated here, on the caller's thread, as everything the frame keeps:
+    // reserved, not filled, so only the pages the frame uses become resident,
+    // and never grown by the thread.
     frame_.reserve(ZSTD_compressBound(raw_bytes));
+    out_.resize(ZSTD_CStreamOutSize());
+    for (auto& piece : pieces_) piece.bytes.reset(new char[kPieceBytes]);
+    if (threaded) thread_ = std::thread([this] { Run(); });
   }
 
-  bool Next(void** data, int* size) override {
-    Feed(used_, ZSTD_e_continue);
-    *data = buffer_.data();
-    *size = static_cast<int>(buffer_.size());
-    used_ = buffer_.size();
-    count_ += used_;
-    return true;
-  }
-  void BackUp(int count) override {
-    used_ -= count;
-    count_ -= count;
-  }
-  int64_t ByteCount() const override { return count_; }
-
-  // Ends the frame with what is left in the buffer, or with `tail` when the
-  // buffer is empty; the stream is not used after.
-  EncodedPayload Finish(std::string_view tail = {}) {
-    if (used_ > 0) {
-      tail = std::string_view(buffer_.data(), used_);
-    } else {
-      count_ += static_cast<int64_t>(tail.size());
+  ~FrameCompressor() {
+    if (!thread_.joinable()) return;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
     }
-    Feed(tail, ZSTD_e_end);
-    EncodedPayload payload;
-    payload.frame = std::move(frame_);
-    payload.digest = hash_.FinishHex();
-    payload.raw_bytes = count_;
-    return payload;
+    changed_.notify_all();
+    thread_.join();
+  }
+
+  // The piece to fill next, once the thread is done with it.
+  char* NextPiece() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return error_ || handed_ - compressed_ < kPieces; });
+    if (error_) std::rethrow_exception(error_);
+    return pieces_[handed_ % kPieces].bytes.get();
+  }
+
+  // Hands over the piece NextPiece gave, with `size` bytes; `last` ends the frame.
+  void Hand(size_t size, bool last) {
+    if (!thread_.joinable()) {
+      Compress(pieces_[0], size, last);
+      return;
+    }
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      pieces_[handed_ % kPieces].size = size;
+      ++handed_;
+      ended_ = last;
+    }
+    changed_.notify_all();
+  }
+
+  // The frame, once the last piece is compressed.
+  std::string Finish() {
+    if (thread_.joinable()) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      changed_.wait(lock, [&] { return error_ || compressed_ == handed_; });
+      if (error_) std::rethrow_exception(error_);
+    }
+    return std::move(frame_);
   }
 
  private:
-  // 64 KB: protobuf fills it in pieces; zstd keeps its own window.
-  static constexpr size_t kBufferBytes = size_t{1} << 16;
+  struct Piece {
+    std::unique_ptr<char[]> bytes;
+    size_t size = 0;
+  };
 
-  // Passes the first `bytes` of the buffer on.
-  void Feed(size_t bytes, ZSTD_EndDirective mode) {
-    Feed(std::string_view(buffer_.data(), bytes), mode);
+  void Run() {
+    pthread_setname_np(pthread_self(), "ag-store-zstd");  // for top and perf
+    try {
+      while (true) {
+        size_t index = 0;
+        bool last = false;
+        {
+          std::unique_lock<std::mutex> lock(mutex_);
+          changed_.wait(lock, [&] { return stopping_ || handed_ > compressed_; });
+          if (handed_ == compressed_) return;  // stopping
+          index = compressed_;
+          last = ended_ && index + 1 == handed_;
+        }
+        Compress(pieces_[index % kPieces], pieces_[index % kPieces].size, last);
+        {
+          const std::lock_guard<std::mutex> lock(mutex_);
+          ++compressed_;
+        }
+        changed_.notify_all();
+        if (last) return;
+      }
+    } catch (...) {
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        error_ = std::current_exception();
+      }
+      changed_.notify_all();
+    }
   }
-  // Hashes and compresses `bytes`; ZSTD_e_end also ends the frame.
-  void Feed(std::string_view bytes, ZSTD_EndDirective mode) {
-    hash_.Update(bytes);
-    ZSTD_inBuffer in{bytes.data(), bytes.size(), 0};
+
+  // Compresses `size` bytes of `piece` (the first call sets the frame up);
+  // `last` also ends the frame.
+  void Compress(const Piece& piece, size_t size, bool last) {
+    if (context_ == nullptr) {
+      context_ = PayloadCompressionContext();  // the calling thread's own
+      Check(ZSTD_CCtx_reset(context_, ZSTD_reset_session_and_parameters));
+      Check(ZSTD_CCtx_setParameter(context_, ZSTD_c_compressionLevel, kPayloadZstdLevel));
+      Check(ZSTD_CCtx_setPledgedSrcSize(context_, raw_bytes_));
+    }
+    const ZSTD_EndDirective mode = last ? ZSTD_e_end : ZSTD_e_continue;
+    ZSTD_inBuffer in{piece.bytes.get(), size, 0};
     size_t remaining = 0;
     do {
       ZSTD_outBuffer out{out_.data(), out_.size(), 0};
       remaining = Check(ZSTD_compressStream2(context_, &out, &in, mode));
       frame_.append(out_.data(), out.pos);
-    } while (mode == ZSTD_e_end ? remaining != 0 : in.pos < in.size);
-    used_ = 0;
+    } while (last ? remaining != 0 : in.pos < in.size);
   }
 
   static size_t Check(size_t result) {
@@ -87,12 +149,67 @@ class EncodingStream : public google::protobuf::io::ZeroCopyOutputStream {
     return result;
   }
 
-  ZSTD_CCtx* context_;
-  std::vector<char> buffer_;
+  const uint64_t raw_bytes_;
+  ZSTD_CCtx* context_ = nullptr;  // of the thread that compresses
+  std::string frame_;
   std::vector<char> out_;
+  std::array<Piece, kPieces> pieces_;
+
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  size_t handed_ = 0;      // pieces handed over
+  size_t compressed_ = 0;  // pieces compressed
+  bool ended_ = false;     // the last piece is handed over
+  bool stopping_ = false;
+  std::exception_ptr error_;
+  std::thread thread_;  // last: started once the rest is set up
+};
+
+// The bytes protobuf writes go, one piece at a time, into SHA-256 here and
+// then to the compressor.
+class EncodingStream : public google::protobuf::io::ZeroCopyOutputStream {
+ public:
+  EncodingStream(uint64_t raw_bytes, bool threaded) : compressor_(raw_bytes, threaded) {}
+
+  bool Next(void** data, int* size) override {
+    if (piece_ != nullptr) Hand(/*last=*/false);
+    piece_ = compressor_.NextPiece();
+    *data = piece_;
+    *size = static_cast<int>(FrameCompressor::kPieceBytes);
+    used_ = FrameCompressor::kPieceBytes;
+    count_ += static_cast<int64_t>(used_);
+    return true;
+  }
+  void BackUp(int count) override {
+    used_ -= count;
+    count_ -= count;
+  }
+  int64_t ByteCount() const override { return count_; }
+
+  // Ends the frame with what is left in the piece; the stream is not used after.
+  EncodedPayload Finish() {
+    if (piece_ == nullptr) piece_ = compressor_.NextPiece();
+    Hand(/*last=*/true);
+    EncodedPayload payload;
+    payload.frame = compressor_.Finish();
+    payload.digest = hash_.FinishHex();
+    payload.raw_bytes = count_;
+    return payload;
+  }
+
+ private:
+  // Hashed here, while the piece is still in this core's cache.
+  void Hand(bool last) {
+    hash_.Update(std::string_view(piece_, used_));
+    compressor_.Hand(used_, last);
+    piece_ = nullptr;
+    used_ = 0;
+  }
+
+  FrameCompressor compressor_;
+  char* piece_ = nullptr;  // being filled by protobuf
   size_t used_ = 0;
   int64_t count_ = 0;
-  std::string frame_;
   Sha256 hash_;
 };
 
@@ -146,7 +263,8 @@ EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message
   if (raw_bytes <= kWholeEncodingMaxBytes) {
     return EncodeWhole(SerializeWithCachedSizes(message, raw_bytes).view());
   }
-  EncodingStream stream(raw_bytes);
+  // A second core, if any, compresses while this one serializes.
+  EncodingStream stream(raw_bytes, std::thread::hardware_concurrency() > 1);
   {
     google::protobuf::io::CodedOutputStream coded(&stream);
     message.SerializeWithCachedSizes(&coded);

@@ -26,16 +26,16 @@ struct EncodedPayload {
 // on the 16 maps of areagraph/input, lab_e's Voronoi diagram).
 inline constexpr size_t kWholeEncodingMaxBytes = size_t{8} << 20;
 
-// `message` serialized and encoded; above kWholeEncodingMaxBytes straight
-// into the zstd stream and the hash through a small buffer, without a copy
-// of the serialized bytes (133 MB for the Voronoi diagram of lab_a tiled
-// 8 x 8). Up to there the frame is CompressPayload of SerializeAsString();
-// the stream's frame (above it, and at every size before) can differ from
-// that by a few bytes (5 of the 112 frames of areagraph/input, 1-10 bytes
-// each) and decodes to the same bytes. Throws StoreError when the message is
-// over 2 GB or zstd fails.
-// `byte_size`, when given, is what message.ByteSizeLong() just returned (its
-// sizes are then cached): the message is not sized again.
+// `message` serialized and encoded; above kWholeEncodingMaxBytes through
+// 1-MB pieces into the hash and a zstd stream, without a copy of the
+// serialized bytes (101 MB for the Voronoi diagram of lab_a tiled 8 x 8);
+// where there is a second core, a thread of its own compresses while the
+// caller serializes and hashes the next piece. Up to there the frame is CompressPayload of
+// SerializeAsString(); the stream's frame (above it, and at every size before) can differ from that
+// by a few bytes (5 of the 112 frames of areagraph/input, 1-10 bytes each) and decodes to the same
+// bytes. Throws StoreError when the message is over 2 GB or zstd fails. `byte_size`, when given, is
+// what message.ByteSizeLong() just returned (its sizes are then cached): the message is not sized
+// again.
 EncodedPayload EncodeMessagePayload(const google::protobuf::MessageLite& message,
                                     std::optional<size_t> byte_size = std::nullopt);
 

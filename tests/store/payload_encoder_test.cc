@@ -1,7 +1,9 @@
 #include "store/payload_encoder.h"
 
 #include <gtest/gtest.h>
+#include <zstd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -60,6 +62,45 @@ TEST(PayloadEncoderTest, StreamedMessageEncodesItsBytes) {
   const std::string raw = diagram.SerializeAsString();
   ASSERT_GT(raw.size(), kWholeEncodingMaxBytes);  // the streamed path
   ExpectEncodes(EncodeMessagePayload(diagram), raw);
+}
+
+// The frame a serial zstd stream makes of `raw` fed in `piece` bytes at a
+// time, as the store's encoder did before it compressed on a second thread
+// (64-KB pieces).
+std::string SerialStreamFrame(const std::string& raw, size_t piece) {
+  ZSTD_CCtx* context = ZSTD_createCCtx();
+  ZSTD_CCtx_setParameter(context, ZSTD_c_compressionLevel, kPayloadZstdLevel);
+  ZSTD_CCtx_setPledgedSrcSize(context, raw.size());
+  std::string frame;
+  std::string out(ZSTD_CStreamOutSize(), '\0');
+  for (size_t at = 0; at < raw.size(); at += piece) {
+    const bool last = at + piece >= raw.size();
+    ZSTD_inBuffer in{raw.data() + at, std::min(piece, raw.size() - at), 0};
+    size_t remaining = 0;
+    do {
+      ZSTD_outBuffer to{out.data(), out.size(), 0};
+      remaining = ZSTD_compressStream2(context, &to, &in, last ? ZSTD_e_end : ZSTD_e_continue);
+      EXPECT_FALSE(ZSTD_isError(remaining));
+      frame.append(out.data(), to.pos);
+    } while (last ? remaining != 0 : in.pos < in.size);
+  }
+  ZSTD_freeCCtx(context);
+  return frame;
+}
+
+// The streamed frame (compressed on a second thread in 1-MB pieces where
+// there is a second core) is byte for byte the serial stream's of 64-KB
+// pieces: stored payloads keep their bytes.
+TEST(PayloadEncoderTest, StreamedFrameEqualsSerialStream) {
+  for (const int vertices : {300000, 301234}) {
+    const proto::VoronoiDiagram diagram = RandomDiagram(vertices);
+    const std::string raw = diagram.SerializeAsString();
+    ASSERT_GT(raw.size(), kWholeEncodingMaxBytes);
+    const EncodedPayload encoded = EncodeMessagePayload(diagram);
+    ExpectEncodes(encoded, raw);
+    EXPECT_TRUE(encoded.frame == SerialStreamFrame(raw, size_t{1} << 16)) << vertices;
+    EXPECT_TRUE(encoded.frame == SerialStreamFrame(raw, 12345)) << vertices;
+  }
 }
 
 TEST(PayloadEncoderTest, MessageSerializedWholeEqualsOneShot) {
