@@ -56,8 +56,8 @@ Rooms RoomsOf(const PointList& sites) {
   SiteAlphaShape shape(sites, 7.0);
   Rooms rooms;
   // The right eighth lies outside the boundary.
-  rooms.count = shape.DetectRooms(
-      [](const Eigen::Vector2d& p) { return p.x() < kCols * kRoomPx * 7 / 8; });
+  rooms.count =
+      shape.DetectRooms([](const Eigen::Vector2d& p) { return p.x() < kCols * kRoomPx * 7 / 8; });
   rooms.areas = shape.RoomAreas();
   // Cell centres and cell corners (on Delaunay edges of the grid sites).
   for (double y = 1; y < kRows * kRoomPx; y += 3.5) {
