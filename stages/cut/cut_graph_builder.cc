@@ -78,13 +78,18 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   const bool closes_lines = options.close_wall_doors() || options.close_wall_gaps_max_m() > 0;
   std::vector<int> site_cells;
   IslandDepth island_depth;
-  // The obstacle depth (whole-map rasters, mappings of their own) on the
-  // pool beside the rest on this thread (see RunTasks; the boundary mask
-  // and the site cells live on, and a pool thread's malloc arena would take
-  // fresh memory for them). ChooseRoomWidth is also the first that may throw.
+  // The obstacles labelled once for the three site finders.
+  ObstacleLabels obstacles;
+  // W and the boundary mask on this thread (the mask lives on, and a pool
+  // thread's malloc arena would take fresh memory for it), the obstacle
+  // depth on the pool; then the site cells and the obstacle labels go to
+  // whichever thread is free first (see RunTasks): on a big map the depth
+  // takes longest, and the labels, which need nothing else of this round,
+  // fill the caller's wait. OpenCV labels serially inside a task (its
+  // parallel loops do not nest) but the same labels. ChooseRoomWidth is
+  // also the first that may throw.
   RunTasks({
                [&] { in.room_width = ChooseRoomWidth(options, map.frame(), topology); },
-               [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
                [&] {
                  in.inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
                                           cv::Size(width, height));
@@ -93,13 +98,15 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
                  if (islands)
                    island_depth = IslandDepthOf(map.cells(), width, height, resolution_m);
                },
+               [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
+               [&] {
+                 if (islands || closes_lines)
+                   obstacles = LabelObstacles(map.cells(), width, height);
+               },
            },
-           /*on_caller=*/3);
+           /*on_caller=*/2);
   // The estimate's scratch is gone; the rasters below come from new mappings.
   ReturnFreedMemory();
-  // The obstacles labelled once for the three site finders.
-  ObstacleLabels obstacles;
-  if (islands || closes_lines) obstacles = LabelObstacles(map.cells(), width, height);
   in.sites =
       StructureSitesFrom(site_cells, island_depth, width, resolution_m, options.room_island_max_m(),
                          options.island_end_on_face() ? options.island_end_on_face_share() : 0,

@@ -73,7 +73,8 @@ class SiteAlphaShape {
   // radius fits) into rooms, connected across edges that are themselves
   // outside the shape: a door narrower than the disk is a singular edge and
   // separates two rooms. Faces whose centroid fails `inside_boundary` are no
-  // room. Returns the number of rooms.
+  // room; it is called once per face, from several threads (OpenCV's pool).
+  // Returns the number of rooms.
   int DetectRooms(const std::function<bool(const Eigen::Vector2d&)>& inside_boundary);
   // The area (square pixels) of every room, indexed by room id.
   std::vector<double> RoomAreas();

@@ -45,13 +45,17 @@ std::vector<site_cgal::Point> KernelPoints(const std::vector<Eigen::Vector2d>& s
 
 // One spatially sorted range insert (as Alpha_shape_2's constructor does):
 // Delaunay_triangulation_2::insert(first, last) of CGAL 5.5 step for step,
-// with its spatial sort's parts on the pool (the same order).
+// the spatial sort's last three quarters on the pool while the first is
+// inserted (the same order).
 SiteTriangulationPtr TriangulatePoints(std::vector<site_cgal::Point> points, bool on_half_grid) {
   SiteTriangulationPtr triangulation(new SiteTriangulation(on_half_grid));
   site_cgal::Delaunay& dt = triangulation->dt;
-  SpatialSortOnPool(points.begin(), points.end(), dt.geom_traits());
   site_cgal::Delaunay::Face_handle hint;
-  for (const site_cgal::Point& point : points) hint = dt.insert(point, hint)->face();
+  using Iterator = std::vector<site_cgal::Point>::iterator;
+  SpatialSortThenInsert(points.begin(), points.end(), dt.geom_traits(),
+                        [&](Iterator first, Iterator last) {
+                          for (; first != last; ++first) hint = dt.insert(*first, hint)->face();
+                        });
   return triangulation;
 }
 
@@ -68,8 +72,8 @@ size_t SiteTriangulationBytes(const SiteTriangulation& triangulation) {
 }
 
 // The range insert of (point, index) pairs, Delaunay_triangulation_2's
-// insert_with_info of CGAL 5.5 step for step, with the spatial sort of the
-// indices on the pool (the same order).
+// insert_with_info of CGAL 5.5 step for step, the spatial sort of the
+// indices as in TriangulatePoints (the same order).
 SiteTriangulationPtr TriangulateIndexedSites(const std::vector<Eigen::Vector2d>& sites) {
   const std::vector<site_cgal::Point> points = KernelPoints(sites);
   std::vector<size_t> order(points.size());
@@ -78,16 +82,19 @@ SiteTriangulationPtr TriangulateIndexedSites(const std::vector<Eigen::Vector2d>&
   site_cgal::Delaunay& dt = triangulation->dt;
   using PointMap = CGAL::Pointer_property_map<site_cgal::Point>::const_type;
   using SortTraits = CGAL::Spatial_sort_traits_adapter_2<site_cgal::Traits, PointMap>;
-  SpatialSortOnPool(order.begin(), order.end(),
-                    SortTraits(CGAL::make_property_map(points), dt.geom_traits()));
   site_cgal::Delaunay::Face_handle hint;
-  for (const size_t index : order) {
-    const site_cgal::Delaunay::Vertex_handle vertex = dt.insert(points[index], hint);
-    if (vertex != site_cgal::Delaunay::Vertex_handle()) {
-      vertex->info() = static_cast<int>(index);
-      hint = vertex->face();
-    }
-  }
+  using Iterator = std::vector<size_t>::iterator;
+  SpatialSortThenInsert(
+      order.begin(), order.end(), SortTraits(CGAL::make_property_map(points), dt.geom_traits()),
+      [&](Iterator first, Iterator last) {
+        for (; first != last; ++first) {
+          const site_cgal::Delaunay::Vertex_handle vertex = dt.insert(points[*first], hint);
+          if (vertex != site_cgal::Delaunay::Vertex_handle()) {
+            vertex->info() = static_cast<int>(*first);
+            hint = vertex->face();
+          }
+        }
+      });
   return triangulation;
 }
 

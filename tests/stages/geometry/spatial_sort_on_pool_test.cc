@@ -1,5 +1,6 @@
-// SpatialSortOnPool (stages/geometry/spatial_sort_on_pool.h) puts points in
-// CGAL::spatial_sort's order on one thread and on two, and the site
+// SpatialSortThenInsert (stages/geometry/spatial_sort_on_pool.h) puts points
+// in CGAL::spatial_sort's order on one thread and on two and hands them to
+// the insertion in that order, in consecutive pieces; the site
 // triangulations built with it are CGAL's range insert face for face.
 #include "stages/geometry/spatial_sort_on_pool.h"
 
@@ -40,6 +41,21 @@ std::vector<site_cgal::Point> KernelPoints(const std::vector<Eigen::Vector2d>& s
   return points;
 }
 
+// Sorts [begin, end) with SpatialSortThenInsert; returns what the insertion
+// was handed, in order, and expects the pieces to follow each other.
+template <class Traits, class Iterator>
+auto SortAndCollect(Iterator begin, Iterator end, const Traits& traits) {
+  std::vector<typename std::iterator_traits<Iterator>::value_type> inserted;
+  Iterator next = begin;
+  SpatialSortThenInsert(begin, end, traits, [&](Iterator first, Iterator last) {
+    EXPECT_TRUE(first == next) << "a piece skipped or inserted again";
+    inserted.insert(inserted.end(), first, last);
+    next = last;
+  });
+  EXPECT_TRUE(next == end) << "the last pieces were not inserted";
+  return inserted;
+}
+
 TEST(SpatialSortOnPoolTest, PointsInCgalsOrderOnOneAndTwoThreads) {
   for (const int count : {100, 9000, 60000}) {
     const std::vector<site_cgal::Point> input = KernelPoints(MapLikeSites(count, 3));
@@ -48,8 +64,10 @@ TEST(SpatialSortOnPoolTest, PointsInCgalsOrderOnOneAndTwoThreads) {
     for (const int threads : {1, 2}) {
       const ThreadCount thread_count(threads);
       std::vector<site_cgal::Point> sorted = input;
-      SpatialSortOnPool(sorted.begin(), sorted.end(), site_cgal::Traits());
+      const std::vector<site_cgal::Point> inserted =
+          SortAndCollect(sorted.begin(), sorted.end(), site_cgal::Traits());
       EXPECT_TRUE(sorted == expected) << count << " points, " << threads << " threads";
+      EXPECT_TRUE(inserted == expected) << count << " points, " << threads << " threads";
     }
   }
 }
@@ -64,7 +82,7 @@ TEST(SpatialSortOnPoolTest, IndicesInCgalsOrderThroughThePointMapAdapter) {
   std::vector<size_t> sorted = expected;
   CGAL::spatial_sort(expected.begin(), expected.end(), traits);
   const ThreadCount thread_count(2);
-  SpatialSortOnPool(sorted.begin(), sorted.end(), traits);
+  EXPECT_EQ(SortAndCollect(sorted.begin(), sorted.end(), traits), expected);
   EXPECT_EQ(sorted, expected);
 }
 
