@@ -83,9 +83,8 @@ CorridorShapeWork::CorridorShapeWork(const AreaRaster& raster, double resolution
     : raster_(raster), resolution_m_(resolution_m), rooms_(RoomsOf(raster, plan)) {
   for (const int k : rooms_) box_cells_ += raster.boxes[k].area() + 1;
   // Biggest first, so that no thread is left with a big room at the end.
-  std::stable_sort(rooms_.begin(), rooms_.end(), [&](int a, int b) {
-    return raster.boxes[a].area() > raster.boxes[b].area();
-  });
+  std::stable_sort(rooms_.begin(), rooms_.end(),
+                   [&](int a, int b) { return raster.boxes[a].area() > raster.boxes[b].area(); });
   corridor_.assign(rooms_.size(), 0);
 }
 
