@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "stages/geometry/parallel_ranges.h"
+#include "stages/geometry/parallel_zeros.h"
 
 namespace areagraph {
 namespace {
@@ -138,7 +139,7 @@ void PaintChunk(std::vector<BoxedPolygon>& chunk, std::vector<uint8_t>& buffer, 
 
 cv::Mat PolygonLabels(const std::vector<std::pair<const proto::Polygon*, int>>& polygons,
                       cv::Size size) {
-  cv::Mat labels = cv::Mat::zeros(size, CV_32S);
+  cv::Mat labels = ZerosInParallel(size, CV_32S);
   std::vector<BoxedPolygon> chunk;
   std::vector<uint8_t> buffer;
   size_t cells = 0;

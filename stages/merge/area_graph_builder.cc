@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 
 #include "common/error.h"
 #include "stages/common/pipeline_options_check.h"
@@ -11,6 +12,7 @@
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/polygon_raster.h"
+#include "stages/geometry/pool_tasks.h"
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/bay_folding.h"
@@ -156,9 +158,6 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
                      ? SmallClosedRooms(graph, plan, raster, grid, min_cells,
                                         options.closed_room_pocket_jamb_m())
                      : std::vector<bool>());
-  if (options.label_corridors_by_shape()) {
-    LabelCorridorsByShape(raster, grid.resolution_m(), &plan);
-  }
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
     throw InputError("no Area Graph: no free cell lies inside the map's boundary");
@@ -167,11 +166,28 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   proto::AreaGraph out;
   out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  // Without a caller for the raster, its labels (4 bytes a cell) go before
-  // the borders are simplified.
-  AddAreasAndPassages(graph, plan, raster, options, &out, [&] {
+  // The rooms' shapes (LabelCorridorsByShape) are measured by a pool thread
+  // while this one traces the borders, which read only the labels: this
+  // thread takes the rooms left when it is done with the labels, and the
+  // kinds are set before AddAreasAndPassages reads them (after labels_done).
+  // Without a caller for the raster, its labels (4 bytes a cell) go then,
+  // before the borders are simplified.
+  std::unique_ptr<CorridorShapeWork> shapes;
+  if (options.label_corridors_by_shape()) {
+    shapes = std::make_unique<CorridorShapeWork>(raster, grid.resolution_m(), plan);
+  }
+  const auto labels_done = [&] {
+    if (shapes != nullptr) {
+      shapes->Finish();
+      shapes->Apply(&plan);
+    }
     if (raster_out == nullptr) raster.labels.release();
-  });
+  };
+  RunTasks({[&] { AddAreasAndPassages(graph, plan, raster, options, &out, labels_done); },
+            [&] {
+              if (shapes != nullptr) shapes->Measure();
+            }},
+           /*on_caller=*/1);
   out.set_components(CountComponents(out));
   out.set_dropped_parts(graph.dropped_parts());
   out.set_dropped_area_m2(graph.dropped_area_m2());

@@ -17,7 +17,8 @@ namespace areagraph {
 // graph vertices (FindPassages) are put on the borders they open
 // (PlacePassagesOnBorders): their end points are vertices of both areas.
 // Areas without cells are left out; ids are consecutive. `labels_done` is
-// called once raster.labels is read no more (see SimplifiedOutlines).
+// called once raster.labels is read no more (see SimplifiedOutlines), and
+// before the plan's kinds are: it may still set them.
 void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
                          const AreaRaster& raster, const proto::MergeOptions& options,
                          proto::AreaGraph* out, const std::function<void()>& labels_done = {});

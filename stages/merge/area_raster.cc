@@ -5,6 +5,7 @@
 #include <cstring>
 #include <opencv2/imgproc.hpp>
 
+#include "stages/geometry/parallel_zeros.h"
 #include "stages/geometry/polygon_raster.h"
 #include "stages/geometry/region_boxes.h"
 #include "stages/merge/core_cells.h"
@@ -129,7 +130,7 @@ AreaRaster PartitionFreeSpace(const CellGrid& grid, cv::Mat boundary_mask,
     }
   }
   raster.labels = PolygonLabels(polygons, size);
-  cv::Mat on_path = cv::Mat::zeros(size, CV_8U);
+  cv::Mat on_path = ZerosInParallel(size, CV_8U);
   // 4-connected, so that an area's paths hold its pieces together.
   auto draw_path = [&](const PointList& path, int area) {
     PaintPathCells(path, area + 1, &raster.labels, &on_path);

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <opencv2/imgproc.hpp>
+#include <thread>
 #include <vector>
 
 #include "stages/geometry/distance_transform.h"
@@ -15,33 +16,9 @@ namespace areagraph {
 
 namespace {
 
-// At least this many box cells per parallel range of rooms: a smaller range
-// costs more to start than it gains.
+// At least this many box cells per thread that shares the rooms: fewer
+// cost more to start a thread than they gain.
 constexpr int64_t kMinRangeBoxCells = int64_t(1) << 17;
-
-// Calls body(begin, end) for contiguous ranges of items, in parallel, each
-// range holding about the same weight: `before[i]` is the weight of the
-// items before item i (before.size() is the item count + 1).
-template <typename Body>
-void ForEachWeightedRange(const std::vector<int64_t>& before, int64_t min_weight,
-                          const Body& body) {
-  const size_t items = before.size() - 1;
-  const int64_t total = before.back();
-  const int ranges = ParallelRangeCount(static_cast<size_t>(total), min_weight);
-  // Range i: the items whose weight starts in [total * i, total * (i + 1)) / ranges.
-  auto first_at = [&](int i) {
-    const size_t weight = ParallelRangeBegin(static_cast<size_t>(total), ranges, i);
-    return static_cast<size_t>(
-        std::lower_bound(before.begin(), before.end() - 1, static_cast<int64_t>(weight)) -
-        before.begin());
-  };
-  ForEachRange(static_cast<size_t>(ranges), ranges, [&](size_t range, size_t, int) {
-    const size_t begin = first_at(static_cast<int>(range));
-    const size_t end =
-        range + 1 == static_cast<size_t>(ranges) ? items : first_at(static_cast<int>(range) + 1);
-    if (begin < end) body(begin, end);
-  });
-}
 
 // The shape of the non-zero cells of `mask` (CV_8U, a margin of zeros all
 // round), with holes filled. Changes `mask`.
@@ -56,6 +33,15 @@ AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
   if (box.area() == 0) return {};
   cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
   return ShapeOfMask(mask);
+}
+
+// The room areas of `plan` that `raster` has a box for, in area order.
+std::vector<int> RoomsOf(const AreaRaster& raster, const AreaPlan& plan) {
+  std::vector<int> rooms;
+  for (size_t k = 0; k < plan.areas.size() && k < raster.boxes.size(); ++k) {
+    if (plan.areas[k].kind == proto::AREA_ROOM) rooms.push_back(static_cast<int>(k));
+  }
+  return rooms;
 }
 
 }  // namespace
@@ -81,24 +67,50 @@ bool IsCorridorShaped(const AreaShape& shape, double resolution_m) {
 
 void LabelCorridorsByShape(const AreaRaster& raster, double resolution_m, AreaPlan* plan) {
   // Only rooms change: the other areas' shapes (a distance transform each)
-  // are not measured. Each room's on its own, in parallel ranges of about
-  // equal box cells; the kinds change after all are measured.
-  std::vector<int> rooms;
-  std::vector<int64_t> cells_before{0};
-  for (size_t k = 0; k < plan->areas.size() && k < raster.boxes.size(); ++k) {
-    if (plan->areas[k].kind != proto::AREA_ROOM) continue;
-    rooms.push_back(static_cast<int>(k));
-    cells_before.push_back(cells_before.back() + raster.boxes[k].area() + 1);
-  }
-  std::vector<uint8_t> corridor(rooms.size(), 0);
-  ForEachWeightedRange(cells_before, kMinRangeBoxCells, [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      const int k = rooms[i];
-      corridor[i] = IsCorridorShaped(ShapeOfArea(raster, k, raster.boxes[k]), resolution_m);
+  // are not measured. The pool's threads share the rooms when their boxes
+  // hold enough cells for it.
+  CorridorShapeWork work(raster, resolution_m, *plan);
+  const int threads =
+      std::min(cv::getNumThreads(),
+               ParallelRangeCount(static_cast<size_t>(work.box_cells()), kMinRangeBoxCells));
+  ForEachRange(static_cast<size_t>(threads), threads, [&](size_t, size_t, int) { work.Measure(); });
+  work.Finish();
+  work.Apply(plan);
+}
+
+CorridorShapeWork::CorridorShapeWork(const AreaRaster& raster, double resolution_m,
+                                     const AreaPlan& plan)
+    : raster_(raster), resolution_m_(resolution_m), rooms_(RoomsOf(raster, plan)) {
+  for (const int k : rooms_) box_cells_ += raster.boxes[k].area() + 1;
+  // Biggest first, so that no thread is left with a big room at the end.
+  std::stable_sort(rooms_.begin(), rooms_.end(),
+                   [&](int a, int b) { return raster.boxes[a].area() > raster.boxes[b].area(); });
+  corridor_.assign(rooms_.size(), 0);
+}
+
+void CorridorShapeWork::Measure() {
+  for (size_t i = next_++; i < rooms_.size(); i = next_++) {
+    try {
+      const int k = rooms_[i];
+      corridor_[i] = IsCorridorShaped(ShapeOfArea(raster_, k, raster_.boxes[k]), resolution_m_);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(error_mutex_);
+      if (!error_) error_ = std::current_exception();
     }
-  });
-  for (size_t i = 0; i < rooms.size(); ++i) {
-    if (corridor[i]) plan->areas[rooms[i]].kind = proto::AREA_CORRIDOR;
+    done_.fetch_add(1, std::memory_order_release);
+  }
+}
+
+void CorridorShapeWork::Finish() {
+  Measure();
+  // The rooms still being measured are on threads that are running.
+  while (done_.load(std::memory_order_acquire) < rooms_.size()) std::this_thread::yield();
+  if (error_) std::rethrow_exception(error_);
+}
+
+void CorridorShapeWork::Apply(AreaPlan* plan) const {
+  for (size_t i = 0; i < rooms_.size(); ++i) {
+    if (corridor_[i]) plan->areas[rooms_[i]].kind = proto::AREA_CORRIDOR;
   }
 }
 

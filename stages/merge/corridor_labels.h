@@ -1,5 +1,9 @@
 #pragma once
 
+#include <atomic>
+#include <cstdint>
+#include <exception>
+#include <mutex>
 #include <vector>
 
 #include "stages/merge/area_assignment.h"
@@ -39,5 +43,36 @@ bool IsCorridorShaped(const AreaShape& shape, double resolution_m);
 // wider than W came out as a room; its length tells it apart. Dead ends and
 // corridors keep their kind.
 void LabelCorridorsByShape(const AreaRaster& raster, double resolution_m, AreaPlan* plan);
+
+// LabelCorridorsByShape in steps that threads share, so that the rooms are
+// measured beside other work on the same raster: Measure, from any thread,
+// measures rooms until none is left unclaimed (biggest box first); Finish
+// measures what is left, waits for the rooms other threads are measuring and
+// rethrows the first error, after which the raster's labels are read no more;
+// Apply then sets the kinds. Each room's result has its own slot, so which
+// thread measured it does not matter.
+class CorridorShapeWork {
+ public:
+  CorridorShapeWork(const AreaRaster& raster, double resolution_m, const AreaPlan& plan);
+  CorridorShapeWork(const CorridorShapeWork&) = delete;
+  CorridorShapeWork& operator=(const CorridorShapeWork&) = delete;
+
+  void Measure();
+  void Finish();
+  void Apply(AreaPlan* plan) const;
+  // The rooms' box cells (plus one a room): how much there is to measure.
+  int64_t box_cells() const { return box_cells_; }
+
+ private:
+  const AreaRaster& raster_;
+  const double resolution_m_;
+  std::vector<int> rooms_;
+  std::vector<uint8_t> corridor_;
+  int64_t box_cells_ = 0;
+  std::atomic<size_t> next_{0};
+  std::atomic<size_t> done_{0};
+  std::mutex error_mutex_;
+  std::exception_ptr error_;
+};
 
 }  // namespace areagraph

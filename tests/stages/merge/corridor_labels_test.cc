@@ -3,14 +3,17 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <opencv2/imgproc.hpp>
 #include <random>
+#include <thread>
 
 #include "proto/pipeline_options.pb.h"
 #include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
 #include "tests/support/area_test_support.h"
+#include "tests/support/thread_count.h"
 
 namespace areagraph::testing {
 namespace {
@@ -55,6 +58,57 @@ TEST(CorridorLabelsTest, DeadEndsKeepTheirKind) {
   plan.areas[0].kind = AREA_DEAD_END;
   LabelCorridorsByShape(raster, 0.05, &plan);
   EXPECT_EQ(plan.areas[0].kind, AREA_DEAD_END);
+}
+
+// 60 random rectangles, some long and narrow (corridors by shape), some
+// squarer, with a few dead ends among them.
+std::pair<AreaRaster, AreaPlan> RandomRooms(unsigned seed) {
+  std::mt19937 random(seed);
+  std::vector<cv::Rect> rects;
+  for (int k = 0; k < 60; ++k) {
+    const int x = static_cast<int>(random() % 10) * 60, y = static_cast<int>(random() % 8) * 50;
+    const bool narrow = random() % 2 == 0;
+    rects.emplace_back(x, y, narrow ? 55 : 30 + static_cast<int>(random() % 25),
+                       narrow ? 8 + static_cast<int>(random() % 6) : 45);
+  }
+  AreaPlan plan = RoomsOnly(static_cast<int>(rects.size()));
+  for (int k = 0; k < 60; k += 7) plan.areas[k].kind = AREA_DEAD_END;
+  return {RasterOf(rects), plan};
+}
+
+std::vector<proto::AreaKind> KindsOf(const AreaPlan& plan) {
+  std::vector<proto::AreaKind> kinds;
+  for (const AreaPlan::Area& area : plan.areas) kinds.push_back(area.kind);
+  return kinds;
+}
+
+TEST(CorridorShapeWorkTest, SharedByThreadsGivesLabelCorridorsByShapesKinds) {
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const auto [raster, plan] = RandomRooms(seed);
+    AreaPlan expected = plan;
+    {
+      ThreadCount one(1);
+      LabelCorridorsByShape(raster, 0.05, &expected);
+    }
+    const std::vector<proto::AreaKind> before = KindsOf(plan), after = KindsOf(expected);
+    ASSERT_GT(std::count(after.begin(), after.end(), AREA_CORRIDOR), 3) << seed;
+    ASSERT_NE(before, after) << seed;
+    // Finish alone measures every room.
+    AreaPlan alone = plan;
+    CorridorShapeWork alone_work(raster, 0.05, alone);
+    alone_work.Finish();
+    alone_work.Apply(&alone);
+    EXPECT_EQ(KindsOf(alone), after) << seed;
+    // Two threads measuring while Finish takes the rest.
+    AreaPlan shared = plan;
+    CorridorShapeWork work(raster, 0.05, shared);
+    std::thread first([&] { work.Measure(); }), second([&] { work.Measure(); });
+    work.Finish();
+    work.Apply(&shared);
+    first.join();
+    second.join();
+    EXPECT_EQ(KindsOf(shared), after) << seed;
+  }
 }
 
 // A map 8 x 6 m at 0.05 m/px, free inside a 0.15 m wall one cell in from

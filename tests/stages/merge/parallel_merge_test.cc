@@ -19,11 +19,15 @@ struct MergeResult {
   cv::Mat labels;
 };
 
-MergeResult MergeOn(int threads, const AreaStages& stages, const proto::CleanedMap& map) {
+// With `keep_raster` false the labels go while the rooms' shapes may still
+// be measured on the pool (BuildAreaGraph without a raster for the caller).
+MergeResult MergeOn(int threads, const AreaStages& stages, const proto::CleanedMap& map,
+                    bool keep_raster = true) {
   ThreadCount count(threads);
   MergeResult result;
   AreaRaster raster;
-  proto::AreaGraph graph = BuildAreaGraph(stages.cut, map, stages.options.merge(), &raster);
+  proto::AreaGraph graph =
+      BuildAreaGraph(stages.cut, map, stages.options.merge(), keep_raster ? &raster : nullptr);
   EXPECT_TRUE(graph.SerializeToString(&result.graph));
   result.labels = raster.labels;
   return result;
@@ -46,6 +50,8 @@ TEST(ParallelMergeTest, OneThreadAndTwoGiveTheSameAreaGraph) {
   std::string default_graph;
   ASSERT_TRUE(stages.areas.SerializeToString(&default_graph));
   EXPECT_EQ(one.graph, default_graph);
+  EXPECT_EQ(MergeOn(2, stages, map, /*keep_raster=*/false).graph, default_graph);
+  EXPECT_EQ(MergeOn(1, stages, map, /*keep_raster=*/false).graph, default_graph);
 }
 
 }  // namespace
