@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "common/json.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/run/fault_injection.h"
+#include "runner/run/huge_page_restart.h"
 #include "runner/run/process_pool.h"
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
@@ -54,10 +56,14 @@ void RecordLeftoverFailures(ArtifactStore& store, const RunReport& report) {
 
 }  // namespace
 
-int RunCollection(const RunFlags& flags) {
+int RunCollection(const RunFlags& flags, char** argv) {
   const RunSettings settings = SettingsFrom(flags);
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
+  // Before the store is touched: the fresh start runs from main again.
+  if (argv != nullptr && !HasHugePageTunable(std::getenv("GLIBC_TUNABLES")) && HasBigMap(tasks)) {
+    RestartWithHugePageTunable(argv);
+  }
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork(). Its log

@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "tests/runner/run/runner_test_support.h"
+
 namespace areagraph {
 namespace {
 
@@ -102,23 +104,6 @@ TEST(WorkerHeapTest, FreedBuffersAreReusedWithoutFaults) {
   EXPECT_EQ(status, 0) << "2: settings or reserve wrong, 3: the second buffer faulted";
 }
 
-// A PNG signature and IHDR chunk of `width` x `height` (nothing after: the
-// header is all the check reads).
-std::string PngHeaderBytes(uint32_t width, uint32_t height) {
-  std::string bytes("\x89PNG\r\n\x1a\n", 8);
-  const auto put32 = [&](uint32_t value) {
-    for (int shift = 24; shift >= 0; shift -= 8)
-      bytes += static_cast<char>((value >> shift) & 0xff);
-  };
-  put32(13);
-  bytes += "IHDR";
-  put32(width);
-  put32(height);
-  bytes += std::string("\x08\x00\x00\x00\x00", 5);  // 8-bit grey
-  put32(0);                                         // CRC, not checked
-  return bytes;
-}
-
 std::string WriteFile(const std::string& name, const std::string& bytes) {
   const std::string path = (std::filesystem::temp_directory_path() /
                             ("worker_heap_test_" + std::to_string(getpid()) + "_" + name))
@@ -128,10 +113,11 @@ std::string WriteFile(const std::string& name, const std::string& bytes) {
 }
 
 TEST(WorkerHeapTest, OnlySmallPngMapsGetTheHugePageHeap) {
-  const std::string small = WriteFile("small.png", PngHeaderBytes(2000, 2500));  // 5.0 Mpx
-  const std::string large = WriteFile("large.png", PngHeaderBytes(2000, 2501));
+  const std::string small = WriteFile("small.png", testing::PngHeaderBytes(2000, 2500));  // 5.0 Mpx
+  const std::string large = WriteFile("large.png", testing::PngHeaderBytes(2000, 2501));
   const std::string yaml = WriteFile("map.yaml", "image: small.png\nresolution: 0.05\n");
-  const std::string truncated = WriteFile("truncated.png", PngHeaderBytes(10, 10).substr(0, 20));
+  const std::string truncated =
+      WriteFile("truncated.png", testing::PngHeaderBytes(10, 10).substr(0, 20));
   EXPECT_TRUE(GetsHugePageHeap(small));
   EXPECT_FALSE(GetsHugePageHeap(large));
   EXPECT_FALSE(GetsHugePageHeap(yaml));
