@@ -51,8 +51,8 @@ TEST(HugePageRestartTest, ARestartedRunEndsAsAnyOther) {
   const TempDir dir;
   std::ofstream(dir.File("big.png"), std::ios::binary) << PngHeaderBytes(3000, 3000);
   testing::CommandResult result;
-  const proto::RunSummary summary = testing::RunJson(
-      {"--store", dir.File("s.db"), "--jobs", "1", dir.File("big.png")}, &result);
+  const proto::RunSummary summary =
+      testing::RunJson({"--store", dir.File("s.db"), "--jobs", "1", dir.File("big.png")}, &result);
   EXPECT_EQ(result.exit_code, 1) << result.err;
   EXPECT_EQ(summary.maps(), 1);
   EXPECT_EQ(summary.failed(), 1);
