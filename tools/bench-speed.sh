@@ -19,7 +19,9 @@
 # More tables (tools/bench-speed-series.sh), each against the floor of the
 # same maps in the same run, with ag-run --jobs 1 from a new store (start-up
 # included, wall and CPU time): "runs", the 16 maps one by one; "scale",
-# lab_a tiled N x N into one connected map (--tiles, default 1 2 4 6 8);
+# lab_a tiled N x N into one connected map (--tiles, default 1 2 4 6 8),
+# also against the floor run with glibc's huge-page tunable, as ag-run runs
+# maps over 5 Mpx;
 # "clutter", rooms of N x N px with 1 % random obstacle cells
 # (--clutter-sizes, default 500 1000 2000); "render", ag-render of every
 # stage of lab_a and of lab_a tiled 2 x 2 against that stage's compute, in
