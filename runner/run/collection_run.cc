@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -12,14 +11,15 @@
 #include "common/json.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/run/fault_injection.h"
-#include "runner/run/huge_page_restart.h"
 #include "runner/run/process_pool.h"
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
 #include "runner/run/worker_events.h"
 #include "runner/run/worker_heap.h"
 #include "runner/run/worker_threads.h"
+#include "stages/common/huge_page_restart.h"
 #include "stages/common/pipeline_options_check.h"
+#include "stages/import/png_header.h"
 #include "store/sqlite_store_creation.h"
 
 namespace areagraph {
@@ -36,6 +36,14 @@ std::vector<MapTask> TasksFrom(const RunFlags& flags, const proto::PipelineOptio
     tasks.push_back({std::move(entry), std::move(map_options)});
   }
   return tasks;
+}
+
+// True when some map is a PNG of more than kHugePageRestartPixels.
+bool HasBigMap(const std::vector<MapTask>& tasks) {
+  return std::any_of(tasks.begin(), tasks.end(), [](const MapTask& task) {
+    const std::optional<int64_t> pixels = PngFilePixels(task.entry.path);
+    return pixels && *pixels > kHugePageRestartPixels;
+  });
 }
 
 GraphPublisher MakePublisher(const std::string& url) {
@@ -61,7 +69,7 @@ int RunCollection(const RunFlags& flags, char** argv) {
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
   // Before the store is touched: the fresh start runs from main again.
-  if (argv != nullptr && !HasHugePageTunable(std::getenv("GLIBC_TUNABLES")) && HasBigMap(tasks)) {
+  if (argv != nullptr && MayRestartWithHugePageTunable() && HasBigMap(tasks)) {
     RestartWithHugePageTunable(argv);
   }
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>  // defines __GLIBC__ where it applies
-#include <exception>
-#include <fstream>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -17,25 +15,8 @@
 
 namespace areagraph {
 
-std::optional<int64_t> PngMapPixels(const std::string& map_path) {
-  // The signature and the IHDR chunk: 8 + 4 + 4 + 13 + 4 bytes.
-  constexpr size_t kHeaderBytes = 33;
-  std::ifstream in(map_path, std::ios::binary);
-  std::string bytes(kHeaderBytes, '\0');
-  if (!in.read(bytes.data(), static_cast<std::streamsize>(kHeaderBytes)) ||
-      !HasPngSignature(bytes)) {
-    return std::nullopt;
-  }
-  try {
-    const PngHeader header = ReadPngHeader(bytes, map_path);
-    return int64_t{header.width} * header.height;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
 bool GetsHugePageHeap(const std::string& map_path) {
-  const std::optional<int64_t> pixels = PngMapPixels(map_path);
+  const std::optional<int64_t> pixels = PngFilePixels(map_path);
   return pixels && *pixels <= kWorkerHugePageMaxPixels;
 }
 

@@ -5,6 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "stages/common/huge_page_restart.h"
+
 namespace areagraph {
 
 // What PrepareWorkerHeap did.
@@ -33,11 +35,9 @@ inline constexpr size_t kWorkerHugePageReserve = size_t{48} << 20;
 // saved in faults (8 x 8: 8-11 s more of 35 s), as the eighth pass found for
 // ag-render's heap, for a reason not found. Every map of areagraph/, bormann/
 // and RobotMap is smaller.
-inline constexpr int64_t kWorkerHugePageMaxPixels = 5'000'000;
-
-// The pixels of `map_path` when it is a PNG (read from its header), else
-// nothing (a YAML, an unreadable file).
-std::optional<int64_t> PngMapPixels(const std::string& map_path);
+// Larger maps make ag-run start itself again with glibc's huge-page tunable
+// (stages/common/huge_page_restart.h) instead.
+inline constexpr int64_t kWorkerHugePageMaxPixels = kHugePageRestartPixels;
 
 // True when `map_path` is a PNG of at most kWorkerHugePageMaxPixels pixels
 // (read from its header). Anything else, a YAML or an unreadable file

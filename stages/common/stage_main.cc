@@ -3,12 +3,28 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "common/text.h"
 #include "stages/common/command_line.h"
+#include "stages/common/huge_page_restart.h"
 #include "stages/common/stage.h"
+#include "stages/import/png_header.h"
 
 namespace areagraph {
+
+void RestartForBigMap(std::unique_ptr<ArtifactStore>& store,
+                      const std::function<std::unique_ptr<ArtifactStore>()>& open,
+                      const std::string& map_name, char** argv) {
+  if (!MayRestartWithHugePageTunable()) return;
+  const std::optional<MapRecord> map = store->ReadMap(map_name);
+  if (!map) return;
+  const std::optional<int64_t> pixels = PngFilePixels(map->source_path);
+  if (!pixels || *pixels <= kHugePageRestartPixels) return;
+  store.reset();
+  RestartWithHugePageTunable(argv);
+  store = open();
+}
 
 int RunStageMain(const StageInfo& info, int argc, char** argv) {
   const StageDefinition& stage = StageOf(info);
@@ -18,7 +34,9 @@ int RunStageMain(const StageInfo& info, int argc, char** argv) {
   AddStageFlags(app, flags);
   return RunCommand(tool, app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
-    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(flags.store_path);
+    const auto open = [&] { return OpenArtifactStore(flags.store_path); };
+    std::unique_ptr<ArtifactStore> store = open();
+    RestartForBigMap(store, open, flags.map_name, argv);
     const StageRun run = RunStageOnHeads(*store, flags.map_name, stage, options, flags.force);
     std::printf("%s: map '%s': %s, %.0f ms, key %s (%s)\n", tool.c_str(), flags.map_name.c_str(),
                 run.summary.c_str(), run.elapsed_ms, ShortKey(run.cache_key).c_str(),

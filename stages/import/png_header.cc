@@ -1,5 +1,7 @@
 #include "stages/import/png_header.h"
 
+#include <exception>
+#include <fstream>
 #include <string>
 
 #include "common/error.h"
@@ -45,6 +47,23 @@ PngHeader ReadPngHeader(std::string_view bytes, std::string_view path) {
     offset = static_cast<size_t>(end);
   }
   return header;
+}
+
+std::optional<int64_t> PngFilePixels(const std::string& path) {
+  // The signature and the IHDR chunk: 8 + 4 + 4 + 13 + 4 bytes.
+  constexpr size_t kHeaderBytes = 33;
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(kHeaderBytes, '\0');
+  if (!in.read(bytes.data(), static_cast<std::streamsize>(kHeaderBytes)) ||
+      !HasPngSignature(bytes)) {
+    return std::nullopt;
+  }
+  try {
+    const PngHeader header = ReadPngHeader(bytes, path);
+    return int64_t{header.width} * header.height;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 }  // namespace areagraph

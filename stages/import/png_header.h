@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace areagraph {
@@ -20,5 +22,9 @@ bool HasPngSignature(std::string_view bytes);
 // bombs and truncated files are caught before any pixel is decoded. Throws
 // InputError naming `path` when not even the IHDR chunk is complete.
 PngHeader ReadPngHeader(std::string_view bytes, std::string_view path);
+
+// The pixels of the file at `path` when it is a PNG, read from its header
+// alone; nothing for anything else (a YAML, a missing or truncated file).
+std::optional<int64_t> PngFilePixels(const std::string& path);
 
 }  // namespace areagraph

@@ -5,6 +5,7 @@
 
 #include "common/text.h"
 #include "stages/common/command_line.h"
+#include "stages/common/stage_main.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "store/write_behind_store.h"
 
@@ -18,7 +19,9 @@ int main(int argc, char** argv) {
   AddStageFlags(app, flags);
   return RunCommand("ag-pipeline", app, argc, argv, [&] {
     const proto::PipelineOptions options = LoadPipelineOptions(flags);
-    const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(flags.store_path);
+    const auto open = [&] { return OpenWriteBehindStore(flags.store_path); };
+    std::unique_ptr<ArtifactStore> store = open();
+    RestartForBigMap(store, open, flags.map_name, argv);
     std::string last_summary;
     RunMapPipeline(*store, flags.map_name, options, flags.force,
                    [&](const StageInfo& stage, const StageRun& run) {

@@ -1,4 +1,4 @@
-#include "runner/run/huge_page_restart.h"
+#include "stages/common/huge_page_restart.h"
 
 #include <unistd.h>
 
@@ -6,8 +6,6 @@
 #include <cstring>
 #include <filesystem>
 #include <optional>
-
-#include "runner/run/worker_heap.h"
 
 namespace areagraph {
 namespace {
@@ -27,13 +25,7 @@ std::string WithHugePageTunable(const char* tunables) {
   return value + kHugePageTunable + "=1";
 }
 
-bool HasBigMap(const std::vector<MapTask>& tasks) {
-  for (const MapTask& task : tasks) {
-    const std::optional<int64_t> pixels = PngMapPixels(task.entry.path);
-    if (pixels && *pixels > kWorkerHugePageMaxPixels) return true;
-  }
-  return false;
-}
+bool MayRestartWithHugePageTunable() { return !HasHugePageTunable(std::getenv(kTunablesVariable)); }
 
 void RestartWithHugePageTunable(char** argv) {
   const char* given = std::getenv(kTunablesVariable);
