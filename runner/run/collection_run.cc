@@ -19,7 +19,7 @@
 #include "runner/run/worker_threads.h"
 #include "stages/common/huge_page_restart.h"
 #include "stages/common/pipeline_options_check.h"
-#include "stages/import/png_header.h"
+#include "stages/common/stage_main.h"
 #include "store/sqlite_store_creation.h"
 
 namespace areagraph {
@@ -38,12 +38,9 @@ std::vector<MapTask> TasksFrom(const RunFlags& flags, const proto::PipelineOptio
   return tasks;
 }
 
-// True when some map is a PNG of more than kHugePageRestartPixels.
 bool HasBigMap(const std::vector<MapTask>& tasks) {
-  return std::any_of(tasks.begin(), tasks.end(), [](const MapTask& task) {
-    const std::optional<int64_t> pixels = PngFilePixels(task.entry.path);
-    return pixels && *pixels > kHugePageRestartPixels;
-  });
+  return std::any_of(tasks.begin(), tasks.end(),
+                     [](const MapTask& task) { return IsBigMapImage(task.entry.path); });
 }
 
 GraphPublisher MakePublisher(const std::string& url) {

@@ -13,14 +13,17 @@
 
 namespace areagraph {
 
+bool IsBigMapImage(const std::string& path) {
+  const std::optional<int64_t> pixels = PngFilePixels(path);
+  return pixels && *pixels > kHugePageRestartPixels;
+}
+
 void RestartForBigMap(std::unique_ptr<ArtifactStore>& store,
                       const std::function<std::unique_ptr<ArtifactStore>()>& open,
                       const std::string& map_name, char** argv) {
   if (!MayRestartWithHugePageTunable()) return;
   const std::optional<MapRecord> map = store->ReadMap(map_name);
-  if (!map) return;
-  const std::optional<int64_t> pixels = PngFilePixels(map->source_path);
-  if (!pixels || *pixels <= kHugePageRestartPixels) return;
+  if (!map || !IsBigMapImage(map->source_path)) return;
   store.reset();
   RestartWithHugePageTunable(argv);
   store = open();

@@ -16,6 +16,10 @@ namespace areagraph {
 // The help text is the stage's description in StageTable().
 int RunStageMain(const StageInfo& stage, int argc, char** argv);
 
+// True when `path` is a PNG of more than kHugePageRestartPixels (read from
+// its header): a map for which a program restarts (huge_page_restart.h).
+bool IsBigMapImage(const std::string& path);
+
 // Closes `store` and starts the program again with glibc's huge-page tunable
 // (huge_page_restart.h) when the image that ag-import read for `map_name`
 // is a PNG of more than kHugePageRestartPixels (read from its header, where
