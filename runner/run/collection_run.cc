@@ -120,7 +120,8 @@ int RunCollection(const RunFlags& flags, char** argv) {
   pool.Run(static_cast<int>(tasks.size()));
   progress.Finish();
 
-  const proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
+  proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
+  summary.set_huge_page_restart(RestartedWithHugePageTunable());
   if (!report.UnrecordedFailures().empty() || HasWriteAheadLog(settings.store_path)) {
     // A crashed worker's map to record, or a log no worker folded (the last
     // task crashed, or someone else had the store open): closing folds it.

@@ -13,6 +13,27 @@ namespace {
 constexpr char kTunablesVariable[] = "GLIBC_TUNABLES";
 constexpr char kHugePageTunable[] = "glibc.malloc.hugetlb";
 
+// The link's target, not the link: the process keeps its name (ps, top).
+std::optional<std::filesystem::path> SelfExecutable() {
+  std::error_code error;
+  std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error) return std::nullopt;
+  return self;
+}
+
+std::optional<std::string> Variable(const char* name) {
+  const char* value = std::getenv(name);
+  return value == nullptr ? std::nullopt : std::optional<std::string>(value);
+}
+
+void Restore(const char* name, const std::optional<std::string>& value) {
+  if (value) {
+    setenv(name, value->c_str(), /*overwrite=*/1);
+  } else {
+    unsetenv(name);
+  }
+}
+
 }  // namespace
 
 bool HasHugePageTunable(const char* tunables) {
@@ -25,24 +46,35 @@ std::string WithHugePageTunable(const char* tunables) {
   return value + kHugePageTunable + "=1";
 }
 
-bool MayRestartWithHugePageTunable() { return !HasHugePageTunable(std::getenv(kTunablesVariable)); }
+bool MayRestartWithHugePageTunable() {
+  return !HasHugePageTunable(std::getenv(kTunablesVariable)) && !RestartedWithHugePageTunable();
+}
+
+bool RestartedWithHugePageTunable() {
+  const std::optional<std::string> marker = Variable(kHugePageRestartVariable);
+  if (!marker) return false;
+  const std::optional<std::filesystem::path> self = SelfExecutable();
+  return self && self->filename() == *marker;
+}
+
+std::string HugePageRestartLine(const std::string& tool) {
+  if (!RestartedWithHugePageTunable()) return "";
+  return tool + ": restarted with " + kHugePageTunable + "=1\n";
+}
 
 void RestartWithHugePageTunable(char** argv) {
-  const char* given = std::getenv(kTunablesVariable);
-  const std::optional<std::string> before =
-      given == nullptr ? std::nullopt : std::optional<std::string>(given);
-  const std::string tunables = WithHugePageTunable(given);
-  if (setenv(kTunablesVariable, tunables.c_str(), /*overwrite=*/1) != 0) return;
-  // The link's target, not the link: the process keeps its name (ps, top).
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) execv(self.c_str(), argv);
-  // Not restarted: the environment goes back to what the user gave.
-  if (before) {
-    setenv(kTunablesVariable, before->c_str(), /*overwrite=*/1);
-  } else {
-    unsetenv(kTunablesVariable);
+  const std::optional<std::filesystem::path> self = SelfExecutable();
+  if (!self) return;
+  const std::optional<std::string> tunables = Variable(kTunablesVariable);
+  const std::optional<std::string> marker = Variable(kHugePageRestartVariable);
+  const std::string value = WithHugePageTunable(std::getenv(kTunablesVariable));
+  if (setenv(kTunablesVariable, value.c_str(), /*overwrite=*/1) == 0 &&
+      setenv(kHugePageRestartVariable, self->filename().c_str(), /*overwrite=*/1) == 0) {
+    execv(self->c_str(), argv);
   }
+  // Not restarted: the environment goes back to what the user gave.
+  Restore(kTunablesVariable, tunables);
+  Restore(kHugePageRestartVariable, marker);
 }
 
 }  // namespace areagraph

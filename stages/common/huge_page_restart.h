@@ -27,13 +27,29 @@ bool HasHugePageTunable(const char* tunables);
 // GLIBC_TUNABLES with glibc.malloc.hugetlb=1 appended to `tunables`.
 std::string WithHugePageTunable(const char* tunables);
 
+// The restart also sets this variable to the executable's file name
+// ("ag-run", "ag-clean", ...), so that the fresh start can tell that it is
+// one and say so (HugePageRestartLine): exec keeps the process id, and tests
+// and users have no other way to see that a restart happened. Children
+// inherit it; only the program it names takes it as its own restart.
+inline constexpr char kHugePageRestartVariable[] = "AG_HUGE_PAGE_RESTART";
+
 // True when the process was not started with the tunable yet (see
-// HasHugePageTunable) and so may restart.
+// HasHugePageTunable), nor by a restart of its own, and so may restart.
 bool MayRestartWithHugePageTunable();
 
+// True when this process is the fresh start of its own restart.
+bool RestartedWithHugePageTunable();
+
+// "TOOL: restarted with glibc.malloc.hugetlb=1\n" in the process that
+// RestartedWithHugePageTunable, "" in any other: the line that programs add
+// to their report.
+std::string HugePageRestartLine(const std::string& tool);
+
 // Replaces this process by a fresh start of the same executable with the
-// same arguments and the tunable added. Returns only when that could not be
-// done (no /proc/self/exe, exec refused): the program then goes on as it is.
+// same arguments, the tunable and kHugePageRestartVariable added. Returns
+// only when that could not be done (no /proc/self/exe, exec refused): the
+// program then goes on as it is, with the environment it was given.
 // Whatever the process holds open (a store) must be closed first.
 void RestartWithHugePageTunable(char** argv);
 

@@ -44,6 +44,7 @@ int RunStageMain(const StageInfo& info, int argc, char** argv) {
     std::printf("%s: map '%s': %s, %.0f ms, key %s (%s)\n", tool.c_str(), flags.map_name.c_str(),
                 run.summary.c_str(), run.elapsed_ms, ShortKey(run.cache_key).c_str(),
                 run.cache_hit ? "cached" : "computed");
+    std::fputs(HugePageRestartLine(tool).c_str(), stdout);
     return 0;
   });
 }

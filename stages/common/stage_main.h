@@ -12,7 +12,8 @@ namespace areagraph {
 // The whole main() of a stage executable (ag-clean ... ag-merge): --store,
 // --map, --options, --set and --force; options checked before the store is
 // opened; the stage run through the cache on the heads of its inputs; one
-// line "ag-<stage>: map 'M': <summary>, <ms> ms, key <key> (computed|cached)".
+// line "ag-<stage>: map 'M': <summary>, <ms> ms, key <key> (computed|cached)",
+// and HugePageRestartLine's after a restart for a big map (RestartForBigMap).
 // The help text is the stage's description in StageTable().
 int RunStageMain(const StageInfo& stage, int argc, char** argv);
 

@@ -5,6 +5,7 @@
 
 #include "common/text.h"
 #include "stages/common/command_line.h"
+#include "stages/common/huge_page_restart.h"
 #include "stages/common/stage_main.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "store/write_behind_store.h"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
                      std::fflush(stdout);
                    });
     std::printf("ag-pipeline: map '%s': %s\n", flags.map_name.c_str(), last_summary.c_str());
+    std::fputs(HugePageRestartLine("ag-pipeline").c_str(), stdout);
     return 0;
   });
 }
