@@ -10,6 +10,7 @@
 #include "runner/live/live_map_server.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
+#include "stages/common/huge_page_restart.h"
 #include "store/write_behind_store.h"
 
 namespace areagraph {
@@ -22,7 +23,7 @@ struct LiveFlags {
   bool diffs = false;
 };
 
-int Live(const LiveFlags& flags) {
+int Live(const LiveFlags& flags, char** argv) {
   flags.limits.Check();
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   if (options.import().max_pixels() <= 0) {
@@ -30,6 +31,11 @@ int Live(const LiveFlags& flags) {
   }
   // Everything that can fail without the network fails before LCM starts.
   const std::string url = ReceivingLcmUrl(flags.url);
+  // A grid's size is known only once it arrives, so the server restarts at
+  // start-up, while it holds nothing open yet (no store, no LCM, no thread):
+  // one 9-ms restart, then any grid's heap grows in huge pages (half the page
+  // faults even on a small map; docs/performance.md, nineteenth pass).
+  if (MayRestartWithHugePageTunable()) RestartWithHugePageTunable(argv);
   const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(flags.stage.store_path);
   AreaGraphPublisher publisher(url);
   LiveMapServer server(*store, publisher, options, std::cout, std::cerr);
@@ -37,7 +43,8 @@ int Live(const LiveFlags& flags) {
   std::cerr << "ag-live: serving on " << publisher.url() << ": grids on " << kGridMapChannel
             << ", Area Graphs on " << kAreaGraphChannel
             << (flags.diffs ? std::string(", diffs on ") + kAreaGraphDiffChannel : "")
-            << ", store '" << flags.stage.store_path << "'" << std::endl;
+            << ", store '" << flags.stage.store_path << "'" << std::endl
+            << HugePageRestartLine("ag-live") << std::flush;
 
   const bool stopped = ServeUntilDone(
       flags.limits, "maps", [&] { return server.maps_handled(); },
@@ -61,7 +68,9 @@ int main(int argc, char** argv) {
       "next (ag-match) and its version in the map's history. Prints one line per map: areas, "
       "passages, key, version, work done and the time from receipt to publication. Malformed "
       "messages and failing maps are reported on stderr and skipped. Stops on SIGINT or SIGTERM "
-      "after the map in hand."};
+      "after the map in hand. Starts itself again once, at start-up, with glibc's "
+      "glibc.malloc.hugetlb=1 in GLIBC_TUNABLES (transparent huge pages for big grids) unless "
+      "GLIBC_TUNABLES already sets it (a line on stderr says so)."};
   LiveFlags flags;
   AddLcmUrlFlag(app, flags.url);
   app.add_option("--store", flags.stage.store_path, "SQLite artifact store")->capture_default_str();
@@ -79,5 +88,5 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.limits.timeout_s,
                  "exit after this many seconds (0: never); an error if --count was not reached")
       ->capture_default_str();
-  return RunCommand("ag-live", app, argc, argv, [&] { return Live(flags); });
+  return RunCommand("ag-live", app, argc, argv, [&] { return Live(flags, argv); });
 }

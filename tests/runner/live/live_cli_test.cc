@@ -22,6 +22,7 @@ TEST(LiveCli, HelpDescribesTheTools) {
   EXPECT_EQ(live.exit_code, 0);
   EXPECT_NE(live.out.find("channel MAP"), std::string::npos);
   EXPECT_NE(live.out.find("udpm://239.255.76.67:7667?ttl=0"), std::string::npos);
+  EXPECT_NE(live.out.find("glibc.malloc.hugetlb=1"), std::string::npos);
   const testing::CommandResult listen = RunTool("ag-listen", {"--help"});
   EXPECT_EQ(listen.exit_code, 0);
   EXPECT_NE(listen.out.find("AREA_GRAPH"), std::string::npos);
