@@ -121,7 +121,9 @@ void PrintSummary(const proto::RunSummary& summary, std::ostream& out) {
         << stage.hits() << std::setw(8) << stage.misses() << std::setw(11) << std::setprecision(2)
         << stage.compute_s() << "\n";
   }
-  if (summary.huge_page_restart()) out << "  restarted with glibc.malloc.hugetlb=1 (a map over 5 Mpx)\n";
+  if (summary.huge_page_restart()) {
+    out << "  restarted with glibc.malloc.hugetlb=1 (a map over 5 Mpx)\n";
+  }
   for (const auto& failure : summary.failures()) {
     out << "  FAILED " << failure.map()
         << (failure.stage().empty() ? "" : " (" + failure.stage() + ")") << ": "

@@ -61,13 +61,11 @@ TEST(HugePageRestartRunTest, ARunRestartsOnceForABigMapAndNotForASmallOne) {
   EXPECT_EQ(big.succeeded(), 1);
   EXPECT_TRUE(big.huge_page_restart()) << result.out;
   const proto::RunSummary small = testing::RunJson(
-      {"--store", dir.File("s.db"), "--jobs", "1", WriteRoomMap(dir, "small", 800, 600)},
-      &result);
+      {"--store", dir.File("s.db"), "--jobs", "1", WriteRoomMap(dir, "small", 800, 600)}, &result);
   EXPECT_EQ(small.succeeded(), 1) << result.err;
   EXPECT_FALSE(small.huge_page_restart()) << result.out;
   // The text summary says it once; the big map is all cache hits now.
-  const CommandResult text =
-      RunTool("ag-run", {"--store", dir.File("s.db"), dir.File("room.png")});
+  const CommandResult text = RunTool("ag-run", {"--store", dir.File("s.db"), dir.File("room.png")});
   EXPECT_EQ(text.exit_code, 0) << text.err;
   EXPECT_EQ(testing::CountOccurrences(text.out, "restarted with glibc.malloc.hugetlb=1"), 1)
       << text.out;
@@ -108,9 +106,8 @@ TEST(HugePageRestartRunTest, StageExecutablesOnASmallMapDoNotRestart) {
   const CommandResult clean = RunTool("ag-clean", {"--store", store, "--map", "room"});
   ASSERT_EQ(clean.exit_code, 0) << clean.err;
   EXPECT_EQ(Restarts(clean, "ag-clean"), 0) << clean.out;
-  const CommandResult render = RunTool(
-      "ag-render",
-      {"--store", store, "--map", "room", "--stage", "clean", "--out", dir.File("r.png")});
+  const CommandResult render = RunTool("ag-render", {"--store", store, "--map", "room", "--stage",
+                                                     "clean", "--out", dir.File("r.png")});
   ASSERT_EQ(render.exit_code, 0) << render.err;
   EXPECT_EQ(Restarts(render, "ag-render"), 0) << render.out;
 }
