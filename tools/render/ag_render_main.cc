@@ -11,12 +11,10 @@
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
-#include "stages/common/huge_page_restart.h"
 #include "stages/common/output_file.h"
 #include "stages/common/page_fault_thrift.h"
 #include "stages/common/png_file.h"
 #include "stages/common/stage.h"
-#include "stages/common/stage_main.h"
 #include "tools/render/artifact_drawing.h"
 #include "tools/render/map_png.h"
 
@@ -150,16 +148,10 @@ int main(int argc, char** argv) {
   std::string crop;
   app.add_option("--crop", crop, "draw only the window X,Y,W,H (map cells; with --scale to zoom)");
   return areagraph::RunCommand("ag-render", app, argc, argv, [&] {
-    const auto open = [&] {
-      return areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
-    };
-    std::unique_ptr<areagraph::ArtifactStore> store = open();
+    auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     if (width < 0) throw areagraph::InputError("--width must be positive");
-    areagraph::RestartForBigMap(store, open, map, argv);
     areagraph::Render(*store, map, stage, scale, doors, width, crop, out);
-    if (!areagraph::IsStandardOutput(out)) {
-      std::cout << "wrote " << out << "\n" << areagraph::HugePageRestartLine("ag-render");
-    }
+    if (!areagraph::IsStandardOutput(out)) std::cout << "wrote " << out << "\n";
     return 0;
   });
 }

@@ -1,8 +1,8 @@
 // Programs that restart with glibc's huge-page tunable for a big map
 // (stages/common/huge_page_restart.h) do so once, say so in their report,
 // and end as they would without it: ag-run before it touches the store, a
-// stage executable, ag-pipeline and ag-render after reading the map's source
-// from it. Small maps do not restart.
+// stage executable and ag-pipeline after reading the map's source from it.
+// Small maps do not restart.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -71,7 +71,7 @@ TEST(HugePageRestartRunTest, ARunRestartsOnceForABigMapAndNotForASmallOne) {
       << text.out;
 }
 
-// ag-clean, ag-pipeline and ag-render restart (their store's map row names a
+// ag-clean and ag-pipeline restart (their store's map row names a
 // PNG over 5 Mpx), once each, and compute as they would without.
 TEST(HugePageRestartRunTest, StageExecutablesOnABigMapComputeAfterTheRestart) {
   const TempDir dir;
@@ -90,11 +90,6 @@ TEST(HugePageRestartRunTest, StageExecutablesOnABigMapComputeAfterTheRestart) {
   EXPECT_NE(pipeline.out.find("clean   cached"), std::string::npos) << pipeline.out;
   EXPECT_NE(pipeline.out.find("merge   computed"), std::string::npos) << pipeline.out;
   EXPECT_EQ(Restarts(pipeline, "ag-pipeline"), 1) << pipeline.out;
-  const CommandResult render = RunTool(
-      "ag-render", {"--store", store, "--map", "room", "--out", dir.File("room_merge.png")});
-  ASSERT_EQ(render.exit_code, 0) << render.err;
-  EXPECT_EQ(Restarts(render, "ag-render"), 1) << render.out;
-  EXPECT_FALSE(cv::imread(dir.File("room_merge.png")).empty());
 }
 
 TEST(HugePageRestartRunTest, StageExecutablesOnASmallMapDoNotRestart) {
@@ -106,10 +101,6 @@ TEST(HugePageRestartRunTest, StageExecutablesOnASmallMapDoNotRestart) {
   const CommandResult clean = RunTool("ag-clean", {"--store", store, "--map", "room"});
   ASSERT_EQ(clean.exit_code, 0) << clean.err;
   EXPECT_EQ(Restarts(clean, "ag-clean"), 0) << clean.out;
-  const CommandResult render = RunTool("ag-render", {"--store", store, "--map", "room", "--stage",
-                                                     "clean", "--out", dir.File("r.png")});
-  ASSERT_EQ(render.exit_code, 0) << render.err;
-  EXPECT_EQ(Restarts(render, "ag-render"), 0) << render.out;
 }
 
 }  // namespace
