@@ -28,7 +28,9 @@ inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
 // prune 2: every part of the map above prune.min_component_m2 is kept, not only the biggest.
 // prune 3: long graphs beside a longer one in their part are kept too (prune.keep_groups_above_m;
 // a room behind a gap the graph does not pass got no area, areagraph/ lab_b).
-inline constexpr StageInfo kPruneStage{"prune", 3};
+// prune 4: edge polygons, boundaries and part outlines as packed rings (TopologyGraph format 2),
+// a third of the memory of Point2 messages; same numbers (issue 14).
+inline constexpr StageInfo kPruneStage{"prune", 4};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
@@ -45,7 +47,8 @@ inline constexpr StageInfo kPruneStage{"prune", 3};
 // obstacle within a door's width (cut.island_wall_piece_both_ends; bormann/ lab_ipa furnished).
 // cut 11: past a jamb, free cells the door's free space cannot reach count as wall (outside drawn
 // free, hollow blocks; cut.jamb_wall_behind_line; areagraph/ lab_ipa_furnitures).
-inline constexpr StageInfo kCutStage{"cut", 11};
+// cut 12: edge polygons and room shapes as packed rings (CutGraph format 2, as prune 4).
+inline constexpr StageInfo kCutStage{"cut", 12};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
@@ -98,8 +101,10 @@ inline constexpr uint32_t kGridMapFormatVersion = 1;
 inline constexpr uint32_t kCleanedMapFormatVersion = 1;
 // VoronoiDiagram 2: parallel packed arrays instead of a message per site, vertex and edge.
 inline constexpr uint32_t kVoronoiDiagramFormatVersion = 2;
-inline constexpr uint32_t kTopologyGraphFormatVersion = 1;
-inline constexpr uint32_t kCutGraphFormatVersion = 1;
+// TopologyGraph and CutGraph 2: rings packed (Ring.xy, proto/geometry.proto); format 1 rings,
+// Point2 messages, still read.
+inline constexpr uint32_t kTopologyGraphFormatVersion = 2;
+inline constexpr uint32_t kCutGraphFormatVersion = 2;
 inline constexpr uint32_t kAreaGraphFormatVersion = 1;
 
 // What one stage run did.

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "stages/geometry/ring_points.h"
+
 namespace areagraph {
 namespace {
 
@@ -18,7 +20,7 @@ struct Box {
   double max_x = -min_x, max_y = -min_x;
   template <class Points>
   explicit Box(const Points& points) {
-    for (const proto::Point2& p : points) {
+    for (const auto& p : points) {
       min_x = std::min(min_x, p.x()), max_x = std::max(max_x, p.x());
       min_y = std::min(min_y, p.y()), max_y = std::max(max_y, p.y());
     }
@@ -40,12 +42,13 @@ size_t NearestPiece(const std::vector<proto::GraphEdge>& pieces, const proto::Ri
   size_t nearest = 0;
   double best = std::numeric_limits<double>::infinity();
   double bound = best;
-  const Box ring_box(ring.points());
+  const PointList ring_points = RingPoints(ring);
+  const Box ring_box(ring_points);
   for (size_t k = 0; k < pieces.size(); ++k) {
     // A piece whose box is farther than the bound has no pair to test.
     if (k > 0 && GapSquared(Box(pieces[k].path()), ring_box) > bound) continue;
     for (const proto::Point2& p : pieces[k].path()) {
-      for (const proto::Point2& q : ring.points()) {
+      for (const Eigen::Vector2d& q : ring_points) {
         const double dx = p.x() - q.x(), dy = p.y() - q.y();
         // Most pairs end here, without the hypot (20 M instructions on lab_e).
         if (dx * dx + dy * dy > bound) continue;

@@ -11,7 +11,7 @@ void PushDistinct(const Eigen::Vector2d& point, PointList* ring) {
 proto::Ring ToRing(PointList ring) {
   while (ring.size() > 1 && (ring.back() - ring.front()).squaredNorm() <= 1e-18) ring.pop_back();
   proto::Ring out;
-  AppendPoints(ring, out.mutable_points());
+  SetPackedRing(ring, &out);
   return out;
 }
 

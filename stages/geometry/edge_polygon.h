@@ -6,11 +6,9 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/ring_points.h"
 
 namespace areagraph {
-
-// Points in pixel coordinates (see proto/geometry.proto).
-using PointList = std::vector<Eigen::Vector2d>;
 
 PointList ToPointList(const google::protobuf::RepeatedPtrField<proto::Point2>& points);
 void AppendPoints(const PointList& points, google::protobuf::RepeatedPtrField<proto::Point2>* out);

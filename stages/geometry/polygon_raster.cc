@@ -9,6 +9,7 @@
 
 #include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/parallel_zeros.h"
+#include "stages/geometry/ring_points.h"
 
 namespace areagraph {
 namespace {
@@ -20,8 +21,9 @@ constexpr double kScale = 1 << kShiftBits;
 
 std::vector<cv::Point> ToCv(const proto::Ring& ring) {
   std::vector<cv::Point> points;
-  points.reserve(ring.points_size());
-  for (const proto::Point2& p : ring.points()) {
+  const PointList ring_points = RingPoints(ring);
+  points.reserve(ring_points.size());
+  for (const Eigen::Vector2d& p : ring_points) {
     // Clamp absurd coordinates so the fixed-point values stay in int range.
     const double x = std::clamp(p.x(), -1e6, 1e6), y = std::clamp(p.y(), -1e6, 1e6);
     points.emplace_back(static_cast<int>(std::lround((x - 0.5) * kScale)),
@@ -33,10 +35,10 @@ std::vector<cv::Point> ToCv(const proto::Ring& ring) {
 // The outline and holes (of at least 3 points) of a polygon as cv::fillPoly
 // takes them; none when the outline has fewer than 3 points.
 std::vector<std::vector<cv::Point>> Contours(const proto::Polygon& polygon) {
-  if (polygon.outer().points_size() < 3) return {};
+  if (RingSize(polygon.outer()) < 3) return {};
   std::vector<std::vector<cv::Point>> contours{ToCv(polygon.outer())};
   for (const proto::Ring& hole : polygon.holes()) {
-    if (hole.points_size() >= 3) contours.push_back(ToCv(hole));
+    if (RingSize(hole) >= 3) contours.push_back(ToCv(hole));
   }
   return contours;
 }

@@ -14,6 +14,7 @@
 #include <utility>
 
 #include "stages/geometry/ring_area.h"
+#include "stages/geometry/ring_points.h"
 
 namespace areagraph {
 namespace {
@@ -27,7 +28,7 @@ using PolygonSet = CGAL::Polygon_set_2<Kernel>;  // Gps_segment_traits_2
 // not simple (CGAL's Boolean operations require simple rings).
 bool ToPolygon(const proto::Ring& ring, CGAL::Orientation orientation, Polygon* out) {
   Polygon polygon;
-  for (const proto::Point2& p : ring.points()) {
+  for (const Eigen::Vector2d& p : RingPoints(ring)) {
     const Kernel::Point_2 point(p.x(), p.y());
     if (polygon.is_empty() || *std::prev(polygon.vertices_end()) != point) polygon.push_back(point);
   }

@@ -50,7 +50,7 @@ double SignedArea(const PointList& ring) {
 
 proto::Ring ToProtoRing(const PointList& points) {
   proto::Ring ring;
-  AppendPoints(points, ring.mutable_points());
+  SetPackedRing(points, &ring);
   return ring;
 }
 

@@ -5,12 +5,17 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/geometry/ring_points.h"
+
 namespace areagraph {
 
-void AreaMoments::AddRing(const google::protobuf::RepeatedPtrField<proto::Point2>& ring) {
+void AreaMoments::AddRing(const proto::Ring& ring) {
   std::vector<cv::Point2f> points;
-  points.reserve(ring.size());
-  for (const proto::Point2& p : ring) points.emplace_back(p.x(), p.y());
+  points.reserve(RingSize(ring));
+  for (int i = 0; i < RingSize(ring); ++i) {
+    const Eigen::Vector2d p = RingPoint(ring, i);
+    points.emplace_back(p.x(), p.y());
+  }
   const cv::Moments m = cv::moments(points);
   a += m.m00, x += m.m10, y += m.m01;
   xx += m.m20, yy += m.m02, xy += m.m11;
@@ -31,7 +36,7 @@ std::pair<Eigen::Vector2d, double> AreaMoments::Axis() const {
 std::vector<AreaMoments> MomentsOfAreas(const proto::CutGraph& graph, const AreaPlan& plan) {
   std::vector<AreaMoments> moments(plan.areas.size());
   for (int e = 0; e < graph.edges_size(); ++e) {
-    moments[plan.area_of_edge[e]].AddRing(graph.edges(e).polygon().outer().points());
+    moments[plan.area_of_edge[e]].AddRing(graph.edges(e).polygon().outer());
   }
   return moments;
 }

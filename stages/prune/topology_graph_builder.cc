@@ -17,6 +17,7 @@
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/region_boxes.h"
+#include "stages/geometry/ring_points.h"
 #include "stages/geometry/site_alpha_shape.h"
 #include "stages/prune/chain_graph.h"
 #include "stages/prune/chain_pruning.h"
@@ -300,7 +301,7 @@ std::vector<proto::Polygon> PartBoundaries(const FilteredGraph& filtered,
   std::vector<proto::Polygon> outlines;
   for (const int region : order) {
     const proto::Polygon& outline = filtered.region_outlines.at(region);
-    if (outline.outer().points_size() >= 3) outlines.push_back(outline);
+    if (RingSize(outline.outer()) >= 3) outlines.push_back(outline);
   }
   return outlines;
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "stages/geometry/ring_points.h"
+
 namespace areagraph {
 namespace {
 
@@ -70,9 +72,10 @@ namespace {
 
 // A closed subpath; rings of fewer than 3 points draw nothing.
 void AppendRing(const proto::Ring& ring, SvgPathWriter& path) {
-  if (ring.points_size() < 3) return;
-  path.MoveTo(ring.points(0).x(), ring.points(0).y());
-  for (int i = 1; i < ring.points_size(); ++i) path.LineTo(ring.points(i).x(), ring.points(i).y());
+  const int n = RingSize(ring);
+  if (n < 3) return;
+  path.MoveTo(RingPoint(ring, 0).x(), RingPoint(ring, 0).y());
+  for (int i = 1; i < n; ++i) path.LineTo(RingPoint(ring, i).x(), RingPoint(ring, i).y());
   path.Close();
 }
 

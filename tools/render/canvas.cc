@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/ring_points.h"
 
 namespace areagraph {
 namespace {
@@ -46,10 +47,13 @@ void DrawSegments(cv::Mat& target, const Canvas& canvas,
                 thickness, kLineType, kShift);
 }
 
-std::vector<cv::Point> RingPoints(const Canvas& canvas, const proto::Ring& ring) {
+std::vector<cv::Point> CanvasRing(const Canvas& canvas, const proto::Ring& ring) {
   std::vector<cv::Point> points;
-  points.reserve(ring.points_size());
-  for (const proto::Point2& point : ring.points()) points.push_back(canvas.ToCanvas(point));
+  points.reserve(RingSize(ring));
+  for (int i = 0; i < RingSize(ring); ++i) {
+    const Eigen::Vector2d point = RingPoint(ring, i);
+    points.push_back(canvas.ToCanvas(cv::Point2d(point.x(), point.y())));
+  }
   return points;
 }
 
@@ -140,14 +144,14 @@ void Canvas::Dot(const proto::Point2& at, const cv::Scalar& colour, int radius) 
 }
 
 void Canvas::Outline(const proto::Ring& ring, const cv::Scalar& colour, int thickness) {
-  if (ring.points_size() < 2) return;
-  const std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, ring)};
+  if (RingSize(ring) < 2) return;
+  const std::vector<std::vector<cv::Point>> rings = {CanvasRing(*this, ring)};
   cv::polylines(image(), rings, true, colour, thickness, kLineType, kShift);
 }
 
 void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, double alpha) {
-  if (polygon.outer().points_size() < 3) return;
-  std::vector<std::vector<cv::Point>> rings = {RingPoints(*this, polygon.outer())};
+  if (RingSize(polygon.outer()) < 3) return;
+  std::vector<std::vector<cv::Point>> rings = {CanvasRing(*this, polygon.outer())};
   // Only the polygon's bounding box (holes lie inside it) is masked and
   // blended: a whole canvas per polygon made big maps take minutes.
   const cv::Rect box = PixelBox(rings[0]) & cv::Rect(0, 0, image().cols, image().rows);
@@ -156,7 +160,7 @@ void Canvas::Fill(const proto::Polygon& polygon, const cv::Scalar& colour, doubl
   cv::Mat mask = cv::Mat::zeros(box.size(), CV_8UC1);
   cv::fillPoly(mask, rings, cv::Scalar(255), cv::LINE_8, kShift, offset);
   for (const proto::Ring& hole : polygon.holes()) {
-    rings = {RingPoints(*this, hole)};
+    rings = {CanvasRing(*this, hole)};
     cv::fillPoly(mask, rings, cv::Scalar(0), cv::LINE_8, kShift, offset);
   }
   cv::Mat area = image()(box), tinted;

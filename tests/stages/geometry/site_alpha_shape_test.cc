@@ -8,6 +8,8 @@
 
 #include <set>
 
+#include "stages/geometry/ring_points.h"
+
 namespace areagraph {
 namespace {
 
@@ -43,7 +45,7 @@ TEST(SiteAlphaShapeTest, OutlinesInOnePassEqualOneAtATime) {
     const proto::Polygon single = shape.EnclosedRegionOutline(region);
     EXPECT_TRUE(google::protobuf::util::MessageDifferencer::Equals(outlines.at(region), single))
         << "region " << region;
-    non_empty += single.outer().points_size() >= 3 ? 1 : 0;
+    non_empty += RingSize(single.outer()) >= 3 ? 1 : 0;
   }
   EXPECT_GE(non_empty, 2);
   EXPECT_TRUE(shape.EnclosedRegionOutlines({}).empty());
@@ -138,8 +140,8 @@ TEST(SiteAlphaShapeTest, IdsPastTheRoomCountHoldThroughTheOutlines) {
   EXPECT_EQ(shape.RoomAt(in_first), count + 6);
   const std::vector<proto::Polygon> outlines = shape.RoomOutlines();
   ASSERT_EQ(outlines.size(), static_cast<size_t>(count + 7));
-  EXPECT_GT(outlines[count + 6].outer().points_size(), 0);
-  EXPECT_GT(outlines[count + 2].outer().points_size(), 0);
+  EXPECT_GT(RingSize(outlines[count + 6].outer()), 0);
+  EXPECT_GT(RingSize(outlines[count + 2].outer()), 0);
   EXPECT_EQ(shape.RoomAt(in_first), count + 6);
   EXPECT_EQ(shape.RoomAt(in_second), count + 2);
 }

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/ring_points.h"
 #include "stages/geometry/ring_simplicity.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
 
@@ -146,7 +147,7 @@ namespace areagraph::testing {
 namespace {
 
 // AreaSizesM2 sums half of each ring's TwiceSignedArea: the value
-// SignedArea(ToPointList(...)) gives, to the bit, on random rings.
+// SignedArea(RingPoints(...)) gives, to the bit, on random rings.
 TEST(AreaAssignmentTest, AreaSizesAsSignedAreasOfThePolygons) {
   std::mt19937 random(5);
   std::uniform_real_distribution<double> coordinate(-300.0, 900.0);
@@ -171,9 +172,9 @@ TEST(AreaAssignmentTest, AreaSizesAsSignedAreasOfThePolygons) {
   std::vector<double> want(4, 0);
   for (int e = 0; e < graph.edges_size(); ++e) {
     double& area = want[plan.area_of_edge[e]];
-    area += cell_m2 * std::abs(SignedArea(ToPointList(graph.edges(e).polygon().outer().points())));
+    area += cell_m2 * std::abs(SignedArea(RingPoints(graph.edges(e).polygon().outer())));
     for (const proto::Polygon& absorbed : graph.edges(e).absorbed()) {
-      area += cell_m2 * std::abs(SignedArea(ToPointList(absorbed.outer().points())));
+      area += cell_m2 * std::abs(SignedArea(RingPoints(absorbed.outer())));
     }
   }
   const std::vector<double> got = AreaSizesM2(graph, plan, resolution_m);
