@@ -6,7 +6,6 @@
 
 #include "common/error.h"
 #include "common/text.h"
-#include "stages/common/freed_memory.h"
 #include "stages/common/pipeline_options.h"
 #include "stages/common/stage_versions.h"
 
@@ -54,8 +53,6 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   MessagePtr result = compute();
   run.elapsed_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  // The stage's temporaries are gone; the serialized copies come next.
-  ReturnFreedMemory();
   run.summary = stage.summarize(*result);
 
   NewArtifact artifact;
