@@ -2,15 +2,6 @@
 
 namespace areagraph {
 
-int RingSize(const proto::Ring& ring) {
-  return ring.points_size() > 0 ? ring.points_size() : ring.xy_size() / 2;
-}
-
-Eigen::Vector2d RingPoint(const proto::Ring& ring, int i) {
-  if (ring.points_size() > 0) return {ring.points(i).x(), ring.points(i).y()};
-  return {ring.xy(2 * i), ring.xy(2 * i + 1)};
-}
-
 PointList RingPoints(const proto::Ring& ring) {
   const int n = RingSize(ring);
   PointList out;

@@ -12,8 +12,14 @@ using PointList = std::vector<Eigen::Vector2d>;
 
 // A ring's points, held as Point2 messages or packed (proto/geometry.proto):
 // these read either, so readers need not know which stage wrote the ring.
-int RingSize(const proto::Ring& ring);
-Eigen::Vector2d RingPoint(const proto::Ring& ring, int i);
+// Inline: readers call them per point.
+inline int RingSize(const proto::Ring& ring) {
+  return ring.points_size() > 0 ? ring.points_size() : ring.xy_size() / 2;
+}
+inline Eigen::Vector2d RingPoint(const proto::Ring& ring, int i) {
+  if (ring.points_size() > 0) return {ring.points(i).x(), ring.points(i).y()};
+  return {ring.xy(2 * i), ring.xy(2 * i + 1)};
+}
 PointList RingPoints(const proto::Ring& ring);
 
 // Replaces `ring`'s points by `points`, packed (for the Topology and Cut
