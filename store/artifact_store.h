@@ -158,6 +158,13 @@ class ArtifactStore {
     artifact.encoded_payload = EncodeMessagePayload(message);
     WriteArtifact(artifact);
   }
+  // WriteMessageArtifact for a message that no one changes while `message`
+  // holds it (a stage's result, shared with the next stages): a write-behind
+  // store may serialize even a big one later, on its own thread.
+  virtual void WriteSharedMessageArtifact(
+      NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) {
+    WriteMessageArtifact(std::move(artifact), *message);
+  }
   // Returns once every artifact handed to this store is in it; throws the
   // error of one that failed. Nothing to do where every write is done at once.
   virtual void FinishWrites() {}

@@ -29,6 +29,10 @@ struct PendingArtifact {
 struct WriteJob {
   NewArtifact artifact;
   SerializedMessage raw;
+  // Or, for a big shared message, the message itself and its byte size,
+  // serialized by the thread.
+  std::shared_ptr<const google::protobuf::MessageLite> message;
+  size_t message_bytes = 0;
 };
 
 class WriteBehindStore : public ArtifactStore {
@@ -68,6 +72,8 @@ class WriteBehindStore : public ArtifactStore {
   void WriteArtifact(const NewArtifact& artifact) override { Finished().WriteArtifact(artifact); }
   void WriteMessageArtifact(NewArtifact artifact,
                             const google::protobuf::MessageLite& message) override;
+  void WriteSharedMessageArtifact(
+      NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) override;
   void FinishWrites() override { Finished(); }
   void UpdateHead(const std::string& map_name, const std::string& cache_key) override {
     Finished().UpdateHead(map_name, cache_key);
@@ -146,6 +152,8 @@ class WriteBehindStore : public ArtifactStore {
                ? Finished()
                : *store_;
   }
+  // Waits for the pending write, then makes `job` the pending one.
+  void HandOver(WriteJob job);
   void RunWriter();
   void Write(WriteJob& job);
 
@@ -180,7 +188,24 @@ void WriteBehindStore::WriteMessageArtifact(NewArtifact artifact,
   }
   // Serialized here, the one step that reads `message`: the caller may
   // change or free it as soon as this returns.
-  WriteJob job{std::move(artifact), SerializeMessage(message, byte_size)};
+  HandOver(WriteJob{std::move(artifact), SerializeMessage(message, byte_size)});
+}
+
+void WriteBehindStore::WriteSharedMessageArtifact(
+    NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) {
+  const size_t byte_size = message->ByteSizeLong();
+  if (byte_size <= kWriteBehindMaxBytes) {
+    WriteMessageArtifact(std::move(artifact), *message);
+    return;
+  }
+  // The thread streams it as a direct write would, holding no serialized
+  // copy beside the message (whose sizes are cached above, before the
+  // hand-over): the next stage computes meanwhile.
+  WriteJob job{std::move(artifact), SerializedMessage(), std::move(message), byte_size};
+  HandOver(std::move(job));
+}
+
+void WriteBehindStore::HandOver(WriteJob job) {
   Finished();  // the previous artifact is in the store before this one starts
   PendingArtifact pending{job.artifact.map_name, job.artifact.stage, job.artifact.cache_key,
                           job.artifact.version.has_value()};
@@ -225,8 +250,13 @@ void WriteBehindStore::RunWriter() {
 }
 
 void WriteBehindStore::Write(WriteJob& job) {
-  job.artifact.encoded_payload = EncodeRawPayload(job.raw.view());
-  job.raw = SerializedMessage();  // not held through the insert
+  if (job.message) {
+    job.artifact.encoded_payload = EncodeMessagePayload(*job.message, job.message_bytes);
+    job.message.reset();  // its last holder may free it before the insert
+  } else {
+    job.artifact.encoded_payload = EncodeRawPayload(job.raw.view());
+    job.raw = SerializedMessage();  // not held through the insert
+  }
   if (!writer_) {
     writer_ = OpenArtifactStore(path_);
     // The caller's connection closes last and folds the log, or leaves it.

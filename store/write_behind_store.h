@@ -27,7 +27,10 @@ inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
 // without the pending artifact.
 //
 // A payload over kWriteBehindMaxBytes is written in the caller's thread,
-// streamed as OpenArtifactStore's store does.
+// streamed as OpenArtifactStore's store does, unless it comes through
+// WriteSharedMessageArtifact: then the thread holds the message itself and
+// streams it (no serialized copy), so the caller must not change the message
+// until FinishWrites or its shared_ptr shows no other holder.
 //
 // A failed write is thrown, as a MapStepError naming the artifact's map and
 // stage, by the next call that waits for it (FinishWrites, the next write,

@@ -68,9 +68,11 @@ StageRun ComputeAndStore(ArtifactStore& store, const std::string& map_name,
   artifact.source_path = inputs.source_path;
   artifact.source_digest = inputs.source_digest;
   artifact.version = inputs.version;
-  // A write-behind store finishes the write while the next stage computes.
-  store.WriteMessageArtifact(std::move(artifact), *result);
-  if (memo != nullptr) memo->Keep(stage.info.name, run.cache_key, std::move(result));
+  // A write-behind store finishes the write while the next stage computes;
+  // the result is not changed meanwhile (see the take below).
+  std::shared_ptr<const google::protobuf::Message> shared(std::move(result));
+  store.WriteSharedMessageArtifact(std::move(artifact), shared);
+  if (memo != nullptr) memo->Keep(stage.info.name, run.cache_key, std::move(shared));
   return run;
 }
 
@@ -144,6 +146,8 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                 held.at(i).reset();
               },
               [&](size_t i) -> std::shared_ptr<google::protobuf::Message> {
+                // A pending write of the input may hold it too, until it ends.
+                if (held.at(i).use_count() != 1) store.FinishWrites();
                 if (held.at(i).use_count() != 1) return nullptr;
                 // Made as a mutable message (parsed, or a stage's result in
                 // the memo); only `held` refers to it.

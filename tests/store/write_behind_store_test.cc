@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 
 #include "common/error.h"
@@ -180,6 +181,53 @@ TEST(WriteBehindStoreTest, ClosingFinishesThePendingWrite) {
   EXPECT_EQ(StoredArtifact(path, "k1").payload_digest,
             Sha256Hex(Grid(2 << 20, 8).SerializeAsString()));
   EXPECT_FALSE(HasWriteAheadLog(path));
+}
+
+// A big shared message (a stage's result, kept for the next stage) is
+// streamed by the thread from the message itself: the same bytes as a direct
+// write, and the store's hold on it ends with the write, so a stage that
+// takes its input over (cut) gets it once FinishWrites returns.
+TEST(WriteBehindStoreTest, SharedBigMessageIsHeldUntilWrittenAndStoredAsADirectWrite) {
+  testing::TempDir dir;
+  for (const size_t cells : {size_t{100}, kWriteBehindMaxBytes + 1}) {
+    const std::string key = "k" + std::to_string(cells);
+    auto grid = std::make_shared<const proto::GridMap>(Grid(cells, 10));
+    OpenArtifactStore(dir.File("direct.db"))->WriteMessageArtifact(Row("import", key), *grid);
+    const std::unique_ptr<ArtifactStore> behind = OpenWriteBehindStore(dir.File("behind.db"));
+    behind->WriteSharedMessageArtifact(Row("import", key), grid);
+    EXPECT_EQ(behind->ReadHeadKey(kMap, "import"), key);
+    EXPECT_TRUE(behind->HasArtifact(kMap, key));
+    behind->WriteMessageArtifact(Row("clean", key + "c"), Grid(100, 11));  // waits for it
+    EXPECT_EQ(grid.use_count(), 1) << cells;
+    behind->FinishWrites();
+    const ArtifactRecord direct = StoredArtifact(dir.File("direct.db"), key);
+    const ArtifactRecord written = StoredArtifact(dir.File("behind.db"), key);
+    EXPECT_EQ(written.payload_digest, direct.payload_digest) << cells;
+    EXPECT_EQ(written.payload_digest, Sha256Hex(grid->SerializeAsString())) << cells;
+    EXPECT_EQ(StoredArtifact(dir.File("behind.db"), key + "c").summary_line, "clean summary");
+  }
+}
+
+// A shared message whose write fails is released too, and the error is
+// thrown once, naming its stage.
+TEST(WriteBehindStoreTest, SharedBigMessageWhoseWriteFailsIsReleased) {
+  testing::TempDir dir;
+  const std::string path = dir.File("store.db");
+  auto grid = std::make_shared<const proto::GridMap>(Grid(kWriteBehindMaxBytes + 1, 12));
+  const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(path);
+  NewArtifact bad = Row("voronoi", "bad");
+  bad.input_keys = {"two\nlines"};  // refused by the store
+  store->WriteSharedMessageArtifact(bad, grid);
+  try {
+    store->FinishWrites();
+    ADD_FAILURE() << "the failed write went unreported";
+  } catch (const MapStepError& error) {
+    EXPECT_EQ(error.step(), "voronoi");
+    EXPECT_NE(error.cause().find("line break"), std::string::npos) << error.cause();
+  }
+  EXPECT_EQ(grid.use_count(), 1);
+  EXPECT_NO_THROW(store->FinishWrites());  // thrown once
+  EXPECT_EQ(store->ReadHeadKey(kMap, "voronoi"), std::nullopt);
 }
 
 TEST(WriteBehindStoreTest, MemoryStoreWritesAtOnce) {
