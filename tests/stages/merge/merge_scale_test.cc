@@ -11,6 +11,7 @@
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/corridor_labels.h"
 #include "stages/merge/deepest_bound.h"
+#include "stages/merge/region_depth.h"
 #include "tests/support/area_test_support.h"
 
 namespace areagraph::testing {
@@ -104,6 +105,71 @@ TEST(DeepestDistanceLowerBoundTest, AtMostDeepestDistanceAndItselfWhereExact) {
   }
   // The windows overlap: the deepest disk lies in one of them.
   EXPECT_EQ(close, 20);
+}
+
+// Every 8-connected region of `mask` that touches no border, as merge's
+// island candidates, cells in row-major order.
+std::vector<CellRegion> RegionsOf(const cv::Mat& mask) {
+  cv::Mat labels, stats, centroids;
+  const int count = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
+  std::vector<CellRegion> regions(count - 1);
+  for (int k = 1; k < count; ++k) {
+    regions[k - 1].box =
+        cv::Rect(stats.at<int>(k, cv::CC_STAT_LEFT), stats.at<int>(k, cv::CC_STAT_TOP),
+                 stats.at<int>(k, cv::CC_STAT_WIDTH), stats.at<int>(k, cv::CC_STAT_HEIGHT));
+  }
+  for (int r = 0; r < mask.rows; ++r) {
+    for (int c = 0; c < mask.cols; ++c) {
+      const int k = labels.at<int>(r, c);
+      if (k > 0) regions[k - 1].cells.emplace_back(c, r);
+    }
+  }
+  const cv::Rect inner(1, 1, mask.cols - 2, mask.rows - 2);
+  regions.erase(
+      std::remove_if(regions.begin(), regions.end(),
+                     [&](const CellRegion& region) { return (region.box & inner) != region.box; }),
+      regions.end());
+  return regions;
+}
+
+// Islands on masks wider than 4096 cells and on a small one: a region's
+// thickness test comes out as DeepestPerRun's (the whole rows, as before)
+// gives it, and a region that fails it gets DeepestPerRun's very value.
+TEST(DeepestOfRegionsTest, ThickWhereDeepestPerRunSaysSo) {
+  std::mt19937 random(11);
+  int thick = 0, thin = 0;
+  for (const cv::Size size : {cv::Size(4300, 160), cv::Size(4200, 4200), cv::Size(600, 300)}) {
+    cv::Mat mask = cv::Mat::zeros(size, CV_8U);
+    for (int k = 0; k < 400; ++k) {
+      const cv::Point centre(std::uniform_int_distribution<int>(2, size.width - 3)(random),
+                             std::uniform_int_distribution<int>(2, size.height - 3)(random));
+      const int radius = std::uniform_int_distribution<int>(0, 12)(random);
+      if (k % 2 == 0) {
+        cv::circle(mask, centre, radius, cv::Scalar(255), cv::FILLED);
+      } else {
+        cv::rectangle(mask, cv::Rect(centre, cv::Size(radius + 1, 2 * radius + 1)), cv::Scalar(255),
+                      cv::FILLED);
+      }
+    }
+    const std::vector<CellRegion> regions = RegionsOf(mask);
+    std::vector<PieceRun> runs;
+    for (size_t k = 0; k < regions.size(); ++k) {
+      for (const cv::Point& p : regions[k].cells) runs.push_back({p.y, p.x, p.x + 1, int(k) + 1});
+    }
+    const std::vector<float> before = DeepestPerRun(mask, runs, int(regions.size()) + 1);
+    for (const double min_thickness_px : {3.0, 9.5, 16.0}) {
+      const std::vector<float> deepest = DeepestOfRegions(mask, regions, min_thickness_px);
+      ASSERT_EQ(deepest.size(), regions.size());
+      for (size_t k = 0; k < regions.size(); ++k) {
+        const bool reaches = 2 * deepest[k] >= min_thickness_px;
+        ASSERT_EQ(reaches, 2 * before[k + 1] >= min_thickness_px) << size << " " << k;
+        if (!reaches) EXPECT_EQ(deepest[k], before[k + 1]) << size << " " << k;
+        thick += reaches, thin += !reaches;
+      }
+    }
+  }
+  EXPECT_GT(thick, 100);
+  EXPECT_GT(thin, 100);
 }
 
 // Rooms on a raster wider than 4096 cells: bands that run its width, halls
