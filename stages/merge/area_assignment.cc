@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
+#include <unordered_map>
 
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
@@ -43,12 +45,43 @@ void AreaPlan::MergeInto(int from, int into) {
 }
 
 void AreaPlan::MergeGroups(std::vector<int> group) {
-  for (int k = static_cast<int>(group.size()) - 1; k >= 0; --k) {
-    const auto first = std::find(group.begin(), group.begin() + k, group[k]);
-    if (first == group.begin() + k) continue;
-    MergeInto(k, static_cast<int>(first - group.begin()));
-    group.erase(group.begin() + k);
+  // What MergeInto, called for every area after the first of its group from
+  // the last area down, leaves; in one pass over the areas and the edges
+  // instead of one per merged area (quadratic in the areas).
+  const int count = static_cast<int>(group.size());
+  std::unordered_map<int, int> first_of_group;
+  std::vector<int> first(count);
+  for (int k = 0; k < count; ++k) first[k] = first_of_group.emplace(group[k], k).first->second;
+  // removed_below[v]: how many merged areas have an index below v.
+  std::vector<int> removed_below(count + 1, 0);
+  for (int k = 0; k < count; ++k) removed_below[k + 1] = removed_below[k] + (first[k] != k);
+  if (removed_below[count] == 0) return;
+  // From the last area down, as MergeInto went: an edge of two merged areas
+  // ends in the lower one's group.
+  for (int k = count - 1; k >= 0; --k) {
+    if (first[k] == k) continue;
+    for (const int e : areas[k].edges) area_of_edge[e] = first[k];
   }
+  for (int& area : area_of_edge) {
+    if (area > 0) area -= removed_below[std::min(area, count)];
+  }
+  std::vector<bool> grew(count, false);
+  for (int k = count - 1; k >= 0; --k) {
+    if (first[k] == k) continue;
+    std::vector<int>& target = areas[first[k]].edges;
+    target.insert(target.end(), areas[k].edges.begin(), areas[k].edges.end());
+    grew[first[k]] = true;
+  }
+  std::vector<Area> kept;
+  kept.reserve(count - removed_below[count]);
+  for (int k = 0; k < count; ++k) {
+    if (first[k] != k) continue;
+    kept.push_back(std::move(areas[k]));
+    if (grew[k]) std::sort(kept.back().edges.begin(), kept.back().edges.end());
+  }
+  areas.erase(areas.begin(), areas.begin() + count);
+  areas.insert(areas.begin(), std::make_move_iterator(kept.begin()),
+               std::make_move_iterator(kept.end()));
 }
 
 void MergeGroupsLedBy(DisjointSets& groups, const std::map<int, int>& lead, AreaPlan* plan) {

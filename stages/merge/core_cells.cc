@@ -29,17 +29,22 @@ int64_t SquaredReach(float reach) {
 
 // DistanceAtLeast on the free cells, then the domain: any size, any reach.
 cv::Mat WholeMapCores(const CellGrid& grid, const cv::Mat& domain, float reach) {
-  cv::Mat cells(domain.size(), CV_8U);
-  for (int r = 0; r < cells.rows; ++r) {
+  // The sizes in locals: a byte stored through a row could alias the Mat's
+  // own fields, so a loop bound read from them is reloaded every cell and
+  // the loop stays scalar (lab_a tiled 8 x 8: 400 M instructions).
+  const int rows = domain.rows, cols = domain.cols;
+  cv::Mat cells(rows, cols, CV_8U);
+  for (int r = 0; r < rows; ++r) {
     uint8_t* __restrict row = cells.ptr<uint8_t>(r);
     const uint8_t* __restrict state = grid.CellRow(r);
-    for (int c = 0; c < cells.cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
+    for (int c = 0; c < cols; ++c) row[c] = state[c] == proto::CELL_FREE ? 255 : 0;
   }
   cv::Mat core = DistanceAtLeast(cells, reach);
-  for (int r = 0; r < core.rows; ++r) {
+  cells.release();
+  for (int r = 0; r < rows; ++r) {
     uint8_t* __restrict row = core.ptr<uint8_t>(r);
     const uint8_t* __restrict inside = domain.ptr<uint8_t>(r);
-    for (int c = 0; c < core.cols; ++c) row[c] = (row[c] != 0) & (inside[c] != 0);
+    for (int c = 0; c < cols; ++c) row[c] = (row[c] != 0) & (inside[c] != 0);
   }
   return core;
 }

@@ -11,6 +11,7 @@
 #include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/parallel_ranges.h"
 #include "stages/geometry/region_boxes.h"
+#include "stages/merge/deepest_bound.h"
 
 namespace areagraph {
 
@@ -33,6 +34,26 @@ AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
   if (box.area() == 0) return {};
   cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
   return ShapeOfMask(mask);
+}
+
+// Whether area k of `raster` is corridor-shaped: IsCorridorShaped of its
+// ShapeOfArea. Where DeepestDistance would take OpenCV's single precision
+// (boxes over 4096 cells, the rows of lab_a tiled 8 x 8 joined into one
+// room), a lower bound of it decides first when it can: too wide or too
+// short for a corridor stays so for every larger width.
+bool AreaIsCorridorShaped(const AreaRaster& raster, int k, const cv::Rect& box,
+                          double resolution_m) {
+  if (box.area() == 0) return IsCorridorShaped({}, resolution_m);
+  cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
+  FillHoles(&mask);
+  const double area_px = static_cast<double>(cv::countNonZero(mask));
+  if (!ComputedExactly(mask.size())) {
+    const double least_width_px = 2 * DeepestDistanceLowerBound(mask);
+    if (least_width_px > 0 && !IsCorridorShaped({least_width_px, area_px}, resolution_m)) {
+      return false;
+    }
+  }
+  return IsCorridorShaped({2 * DeepestDistance(mask), area_px}, resolution_m);
 }
 
 // The room areas of `plan` that `raster` has a box for, in area order.
@@ -92,7 +113,7 @@ void CorridorShapeWork::Measure() {
   for (size_t i = next_++; i < rooms_.size(); i = next_++) {
     try {
       const int k = rooms_[i];
-      corridor_[i] = IsCorridorShaped(ShapeOfArea(raster_, k, raster_.boxes[k]), resolution_m_);
+      corridor_[i] = AreaIsCorridorShaped(raster_, k, raster_.boxes[k], resolution_m_);
     } catch (...) {
       const std::lock_guard<std::mutex> lock(error_mutex_);
       if (!error_) error_ = std::current_exception();

@@ -10,6 +10,7 @@
 #include "stages/geometry/distance_transform.h"
 #include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/wall_thickness.h"
+#include "stages/merge/region_depth.h"
 
 namespace areagraph {
 namespace {
@@ -34,10 +35,7 @@ class CellFlags {
 
 // An 8-connected region of a mask's non-zero cells that may be an island:
 // it touches no border and its box is at most the island length.
-struct Region {
-  std::vector<cv::Point> cells;  // in row-major order
-  cv::Rect box;
-};
+using Region = CellRegion;
 
 // Walks the region of `mask` that holds `start` (non-zero, not walked yet)
 // and marks its cells kWalked. Stops, with false, once the region touches
@@ -121,41 +119,6 @@ bool IslandShaped(const Region& region, double max_elongation) {
   return !(max_elongation > 0 && longer > max_elongation * shorter);
 }
 
-// The deepest distance of each region's cells to a zero cell of `mask`, as
-// ExactDistanceTransform(mask) gives it. Where that is computed exactly, a
-// region's box with a margin of one cell holds the cells nearest to its own
-// (an 8-connected region does not touch another); else the regions' rows
-// are transformed whole, as the rounding of a cell depends on its whole row.
-std::vector<float> DeepestOfRegions(const cv::Mat& mask, const std::vector<Region>& regions) {
-  std::vector<float> deepest(regions.size(), 0);
-  if (ComputedExactly(mask.size())) {
-    for (size_t k = 0; k < regions.size(); ++k) {
-      const cv::Rect& box = regions[k].box;
-      cv::Mat alone = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
-      for (const cv::Point& p : regions[k].cells) {
-        alone.at<uint8_t>(p.y - box.y + 1, p.x - box.x + 1) = 255;
-      }
-      deepest[k] = float(DeepestDistance(alone));
-    }
-    return deepest;
-  }
-  // The regions' rows' runs, region k + 1 (cells are in row-major order).
-  std::vector<PieceRun> runs;
-  for (size_t k = 0; k < regions.size(); ++k) {
-    for (const cv::Point& p : regions[k].cells) {
-      PieceRun* last = runs.empty() ? nullptr : &runs.back();
-      if (last && last->value == int(k) + 1 && last->row == p.y && last->end == p.x) {
-        ++last->end;
-      } else {
-        runs.push_back({p.y, p.x, p.x + 1, int(k) + 1});
-      }
-    }
-  }
-  const std::vector<float> per_run = DeepestPerRun(mask, runs, int(regions.size()) + 1);
-  std::copy(per_run.begin() + 1, per_run.end(), deepest.begin());
-  return deepest;
-}
-
 // Marks kIsland on the cells of the regions of `mask` around `cells` that
 // are islands: at least `min_thickness_px` thick (twice the deepest of
 // `deepest`, which gives each candidate's) and shaped as IslandShaped says.
@@ -227,7 +190,10 @@ std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fil
   CellFlags flags(thick.size());
   MarkIslands(
       thick, rest, min_thickness_px, max_px, max_elongation,
-      [&](const std::vector<Region>& regions) { return DeepestOfRegions(thick, regions); }, flags);
+      [&](const std::vector<Region>& regions) {
+        return DeepestOfRegions(thick, regions, min_thickness_px);
+      },
+      flags);
   for (size_t i = 0; i < cells.size(); ++i) {
     if (values[i] == 0 && inside.contains(cells[i]) && (flags.at(cells[i]) & kIsland)) {
       values[i] = 2;
