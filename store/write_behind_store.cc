@@ -37,8 +37,8 @@ struct WriteJob {
 
 class WriteBehindStore : public ArtifactStore {
  public:
-  explicit WriteBehindStore(const std::string& path)
-      : path_(path), store_(OpenArtifactStore(path)) {}
+  WriteBehindStore(const std::string& path, size_t serialized_max_bytes)
+      : path_(path), serialized_max_bytes_(serialized_max_bytes), store_(OpenArtifactStore(path)) {}
 
   ~WriteBehindStore() override {
     {
@@ -158,6 +158,7 @@ class WriteBehindStore : public ArtifactStore {
   void Write(WriteJob& job);
 
   const std::string path_;
+  const size_t serialized_max_bytes_;
   const std::unique_ptr<ArtifactStore> store_;  // the caller's connection
   std::unique_ptr<ArtifactStore> writer_;       // the thread's, opened on its first write
 
@@ -180,7 +181,7 @@ ArtifactStore& WriteBehindStore::Finished() {
 void WriteBehindStore::WriteMessageArtifact(NewArtifact artifact,
                                             const google::protobuf::MessageLite& message) {
   const size_t byte_size = message.ByteSizeLong();
-  if (byte_size > kWriteBehindMaxBytes) {
+  if (byte_size > serialized_max_bytes_) {
     Finished();  // the previous artifact is in the store before this one
     artifact.encoded_payload = EncodeMessagePayload(message, byte_size);
     store_->WriteArtifact(artifact);
@@ -194,7 +195,7 @@ void WriteBehindStore::WriteMessageArtifact(NewArtifact artifact,
 void WriteBehindStore::WriteSharedMessageArtifact(
     NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) {
   const size_t byte_size = message->ByteSizeLong();
-  if (byte_size <= kWriteBehindMaxBytes) {
+  if (byte_size <= serialized_max_bytes_) {
     WriteMessageArtifact(std::move(artifact), *message);
     return;
   }
@@ -267,9 +268,10 @@ void WriteBehindStore::Write(WriteJob& job) {
 
 }  // namespace
 
-std::unique_ptr<ArtifactStore> OpenWriteBehindStore(const std::string& path) {
+std::unique_ptr<ArtifactStore> OpenWriteBehindStore(const std::string& path,
+                                                    size_t serialized_max_bytes) {
   if (path == kMemoryStorePath) return OpenArtifactStore(path);
-  return std::make_unique<WriteBehindStore>(path);
+  return std::make_unique<WriteBehindStore>(path, serialized_max_bytes);
 }
 
 }  // namespace areagraph

@@ -26,7 +26,7 @@ inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
 // leaves the store as a run killed before that write would: consistent,
 // without the pending artifact.
 //
-// A payload over kWriteBehindMaxBytes is written in the caller's thread,
+// A payload over `serialized_max_bytes` is written in the caller's thread,
 // streamed as OpenArtifactStore's store does, unless it comes through
 // WriteSharedMessageArtifact: then the thread holds the message itself and
 // streams it (no serialized copy), so the caller must not change the message
@@ -37,6 +37,8 @@ inline constexpr size_t kWriteBehindMaxBytes = size_t{32} << 20;
 // or such a read), once; the artifacts handed over after it are dropped
 // unwritten. ":memory:" stores, which a second connection cannot share, are
 // opened as OpenArtifactStore does (every write in the caller's thread).
-std::unique_ptr<ArtifactStore> OpenWriteBehindStore(const std::string& path);
+// (Tests pass a smaller `serialized_max_bytes` to take that way with small maps.)
+std::unique_ptr<ArtifactStore> OpenWriteBehindStore(
+    const std::string& path, size_t serialized_max_bytes = kWriteBehindMaxBytes);
 
 }  // namespace areagraph

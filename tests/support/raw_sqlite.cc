@@ -37,6 +37,25 @@ void ExecSql(const std::string& path, const std::string& sql) {
   Check(db.get(), sqlite3_exec(db.get(), sql.c_str(), nullptr, nullptr, nullptr));
 }
 
+struct WriteLockHolder::Connection {
+  Connection(sqlite3* db) : db(db, &sqlite3_close_v2) {}  // NOLINT
+  std::unique_ptr<sqlite3, decltype(&sqlite3_close_v2)> db;
+};
+
+WriteLockHolder::WriteLockHolder(const std::string& path)
+    : connection_(std::make_unique<Connection>(OpenRaw(path).release())) {
+  sqlite3* db = connection_->db.get();
+  Check(db, sqlite3_exec(db, "BEGIN IMMEDIATE", nullptr, nullptr, nullptr));
+}
+
+WriteLockHolder::~WriteLockHolder() { Release(); }
+
+void WriteLockHolder::Release() {
+  if (!connection_) return;
+  sqlite3_exec(connection_->db.get(), "COMMIT", nullptr, nullptr, nullptr);
+  connection_.reset();
+}
+
 std::vector<std::string> QueryColumn(const std::string& path, const std::string& sql, int column) {
   Connection db = OpenRaw(path);
   sqlite3_stmt* raw = nullptr;

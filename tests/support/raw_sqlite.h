@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,22 @@ namespace areagraph::testing {
 // Runs `sql` (one or more statements) on the file, creating it if needed;
 // throws std::runtime_error.
 void ExecSql(const std::string& path, const std::string& sql);
+
+// Holds the file's write lock (BEGIN IMMEDIATE on a connection of its own)
+// from construction until Release or destruction: a store's writes wait
+// meanwhile (its busy timeout is 10 s). Release may come from another thread.
+class WriteLockHolder {
+ public:
+  explicit WriteLockHolder(const std::string& path);
+  ~WriteLockHolder();
+  WriteLockHolder(const WriteLockHolder&) = delete;
+  WriteLockHolder& operator=(const WriteLockHolder&) = delete;
+  void Release();
+
+ private:
+  struct Connection;
+  std::unique_ptr<Connection> connection_;
+};
 
 // Column `column` of every row of `sql`, as text.
 std::vector<std::string> QueryColumn(const std::string& path, const std::string& sql,
