@@ -152,6 +152,9 @@ class WriteBehindStore : public ArtifactStore {
                ? Finished()
                : *store_;
   }
+  // WriteMessageArtifact of a message whose ByteSizeLong is `byte_size`.
+  void WriteMessageOfSize(NewArtifact artifact, const google::protobuf::MessageLite& message,
+                          size_t byte_size);
   // Waits for the pending write, then makes `job` the pending one.
   void HandOver(WriteJob job);
   void RunWriter();
@@ -180,7 +183,12 @@ ArtifactStore& WriteBehindStore::Finished() {
 
 void WriteBehindStore::WriteMessageArtifact(NewArtifact artifact,
                                             const google::protobuf::MessageLite& message) {
-  const size_t byte_size = message.ByteSizeLong();
+  WriteMessageOfSize(std::move(artifact), message, message.ByteSizeLong());
+}
+
+void WriteBehindStore::WriteMessageOfSize(NewArtifact artifact,
+                                          const google::protobuf::MessageLite& message,
+                                          size_t byte_size) {
   if (byte_size > serialized_max_bytes_) {
     Finished();  // the previous artifact is in the store before this one
     artifact.encoded_payload = EncodeMessagePayload(message, byte_size);
@@ -196,7 +204,7 @@ void WriteBehindStore::WriteSharedMessageArtifact(
     NewArtifact artifact, std::shared_ptr<const google::protobuf::MessageLite> message) {
   const size_t byte_size = message->ByteSizeLong();
   if (byte_size <= serialized_max_bytes_) {
-    WriteMessageArtifact(std::move(artifact), *message);
+    WriteMessageOfSize(std::move(artifact), *message, byte_size);
     return;
   }
   // The thread streams it as a direct write would, holding no serialized

@@ -21,9 +21,10 @@ constexpr double kScale = 1 << kShiftBits;
 
 std::vector<cv::Point> ToCv(const proto::Ring& ring) {
   std::vector<cv::Point> points;
-  const PointList ring_points = RingPoints(ring);
-  points.reserve(ring_points.size());
-  for (const Eigen::Vector2d& p : ring_points) {
+  const int n = RingSize(ring);
+  points.reserve(n);
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector2d p = RingPoint(ring, i);
     // Clamp absurd coordinates so the fixed-point values stay in int range.
     const double x = std::clamp(p.x(), -1e6, 1e6), y = std::clamp(p.y(), -1e6, 1e6);
     points.emplace_back(static_cast<int>(std::lround((x - 0.5) * kScale)),

@@ -28,7 +28,8 @@ using PolygonSet = CGAL::Polygon_set_2<Kernel>;  // Gps_segment_traits_2
 // not simple (CGAL's Boolean operations require simple rings).
 bool ToPolygon(const proto::Ring& ring, CGAL::Orientation orientation, Polygon* out) {
   Polygon polygon;
-  for (const Eigen::Vector2d& p : RingPoints(ring)) {
+  for (int i = 0; i < RingSize(ring); ++i) {
+    const Eigen::Vector2d p = RingPoint(ring, i);
     const Kernel::Point_2 point(p.x(), p.y());
     if (polygon.is_empty() || *std::prev(polygon.vertices_end()) != point) polygon.push_back(point);
   }

@@ -21,10 +21,15 @@ namespace {
 // cost more to start a thread than they gain.
 constexpr int64_t kMinRangeBoxCells = int64_t(1) << 17;
 
-// The shape of the non-zero cells of `mask` (CV_8U, a margin of zeros all
-// round), with holes filled. Changes `mask`.
-AreaShape ShapeOfMask(cv::Mat& mask) {
+// Area k's cells in `box`, with a margin of zeros all round and holes filled.
+cv::Mat FilledAreaMask(const AreaRaster& raster, int k, const cv::Rect& box) {
+  cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
   FillHoles(&mask);
+  return mask;
+}
+
+// The shape of the non-zero cells of a FilledAreaMask.
+AreaShape ShapeOfFilledMask(const cv::Mat& mask) {
   // Only the deepest cell counts: no distance image.
   const double deepest = DeepestDistance(mask);
   return {2 * deepest, static_cast<double>(cv::countNonZero(mask))};
@@ -32,8 +37,7 @@ AreaShape ShapeOfMask(cv::Mat& mask) {
 
 AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
   if (box.area() == 0) return {};
-  cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
-  return ShapeOfMask(mask);
+  return ShapeOfFilledMask(FilledAreaMask(raster, k, box));
 }
 
 // Whether area k of `raster` is corridor-shaped: IsCorridorShaped of its
@@ -44,16 +48,15 @@ AreaShape ShapeOfArea(const AreaRaster& raster, int k, const cv::Rect& box) {
 bool AreaIsCorridorShaped(const AreaRaster& raster, int k, const cv::Rect& box,
                           double resolution_m) {
   if (box.area() == 0) return IsCorridorShaped({}, resolution_m);
-  cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, box);
-  FillHoles(&mask);
-  const double area_px = static_cast<double>(cv::countNonZero(mask));
+  const cv::Mat mask = FilledAreaMask(raster, k, box);
   if (!ComputedExactly(mask.size())) {
     const double least_width_px = 2 * DeepestDistanceLowerBound(mask);
+    const double area_px = static_cast<double>(cv::countNonZero(mask));
     if (least_width_px > 0 && !IsCorridorShaped({least_width_px, area_px}, resolution_m)) {
       return false;
     }
   }
-  return IsCorridorShaped({2 * DeepestDistance(mask), area_px}, resolution_m);
+  return IsCorridorShaped(ShapeOfFilledMask(mask), resolution_m);
 }
 
 // The room areas of `plan` that `raster` has a box for, in area order.
