@@ -79,7 +79,7 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
     }
   }
   // Between stages the next one reuses what the last freed (a trim there costs
-  // its pages' faults again: 15-20 % of lab_a 8 x 8's CPU); after the map the
+  // its pages' faults again: 15-20 % of a 50-megapixel map's CPU); after the map the
   // heap goes back, so that a worker or ag-live does not keep its peak.
   store.FinishWrites();
   ReturnFreedMemory();
