@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "common/error.h"
+#include "common/protected_files.h"
 
 namespace areagraph {
 namespace {
@@ -49,6 +50,7 @@ SqliteConnection::SqliteConnection(const std::string& path, StoreMode mode) {
     throw StoreError(std::string(existed ? "cannot open" : "cannot create") + " store '" + path +
                      "': " + reason);
   }
+  if (!memory) ProtectStoreFile(path);
 }
 
 SqliteConnection::~SqliteConnection() { sqlite3_close_v2(db_); }
