@@ -69,8 +69,8 @@ TEST(JosmValidation, FindsNoWarningOrErrorOnFourRealMaps) {
         RunTool("ag-export", {"--store", dir.File("store.db"), "--map", map, "--format", "osmag",
                               "--out", dir.File(map + ".osm")});
     ASSERT_EQ(exported.exit_code, 0) << exported.err;
-    validate.insert(validate.end(), {"--input", dir.File(map + ".osm"), "--output",
-                                     dir.File(map + ".findings")});
+    validate.insert(validate.end(),
+                    {"--input", dir.File(map + ".osm"), "--output", dir.File(map + ".findings")});
   }
   const CommandResult validated = RunProgram(validate);
   const std::string log = validated.out + validated.err;

@@ -16,8 +16,8 @@ using Points = std::vector<GridPoint>;
 // to (10, 1), half a unit below the apex's (5, 1): the triangle would poke
 // through the ring. Routed through the apex's hot pixel, e bends to touch it.
 TEST(SnapRounder, RoutesAnEdgeThroughAVertexItPassesNear) {
-  const std::vector<std::vector<GridPosition>> rings = {
-      {{0, 0.3}, {10, 1.3}, {10, 10}, {0, 10}}, {{2, -5}, {8, -5}, {5, 0.75}}};
+  const std::vector<std::vector<GridPosition>> rings = {{{0, 0.3}, {10, 1.3}, {10, 10}, {0, 10}},
+                                                        {{2, -5}, {8, -5}, {5, 0.75}}};
   const SnapRounder snap(rings);
   EXPECT_EQ(snap.Ring(rings[0]), (Points{{0, 0}, {5, 1}, {10, 1}, {10, 10}, {0, 10}}));
   EXPECT_EQ(snap.Ring(rings[1]), (Points{{2, -5}, {8, -5}, {5, 1}}));
