@@ -51,12 +51,13 @@ TEST(JosmValidation, FindsNoWarningOrErrorOnFourRealMaps) {
   ASSERT_EQ(ran.exit_code, 0) << ran.err;
 
   // One JOSM for all four files (its start costs more than a validation).
-  // JOSM keeps its settings in the test's folder, and every request it makes
-  // (it asks api.openstreetmap.org for the API's limits) goes to a closed
-  // port on this host: the test sends nothing off the machine.
+  // JOSM (and Java's font cache) keep their files in the test's folder, and
+  // every request JOSM makes (it asks api.openstreetmap.org for the API's
+  // limits) goes to a closed port on this host: the test sends nothing off
+  // the machine.
   std::vector<std::string> validate = {
       "/usr/bin/env",
-      "JAVA_OPTS=-Djosm.home=" + dir.File("josm") +
+      "JAVA_OPTS=-Djosm.home=" + dir.File("josm") + " -Duser.home=" + dir.path() +
           " -Djava.awt.headless=true -Djava.net.useSystemProxies=false"
           " -Dhttp.proxyHost=127.0.0.1 -Dhttp.proxyPort=9"
           " -Dhttps.proxyHost=127.0.0.1 -Dhttps.proxyPort=9",
