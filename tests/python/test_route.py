@@ -135,7 +135,7 @@ class RealMapRouteTest(unittest.TestCase, RouteChecks):
                 continue  # different parts of the map
             found += 1
             self.check_route(graph, route, start, goal, union)
-        self.assertGreater(found, 40)
+        self.assertGreaterEqual(found, 30)
 
     def test_lab_a_routes_stay_in_free_space(self):
         self.check_map("lab_a")

@@ -36,7 +36,16 @@ void SetRouteGraph(const proto::AreaGraph& graph, viewer::Run* run) {
   const MapTransform transform(graph.frame());
   viewer::RouteGraph* out = run->mutable_route_graph();
   for (int c = 0; c < router->corner_count(); ++c) {
-    AddPixel(transform, router->corner_at(c), out->mutable_corners());
+    const AreaRouter::Corner& corner = router->corner(c);
+    AddPixel(transform, corner.at, out->mutable_corners());
+    out->add_corner_kinds(corner.reflex ? 2 : corner.walled ? 1 : 0);
+    for (const Vec2& wall : {corner.wall_a, corner.wall_b}) {
+      const Eigen::Vector2d direction =
+          (transform.WorldToPixel(corner.at + wall) - transform.WorldToPixel(corner.at))
+              .normalized();
+      out->add_corner_walls(Rounded(direction.x(), 6));
+      out->add_corner_walls(Rounded(direction.y(), 6));
+    }
   }
   for (const auto& [u, v] : router->Links()) {
     out->add_links(u);

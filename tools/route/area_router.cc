@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <queue>
 #include <tuple>
 
 #include "common/error.h"
 #include "common/text.h"
+#include "tools/route/vertex_passage.h"
 
 namespace areagraph {
 namespace {
@@ -33,23 +35,24 @@ std::string PointText(const Vec2& point) {
   return "(" + FormatNumber(point.x()) + ", " + FormatNumber(point.y()) + ")";
 }
 
-// Whether segments ab and cd share a point (touching counts).
+// Whether segments ab and cd share a point, within kRouteTolerance (touching
+// counts, as in FreeSpace).
 bool SegmentsMeet(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  constexpr double kTouch = 1e-9;
-  const double abc = Cross(b - a, c - a), abd = Cross(b - a, d - a);
-  const double cda = Cross(d - c, a - c), cdb = Cross(d - c, b - c);
-  if (((abc > kTouch && abd > kTouch) || (abc < -kTouch && abd < -kTouch)) ||
-      ((cda > kTouch && cdb > kTouch) || (cda < -kTouch && cdb < -kTouch))) {
-    return false;
-  }
+  const double ab = std::max((b - a).norm(), kRouteTolerance);
+  const double cd = std::max((d - c).norm(), kRouteTolerance);
+  // Signed distances of each segment's ends from the other's line.
+  const double abc = Cross(b - a, c - a) / ab, abd = Cross(b - a, d - a) / ab;
+  const double cda = Cross(d - c, a - c) / cd, cdb = Cross(d - c, b - c) / cd;
+  auto apart = [](double p, double q) {
+    return (p > kRouteTolerance && q > kRouteTolerance) ||
+           (p < -kRouteTolerance && q < -kRouteTolerance);
+  };
+  if (apart(abc, abd) || apart(cda, cdb)) return false;
+  if (std::abs(abc) > kRouteTolerance || std::abs(abd) > kRouteTolerance) return true;
   // On one line: the two spans must overlap.
-  const Vec2 axis = b - a;
-  if (std::abs(abc) <= kTouch && std::abs(abd) <= kTouch) {
-    const double length2 = std::max(axis.squaredNorm(), kTouch);
-    const double tc = (c - a).dot(axis) / length2, td = (d - a).dot(axis) / length2;
-    return std::max(tc, td) >= -kTouch && std::min(tc, td) <= 1 + kTouch;
-  }
-  return true;
+  const Vec2 axis = (b - a) / ab;
+  const double tc = (c - a).dot(axis), td = (d - a).dot(axis);
+  return std::max(tc, td) >= -kRouteTolerance && std::min(tc, td) <= ab + kRouteTolerance;
 }
 
 int Root(std::vector<int>& parents, int item) {
@@ -94,52 +97,51 @@ AreaRouter::AreaRouter(const proto::AreaGraph& graph, const RouteSettings& setti
 
 void AreaRouter::FindCorners(const proto::AreaGraph& graph) {
   const std::vector<OutlineVertex>& vertices = space_.vertices();
-  std::vector<int> corner_of_vertex(vertices.size(), -1);
-  auto wedge_areas = [](const OutlineVertex& vertex) {
-    std::vector<int> areas;
-    for (const CornerWedge& wedge : vertex.wedges) areas.push_back(wedge.area);
-    std::sort(areas.begin(), areas.end());
-    areas.erase(std::unique(areas.begin(), areas.end()), areas.end());
-    return areas;
+  std::vector<std::vector<FreeStretch>> stretches(vertices.size());
+  std::map<std::pair<int, size_t>, int> corner_of_stretch;
+  auto add = [&](int v, size_t s, bool reflex) {
+    const FreeStretch& stretch = stretches[v][s];
+    if (!corner_of_stretch.emplace(std::pair(v, s), corner_count()).second) return;
+    corners_.push_back({vertices[v].at, reflex, stretch.walled, stretch.from_wall, stretch.to_wall,
+                        stretch.areas, v});
   };
   for (size_t v = 0; v < vertices.size(); ++v) {
-    const OutlineVertex& vertex = vertices[v];
-    // A stretch of free space around the vertex runs from a wall through the
-    // wedges of the areas that meet there, across passage borders, to a wall.
-    for (const CornerWedge& first : vertex.wedges) {
-      if (!first.next_is_wall) continue;
-      double angle = first.angle;
-      const CornerWedge* last = &first;
-      for (size_t steps = 0; !last->previous_is_wall && steps < vertex.wedges.size(); ++steps) {
-        const CornerWedge* following = nullptr;
-        for (const CornerWedge& wedge : vertex.wedges) {
-          if (&wedge != last && wedge.next == last->previous) following = &wedge;
-        }
-        if (following == nullptr) break;
-        angle += following->angle;
-        last = following;
-      }
-      if (angle > kHalfTurn + 1e-9) {
-        corner_of_vertex[v] = static_cast<int>(corners_.size());
-        corners_.push_back({vertex.at, true, vertices[first.next].at - vertex.at,
-                            vertices[last->previous].at - vertex.at, wedge_areas(vertex)});
-        break;  // only one stretch can span more than half a turn
+    stretches[v] = FreeStretches(vertices, vertices[v]);
+    for (size_t s = 0; s < stretches[v].size(); ++s) {
+      if (stretches[v][s].walled && stretches[v][s].angle > kHalfTurn + 1e-9) {
+        add(static_cast<int>(v), s, /*reflex=*/true);
       }
     }
   }
   // The ends of every passage, so that each area's passages are linked
-  // through the area even where no corner sticks out.
+  // through the area even where no corner sticks out: in the stretch that the
+  // passage's border runs into.
   for (const PassageLine& passage : passages_) {
     if (passage.border.empty()) continue;
-    for (const Vec2& end : {passage.border.front(), passage.border.back()}) {
+    const size_t n = passage.border.size();
+    for (const auto& [end, inward] : {std::pair(passage.border[0], passage.border[1]),
+                                      std::pair(passage.border[n - 1], passage.border[n - 2])}) {
       const int v = space_.VertexAt(end);
-      if (v >= 0 && corner_of_vertex[v] >= 0) continue;
-      Corner corner{end, false, Vec2::Zero(), Vec2::Zero(), {passage.area_a, passage.area_b}};
-      if (v >= 0) {
-        corner.areas = wedge_areas(vertices[v]);
-        corner_of_vertex[v] = static_cast<int>(corners_.size());
+      const int toward = space_.VertexAt(inward);
+      bool found = false;
+      for (size_t s = 0; v >= 0 && s < stretches[v].size(); ++s) {
+        const std::vector<int>& rays = stretches[v][s].rays;
+        if (std::find(rays.begin(), rays.end(), toward) == rays.end()) continue;
+        add(v, s, stretches[v][s].walled && stretches[v][s].angle > kHalfTurn + 1e-9);
+        found = true;
       }
-      corners_.push_back(corner);
+      // A border off the outlines (a graph that breaks its own rules): a
+      // corner that takes every direction.
+      if (!found) {
+        corners_.push_back(
+            {end,
+             false,
+             false,
+             Vec2::Zero(),
+             Vec2::Zero(),
+             {std::min(passage.area_a, passage.area_b), std::max(passage.area_a, passage.area_b)},
+             v});
+      }
     }
   }
   area_corners_.assign(graph.areas_size(), {});
@@ -166,14 +168,21 @@ std::vector<int> AreaRouter::AreasWithin(int area, int hops) const {
   return reached;
 }
 
-bool AreaRouter::Tangent(const Corner& corner, const Vec2& direction) const {
-  if (!corner.reflex) return true;
-  // The walls' side of the corner (less than half a turn) must lie on one
-  // side of the line, else the route could cut the corner short.
-  const Vec2 unit = direction.normalized();
-  const double a = Cross(unit, corner.wall_a.normalized());
-  const double b = Cross(unit, corner.wall_b.normalized());
-  return !((a > 1e-12 && b < -1e-12) || (a < -1e-12 && b > 1e-12));
+bool AreaRouter::Admits(const Corner& corner, const Vec2& direction) {
+  const double a = Cross(direction, corner.wall_a);
+  const double b = Cross(direction, corner.wall_b);
+  // (The walls are unit vectors; a sine under 1e-12 counts as parallel.)
+  const double parallel = 1e-24 * direction.squaredNorm();
+  if (corner.reflex) {
+    // The walls' side of the corner (less than half a turn) must lie on one
+    // side of the line, else the route could cut the corner short; then the
+    // line lies in the corner's stretch.
+    return !(a * b < 0 && a * a > parallel && b * b > parallel);
+  }
+  if (!corner.walled) return true;
+  // Within the stretch (at most half a turn), from wall_a counter-clockwise
+  // to wall_b, borders included: a route bends only inside one stretch.
+  return (a <= 0 || a * a <= parallel) && (b >= 0 || b * b <= parallel);
 }
 
 void AreaRouter::LinkCorners() {
@@ -191,8 +200,12 @@ void AreaRouter::LinkCorners() {
           if (v <= u || seen[v] == u) continue;
           seen[v] = u;
           const Vec2 direction = corners_[v].at - from.at;
-          if (!Tangent(from, direction) || !Tangent(corners_[v], direction)) continue;
-          if (!space_.SegmentIsFree(from.at, corners_[v].at)) continue;
+          if (!Admits(from, direction) || !Admits(corners_[v], -direction)) continue;
+          if (!ShareAnArea(from, corners_[v]) && !LeavesThroughAPassage(from, corners_[v].at)) {
+            continue;
+          }
+          const bool inward = from.vertex >= 0 && space_.LeavesInto(from.vertex, direction);
+          if (!space_.SegmentIsFree(from.at, corners_[v].at, inward)) continue;
           links.emplace_back(u, v, direction.norm());
         }
       }
@@ -236,6 +249,20 @@ std::vector<int> AreaRouter::EndCandidates(int area) const {
   return candidates;
 }
 
+bool AreaRouter::ShareAnArea(const Corner& a, const Corner& b) {
+  for (const int area : a.areas) {
+    if (std::find(b.areas.begin(), b.areas.end(), area) != b.areas.end()) return true;
+  }
+  return false;
+}
+
+bool AreaRouter::LeavesThroughAPassage(const Corner& from, const Vec2& to) const {
+  for (const int area : from.areas) {
+    if (LeavesThroughAPassage(from.at, area, to)) return true;
+  }
+  return false;
+}
+
 bool AreaRouter::LeavesThroughAPassage(const Vec2& point, int area, const Vec2& to) const {
   for (const int p : area_passages_[area]) {
     const std::vector<Vec2>& border = passages_[p].border;
@@ -246,29 +273,35 @@ bool AreaRouter::LeavesThroughAPassage(const Vec2& point, int area, const Vec2& 
   return false;
 }
 
-std::vector<std::pair<int, double>> AreaRouter::VisibleCorners(const Vec2& point, int area) const {
+std::vector<std::pair<int, double>> AreaRouter::VisibleCorners(const Vec2& point, int area,
+                                                               bool inside) const {
   std::vector<std::pair<int, double>> visible;
   for (const int c : EndCandidates(area)) {
     const Corner& corner = corners_[c];
     const Vec2 direction = corner.at - point;
-    if (!Tangent(corner, direction)) continue;
+    if (!Admits(corner, -direction)) continue;
     // Everything of the area's outline but its passages is wall: a line to
     // a corner of another area must cross one of them (a cheap test first).
     const bool own =
         std::find(corner.areas.begin(), corner.areas.end(), area) != corner.areas.end();
     if (!own && !LeavesThroughAPassage(point, area, corner.at)) continue;
-    if (space_.SegmentIsFree(point, corner.at)) visible.emplace_back(c, direction.norm());
+    if (space_.SegmentIsFree(point, corner.at, inside)) {
+      visible.emplace_back(c, direction.norm());
+    }
   }
   return visible;
 }
 
-std::optional<std::vector<Vec2>> AreaRouter::ShortestPolyline(const Vec2& start, int start_area,
-                                                              const Vec2& goal,
-                                                              int goal_area) const {
-  if (space_.SegmentIsFree(start, goal)) return std::vector<Vec2>{start, goal};
+std::optional<std::vector<Vec2>> AreaRouter::ShortestPolyline(const End& start,
+                                                              const End& goal) const {
+  if (space_.SegmentIsFree(start.at, goal.at, start.inside)) {
+    return std::vector<Vec2>{start.at, goal.at};
+  }
   const int goal_node = corner_count();
   std::vector<double> to_goal(corners_.size(), kInfinity);
-  for (const auto& [c, length] : VisibleCorners(goal, goal_area)) to_goal[c] = length;
+  for (const auto& [c, length] : VisibleCorners(goal.at, goal.area, goal.inside)) {
+    to_goal[c] = length;
+  }
   // A* from the start to the goal node over the corners, with the straight
   // distance to the goal as the (consistent) estimate.
   std::vector<double> best(corners_.size() + 1, kInfinity);
@@ -280,10 +313,12 @@ std::optional<std::vector<Vec2>> AreaRouter::ShortestPolyline(const Vec2& start,
     if (length >= best[node]) return;
     best[node] = length;
     parent[node] = from;
-    const double estimate = node == goal_node ? 0 : (goal - corners_[node].at).norm();
+    const double estimate = node == goal_node ? 0 : (goal.at - corners_[node].at).norm();
     open.emplace(length + estimate, node);
   };
-  for (const auto& [c, length] : VisibleCorners(start, start_area)) reach(c, length, -1);
+  for (const auto& [c, length] : VisibleCorners(start.at, start.area, start.inside)) {
+    reach(c, length, -1);
+  }
   while (!open.empty()) {
     const int node = open.top().second;
     open.pop();
@@ -296,11 +331,11 @@ std::optional<std::vector<Vec2>> AreaRouter::ShortestPolyline(const Vec2& start,
     }
   }
   if (!done[goal_node]) return std::nullopt;
-  std::vector<Vec2> polyline{goal};
+  std::vector<Vec2> polyline{goal.at};
   for (int node = parent[goal_node]; node >= 0; node = parent[node]) {
     polyline.push_back(corners_[node].at);
   }
-  polyline.push_back(start);
+  polyline.push_back(start.at);
   std::reverse(polyline.begin(), polyline.end());
   return polyline;
 }
@@ -311,39 +346,38 @@ RouteAnswer AreaRouter::FindRoute(const Vec2& start, const Vec2& goal) const {
   }
   RouteAnswer answer;
   // Where an end enters the free space, and in which area.
-  auto resolve = [&](const Vec2& point, const std::string& which, Vec2* inside, int* area) {
-    *inside = point;
-    *area = space_.AreaAt(point);
-    if (*area >= 0) return true;
+  auto resolve = [&](const Vec2& point, const std::string& which, End* end) {
+    end->at = point;
+    end->area = space_.AreaAt(point);
+    if (end->area >= 0) {
+      end->inside = space_.StrictlyInside(point);
+      return true;
+    }
     const std::optional<Vec2> nearest = space_.NearestPoint(point, settings_.snap_distance_m);
     if (nearest) {
-      *inside = *nearest;
-      *area = space_.AreaAt(*nearest);
+      end->at = *nearest;
+      end->area = space_.AreaAt(*nearest);
     }
-    if (*area >= 0) return true;
+    if (end->area >= 0) return true;
     answer.no_route_reason = which + " " + PointText(point) + " is more than " +
                              FormatNumber(settings_.snap_distance_m) + " m from every area";
     return false;
   };
-  Vec2 from, to;
-  int from_area = -1, to_area = -1;
-  if (!resolve(start, "the start", &from, &from_area) ||
-      !resolve(goal, "the goal", &to, &to_area)) {
-    return answer;
-  }
-  if (component_[from_area] != component_[to_area]) {
+  End from, to;
+  if (!resolve(start, "the start", &from) || !resolve(goal, "the goal", &to)) return answer;
+  if (component_[from.area] != component_[to.area]) {
     answer.no_route_reason = "no passages join the start's area to the goal's";
     return answer;
   }
-  std::optional<std::vector<Vec2>> polyline = ShortestPolyline(from, from_area, to, to_area);
+  std::optional<std::vector<Vec2>> polyline = ShortestPolyline(from, to);
   if (!polyline) {
     answer.no_route_reason = "no way through the free space joins the start and the goal";
     return answer;
   }
   Route route;
-  if (from != start) route.polyline.push_back(start);
+  if (from.at != start) route.polyline.push_back(start);
   route.polyline.insert(route.polyline.end(), polyline->begin(), polyline->end());
-  if (to != goal) route.polyline.push_back(goal);
+  if (to.at != goal) route.polyline.push_back(goal);
   for (size_t i = 0; i + 1 < route.polyline.size(); ++i) {
     route.length_m += (route.polyline[i + 1] - route.polyline[i]).norm();
   }

@@ -51,6 +51,20 @@ struct RouteAnswer {
 // links its two ends to the corners they see and runs A* over it.
 class AreaRouter {
  public:
+  // A vertex of the free space where a route may bend: where the free space
+  // spans more than half a turn (between the walls `wall_a` and `wall_b`,
+  // directions away from it), or an end of a passage's border.
+  struct Corner {
+    Vec2 at;
+    bool reflex = false;
+    // Whether walls bound its stretch of free space, from wall_a
+    // counter-clockwise to wall_b (unit vectors, away from the corner).
+    bool walled = true;
+    Vec2 wall_a, wall_b;
+    std::vector<int> areas;  // of its stretch
+    int vertex = -1;         // in FreeSpace::vertices(), or -1 off every outline
+  };
+
   // Throws InputError as FreeSpace does.
   explicit AreaRouter(const proto::AreaGraph& graph, const RouteSettings& settings = {});
 
@@ -63,21 +77,15 @@ class AreaRouter {
   // The graph itself, for routes planned elsewhere (the HTML viewer): where
   // each corner is, the linked pairs (each once), and the corners that a
   // route's end in `area` is linked to when it sees them.
-  const Vec2& corner_at(int corner) const { return corners_[corner].at; }
+  const Corner& corner(int c) const { return corners_[c]; }
+  // Whether a route may come to `corner` from `direction` (from the corner
+  // towards the route's other point) and bend there: within its stretch, and
+  // at a reflex corner on a line that does not cut it.
+  static bool Admits(const Corner& corner, const Vec2& direction);
   std::vector<std::pair<int, int>> Links() const;
   std::vector<int> EndCandidates(int area) const;
 
  private:
-  // A vertex of the free space where a route may bend: where the free space
-  // spans more than half a turn (between the walls `wall_a` and `wall_b`,
-  // directions away from it), or an end of a passage's border.
-  struct Corner {
-    Vec2 at;
-    bool reflex = false;
-    Vec2 wall_a, wall_b;
-    std::vector<int> areas;
-  };
-
   RouteSettings settings_;
   FreeSpace space_;
   std::vector<Corner> corners_;
@@ -100,15 +108,25 @@ class AreaRouter {
   void LinkCorners();
   // Areas at most `hops` passages from `area` (itself included).
   std::vector<int> AreasWithin(int area, int hops) const;
-  // Whether a route may bend at `corner` on the line through it along `direction`.
-  bool Tangent(const Corner& corner, const Vec2& direction) const;
+
   // Whether the segment from `point` (in `area`) to `to` meets one of the
   // area's passage borders: a segment that leaves the area must.
   bool LeavesThroughAPassage(const Vec2& point, int area, const Vec2& to) const;
-  // The corners that `point` (in `area`) sees, with their distances.
-  std::vector<std::pair<int, double>> VisibleCorners(const Vec2& point, int area) const;
-  std::optional<std::vector<Vec2>> ShortestPolyline(const Vec2& start, int start_area,
-                                                    const Vec2& goal, int goal_area) const;
+  // The same from a corner, through a passage of any of its areas.
+  bool LeavesThroughAPassage(const Corner& from, const Vec2& to) const;
+  static bool ShareAnArea(const Corner& a, const Corner& b);
+  // The corners that `point` (in `area`, StrictlyInside it when `inside`)
+  // sees, with their distances.
+  std::vector<std::pair<int, double>> VisibleCorners(const Vec2& point, int area,
+                                                     bool inside) const;
+  // An end of a route: where it enters the free space, its area, and
+  // whether it lies strictly inside.
+  struct End {
+    Vec2 at;
+    int area = -1;
+    bool inside = false;
+  };
+  std::optional<std::vector<Vec2>> ShortestPolyline(const End& start, const End& goal) const;
   void Describe(Route* route) const;
 };
 

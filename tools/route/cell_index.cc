@@ -17,12 +17,13 @@ CellIndex::CellIndex(const std::vector<Eigen::AlignedBox2d>& boxes, double cell_
   // Two passes: count the items per cell, then place them.
   offsets_.assign(static_cast<size_t>(columns_) * rows_ + 1, 0);
   for (const Eigen::AlignedBox2d& box : boxes) {
-    ForEachCellInBox(box, [&](int cell) { ++offsets_[cell + 1]; });
+    if (!box.isEmpty()) ForEachCellInBox(box, [&](int cell) { ++offsets_[cell + 1]; });
   }
   for (size_t cell = 1; cell < offsets_.size(); ++cell) offsets_[cell] += offsets_[cell - 1];
   items_.resize(offsets_.back());
   std::vector<int> filled(offsets_.begin(), offsets_.end() - 1);
   for (size_t item = 0; item < boxes.size(); ++item) {
+    if (boxes[item].isEmpty()) continue;
     ForEachCellInBox(boxes[item],
                      [&](int cell) { items_[filled[cell]++] = static_cast<int>(item); });
   }

@@ -12,7 +12,8 @@ namespace areagraph {
 class CellIndex {
  public:
   CellIndex() = default;
-  // Item i covers boxes[i]; `padding` widens every box (and every query).
+  // Item i covers boxes[i] (none when empty); `padding` widens every box
+  // (and every query).
   CellIndex(const std::vector<Eigen::AlignedBox2d>& boxes, double cell_size, double padding);
 
   // Calls visit(item) for the items whose cells hold `point`.
@@ -31,7 +32,8 @@ class CellIndex {
   }
 
   // Calls visit(item) for the items whose cells the segment passes, row by
-  // row; stops as soon as a visit returns false, and returns false then.
+  // row from a's end (a blocked segment is mostly blocked near where it
+  // starts); stops as soon as a visit returns false, and returns false then.
   template <typename Visit>
   bool ForEachAlong(const Eigen::Vector2d& a, const Eigen::Vector2d& b, Visit visit) const {
     if (columns_ == 0) return true;
@@ -39,7 +41,9 @@ class CellIndex {
     const double high_y = std::max(a.y(), b.y()) + padding_;
     const int first_row = ClampRow(Row(low_y)), last_row = ClampRow(Row(high_y));
     const double dy = b.y() - a.y();
-    for (int row = first_row; row <= last_row; ++row) {
+    const bool rows_up = dy >= 0, columns_up = b.x() >= a.x();
+    for (int step = 0; step <= last_row - first_row; ++step) {
+      const int row = rows_up ? first_row + step : last_row - step;
       // The part of the segment within this row (widened by the padding).
       const double row_low = std::max(low_y, origin_.y() + row * cell_size_) - padding_;
       const double row_high = std::min(high_y, origin_.y() + (row + 1) * cell_size_) + padding_;
@@ -53,7 +57,8 @@ class CellIndex {
       }
       const int first_column = ClampColumn(Column(x0 - padding_));
       const int last_column = ClampColumn(Column(x1 + padding_));
-      for (int column = first_column; column <= last_column; ++column) {
+      for (int column_step = 0; column_step <= last_column - first_column; ++column_step) {
+        const int column = columns_up ? first_column + column_step : last_column - column_step;
         const int cell = row * columns_ + column;
         for (int i = offsets_[cell]; i < offsets_[cell + 1]; ++i) {
           if (!visit(items_[i])) return false;

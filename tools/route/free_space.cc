@@ -9,13 +9,12 @@
 #include "common/error.h"
 #include "stages/geometry/ring_area.h"
 #include "stages/geometry/ring_points.h"
+#include "tools/route/vertex_passage.h"
 
 namespace areagraph {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-// Directions closer than this (sine of the angle) count as parallel.
-constexpr double kAngleTolerance = 1e-9;
 
 double Cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
@@ -63,41 +62,6 @@ std::vector<std::vector<Vec2>> AreaRings(const proto::Area& area) {
   return rings;
 }
 
-// Whether `direction` points into one of the vertex's wedges (strictly).
-bool WedgeHolds(const std::vector<OutlineVertex>& vertices, const OutlineVertex& vertex,
-                const Vec2& direction) {
-  for (const CornerWedge& wedge : vertex.wedges) {
-    const Vec2 next = vertices[wedge.next].at - vertex.at;
-    double angle = std::atan2(Cross(next, direction), next.dot(direction));
-    if (angle < 0) angle += 2 * kPi;
-    if (angle > kAngleTolerance && angle < wedge.angle - kAngleTolerance) return true;
-  }
-  return false;
-}
-
-// Whether a segment along `unit` through `vertex` crosses a wall there: walls
-// on both of its sides, or, where it runs along a wall, no side that is both
-// clear of walls and inside an area.
-bool CrossesAtVertex(const std::vector<OutlineVertex>& vertices, const OutlineVertex& vertex,
-                     const Vec2& unit) {
-  bool left = false, right = false, along = false;
-  for (const Vec2& wall : vertex.wall_directions) {
-    const double side = Cross(unit, wall.normalized());
-    if (side > kAngleTolerance) {
-      left = true;
-    } else if (side < -kAngleTolerance) {
-      right = true;
-    } else {
-      along = true;
-    }
-  }
-  if (!along) return left && right;
-  const Vec2 left_normal(-unit.y(), unit.x());
-  if (!left && WedgeHolds(vertices, vertex, left_normal)) return false;
-  if (!right && WedgeHolds(vertices, vertex, -left_normal)) return false;
-  return true;
-}
-
 }  // namespace
 
 FreeSpace::FreeSpace(const proto::AreaGraph& graph) {
@@ -109,6 +73,22 @@ FreeSpace::FreeSpace(const proto::AreaGraph& graph) {
       passage_edges.insert(EdgeKey(Vec2(a.x(), a.y()), Vec2(b.x(), b.y())));
     }
   }
+  for (const proto::Area& area : graph.areas()) area_rings_.push_back(AreaRings(area));
+  // An edge opens only where a passage's border lies on the outlines of both
+  // areas; anywhere else, and on one outline only, it is a wall.
+  std::map<std::pair<PointKey, PointKey>, std::set<int>> passage_edge_areas;
+  for (size_t area = 0; area < area_rings_.size(); ++area) {
+    for (const std::vector<Vec2>& ring : area_rings_[area]) {
+      for (size_t k = 0; k < ring.size(); ++k) {
+        const auto key = EdgeKey(ring[k], ring[(k + 1) % ring.size()]);
+        if (passage_edges.count(key)) passage_edge_areas[key].insert(static_cast<int>(area));
+      }
+    }
+  }
+  auto is_wall = [&](const Vec2& a, const Vec2& b) {
+    const auto found = passage_edge_areas.find(EdgeKey(a, b));
+    return found == passage_edge_areas.end() || found->second.size() < 2;
+  };
   auto vertex_of = [&](const Vec2& point) {
     const auto [it, added] = vertex_ids_.emplace(KeyOf(point), static_cast<int>(vertices_.size()));
     if (added) vertices_.push_back(OutlineVertex{point, {}, {}});
@@ -116,21 +96,15 @@ FreeSpace::FreeSpace(const proto::AreaGraph& graph) {
   };
   std::vector<Eigen::AlignedBox2d> edge_boxes;
   for (int area = 0; area < graph.areas_size(); ++area) {
-    area_rings_.push_back(AreaRings(graph.areas(area)));
     Eigen::AlignedBox2d box;
-    for (const std::vector<Vec2>& ring : area_rings_.back()) {
+    for (const std::vector<Vec2>& ring : area_rings_[area]) {
       const int n = static_cast<int>(ring.size());
       for (int k = 0; k < n; ++k) {
         const Vec2& at = ring[k];
         const Vec2& next = ring[(k + 1) % n];
         const Vec2& previous = ring[(k + n - 1) % n];
         box.extend(at);
-        OutlineEdge edge{at,
-                         next,
-                         area,
-                         vertex_of(at),
-                         vertex_of(next),
-                         passage_edges.count(EdgeKey(at, next)) == 0};
+        OutlineEdge edge{at, next, area, vertex_of(at), vertex_of(next), is_wall(at, next)};
         CornerWedge wedge;
         wedge.area = area;
         wedge.next = edge.vertex_b;
@@ -138,7 +112,7 @@ FreeSpace::FreeSpace(const proto::AreaGraph& graph) {
         wedge.angle = std::atan2(Cross(next - at, previous - at), (next - at).dot(previous - at));
         if (wedge.angle <= 0) wedge.angle += 2 * kPi;
         wedge.next_is_wall = edge.wall;
-        wedge.previous_is_wall = passage_edges.count(EdgeKey(previous, at)) == 0;
+        wedge.previous_is_wall = is_wall(previous, at);
         vertices_[edge.vertex_a].wedges.push_back(wedge);
         if (edge.wall) {
           vertices_[edge.vertex_a].wall_directions.push_back(next - at);
@@ -156,6 +130,16 @@ FreeSpace::FreeSpace(const proto::AreaGraph& graph) {
   const double extent = bounds.isEmpty() ? 1.0 : bounds.volume();
   const double cell = std::sqrt(extent / std::max<size_t>(1, 2 * edges_.size()));
   edge_cells_ = CellIndex(edge_boxes, cell, 2 * kRouteTolerance);
+  // Each wall once (a wall between two areas is an edge of both), for the
+  // segment test; an edge that is no wall gets an empty box there.
+  std::set<std::pair<int, int>> walls;
+  for (size_t e = 0; e < edges_.size(); ++e) {
+    if (!edges_[e].wall ||
+        !walls.insert(std::minmax(edges_[e].vertex_a, edges_[e].vertex_b)).second) {
+      edge_boxes[e] = Eigen::AlignedBox2d();
+    }
+  }
+  wall_cells_ = CellIndex(edge_boxes, cell, 2 * kRouteTolerance);
   area_cells_ = CellIndex(area_boxes_, 4 * cell, 2 * kRouteTolerance);
 }
 
@@ -201,24 +185,27 @@ int FreeSpace::AreaAt(const Vec2& point) const {
 }
 
 bool FreeSpace::Contacts(const Vec2& from, const Vec2& to, bool walls_only,
-                         std::vector<double>* contacts) const {
+                         std::vector<Contact>* contacts) const {
   const Vec2 d = to - from;
   const double length = d.norm();
   if (length <= kRouteTolerance) return true;
   const Vec2 unit = d / length;
   const double t_tolerance = kRouteTolerance / length;
-  return edge_cells_.ForEachAlong(from, to, [&](int e) {
+  const CellIndex& index = walls_only ? wall_cells_ : edge_cells_;
+  return index.ForEachAlong(from, to, [&](int e) {
     const OutlineEdge& edge = edges_[e];
-    if (walls_only && !edge.wall) return true;
     const double side_a = Cross(unit, edge.a - from);
     const double side_b = Cross(unit, edge.b - from);
-    for (const auto& [end, side, vertex] :
-         {std::tuple(edge.a, side_a, edge.vertex_a), std::tuple(edge.b, side_b, edge.vertex_b)}) {
-      if (std::abs(side) > kRouteTolerance) continue;
+    // Most edges lie wholly on one side of the line.
+    if ((side_a > kRouteTolerance && side_b > kRouteTolerance) ||
+        (side_a < -kRouteTolerance && side_b < -kRouteTolerance)) {
+      return true;
+    }
+    for (const int vertex : {edge.vertex_a, edge.vertex_b}) {
+      const Vec2& end = vertices_[vertex].at;
+      if (std::abs(vertex == edge.vertex_a ? side_a : side_b) > kRouteTolerance) continue;
       const double t = (end - from).dot(unit) / length;
-      if (t <= t_tolerance || t >= 1 - t_tolerance) continue;
-      contacts->push_back(t);
-      if (walls_only && CrossesAtVertex(vertices_, vertices_[vertex], unit)) return false;
+      if (t > t_tolerance && t < 1 - t_tolerance) contacts->push_back({t, vertex});
     }
     if ((side_a > kRouteTolerance && side_b < -kRouteTolerance) ||
         (side_a < -kRouteTolerance && side_b > kRouteTolerance)) {
@@ -228,22 +215,76 @@ bool FreeSpace::Contacts(const Vec2& from, const Vec2& to, bool walls_only,
       if ((side_from > kRouteTolerance && side_to < -kRouteTolerance) ||
           (side_from < -kRouteTolerance && side_to > kRouteTolerance)) {
         if (walls_only) return false;
-        contacts->push_back(side_from / (side_from - side_to));
+        contacts->push_back({side_from / (side_from - side_to), -1});
       }
     }
     return true;
   });
 }
 
-bool FreeSpace::SegmentIsFree(const Vec2& from, const Vec2& to) const {
-  std::vector<double> contacts{0.0, 1.0};
+bool FreeSpace::WallsLetThrough(const Vec2& from, const Vec2& to,
+                                const std::vector<Contact>& contacts) const {
+  const Vec2 unit = (to - from).normalized();
+  // Along a wall the line keeps to one side of it: the banks still open.
+  bool along = false;
+  int banks = kLeftBank | kRightBank;
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    if (i > 0 && contacts[i].vertex == contacts[i - 1].vertex) continue;
+    const VertexPassage passage = PassThrough(vertices_, vertices_[contacts[i].vertex], unit);
+    if (!passage.behind && !passage.ahead) {
+      if (passage.crosses) return false;
+      along = false;
+      continue;
+    }
+    int open = passage.banks;
+    if (passage.behind && along) open &= banks;
+    if (passage.behind && i == 0) {
+      // The wall began where the segment does.
+      const int start = VertexAt(from);
+      if (start >= 0) open &= PassThrough(vertices_, vertices_[start], unit).banks;
+    }
+    if (open == 0) return false;
+    along = passage.ahead;
+    banks = open;
+  }
+  if (along) {
+    const int end = VertexAt(to);
+    if (end >= 0 && (PassThrough(vertices_, vertices_[end], unit).banks & banks) == 0) return false;
+  }
+  return true;
+}
+
+bool FreeSpace::LeavesInto(int vertex, const Vec2& direction) const {
+  return WedgeHolds(vertices_, vertices_[vertex], direction);
+}
+
+bool FreeSpace::StrictlyInside(const Vec2& point) const {
+  bool near_edge = false;
+  edge_cells_.ForEachAt(point, [&](int e) {
+    near_edge = near_edge || DistanceToSegment(point, edges_[e].a, edges_[e].b) <= kRouteTolerance;
+  });
+  if (near_edge) return false;
+  bool inside = false;
+  area_cells_.ForEachAt(point, [&](int area) { inside = inside || InsideArea(area, point); });
+  return inside;
+}
+
+bool FreeSpace::SegmentIsFree(const Vec2& from, const Vec2& to, bool starts_inside) const {
+  std::vector<Contact> contacts;
   if (!Contacts(from, to, /*walls_only=*/true, &contacts)) return false;
-  std::sort(contacts.begin(), contacts.end());
+  std::sort(contacts.begin(), contacts.end(), [](const Contact& a, const Contact& b) {
+    return a.t < b.t || (a.t == b.t && a.vertex < b.vertex);
+  });
+  if (!WallsLetThrough(from, to, contacts)) return false;
+  // Crossing no wall, a segment that starts inside stays inside.
+  if (starts_inside) return true;
   const double t_tolerance = kRouteTolerance / std::max((to - from).norm(), kRouteTolerance);
-  for (size_t i = 0; i + 1 < contacts.size(); ++i) {
-    if (contacts[i + 1] - contacts[i] <= t_tolerance) continue;
-    const double middle = (contacts[i] + contacts[i + 1]) / 2;
-    if (AreaAt(from + middle * (to - from)) < 0) return false;
+  double last = 0;
+  for (size_t i = 0; i <= contacts.size(); ++i) {
+    const double next = i < contacts.size() ? contacts[i].t : 1.0;
+    if (next - last <= t_tolerance) continue;
+    if (AreaAt(from + (last + next) / 2 * (to - from)) < 0) return false;
+    last = next;
   }
   return true;
 }
@@ -269,14 +310,16 @@ std::optional<Vec2> FreeSpace::NearestPoint(const Vec2& point, double max_distan
 
 void FreeSpace::AppendAreasAlong(const Vec2& from, const Vec2& to,
                                  std::vector<AreaVisit>* visits) const {
-  std::vector<double> contacts{0.0, 1.0};
+  std::vector<Contact> contacts{{0.0, -1}, {1.0, -1}};
   Contacts(from, to, /*walls_only=*/false, &contacts);
-  std::sort(contacts.begin(), contacts.end());
+  std::sort(contacts.begin(), contacts.end(),
+            [](const Contact& a, const Contact& b) { return a.t < b.t; });
   for (size_t i = 0; i + 1 < contacts.size(); ++i) {
-    if (contacts[i + 1] - contacts[i] <= 1e-12) continue;
-    const int area = AreaAt(from + (contacts[i] + contacts[i + 1]) / 2 * (to - from));
+    const double t0 = contacts[i].t, t1 = contacts[i + 1].t;
+    if (t1 - t0 <= 1e-12) continue;
+    const int area = AreaAt(from + (t0 + t1) / 2 * (to - from));
     if (area >= 0 && (visits->empty() || visits->back().area != area)) {
-      visits->push_back({area, from + contacts[i] * (to - from)});
+      visits->push_back({area, from + t0 * (to - from)});
     }
   }
 }

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <Eigen/Core>
 #include <map>
 #include <optional>
 #include <utility>
@@ -8,39 +7,9 @@
 
 #include "proto/artifacts.pb.h"
 #include "tools/route/cell_index.h"
+#include "tools/route/outline.h"
 
 namespace areagraph {
-
-using Vec2 = Eigen::Vector2d;
-
-// Distances below this (metres) count as zero: the areas share their border
-// vertices bit for bit, so only rounding in the tests needs it.
-constexpr double kRouteTolerance = 1e-7;
-
-// One edge of an area's outline. A wall unless it lies on a passage's border
-// (passage.border_m): two areas that touch elsewhere are apart.
-struct OutlineEdge {
-  Vec2 a, b;
-  int area = 0;                    // index into AreaGraph.areas
-  int vertex_a = 0, vertex_b = 0;  // indices into FreeSpace::vertices()
-  bool wall = true;
-};
-
-// One corner of an area's outline, where the area's inside spans the angle
-// from the direction of `next` counter-clockwise to that of `previous`.
-struct CornerWedge {
-  int area = 0;
-  int next = 0, previous = 0;  // vertex indices
-  double angle = 0;            // radians, in (0, 2 pi]
-  bool next_is_wall = true, previous_is_wall = true;
-};
-
-// A point where outline edges meet, with what meets there.
-struct OutlineVertex {
-  Vec2 at;
-  std::vector<Vec2> wall_directions;  // towards the other end of each wall from here
-  std::vector<CornerWedge> wedges;
-};
 
 // An area on a route, and where the route enters it.
 struct AreaVisit {
@@ -63,7 +32,15 @@ class FreeSpace {
 
   // Whether the segment lies in the free space and crosses no wall, neither
   // through an edge nor through a vertex where walls meet on both sides.
-  bool SegmentIsFree(const Vec2& from, const Vec2& to) const;
+  // `starts_inside` says that it leaves `from` into the free space (from a
+  // point StrictlyInside, or from a vertex along a direction it LeavesInto):
+  // then crossing no wall is enough, and the test skips locating its pieces.
+  bool SegmentIsFree(const Vec2& from, const Vec2& to, bool starts_inside = false) const;
+
+  // Whether `direction` from the outline vertex points into an area.
+  bool LeavesInto(int vertex, const Vec2& direction) const;
+  // Whether `point` lies inside an area, off every outline.
+  bool StrictlyInside(const Vec2& point) const;
 
   // The nearest point of the free space within `max_distance` of `point`
   // (outside every area: a point on a wall), or nullopt.
@@ -90,13 +67,25 @@ class FreeSpace {
   std::map<std::pair<double, double>, int> vertex_ids_;
   std::vector<OutlineEdge> edges_;
   CellIndex edge_cells_;
+  CellIndex wall_cells_;
   CellIndex area_cells_;
 
   bool InsideArea(int area, const Vec2& point) const;
-  // Parameters in (0, 1) where the segment meets outline edges (walls only,
-  // or every edge); false as soon as it crosses a wall when `walls_only`.
+  // Where along a segment (t in (0, 1)) it meets an outline vertex, or
+  // crosses an edge (vertex -1).
+  struct Contact {
+    double t;
+    int vertex;
+  };
+  // The segment's contacts with the walls (`walls_only`: false as soon as it
+  // crosses one) or with every outline edge, unordered.
   bool Contacts(const Vec2& from, const Vec2& to, bool walls_only,
-                std::vector<double>* contacts) const;
+                std::vector<Contact>* contacts) const;
+  // Whether the segment passes the wall vertices it meets (`contacts`, in
+  // order) without crossing a wall: off the walls' lines no walls on both of
+  // its sides, and along a wall the same side clear all the way.
+  bool WallsLetThrough(const Vec2& from, const Vec2& to,
+                       const std::vector<Contact>& contacts) const;
 };
 
 }  // namespace areagraph

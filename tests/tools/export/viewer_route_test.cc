@@ -47,11 +47,13 @@ TEST_F(ViewerRoutes, PageHoldsTheRoutersGraphInPixels) {
   const viewer::RouteGraph& page = run.route_graph();
   const AreaRouter router(graph_);
   ASSERT_EQ(page.corners_size(), 2 * router.corner_count());
+  ASSERT_EQ(page.corner_kinds_size(), router.corner_count());
+  ASSERT_EQ(page.corner_walls_size(), 4 * router.corner_count());
   EXPECT_EQ(page.links_size(), 2 * router.link_count());
   ASSERT_EQ(page.areas_size(), graph_.areas_size());
   const MapTransform transform(graph_.frame());
   for (int c = 0; c < router.corner_count(); ++c) {
-    const Eigen::Vector2d pixel = transform.WorldToPixel(router.corner_at(c));
+    const Eigen::Vector2d pixel = transform.WorldToPixel(router.corner(c).at);
     EXPECT_NEAR(page.corners(2 * c), pixel.x(), 0.005);
     EXPECT_NEAR(page.corners(2 * c + 1), pixel.y(), 0.005);
   }

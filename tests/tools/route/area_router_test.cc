@@ -114,6 +114,40 @@ TEST(AreaRouterTest, DoesNotSlideAlongAWallPastTheEndOfAWallBetweenTwoAreas) {
   EXPECT_NEAR(route.length_m, 2 * std::hypot(0.5, 1.0) + 1, 1e-9);
 }
 
+TEST(AreaRouterTest, KeepsToOneSideWhenSlidingAlongAWallBetweenTwoAreas) {
+  // A = [2, 4] x [2, 4]; B, an L below and left of it, shares the wall x = 2
+  // (y 2..3) and y = 2 (x 2..3.5) with it; the door is y = 2, x 3.5..4.
+  proto::AreaGraph graph;
+  const int a = AddArea(&graph, {{2, 2}, {3.5, 2}, {4, 2}, {4, 4}, {2, 4}, {2, 3}});
+  const int b = AddArea(&graph, {{0, 0}, {4, 0}, {4, 2}, {3.5, 2}, {2, 2}, {2, 3}, {0, 3}});
+  AddPassage(&graph, a, b, {{3.5, 2}, {4, 2}});
+  const AreaRouter router(graph);
+  // Down A's outer wall, on along the wall to B: that would come out on B's side.
+  EXPECT_FALSE(router.free_space().SegmentIsFree({2, 3.5}, {2, 1}));
+  EXPECT_TRUE(router.free_space().SegmentIsFree({2, 3.5}, {2, 2.5}));
+  const Route route = FindOrFail(router, {3, 3.5}, {1, 2.5});
+  EXPECT_NEAR(route.length_m, std::hypot(0.5, 1.5) + 1.5 + std::hypot(1.0, 0.5), 1e-9);
+  EXPECT_EQ(route.areas, (std::vector<int>{a, b}));
+}
+
+TEST(AreaRouterTest, BendsAtAPassagesEndOnlyOnThePassagesSide) {
+  // A = [0, 2]² and B = [2, 4] x [0, 2] meet at a door x = 2, y 1..2, whose
+  // upper end touches C = [0, 4] x [2, 3] above them; C opens into B only,
+  // at y = 2, x 3.5..4.
+  proto::AreaGraph graph;
+  const int a = AddArea(&graph, {{0, 0}, {2, 0}, {2, 1}, {2, 2}, {0, 2}});
+  const int b = AddArea(&graph, {{2, 0}, {4, 0}, {4, 2}, {3.5, 2}, {2, 2}, {2, 1}});
+  const int c = AddArea(&graph, {{0, 2}, {2, 2}, {3.5, 2}, {4, 2}, {4, 3}, {0, 3}});
+  AddPassage(&graph, a, b, {{2, 1}, {2, 2}});
+  AddPassage(&graph, b, c, {{4, 2}, {3.5, 2}});
+  const AreaRouter router(graph);
+  // Not from C round the door's end into A: through C's door and B.
+  const Route route = FindOrFail(router, {1, 2.5}, {1, 1.5});
+  EXPECT_NEAR(route.length_m, 2 * std::hypot(2.5, 0.5), 1e-9);
+  EXPECT_EQ(route.areas, (std::vector<int>{c, b, a}));
+  EXPECT_EQ(route.passages, (std::vector<int>{1, 0}));
+}
+
 TEST(AreaRouterTest, AreasThatNoPassageJoinsHaveNoRoute) {
   proto::AreaGraph graph = TwoRoomsWithDoor();
   graph.clear_passages();

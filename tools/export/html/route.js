@@ -64,7 +64,20 @@ function areagraphRoutes(context) {
       }
       return { rings, box, corners: area.corners || [] };
     });
-    return { corners, count, neighbours, areas, walls: graph.walls || [] };
+    return { corners, count, neighbours, areas, walls: graph.walls || [], kinds: graph.corner_kinds || [], cornerWalls: graph.corner_walls || [] };
+  }
+
+  // Whether a route may come to corner c from (dx, dy) (from the corner
+  // towards the other point) and bend there, as the router decides it
+  // (AreaRouter::Admits; in pixels, y down, so turns run the other way).
+  function admits(g, c, dx, dy) {
+    const kind = g.kinds[c] || 0;
+    if (kind === 0) return true;
+    const w = g.cornerWalls;
+    const a = dx * w[4 * c + 1] - dy * w[4 * c], b = dx * w[4 * c + 3] - dy * w[4 * c + 2];
+    const parallel = 1e-12 * Math.hypot(dx, dy);
+    if (kind === 2) return !(a * b < 0 && Math.abs(a) > parallel && Math.abs(b) > parallel);
+    return a >= -parallel && b <= parallel;
   }
 
   function inside(rings, x, y) {
@@ -162,7 +175,7 @@ function areagraphRoutes(context) {
     const toGoal = new Map();
     for (const c of g.areas[goal.area].corners) {
       const [x, y] = corner(c);
-      if (sees(g, goal.x, goal.y, x, y)) toGoal.set(c, Math.hypot(x - goal.x, y - goal.y));
+      if (admits(g, c, goal.x - x, goal.y - y) && sees(g, goal.x, goal.y, x, y)) toGoal.set(c, Math.hypot(x - goal.x, y - goal.y));
     }
     const best = new Float64Array(g.count + 1).fill(Infinity);
     const parent = new Int32Array(g.count + 1).fill(-1);
@@ -201,7 +214,7 @@ function areagraphRoutes(context) {
     };
     for (const c of g.areas[start.area].corners) {
       const [x, y] = corner(c);
-      if (sees(g, start.x, start.y, x, y)) reach(c, Math.hypot(x - start.x, y - start.y), -1);
+      if (admits(g, c, start.x - x, start.y - y) && sees(g, start.x, start.y, x, y)) reach(c, Math.hypot(x - start.x, y - start.y), -1);
     }
     while (heap.length) {
       const node = pop()[1];
