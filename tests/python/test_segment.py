@@ -86,6 +86,22 @@ class SegmentTest(TempDirTest):
             self.assertEqual(got["nodes"], expected["nodes"])
             self.assertEqual(got["links"], expected["links"])
 
+    def test_a_pgm_goes_through_the_image_codecs_module(self):
+        with areagraph.Store(self.ag_run()) as store:
+            grid_map = store.artifact("office_small", "import")
+        frame = grid_map.frame
+        cells = numpy.frombuffer(grid_map.cells, dtype=numpy.uint8).reshape(frame.height_px,
+                                                                            frame.width_px)
+        pgm = os.path.join(self.dir, "office_small.pgm")
+        with open(pgm, "wb") as file:
+            file.write(b"P5\n%d %d\n255\n" % (frame.width_px, frame.height_px))
+            file.write(numpy.choose(cells, [254, 0, 205]).astype(numpy.uint8).tobytes())
+        with open(os.path.join(self.dir, "office_small.yaml"), "w") as file:
+            file.write("image: office_small.pgm\nresolution: %r\norigin: [%r, %r, 0.0]\n"
+                       "negate: 0\noccupied_thresh: 0.65\nfree_thresh: 0.196\n" %
+                       (frame.resolution_m, frame.origin_x_m, frame.origin_y_m))
+        self.assertEqual(node_link(areagraph.segment(pgm)), node_link(areagraph.segment(OFFICE)))
+
     def test_origin_and_resolution_place_an_image_without_yaml(self):
         image = os.path.join(self.dir, "plain.png")
         with open(OFFICE, "rb") as source, open(image, "wb") as copy:
