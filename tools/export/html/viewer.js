@@ -394,8 +394,8 @@
         applyTransforms();
       }
     });
-    element.addEventListener('pointerup', () => {
-      if (drag && !drag.moved) {
+    element.addEventListener('pointerup', (event) => {
+      if (drag && !drag.moved && !routes.click(view, event)) {
         const target = drag.target.closest && drag.target.closest('[data-sel]');
         select(target ? selectionOf(target, view) : null);
       }
@@ -788,6 +788,7 @@
     container.replaceChildren();
     const shown = state.view === 'side' ? [runs[0], runs[1]] : state.view === 'b' ? [runs[1]] : [runs[0]];
     views = shown.map((run) => new MapView(container, run, compare));
+    routes.redraw();
     if (state.view === 'overlay') state.layers.add('compare');
     for (const box of document.querySelectorAll('input[data-view]')) box.checked = box.value === state.view;
     applyLayers();
@@ -841,6 +842,8 @@
   buildCounts();
   buildStages();
   buildOptions();
+  // Routes between two clicked points (route.js).
+  const routes = areagraphRoutes({ state, resolution, svg, html, views: () => views });
   applyFragment();
   window.addEventListener('hashchange', applyFragment);
   window.addEventListener('resize', applyTransforms);
