@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "common/protected_files.h"
 
 namespace areagraph {
 namespace {
@@ -110,6 +111,7 @@ SqliteConnection::SqliteConnection(const std::string& path, StoreMode mode) {
     db_ = nullptr;
     throw StoreError("cannot open store '" + path + "' for reading only");
   }
+  if (!memory) ProtectStoreFile(path);
 }
 
 SqliteConnection::~SqliteConnection() { sqlite3_close_v2(db_); }

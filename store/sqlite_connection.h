@@ -47,7 +47,8 @@ std::string StoreUri(const std::string& path, ReadAccess access);
 // StoreError when the file cannot be opened or created, and in read-only mode
 // when it does not exist (read-only never creates a file; ChooseReadAccess
 // says how it reads). ":memory:" is always opened read-write: it is private
-// and there is no file to protect.
+// and there is no file to protect. A store file that opens is protected from
+// the process's own outputs (ProtectStoreFile).
 class SqliteConnection {
  public:
   SqliteConnection(const std::string& path, StoreMode mode);

@@ -19,6 +19,7 @@ PACKAGES=(
   # Test dependencies: ag-export's files opened with the users' own tools
   # (tests/tools/export/ecosystem_test.cc): GDAL's ogr2ogr/ogrinfo, shapely.
   gdal-bin python3-shapely
+  josm  # JOSM's validator run headless on the osmAG of real maps (tests/tools/export/josm_validation_test.cc)
   chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
   # Test dependencies: the one-node Slurm cluster of tools/slurm-local.sh, on
   # which tests/examples/cluster runs examples/cluster's Slurm scripts.
