@@ -17,7 +17,8 @@
 #
 # --sets: comma-separated subset of areagraph,robotmap,bormann-plain,
 # bormann-furnished,tuning,held-out (default: all). --passes: a subset of the
-# passes (default: all). --check: only checks that the passes named in
+# passes (default: all; none: the defaults row only, e.g. to score another
+# build's binaries with --build). --check: only checks that the passes named in
 # paper.pbtxt are accepted by ag-run (the test suite runs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -132,6 +133,7 @@ for set in "${sets[@]}"; do
   row+=" ${base[$set]} |"
 done
 echo "$row"
+[ "$PASSES" = none ] && PASSES=
 for pass in ${PASSES//,/ }; do
   row="| without $pass |"
   for set in "${sets[@]}"; do
