@@ -184,7 +184,7 @@ std::vector<proto::GraphEdge> CutEdge(const proto::GraphEdge& edge,
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
                               const proto::CutOptions& options, proto::TopologyGraph* owned) {
   // Cut's working set is a run's largest: what the stages before it freed
-  // goes back first (lab_a 8 x 8: peak 600 -> 500 MB), as its big rasters
+  // goes back first (a 50-megapixel map: peak 600 -> 500 MB), as its big rasters
   // come from fresh mappings.
   ReturnFreedMemory();
   const CellGrid grid(map);
