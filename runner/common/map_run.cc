@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "common/error.h"
-#include "stages/common/stage_versions.h"
+#include "stages/pipeline/stage_versions.h"
 
 namespace areagraph {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
 #include "stages/pipeline/map_pipeline.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {

@@ -17,9 +17,9 @@
 #include "runner/run/worker_events.h"
 #include "runner/run/worker_heap.h"
 #include "runner/run/worker_threads.h"
+#include "runner/stages/stage_main.h"
 #include "stages/common/huge_page_restart.h"
 #include "stages/common/pipeline_options_check.h"
-#include "stages/common/stage_main.h"
 #include "store/sqlite_store_creation.h"
 
 namespace areagraph {

@@ -2,8 +2,8 @@
 
 #include "common/error.h"
 #include "stages/common/freed_memory.h"
-#include "stages/common/stage_versions.h"
 #include "stages/geometry/site_triangulation.h"
+#include "stages/pipeline/stage_versions.h"
 
 namespace areagraph {
 namespace {

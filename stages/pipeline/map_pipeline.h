@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {

@@ -19,9 +19,9 @@
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 #include "tools/bench/median_timer.h"
 

@@ -14,7 +14,7 @@
 #include "stages/common/output_file.h"
 #include "stages/common/page_fault_thrift.h"
 #include "stages/common/png_file.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tools/render/artifact_drawing.h"
 #include "tools/render/map_png.h"
 

@@ -7,7 +7,7 @@
 #include "runner/run/collection_run.h"
 #include "stages/common/command_line.h"
 #include "stages/common/pipeline_options.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "tools/report/run_report_writer.h"
 
 int main(int argc, char** argv) {

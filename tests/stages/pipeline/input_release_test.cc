@@ -4,9 +4,9 @@
 // cuts them when the graph is its alone (the peak memory of large maps).
 #include <gtest/gtest.h>
 
-#include "stages/common/artifact_memo.h"
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/artifact_memo.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "tests/support/test_support.h"

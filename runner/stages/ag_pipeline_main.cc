@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "common/text.h"
+#include "runner/stages/stage_main.h"
 #include "stages/common/command_line.h"
 #include "stages/common/huge_page_restart.h"
-#include "stages/common/stage_main.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "store/write_behind_store.h"
 

@@ -7,9 +7,9 @@
 #include <string>
 
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/artifact_memo.h"
 #include "stages/common/stage_info.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/artifact_memo.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {

@@ -1,4 +1,4 @@
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 
 #include <cstdarg>
 #include <cstdio>

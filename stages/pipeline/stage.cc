@@ -1,4 +1,4 @@
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 
 #include <chrono>
 #include <exception>
@@ -7,7 +7,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "stages/common/pipeline_options.h"
-#include "stages/common/stage_versions.h"
+#include "stages/pipeline/stage_versions.h"
 
 namespace areagraph {
 namespace {

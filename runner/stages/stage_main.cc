@@ -1,4 +1,4 @@
-#include "stages/common/stage_main.h"
+#include "runner/stages/stage_main.h"
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -8,8 +8,8 @@
 #include "common/text.h"
 #include "stages/common/command_line.h"
 #include "stages/common/huge_page_restart.h"
-#include "stages/common/stage.h"
 #include "stages/import/png_header.h"
+#include "stages/pipeline/stage.h"
 
 namespace areagraph {
 
