@@ -9,16 +9,15 @@
 #include <thread>
 
 #include "common/json.h"
+#include "common/process_setup/huge_page_restart.h"
+#include "common/process_setup/worker_heap.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/run/fault_injection.h"
 #include "runner/run/process_pool.h"
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
 #include "runner/run/worker_events.h"
-#include "runner/run/worker_heap.h"
 #include "runner/run/worker_threads.h"
-#include "runner/stages/stage_main.h"
-#include "stages/common/huge_page_restart.h"
 #include "stages/common/pipeline_options_check.h"
 #include "store/sqlite_store_creation.h"
 
@@ -61,14 +60,12 @@ void RecordLeftoverFailures(ArtifactStore& store, const RunReport& report) {
 
 }  // namespace
 
-int RunCollection(const RunFlags& flags, char** argv) {
+int RunCollection(const RunFlags& flags) {
   const RunSettings settings = SettingsFrom(flags);
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
   // Before the store is touched: the fresh start runs from main again.
-  if (argv != nullptr && MayRestartWithHugePageTunable() && HasBigMap(tasks)) {
-    RestartWithHugePageTunable(argv);
-  }
+  if (MayRestartWithHugePageTunable() && HasBigMap(tasks)) RestartWithHugePageTunable();
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork(). Its log

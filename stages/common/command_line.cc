@@ -4,6 +4,7 @@
 #include <new>
 
 #include "common/error.h"
+#include "common/process_setup/huge_page_restart.h"
 #include "common/version.h"
 #include "stages/common/output_file.h"
 #include "stages/common/pipeline_options.h"
@@ -62,6 +63,7 @@ int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
     std::cerr << tool << ": " << e.what() << " (see --help)\n";
     return 2;
   }
+  SetRestartCommandLine(argv);
   try {
     const int exit_code = body();
     FlushStandardOutput();  // a report lost on a full disk is a failure

@@ -32,7 +32,7 @@ int main(int argc, char** argv) {
       std::cout << CanonicalText(LoadPipelineOptions(flags.stage));
       return 0;
     }
-    const int status = RunCollection(flags, argv);
+    const int status = RunCollection(flags);
     if (!report_dir.empty()) WriteRunReport(flags, report_dir);
     return status;
   });
