@@ -110,13 +110,16 @@ if(AG_FAST_START)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
     set(entries ${CMAKE_BINARY_DIR}/lazy_library_entries.cc)
     execute_process(
-      COMMAND sh ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh ${entries} ${CMAKE_NM}
+      COMMAND sh ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh ${entries}.new ${CMAKE_NM}
         ${AG_STATIC_OPENCV_CORE} ${AG_STATIC_OPENCV_IMGPROC}
         -- ${AG_TBB_LIBRARY} ${AG_LAPACK_LIBRARY} ${AG_BLAS_LIBRARY} --all ${AG_LCM_LIBRARY}
       RESULT_VARIABLE status)
     if(status)
       message(FATAL_ERROR "AG_FAST_START: cmake/lazy_libraries.sh failed")
     endif()
+    # Written only when it changed: configuring a built tree again relinks
+    # nothing.
+    execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different ${entries}.new ${entries})
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
       ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh)
     add_library(ag_lazy_libraries STATIC ${CMAKE_SOURCE_DIR}/common/lazy_libraries.cc ${entries})
