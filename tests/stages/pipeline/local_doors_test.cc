@@ -101,7 +101,7 @@ TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
 }
 
 TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
-  // merge.join_rooms_without_doors joins two rooms whose opening is nearly
+  // merge's JOIN_ROOMS_WITHOUT_DOORS joins two rooms whose opening is nearly
   // as wide as the space beside it, and this door is wider than the
   // corridor; the cut marks it closed (merge.keep_closed_doors).
   proto::PipelineOptions options;
