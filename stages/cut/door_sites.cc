@@ -108,12 +108,6 @@ bool WallRunsOn(const WallStructure& walls, const Eigen::Vector2d& jamb,
   return samples == 0 || non_free >= kJambRunShare * samples;
 }
 
-// Sites along the line from `a` to `b`, about one per pixel, ends excluded.
-void AddLineSites(const Eigen::Vector2d& a, const Eigen::Vector2d& b, PointList* sites) {
-  const int steps = static_cast<int>(std::ceil((b - a).norm()));
-  for (int k = 1; k < steps; ++k) sites->push_back(a + (b - a) * (static_cast<double>(k) / steps));
-}
-
 // How far non-free cells run from `from` in `direction` (px, whole steps),
 // or -1 when they still run at `limit_px` (no free cell within reach).
 double NonFreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
@@ -221,7 +215,8 @@ double WidestNearVertex(const proto::TopologyGraph& topology, const EdgeArcs& ar
 // opens into a wider space, while a cross-section of a corridor (between
 // two doors facing each other) has the corridor's width on both sides.
 bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs, int e,
-                     double at_px, double gap_px, double reach_px, double rise_px) {
+                     double at_px, double gap_px, double reach_px, double rise_px,
+                     double* before_px, double* after_px) {
   const proto::GraphEdge& edge = topology.edges(e);
   const std::vector<double>& arc = arcs.arcs[e];
   double before = WidestOnEdge(edge, arc, at_px - reach_px, at_px);
@@ -233,16 +228,46 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
     after = std::max(
         after, WidestNearVertex(topology, arcs, edge.target(), e, reach_px - (arc.back() - at_px)));
   }
+  *before_px = before, *after_px = after;
   const double needed = gap_px + std::max(rise_px, kDoorRiseRatio * gap_px);
   return before >= needed || after >= needed;
+}
+
+// Which side of the line through a jamb (along `outward`, away from the
+// opening) a wall leaves it on for `depth_px` (+1 along the line's left
+// normal, -1 along its right one, 0 neither or both), where the wall on the
+// other side is at most `max_thickness_px` thick: the end of a side wall of
+// the space behind a mouth, with the wall line's thickness on the far side.
+int SideWallAt(const WallStructure& walls, const Eigen::Vector2d& jamb,
+               const Eigen::Vector2d& outward, double depth_px, double max_thickness_px,
+               int space) {
+  const Eigen::Vector2d normal(-outward.y(), outward.x());
+  // A cell beside the probed line counts too: a jamb on a bump of a rough
+  // wall is a cell off the wall's face.
+  auto runs_on = [&](const Eigen::Vector2d& direction) {
+    int samples = 0, non_free = 0;
+    for (double t = 1; t <= depth_px; t += 1, ++samples) {
+      const Eigen::Vector2d at = jamb + t * direction;
+      non_free += walls.Beyond(at, space) || walls.Beyond(at + outward, space) ||
+                  walls.Beyond(at - outward, space);
+    }
+    return samples == 0 || non_free >= kJambRunShare * samples;
+  };
+  const bool left = runs_on(normal);
+  const bool right = runs_on(-normal);
+  if (left == right) return 0;
+  const Eigen::Vector2d far_side = left ? -normal : normal;
+  if (NonFreeRun(walls, jamb, far_side, max_thickness_px) < 0) return 0;
+  return left ? 1 : -1;
 }
 
 }  // namespace
 
 struct WallGapFinder::Impl {
   Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
-       double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
+       double max_gap_m, bool short_tips, const cv::Mat* free_spaces, double max_mouth_m)
       : topology(topology),
+        resolution_m(resolution_m),
         walls(obstacles, kMinWallRegionM / resolution_m, free_spaces),
         arcs(topology),
         short_tips(short_tips),
@@ -252,108 +277,173 @@ struct WallGapFinder::Impl {
         max_thickness_px(kMaxTipWallM / resolution_m),
         max_gap_px(max_gap_m / resolution_m + 1),
         min_gap_px(kMinGapM / resolution_m + 1),
-        min_tip_px(kMinShortTipM / resolution_m) {}
+        min_tip_px(kMinShortTipM / resolution_m),
+        max_mouth_px(max_mouth_m > 0 ? max_mouth_m / resolution_m + 1 : 0),
+        depth_px(kDoorReachM / resolution_m) {}
+
+  // The opening of segment `s` of edge `e` (sites a and b), if it is a
+  // wall gap or a mouth; its line is a to b.
+  bool Find(int e, int s, Opening* found) const;
 
   const proto::TopologyGraph& topology;
+  const double resolution_m;
   const WallStructure walls;
   const EdgeArcs arcs;
   const bool short_tips;
   const double run_px, reach_px, rise_px, max_thickness_px, max_gap_px, min_gap_px, min_tip_px;
+  // A mouth is at most this wide (0: none are looked for); its side walls
+  // run at least this deep.
+  const double max_mouth_px, depth_px;
 };
 
 WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                              double resolution_m, double max_gap_m, bool short_tips,
-                             const cv::Mat* free_spaces)
+                             const cv::Mat* free_spaces, double max_mouth_m)
     : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, max_gap_m, short_tips,
-                                   free_spaces)) {}
+                                   free_spaces, max_mouth_m)) {}
 
 WallGapFinder::~WallGapFinder() = default;
 
-PointList WallGapFinder::Sites(int begin, int end) const {
-  const Impl& in = *impl_;
-  const proto::TopologyGraph& topology = in.topology;
-  const WallStructure& walls = in.walls;
-  const double run_px = in.run_px, max_thickness_px = in.max_thickness_px;
-  PointList sites;
-  for (int e = begin; e < end; ++e) {
-    const proto::GraphEdge& edge = topology.edges(e);
-    const std::vector<double>& arc = in.arcs.arcs[e];
-    const int segments =
-        std::min({edge.path_size() - 1, edge.left_sites_size(), edge.right_sites_size()});
-    for (int s = 0; s < segments; ++s) {
-      const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
-      const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
-      const double span = (b - a).norm();
-      if (span > in.max_gap_px || span < in.min_gap_px) continue;
-      // The gap's middle must lie on this segment: its narrowest crossing.
-      const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
-      const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
-      const double length2 = (q - p).squaredNorm();
-      if (length2 <= 0) continue;
-      const double t = (0.5 * (a + b) - p).dot(q - p) / length2;
-      if (t < 0 || t > 1) continue;
-      const int label_a = walls.LabelAt(a), label_b = walls.LabelAt(b);
-      const bool wall_a = walls.IsStructure(label_a), wall_b = walls.IsStructure(label_b);
-      if (!wall_a && !wall_b) continue;
-      const Eigen::Vector2d along = (b - a) / span;
-      const int space = walls.SpaceAt(0.5 * (a + b));
-      if (!WallRunsOn(walls, a, -along, run_px, space) ||
-          !WallRunsOn(walls, b, along, run_px, space)) {
-        continue;
-      }
-      const double min_run_px = kMinTipRunGaps * span;
-      const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
-      const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
-      if (!tip_a && !tip_b) continue;
-      // With short_tips, a thin wall end facing the structure may be a short
-      // piece of wall (between two doors, a partition, a block of a row).
-      auto jamb = [&](bool wall, bool tip, int label) {
-        return wall || (in.short_tips && tip && walls.Longest(label) >= in.min_tip_px);
-      };
-      if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) continue;
-      const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
-      if (!WidensOnOneSide(topology, in.arcs, e, at_px, span - 1, in.reach_px, in.rise_px)) {
-        continue;
-      }
-      AddLineSites(a, b, &sites);
+bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
+  const proto::GraphEdge& edge = topology.edges(e);
+  const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
+  const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
+  const double span = (b - a).norm();
+  if (span > std::max(max_gap_px, max_mouth_px) || span < min_gap_px) return false;
+  // The gap's middle must lie on this segment: its narrowest crossing.
+  const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
+  const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
+  const double length2 = (q - p).squaredNorm();
+  if (length2 <= 0) return false;
+  const double t = (0.5 * (a + b) - p).dot(q - p) / length2;
+  if (t < 0 || t > 1) return false;
+  const int label_a = walls.LabelAt(a), label_b = walls.LabelAt(b);
+  const bool wall_a = walls.IsStructure(label_a), wall_b = walls.IsStructure(label_b);
+  if (!wall_a && !wall_b) return false;
+  const Eigen::Vector2d along = (b - a) / span;
+  const int space = walls.SpaceAt(0.5 * (a + b));
+  if (!WallRunsOn(walls, a, -along, run_px, space) || !WallRunsOn(walls, b, along, run_px, space)) {
+    return false;
+  }
+  // What it is and the spaces it joins, once it is one.
+  auto opening = [&](proto::Opening::Kind kind) {
+    const std::vector<double>& arc = arcs.arcs[e];
+    const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
+    double before = 0, after = 0;
+    const bool widens =
+        WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px, &before, &after);
+    *found = Opening();
+    found->kind = kind;
+    found->position = p + t * (q - p);
+    found->width_m = (span - 1) * resolution_m;
+    found->has_jambs = true;
+    found->jamb_a = a, found->jamb_b = b;
+    found->side_a_m = before * resolution_m, found->side_b_m = after * resolution_m;
+    found->closed = true;
+    found->lines = {{a, b}};
+    return widens;
+  };
+  // A mouth: both jambs are wall structure where side walls leave the line
+  // on the same side, the space behind opening along its whole width.
+  if (span <= max_mouth_px && wall_a && wall_b) {
+    const int side_a = SideWallAt(walls, a, -along, depth_px, max_thickness_px, space);
+    const int side_b = SideWallAt(walls, b, along, depth_px, max_thickness_px, space);
+    // The two outward directions are opposite, so one side wall on the same
+    // side of the opening reads as opposite signs.
+    if (side_a != 0 && side_a == -side_b) {
+      opening(proto::Opening::MOUTH);
+      return true;
     }
   }
-  return sites;
+  if (span > max_gap_px) return false;
+  const double min_run_px = kMinTipRunGaps * span;
+  const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
+  const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
+  if (!tip_a && !tip_b) return false;
+  // With short_tips, a thin wall end facing the structure may be a short
+  // piece of wall (between two doors, a partition, a block of a row).
+  auto jamb = [&](bool wall, bool tip, int label) {
+    return wall || (short_tips && tip && walls.Longest(label) >= min_tip_px);
+  };
+  if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) return false;
+  return opening(proto::Opening::WALL_GAP);
+}
+
+std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
+  const Impl& in = *impl_;
+  std::vector<Opening> openings;
+  for (int e = begin; e < end; ++e) {
+    const proto::GraphEdge& edge = in.topology.edges(e);
+    const int segments =
+        std::min({edge.path_size() - 1, edge.left_sites_size(), edge.right_sites_size()});
+    bool in_run = false;  // consecutive segments across one opening of one kind
+    for (int s = 0; s < segments; ++s) {
+      Opening found;
+      if (!in.Find(e, s, &found)) {
+        in_run = false;
+        continue;
+      }
+      if (in_run && openings.back().kind == found.kind) {
+        Opening& run = openings.back();
+        run.lines.push_back(found.lines.front());
+        // The run's place and width are its narrowest crossing's.
+        if (found.width_m < run.width_m) {
+          found.lines = std::move(run.lines);
+          run = std::move(found);
+        }
+      } else {
+        openings.push_back(std::move(found));
+      }
+      in_run = true;
+    }
+  }
+  return openings;
 }
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces) {
-  if (max_gap_m <= 0) return PointList();
-  return WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
-      .Sites(0, topology.edges_size());
+                       const cv::Mat* free_spaces, double max_mouth_m) {
+  if (max_gap_m <= 0 && max_mouth_m <= 0) return PointList();
+  return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips,
+                                    free_spaces, max_mouth_m)
+                          .Openings(0, topology.edges_size()));
 }
 
-PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m,
-                           const cv::Mat* free_spaces) {
-  PointList sites;
-  if (estimate.doors_size() == 0) return sites;
+std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
+                                       const ObstacleLabels& obstacles, double resolution_m,
+                                       const cv::Mat* free_spaces) {
+  std::vector<Opening> openings;
+  if (estimate.doors_size() == 0) return openings;
   const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
   for (const proto::DetectedWidth& door : estimate.doors()) {
+    Opening& opening = openings.emplace_back();
     const Eigen::Vector2d p(door.position().x(), door.position().y());
+    opening.position = p;
+    opening.width_m = door.width_m();
+    opening.side_a_m = door.side_a_m(), opening.side_b_m = door.side_b_m();
     const double reach = 0.5 * door.width_m() / resolution_m + 2;
     Eigen::Vector2d a, b;
     if (!NearestObstacle(walls, p, reach, nullptr, &a)) continue;
     if (!NearestObstacle(walls, p, reach + 1, &a, &b)) continue;
+    opening.has_jambs = true;
+    opening.jamb_a = a, opening.jamb_b = b;
+    opening.lines = {{a, b}};
     if (!walls.IsStructure(walls.LabelAt(a)) || !walls.IsStructure(walls.LabelAt(b))) continue;
     const double span = (b - a).norm();
     if (span < 1) continue;
     const Eigen::Vector2d along = (b - a) / span;
     const int space = walls.SpaceAt(p);
-    if (!WallRunsOn(walls, a, -along, run_px, space) ||
-        !WallRunsOn(walls, b, along, run_px, space)) {
-      continue;
-    }
-    AddLineSites(a, b, &sites);
+    opening.closed =
+        WallRunsOn(walls, a, -along, run_px, space) && WallRunsOn(walls, b, along, run_px, space);
   }
-  return sites;
+  return openings;
+}
+
+PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
+                           const ObstacleLabels& obstacles, double resolution_m,
+                           const cv::Mat* free_spaces) {
+  return ClosingSites(NarrowingOpenings(estimate, obstacles, resolution_m, free_spaces));
 }
 
 }  // namespace areagraph

@@ -58,8 +58,7 @@ TEST(ZoneKindsTest, AccuracyIsTheRightShareOfTheResultsArea) {
   const ZoneKinds gt{{1, "room"}, {2, "corridor"}};
   // Zone 10 (110 px) overlaps the room most and is a room; 20 (50 px) is a
   // corridor; 30 (40 px) is called a room.
-  const auto accuracy =
-      KindAccuracy(counts, {{10, "room"}, {20, "corridor"}, {30, "room"}}, gt);
+  const auto accuracy = KindAccuracy(counts, {{10, "room"}, {20, "corridor"}, {30, "room"}}, gt);
   ASSERT_TRUE(accuracy.has_value());
   EXPECT_DOUBLE_EQ(*accuracy, 160.0 / 200.0);
   // A dead end inside a GT corridor is right; a corridor in a GT room is not.
