@@ -261,6 +261,30 @@ int SideWallAt(const WallStructure& walls, const Eigen::Vector2d& jamb,
   return left ? 1 : -1;
 }
 
+// How far free cells run from `from` along `direction` (px, whole steps),
+// up to `limit_px`, as seen from free space `space`.
+double FreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
+               const Eigen::Vector2d& direction, double limit_px, int space) {
+  double t = 1;
+  while (t <= limit_px && !walls.Beyond(from + t * direction, space)) t += 1;
+  return t - 1;
+}
+
+// Whether the space behind a mouth from `a` to `b` runs on deeper than
+// kMouthCorridorDepth times its width along `behind`: a corridor (a side
+// corridor meeting another one, a wing corridor opening into a hall), not a
+// room. Probed at the middle and the quarters of the mouth, the deepest
+// counting, so that furniture in a room does not make it shallow.
+bool CorridorBehind(const WallStructure& walls, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                    const Eigen::Vector2d& behind, int space) {
+  const double limit = kMouthCorridorDepth * (b - a).norm();
+  double deepest = 0;
+  for (const double share : {0.25, 0.5, 0.75}) {
+    deepest = std::max(deepest, FreeRun(walls, a + share * (b - a), behind, limit, space));
+  }
+  return deepest >= limit;
+}
+
 }  // namespace
 
 struct WallGapFinder::Impl {
@@ -351,8 +375,12 @@ bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
     // The two outward directions are opposite, so one side wall on the same
     // side of the opening reads as opposite signs.
     if (side_a != 0 && side_a == -side_b) {
-      opening(proto::Opening::MOUTH);
-      return true;
+      // SideWallAt's left normal of jamb a's outward direction (-along).
+      const Eigen::Vector2d behind = side_a * Eigen::Vector2d(along.y(), -along.x());
+      if (!CorridorBehind(walls, a, b, behind, space)) {
+        opening(proto::Opening::MOUTH);
+        return true;
+      }
     }
   }
   if (span > max_gap_px) return false;

@@ -60,8 +60,11 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // - A mouth (cut.close_mouths_max_m): at most `max_mouth_m` wide, both sites
 //   structure, and at each a side wall leaves the line on the same side for
 //   kDoorReachM while the wall on the other side is at most kMaxTipWallM
-//   thick: a room or a corridor whose side walls end on the line of the wall
-//   of the space it opens into, along its whole width.
+//   thick: a room whose side walls end on the line of the wall of the space
+//   it opens into, along its whole width. A space behind that runs on
+//   deeper than kMouthCorridorDepth times the mouth's width is a corridor
+//   (a side corridor, a wing's corridor opening into a hall) and its mouth
+//   stays open.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
@@ -103,5 +106,8 @@ inline constexpr double kMinWallRegionM = 4.0;
 inline constexpr double kJambRunM = 0.3;
 // Share of the cells along that run that must be non-free.
 inline constexpr double kJambRunShare = 0.8;
+// A space behind a mouth this many times as deep as the mouth is wide is a
+// corridor (merge's kMinCorridorElongation).
+inline constexpr double kMouthCorridorDepth = 4.0;
 
 }  // namespace areagraph

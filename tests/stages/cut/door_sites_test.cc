@@ -243,6 +243,25 @@ TEST(DoorSitesTest, MouthOfABayIsClosedAlongTheWallsLine) {
   EXPECT_TRUE(GapSites(HallWithBay(), 3.5, true, false, 4.0).empty());
 }
 
+// A 14 x 8 m hall with a side corridor of 2 x `depth_m` above it, open
+// along its whole width.
+FloorPlan HallWithSideCorridor(double depth_m) {
+  FloorPlan plan(16, depth_m + 11, kResolutionM);
+  floorplan::DrawRoom(plan, {1, depth_m + 1, 14, 8});
+  floorplan::DrawRoom(plan, {7, 1, 2, depth_m});
+  floorplan::DrawDoor(plan, 8, depth_m + 1, 1.85, WallDirection::kHorizontal);
+  return plan;
+}
+
+TEST(DoorSitesTest, MouthOfACorridorStaysOpen) {
+  // 12 m deep, more than four times its width: a corridor meeting the hall.
+  EXPECT_TRUE(GapOpenings(HallWithSideCorridor(12), 3.5, 10).empty());
+  // 5 m deep: a room open along its narrow side.
+  const std::vector<Opening> room = GapOpenings(HallWithSideCorridor(5), 3.5, 10);
+  ASSERT_EQ(room.size(), 1u);
+  EXPECT_EQ(room[0].kind, proto::Opening::MOUTH);
+}
+
 TEST(DoorSitesTest, WideGapInAStraightWallIsNoMouth) {
   // Two halls side by side, the wall between them open for 4.85 m in its
   // middle: no side walls behind the jambs.
