@@ -13,6 +13,7 @@
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
+#include "stages/cut/mouth_sites.h"
 #include "stages/cut/narrow_tails.h"
 #include "stages/cut/openings.h"
 #include "stages/cut/room_width.h"
@@ -78,8 +79,9 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   const int width = grid.width(), height = grid.height();
   const double resolution_m = grid.resolution_m();
   const bool islands = options.room_island_max_m() > 0;
-  const bool finds_gaps = options.close_wall_gaps_max_m() > 0 || options.close_mouths_max_m() > 0;
-  const bool closes_lines = options.close_wall_doors() || finds_gaps;
+  const bool finds_gaps = options.close_wall_gaps_max_m() > 0;
+  const bool closes_lines =
+      options.close_wall_doors() || finds_gaps || options.close_mouths_max_m() > 0;
   std::vector<int> site_cells;
   IslandDepth island_depth;
   // The obstacles labelled once for the three site finders.
@@ -124,18 +126,23 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   // The door sites beside the gap sites' edge ranges.
   std::unique_ptr<WallGapFinder> gap_finder;
   if (finds_gaps) {
-    gap_finder = std::make_unique<WallGapFinder>(
-        topology, obstacles, resolution_m, options.close_wall_gaps_max_m(),
-        /*short_tips=*/true, spaces, options.close_mouths_max_m());
+    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m,
+                                                 options.close_wall_gaps_max_m(),
+                                                 /*short_tips=*/true, spaces);
   }
   const size_t edge_count = static_cast<size_t>(topology.edges_size());
   const int gap_ranges = gap_finder ? ParallelRangeCount(edge_count, kGapEdgesPerRange) : 0;
   std::vector<std::vector<Opening>> gaps(gap_ranges);
-  std::vector<std::function<void()>> tasks = {[&] {
-    if (options.close_wall_doors()) {
-      in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, spaces);
-    }
-  }};
+  std::vector<Opening> mouths;
+  std::vector<std::function<void()>> tasks = {
+      [&] {
+        if (options.close_wall_doors()) {
+          in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, spaces);
+        }
+      },
+      [&] {
+        mouths = MouthOpenings(obstacles, resolution_m, options.close_mouths_max_m(), spaces);
+      }};
   for (int range = 0; range < gap_ranges; ++range) {
     tasks.push_back([&, range] {
       gaps[range] = gap_finder->Openings(
@@ -144,6 +151,7 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
     });
   }
   RunTasks(tasks);
+  gaps.push_back(std::move(mouths));
   for (std::vector<Opening>& part : gaps) {
     std::move(part.begin(), part.end(), std::back_inserter(in.openings));
   }

@@ -105,7 +105,7 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 
 struct WallGapFinder::Impl {
   Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
-       double max_gap_m, bool short_tips, const cv::Mat* free_spaces, double max_mouth_m)
+       double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
       : topology(topology),
         resolution_m(resolution_m),
         walls(obstacles, kMinWallRegionM / resolution_m, free_spaces),
@@ -117,12 +117,10 @@ struct WallGapFinder::Impl {
         max_thickness_px(kMaxTipWallM / resolution_m),
         max_gap_px(max_gap_m / resolution_m + 1),
         min_gap_px(kMinGapM / resolution_m + 1),
-        min_tip_px(kMinShortTipM / resolution_m),
-        max_mouth_px(max_mouth_m > 0 ? max_mouth_m / resolution_m + 1 : 0),
-        depth_px(kDoorReachM / resolution_m) {}
+        min_tip_px(kMinShortTipM / resolution_m) {}
 
-  // The opening of segment `s` of edge `e` (sites a and b), if it is a
-  // wall gap or a mouth; its line is a to b.
+  // The wall gap of segment `s` of edge `e` (sites a and b), if it is one;
+  // its line is a to b.
   bool Find(int e, int s, Opening* found) const;
 
   const proto::TopologyGraph& topology;
@@ -131,16 +129,13 @@ struct WallGapFinder::Impl {
   const EdgeArcs arcs;
   const bool short_tips;
   const double run_px, reach_px, rise_px, max_thickness_px, max_gap_px, min_gap_px, min_tip_px;
-  // A mouth is at most this wide (0: none are looked for); its side walls
-  // run at least this deep.
-  const double max_mouth_px, depth_px;
 };
 
 WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                              double resolution_m, double max_gap_m, bool short_tips,
-                             const cv::Mat* free_spaces, double max_mouth_m)
+                             const cv::Mat* free_spaces)
     : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, max_gap_m, short_tips,
-                                   free_spaces, max_mouth_m)) {}
+                                   free_spaces)) {}
 
 WallGapFinder::~WallGapFinder() = default;
 
@@ -149,7 +144,7 @@ bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
   const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
   const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
   const double span = (b - a).norm();
-  if (span > std::max(max_gap_px, max_mouth_px) || span < min_gap_px) return false;
+  if (span > max_gap_px || span < min_gap_px) return false;
   // The gap's middle must lie on this segment: its narrowest crossing.
   const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
   const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
@@ -165,41 +160,6 @@ bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
   if (!WallRunsOn(walls, a, -along, run_px, space) || !WallRunsOn(walls, b, along, run_px, space)) {
     return false;
   }
-  // What it is and the spaces it joins, once it is one.
-  auto opening = [&](proto::Opening::Kind kind) {
-    const std::vector<double>& arc = arcs.arcs[e];
-    const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
-    double before = 0, after = 0;
-    const bool widens =
-        WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px, &before, &after);
-    *found = Opening();
-    found->kind = kind;
-    found->position = p + t * (q - p);
-    found->width_m = (span - 1) * resolution_m;
-    found->has_jambs = true;
-    found->jamb_a = a, found->jamb_b = b;
-    found->side_a_m = before * resolution_m, found->side_b_m = after * resolution_m;
-    found->closed = true;
-    found->lines = {{a, b}};
-    return widens;
-  };
-  // A mouth: both jambs are wall structure where side walls leave the line
-  // on the same side, the space behind opening along its whole width.
-  if (span <= max_mouth_px && wall_a && wall_b) {
-    const int side_a = SideWallAt(walls, a, -along, depth_px, max_thickness_px, space);
-    const int side_b = SideWallAt(walls, b, along, depth_px, max_thickness_px, space);
-    // The two outward directions are opposite, so one side wall on the same
-    // side of the opening reads as opposite signs.
-    if (side_a != 0 && side_a == -side_b) {
-      // SideWallAt's left normal of jamb a's outward direction (-along).
-      const Eigen::Vector2d behind = side_a * Eigen::Vector2d(along.y(), -along.x());
-      if (!CorridorBehind(walls, a, b, behind, space)) {
-        opening(proto::Opening::MOUTH);
-        return true;
-      }
-    }
-  }
-  if (span > max_gap_px) return false;
   const double min_run_px = kMinTipRunGaps * span;
   const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
   const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
@@ -210,7 +170,22 @@ bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
     return wall || (short_tips && tip && walls.Longest(label) >= min_tip_px);
   };
   if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) return false;
-  return opening(proto::Opening::WALL_GAP);
+  const std::vector<double>& arc = arcs.arcs[e];
+  const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
+  double before = 0, after = 0;
+  if (!WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px, &before, &after)) {
+    return false;
+  }
+  *found = Opening();
+  found->kind = proto::Opening::WALL_GAP;
+  found->position = p + t * (q - p);
+  found->width_m = (span - 1) * resolution_m;
+  found->has_jambs = true;
+  found->jamb_a = a, found->jamb_b = b;
+  found->side_a_m = before * resolution_m, found->side_b_m = after * resolution_m;
+  found->closed = true;
+  found->lines = {{a, b}};
+  return true;
 }
 
 std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
@@ -220,14 +195,14 @@ std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
     const proto::GraphEdge& edge = in.topology.edges(e);
     const int segments =
         std::min({edge.path_size() - 1, edge.left_sites_size(), edge.right_sites_size()});
-    bool in_run = false;  // consecutive segments across one opening of one kind
+    bool in_run = false;  // consecutive segments across one gap
     for (int s = 0; s < segments; ++s) {
       Opening found;
       if (!in.Find(e, s, &found)) {
         in_run = false;
         continue;
       }
-      if (in_run && openings.back().kind == found.kind) {
+      if (in_run) {
         Opening& run = openings.back();
         run.lines.push_back(found.lines.front());
         // The run's place and width are its narrowest crossing's.
@@ -246,11 +221,11 @@ std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces, double max_mouth_m) {
-  if (max_gap_m <= 0 && max_mouth_m <= 0) return PointList();
-  return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips,
-                                    free_spaces, max_mouth_m)
-                          .Openings(0, topology.edges_size()));
+                       const cv::Mat* free_spaces) {
+  if (max_gap_m <= 0) return PointList();
+  return ClosingSites(
+      WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
+          .Openings(0, topology.edges_size()));
 }
 
 std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,

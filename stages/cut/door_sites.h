@@ -57,18 +57,10 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 //   two sites may lie in a region that is not structure when it is the thin
 //   wall end and its region is at least kMinShortTipM long: a piece of wall
 //   between two doors, a partition, a block of a row dividing a room.
-// - A mouth (cut.close_mouths_max_m): at most `max_mouth_m` wide, both sites
-//   structure, and at each a side wall leaves the line on the same side for
-//   kDoorReachM while the wall on the other side is at most kMaxTipWallM
-//   thick: a room whose side walls end on the line of the wall of the space
-//   it opens into, along its whole width. A space behind that runs on
-//   deeper than kMouthCorridorDepth times the mouth's width is a corridor
-//   (a side corridor, a wing's corridor opening into a hall) and its mouth
-//   stays open.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces = nullptr, double max_mouth_m = 0);
+                       const cv::Mat* free_spaces = nullptr);
 
 // WallGapSites' openings edge range by edge range, for callers that run
 // ranges as tasks: the openings of all ranges in edge order are
@@ -77,7 +69,7 @@ class WallGapFinder {
  public:
   WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                 double resolution_m, double max_gap_m, bool short_tips,
-                const cv::Mat* free_spaces = nullptr, double max_mouth_m = 0);
+                const cv::Mat* free_spaces = nullptr);
   ~WallGapFinder();
   // The openings found on edges [begin, end).
   std::vector<Opening> Openings(int begin, int end) const;
@@ -106,8 +98,5 @@ inline constexpr double kMinWallRegionM = 4.0;
 inline constexpr double kJambRunM = 0.3;
 // Share of the cells along that run that must be non-free.
 inline constexpr double kJambRunShare = 0.8;
-// A space behind a mouth this many times as deep as the mouth is wide is a
-// corridor (merge's kMinCorridorElongation).
-inline constexpr double kMouthCorridorDepth = 4.0;
 
 }  // namespace areagraph

@@ -125,4 +125,8 @@ double FreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
 bool CorridorBehind(const WallStructure& walls, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& behind, int space);
 
+// A space behind a mouth this many times as deep as the mouth is wide is a
+// corridor (merge's kMinCorridorElongation).
+inline constexpr double kMouthCorridorDepth = 4.0;
+
 }  // namespace areagraph

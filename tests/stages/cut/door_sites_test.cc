@@ -84,23 +84,22 @@ TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
 // free cells the gap cannot reach count as non-free past a jamb
 // (cut.jamb_wall_behind_line).
 PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = true,
-                   bool free_spaces = false, double max_mouth_m = 0) {
+                   bool free_spaces = false) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   const AreaStages stages = RunAreaStages(map);
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const cv::Mat spaces = LabelFreeSpaces(map.cells(), width, height);
   return WallGapSites(stages.topology, LabelObstacles(map.cells(), width, height), kResolutionM,
-                      max_gap_m, short_tips, free_spaces ? &spaces : nullptr, max_mouth_m);
+                      max_gap_m, short_tips, free_spaces ? &spaces : nullptr);
 }
 
 // WallGapFinder's openings of a plan (short tips on, free spaces off).
-std::vector<Opening> GapOpenings(const FloorPlan& plan, double max_gap_m, double max_mouth_m) {
+std::vector<Opening> GapOpenings(const FloorPlan& plan, double max_gap_m) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   const AreaStages stages = RunAreaStages(map);
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const ObstacleLabels obstacles = LabelObstacles(map.cells(), width, height);
-  return WallGapFinder(stages.topology, obstacles, kResolutionM, max_gap_m, true, nullptr,
-                       max_mouth_m)
+  return WallGapFinder(stages.topology, obstacles, kResolutionM, max_gap_m, true, nullptr)
       .Openings(0, stages.topology.edges_size());
 }
 
@@ -195,7 +194,7 @@ TEST(DoorSitesTest, DeskOrSpeckInTheWallsLineIsNoJamb) {
 }
 
 TEST(DoorSitesTest, AWallGapIsOneOpeningWithItsJambsAndWidth) {
-  const std::vector<Opening> openings = GapOpenings(PartialWall(), 2.5, 0);
+  const std::vector<Opening> openings = GapOpenings(PartialWall(), 2.5);
   ASSERT_EQ(openings.size(), 1u);
   const Opening& gap = openings[0];
   EXPECT_EQ(gap.kind, proto::Opening::WALL_GAP);
@@ -207,69 +206,6 @@ TEST(DoorSitesTest, AWallGapIsOneOpeningWithItsJambsAndWidth) {
   EXPECT_GE(gap.lines.size(), 1u);
   // One side is the room's 3 m wide halves, the other as wide.
   EXPECT_GT(std::max(gap.side_a_m, gap.side_b_m), gap.width_m + 0.25);
-}
-
-// A 12 x 8 m hall with a bay of 5 x 4 m above it, open along its whole
-// width: the bay's side walls end on the line of the hall's top wall.
-FloorPlan HallWithBay(double bay_width_m = 5) {
-  FloorPlan plan(14, 14, kResolutionM);
-  floorplan::DrawRoom(plan, {1, 5, 12, 8});
-  floorplan::DrawRoom(plan, {4, 1, bay_width_m, 4});
-  floorplan::DrawDoor(plan, 4 + bay_width_m / 2, 5, bay_width_m - 0.15, WallDirection::kHorizontal);
-  return plan;
-}
-
-TEST(DoorSitesTest, MouthOfABayIsClosedAlongTheWallsLine) {
-  const PointList sites = GapSites(HallWithBay(), 3.5, true, false, /*max_mouth_m=*/10);
-  ASSERT_GE(sites.size(), 50u);
-  double left = 1e9, right = -1e9;
-  for (const Eigen::Vector2d& site : sites) {
-    // Every cross-section of the bay within a wall's thickness (0.6 m) of
-    // the hall's wall line is its mouth.
-    EXPECT_GT(site.y() * kResolutionM, 4.35);
-    EXPECT_LT(site.y() * kResolutionM, 5.15);
-    left = std::min(left, site.x() * kResolutionM);
-    right = std::max(right, site.x() * kResolutionM);
-  }
-  EXPECT_LT(left, 4.3);
-  EXPECT_GT(right, 8.7);
-  const std::vector<Opening> openings = GapOpenings(HallWithBay(), 3.5, 10);
-  ASSERT_EQ(openings.size(), 1u);
-  EXPECT_EQ(openings[0].kind, proto::Opening::MOUTH);
-  EXPECT_NEAR(openings[0].width_m, 4.85, 0.15);
-  // Without mouths, or wider than the limit, it stays open (it is wider
-  // than a wall gap and neither jamb is a thin wall end).
-  EXPECT_TRUE(GapSites(HallWithBay(), 3.5).empty());
-  EXPECT_TRUE(GapSites(HallWithBay(), 3.5, true, false, 4.0).empty());
-}
-
-// A 14 x 8 m hall with a side corridor of 2 x `depth_m` above it, open
-// along its whole width.
-FloorPlan HallWithSideCorridor(double depth_m) {
-  FloorPlan plan(16, depth_m + 11, kResolutionM);
-  floorplan::DrawRoom(plan, {1, depth_m + 1, 14, 8});
-  floorplan::DrawRoom(plan, {7, 1, 2, depth_m});
-  floorplan::DrawDoor(plan, 8, depth_m + 1, 1.85, WallDirection::kHorizontal);
-  return plan;
-}
-
-TEST(DoorSitesTest, MouthOfACorridorStaysOpen) {
-  // 12 m deep, more than four times its width: a corridor meeting the hall.
-  EXPECT_TRUE(GapOpenings(HallWithSideCorridor(12), 3.5, 10).empty());
-  // 5 m deep: a room open along its narrow side.
-  const std::vector<Opening> room = GapOpenings(HallWithSideCorridor(5), 3.5, 10);
-  ASSERT_EQ(room.size(), 1u);
-  EXPECT_EQ(room[0].kind, proto::Opening::MOUTH);
-}
-
-TEST(DoorSitesTest, WideGapInAStraightWallIsNoMouth) {
-  // Two halls side by side, the wall between them open for 4.85 m in its
-  // middle: no side walls behind the jambs.
-  FloorPlan plan(14, 14, kResolutionM);
-  floorplan::DrawRoom(plan, {1, 1, 12, 6});
-  floorplan::DrawRoom(plan, {1, 7, 12, 6});
-  floorplan::DrawDoor(plan, 7, 7, 4.85, WallDirection::kHorizontal);
-  EXPECT_TRUE(GapSites(plan, 3.5, true, false, 10).empty());
 }
 
 TEST(DoorSitesTest, NoDoorsNoSites) {
