@@ -15,6 +15,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "common/protected_files.h"
 
 namespace areagraph {
 namespace {
@@ -99,6 +100,7 @@ std::string CreateTemporaryBeside(const std::string& path, int* fd) {
 // rename(2). `existing` is the file being replaced, if any.
 void ReplaceRegularFile(const std::string& path, const std::optional<struct stat>& existing,
                         std::string_view bytes) {
+  if (const std::optional<std::string> reason = ProtectedFileReason(path)) Fail(*reason);
   if (existing && ::access(path.c_str(), W_OK) != 0) FailWithErrno(errno);
   int raw_fd = -1;
   const std::string temporary = CreateTemporaryBeside(path, &raw_fd);

@@ -28,6 +28,8 @@ bool IsStandardOutput(const std::string& target);
 // - a FIFO or a character device (a pipe, /dev/null, /dev/tty, /dev/stdout):
 //   written into as it is, never replaced.
 // - a folder, a block device, a socket or a link to nothing: refused.
+// - a store this process opened, or its -wal, -shm or -journal file, by any
+//   name (common/protected_files.h): refused, since it would destroy the store.
 // Every write, flush and close is checked. Throws InputError
 // "cannot write '<target>': <reason>", the reason in words from errno
 // ("no space left on device").

@@ -4,8 +4,8 @@
 
 #include "common/error.h"
 #include "stages/common/output_file.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"
 #include "tools/export/markup_escape.h"
@@ -63,10 +63,12 @@ viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
 }
 
 std::string ViewerPageHtml(const viewer::Page& page) {
-  return FillTemplate(embedded::kViewerHtml, {{"{{TITLE}}", MarkupEscaped(page.map_name())},
-                                              {"/*{{STYLE}}*/", embedded::kViewerCss},
-                                              {"/*{{SCRIPT}}*/", embedded::kViewerJs},
-                                              {"{{DATA}}", ScriptJson(page)}});
+  return FillTemplate(
+      embedded::kViewerHtml,
+      {{"{{TITLE}}", MarkupEscaped(page.map_name())},
+       {"/*{{STYLE}}*/", embedded::kViewerCss},
+       {"/*{{SCRIPT}}*/", std::string(embedded::kViewerRouteJs) + embedded::kViewerJs},
+       {"{{DATA}}", ScriptJson(page)}});
 }
 
 int ExportViewerPage(const std::string& store_path, const std::string& map_name,

@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -10,11 +11,13 @@
 #include <utility>
 
 #include "common/error.h"
+#include "common/process_setup/page_fault_thrift.h"
+#include "common/text.h"
+#include "proto/pipeline_options.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
-#include "stages/common/page_fault_thrift.h"
 #include "stages/common/png_file.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tools/render/artifact_drawing.h"
 #include "tools/render/map_png.h"
 
@@ -44,7 +47,7 @@ BaseMap ReadBaseMap(ArtifactStore& store, const std::string& map, const StageInf
 
 // The canvas above which the heap grows by huge pages once more: at lab_a
 // tiled 2 x 2 (1.5 Mpx) it saved nothing, at 8 x 8 (24 Mpx) 31 000 of 31 600
-// faults (docs/performance.md, eleventh pass).
+// faults (docs/performance.md, "Memory between stages").
 constexpr double kHugePageCanvasPixels = 4e6;
 
 // The canvas pixels of a window "X,Y,W,H" given in map cells.
@@ -62,12 +65,30 @@ cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
   return window;
 }
 
+// The most pixels a picture may have: what ag-import takes for a map
+// (import.max_pixels' default). The whole map is drawn at --scale before
+// --crop or --width cut it, so an unbounded scale would ask for gigabytes.
+const double kMaxPicturePixels = static_cast<double>(proto::ImportOptions().max_pixels());
+
+void CheckPictureSize(int width_px, int height_px, int scale) {
+  const double pixels = static_cast<double>(width_px) * height_px * scale * scale;
+  if (scale == 1 || pixels <= kMaxPicturePixels) return;  // scale 1: the map's own size
+  const int most = std::max(
+      1,
+      static_cast<int>(std::sqrt(kMaxPicturePixels / std::max(1.0, double{width_px} * height_px))));
+  throw InputError("--scale " + std::to_string(scale) + " would draw the " +
+                   std::to_string(width_px) + " x " + std::to_string(height_px) + " map as " +
+                   FormatNumber(pixels) + " pixels, more than " + FormatNumber(kMaxPicturePixels) +
+                   "; use --scale " + std::to_string(most) + " or less");
+}
+
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
             bool doors, int width, const std::string& crop, const std::string& out) {
   const StageDefinition& definition = FindStage(stage, "--stage");
   const BaseMap base = ReadBaseMap(store, map, definition.info);
   const int width_px = base.frame.width_px(), height_px = base.frame.height_px();
   if (scale <= 0) scale = DefaultScale(width_px, height_px);
+  CheckPictureSize(width_px, height_px, scale);
   // The import's picture is the bare map: written from its cells
   // (EncodeMapPng), without a canvas.
   if (SameStage(definition.info, kImportStage) && !doors && crop.empty() &&
@@ -78,7 +99,7 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
   // A big canvas, its masks and the parsed artifact outgrow the heap's
   // reserve, and glibc maps each buffer over 32 MB (the BGR picture of lab_a
   // tiled 8 x 8 is 71 MB) in 4-kB pages: its Voronoi picture faulted 31 000
-  // pages, 0.85 of its 2 s of CPU (docs/performance.md, eleventh pass).
+  // pages, 0.85 of its 2 s of CPU (docs/performance.md, "Memory between stages").
   const double canvas_pixels = static_cast<double>(width_px) * height_px * scale * scale;
   if (canvas_pixels > kHugePageCanvasPixels) {
     GrowFaultThriftyHeap(static_cast<size_t>(std::min(canvas_pixels * 40, double{1 << 30})));
@@ -119,7 +140,7 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
 int main(int argc, char** argv) {
   // A render writes each of its big buffers (the payloads, their parsed
   // arrays, the canvas and its masks) once: faulting them in was half of its
-  // CPU time (docs/performance.md, eighth pass).
+  // CPU time (docs/performance.md, "Memory between stages").
   areagraph::UseFaultThriftyHeap(size_t{256} << 20);
   // OpenCV's functions run on the calling thread: a picture is drawn in
   // milliseconds, and its parallel loops would load TBB (common/

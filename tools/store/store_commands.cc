@@ -7,7 +7,7 @@
 
 #include "common/error.h"
 #include "common/text.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 #include "store/store_maintenance.h"
 #include "tools/inspect/failure_report.h"
@@ -145,7 +145,7 @@ int VerifyStore(const std::string& store_path, bool progress, bool quick, std::o
   }
   for (const VerifyProblem& problem : problems) {
     out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "
-        << OrDash(ShortKey(problem.cache_key)) << ": " << problem.problem << "\n";
+        << OrDash(ShortKey(problem.cache_key)) << ": " << OneLine(problem.problem) << "\n";
   }
   out << "checked " << Plural(checked, "artifact") << ": "
       << (problems.empty() ? "no problems"

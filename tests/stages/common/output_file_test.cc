@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "common/error.h"
+#include "common/protected_files.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph {
@@ -217,6 +218,32 @@ TEST(OutputFileTest, DashIsStandardOutput) {
   EXPECT_EQ(error, "");
   EXPECT_EQ(ReadFile(dir.File("stdout")), "before bytes");  // in order
   EXPECT_EQ(Names(dir.path()), std::vector<std::string>{"stdout"});
+}
+
+// A store the process opened, and the files SQLite keeps beside it, are never
+// replaced, whichever name leads to them; other files beside it are written.
+TEST(OutputFileTest, ProtectedStoreFilesAreRefusedByAnyName) {
+  TempDir dir;
+  std::filesystem::create_directory(dir.File("sub"));
+  WriteFile(dir.File("guarded.db"), "store");
+  ProtectStoreFile(dir.File("sub/../guarded.db"));
+  std::filesystem::create_symlink(dir.File("guarded.db"), dir.File("link"));
+  const std::string refused = "': it is the store '" + dir.File("sub/../guarded.db") + "'";
+  EXPECT_EQ(WriteError(dir.File("guarded.db"), "x"),
+            "cannot write '" + dir.File("guarded.db") + refused);
+  EXPECT_EQ(WriteError(dir.File("sub/../guarded.db"), "x"),
+            "cannot write '" + dir.File("sub/../guarded.db") + refused);
+  EXPECT_EQ(WriteError(dir.File("link"), "x"), "cannot write '" + dir.File("link") + refused);
+  EXPECT_NE(WriteError(dir.File("guarded.db-wal"), "x").find("write-ahead log of the store"),
+            std::string::npos);
+  EXPECT_NE(WriteError(dir.File("guarded.db-shm"), "x").find("shared-memory file"),
+            std::string::npos);
+  EXPECT_NE(WriteError(dir.File("guarded.db-journal"), "x").find("journal of the store"),
+            std::string::npos);
+  EXPECT_EQ(ReadFile(dir.File("guarded.db")), "store");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.File("link")));
+  EXPECT_EQ(WriteError(dir.File("guarded.db.json"), "x"), "");
+  EXPECT_EQ(ReadFile(dir.File("guarded.db.json")), "x");
 }
 
 TEST(OutputFileTest, ErrnoTextIsLowerCase) {

@@ -106,8 +106,11 @@ TEST_F(HistoryCliTest, DiffSaysTheWallIsGoneAndWhichIdSurvived) {
                 .exit_code,
             0);
   const std::string nodes = ReadFile(node_link);
-  EXPECT_NE(nodes.find("\"graph\":{\"name\":\"house\",\"version\":2,"), std::string::npos) << nodes;
-  EXPECT_NE(nodes.find("{\"id\":0,\"stable_id\":0,\"name\":\"area_0\""), std::string::npos)
+  EXPECT_NE(nodes.find("\"graph\":{\"name\":\"house\",\"ids\":\"stable\",\"version\":2,"),
+            std::string::npos)
+      << nodes;
+  EXPECT_NE(nodes.find("{\"id\":0,\"stable_id\":0,\"index\":0,\"name\":\"area_0\""),
+            std::string::npos)
       << nodes;
   const std::string geojson = dir_.File("house.geojson");
   ASSERT_EQ(RunTool("ag-export",
@@ -142,6 +145,20 @@ TEST_F(HistoryCliTest, BadRequestsGiveOneLine) {
   expect_error({"--map", "house", "--diff", "1"}, "--diff");
   expect_error({"--history", "nowhere"}, "map 'nowhere' is not in the store");
   expect_error({"--history", "house", "--map", "house"}, "--history lists one map's versions");
+}
+
+// NaN passed the range checks: every comparison with it is false.
+TEST_F(HistoryCliTest, NotANumberIsNoThreshold) {
+  for (const char* flag : {"--size-threshold", "--move-threshold"}) {
+    for (const char* value : {"nan", "NaN", "-nan"}) {
+      const CommandResult result = Inspect({"--map", "house", "--diff", "1", "2", flag, value});
+      EXPECT_EQ(result.exit_code, 2) << flag << " " << value << ": " << result.out;
+      EXPECT_EQ(CountLines(result.err), 1) << result.err;
+      EXPECT_NE(result.err.find(std::string(flag) + ": must be a finite number, got " + value),
+                std::string::npos)
+          << result.err;
+    }
+  }
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/common/image_codecs.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 
 namespace areagraph {
 namespace {
@@ -69,6 +69,21 @@ TEST(MapThumbnailTest, DrawsTheMatchArtifactOverMerges) {
   EXPECT_FALSE(SamePixels(both, merge_only));
   // A run that stopped before match still shows merge's areas.
   EXPECT_FALSE(SamePixels(merge_only, Thumbnail({FreeGrid()})));
+}
+
+// The thumbnail keys areas by stable id, as the viewer and the exports do:
+// an area drawn with stable id 7 looks as an area whose only id is 7.
+TEST(MapThumbnailTest, ColoursAndLabelsAreasByStableId) {
+  proto::AreaGraph matched = OneArea(0, kWidth);
+  matched.mutable_version()->set_number(2);
+  matched.mutable_areas(0)->set_stable_id(7);
+  proto::AreaGraph indexed = OneArea(0, kWidth);
+  indexed.mutable_areas(0)->set_id(7);
+  proto::AreaGraph renumbered = matched;
+  renumbered.mutable_areas(0)->set_stable_id(3);
+  const cv::Mat seven = Thumbnail({FreeGrid(), Record(kMatchStage, matched)});
+  EXPECT_TRUE(SamePixels(seven, Thumbnail({FreeGrid(), Record(kMatchStage, indexed)})));
+  EXPECT_FALSE(SamePixels(seven, Thumbnail({FreeGrid(), Record(kMatchStage, renumbered)})));
 }
 
 }  // namespace
