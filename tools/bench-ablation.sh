@@ -50,8 +50,7 @@ STEPS=(
   "+ merge.join_furniture_gaps and merge.label_corridors_by_shape|merge.join_furniture_gaps=true merge.label_corridors_by_shape=true"
   "+ cut.close_wall_gaps_max_m 3.5|cut.close_wall_gaps_max_m=3.5"
   "+ merge.keep_closed_doors|merge.keep_closed_doors=true"
-  "+ cut.island_end_on_face|cut.island_end_on_face=true"
-  "+ cut.close_wall_gaps_short_tips|cut.close_wall_gaps_short_tips=true"
+  "+ cut.island_end_on_face_share 0.25|cut.island_end_on_face_share=0.25"
   "+ merge.fill_furniture_outlines_m 4|merge.fill_furniture_outlines_m=4"
   "+ merge.wall_furniture_islands and merge.join_corridor_clutter|merge.wall_furniture_islands=true merge.join_corridor_clutter=true"
   "+ merge.fold_corridor_pieces_below_m2 20|merge.fold_corridor_pieces_below_m2=20"
@@ -67,8 +66,7 @@ STEPS=(
   "+ merge.keep_small_closed_rooms|merge.keep_small_closed_rooms=true"
   "+ merge.closed_room_pocket_jamb_m 0.6|merge.closed_room_pocket_jamb_m=0.6"
   "+ cut.cut_narrow_tails and merge.corridor_stems_max_width_m 4|cut.cut_narrow_tails=true merge.corridor_stems_max_width_m=4"
-  "+ cut.island_wall_piece_both_ends|cut.island_wall_piece_both_ends=true"
-  "+ cut.jamb_wall_behind_line (= defaults)|cut.jamb_wall_behind_line=true"
+  "+ cut.island_wall_piece_both_ends (= defaults)|cut.island_wall_piece_both_ends=true"
 )
 
 set_flags=()
