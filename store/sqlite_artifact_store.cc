@@ -13,6 +13,7 @@
 
 #include "common/error.h"
 #include "common/text.h"
+#include "store/collection_index_store.h"
 #include "store/digest.h"
 #include "store/payload_codec.h"
 #include "store/payload_encoder.h"
@@ -529,6 +530,7 @@ std::vector<FailureRecord> SqliteArtifactStore::ReadFailures() {
 }
 
 std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path, StoreMode mode) {
+  if (IsCollectionIndex(path)) return OpenCollectionIndexStore(path, mode);
   if (mode == StoreMode::kReadWrite) store_internal::CreateMissingStoreFile(path);
   return std::make_unique<SqliteArtifactStore>(path, mode);
 }
