@@ -47,7 +47,7 @@ struct CollectionIndexInfo {
 };
 
 // Writes the index of `shards` (store files, each a shard of one collection:
-// no map in two of them) into the new, empty file `path`, in one transaction.
+// no map in two of them) into the new file `path`, removed again on failure.
 // Shard paths are recorded relative to the folder of `final_path`, where the
 // index will live (`path` may be a temporary name beside it). With
 // `head_stages`, only the heads of those stages are indexed (their rows and

@@ -99,9 +99,14 @@ void CollectionIndexStore::CheckShard(const CollectionShard& shard,
     return skip();
   }
   if (check == ShardCheck::kFull) {
+    // An index of some stages' heads covers those artifacts, not their
+    // inputs, which gc --keep final drops from the shards.
+    std::vector<std::string> unchecked_inputs = file_input_stages;
+    unchecked_inputs.insert(unchecked_inputs.end(), info_.head_stages.begin(),
+                            info_.head_stages.end());
     const int64_t base = done;
     for (VerifyProblem& problem : store->Verify(
-             file_input_stages,
+             unchecked_inputs,
              [&](int64_t shard_done, int64_t) {
                done = base + shard_done;
                if (progress) progress(done, std::max(total, done));

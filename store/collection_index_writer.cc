@@ -222,11 +222,17 @@ std::vector<CollectionShard> WriteCollectionIndex(const std::string& path,
                                                   const std::vector<std::string>& head_stages) {
   if (shards.empty()) throw StoreError("an index needs at least one shard store");
   CheckShards(shards, final_path);
-  IndexWriter writer(path);
-  writer.CreateSchema(head_stages);
   std::vector<CollectionShard> added;
-  for (const std::string& shard : shards) {
-    added.push_back(writer.AddShard(shard, final_path, head_stages));
+  try {
+    IndexWriter writer(path);
+    writer.CreateSchema(head_stages);
+    for (const std::string& shard : shards) {
+      added.push_back(writer.AddShard(shard, final_path, head_stages));
+    }
+  } catch (...) {
+    std::error_code ignored;
+    fs::remove(path, ignored);  // half an index is none
+    throw;
   }
   return added;
 }
