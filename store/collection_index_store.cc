@@ -5,9 +5,7 @@
 
 #include <sqlite3.h>
 
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "common/error.h"
 #include "common/text.h"
@@ -19,20 +17,20 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The user_version of the SQLite file at `path` from its header (bytes 60 to
-// 63, big-endian; https://www.sqlite.org/fileformat.html), or -1 when it is
-// not an SQLite file. Read without opening a connection, which would leave
-// side files beside a WAL store; an index is never in WAL mode, so its
-// header is exact, and a store's header never holds an index's version.
-int64_t HeaderUserVersion(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  char header[64] = {};
-  if (!file.read(header, sizeof(header))) return -1;
-  if (std::memcmp(header, "SQLite format 3", 16) != 0) return -1;
-  const auto byte = [&](int i) {
-    return static_cast<int64_t>(static_cast<unsigned char>(header[i]));
-  };
-  return (byte(60) << 24) | (byte(61) << 16) | (byte(62) << 8) | byte(63);
+// The user_version of the open database, or -1 when SQLite cannot read it
+// (not an SQLite file). Always read through SQLite, never by opening the
+// file directly: closing another descriptor of a file drops the POSIX locks
+// that SQLite holds on it in this process, and a writer's log could then be
+// removed under it by another process.
+int64_t UserVersion(sqlite3* db) {
+  sqlite3_stmt* statement = nullptr;
+  int64_t version = -1;
+  if (sqlite3_prepare_v2(db, "PRAGMA user_version", -1, &statement, nullptr) == SQLITE_OK &&
+      sqlite3_step(statement) == SQLITE_ROW) {
+    version = sqlite3_column_int64(statement, 0);
+  }
+  sqlite3_finalize(statement);
+  return version;
 }
 
 std::string ShardError(const std::string& map_name, const std::string& shard,
@@ -45,12 +43,17 @@ std::string ShardError(const std::string& map_name, const std::string& shard,
 
 bool IsCollectionIndex(const std::string& path) {
   if (path == kMemoryStorePath || !fs::is_regular_file(path)) return false;
-  return HeaderUserVersion(path) > kCollectionIndexVersionBase;
+  try {
+    const SqliteConnection connection(path, StoreMode::kReadOnly);
+    return UserVersion(connection.get()) > kCollectionIndexVersionBase;
+  } catch (const StoreError&) {
+    return false;  // the ordinary open says what is wrong
+  }
 }
 
 CollectionIndexStore::CollectionIndexStore(const std::string& path)
     : path_(path), connection_(path, StoreMode::kReadOnly), db_(connection_.get()) {
-  const int64_t version = HeaderUserVersion(path) - kCollectionIndexVersionBase;
+  const int64_t version = UserVersion(db_) - kCollectionIndexVersionBase;
   if (version > kCollectionIndexSchemaVersion) {
     throw StoreError("collection index '" + path + "' has index schema version " +
                      std::to_string(version) + ", newer than this build's " +

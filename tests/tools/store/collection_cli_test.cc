@@ -9,6 +9,8 @@
 #include <memory>
 #include <regex>
 
+#include "store/artifact_store.h"
+#include "store/collection_index.h"
 #include "tests/support/raw_sqlite.h"
 #include "tests/support/test_support.h"
 
@@ -328,6 +330,27 @@ TEST_F(CollectionCliTest, FinalOnlyIndexAndShardsTrimmedToIt) {
       << rerun.out;
   EXPECT_EQ(std::stoi(counts[1]), 2 * maps_in_shard) << rerun.out;
   EXPECT_EQ(std::stoi(counts[2]), 5 * maps_in_shard) << rerun.out;
+}
+
+// Telling an index from a store must not disturb a store that this process
+// is writing: POSIX drops every lock a process holds on a file when any of its
+// descriptors of that file closes, and another process could then remove the
+// writer's log under it (its later commits would be lost to every reader).
+TEST(CollectionIndexPeekTest, KeepsTheLocksOfTheProcesssOtherConnections) {
+  TempDir dir;
+  const std::string path = dir.File("s.db");
+  const std::unique_ptr<ArtifactStore> writer = OpenArtifactStore(path);
+  writer->LeaveWriteAheadLogOnClose();
+  writer->WriteArtifact(MakeArtifact("hall", "import", "key-a", "first"));
+  EXPECT_FALSE(IsCollectionIndex(path));
+  OpenArtifactStore(path, StoreMode::kReadOnly);  // the same check inside
+  // Another process writes and closes: as the last connection it would
+  // remove the log if this process's locks were gone.
+  Ok(RunTool("ag-store", {"gc", "--store", path}));
+  writer->WriteArtifact(MakeArtifact("hall", "clean", "key-b", "second"));
+  EXPECT_TRUE(std::filesystem::exists(path + "-wal"));
+  const CommandResult listed = Ok(RunTool("ag-inspect", {"--store", path, "--map", "hall"}));
+  EXPECT_NE(listed.out.find("key-b"), std::string::npos) << listed.out;
 }
 
 TEST_F(CollectionCliTest, HelpSaysWhatTheCacheLoses) {
