@@ -51,14 +51,19 @@ struct CollectionIndexInfo {
 // Shard paths are recorded relative to the folder of `final_path`, where the
 // index will live (`path` may be a temporary name beside it). With
 // `head_stages`, only the heads of those stages are indexed (their rows and
-// the maps that have one); other artifacts stay in the shards, unread. Each
-// shard is read without being changed. Throws StoreError naming the shard
+// the maps that have one); other artifacts stay in the shards, unread. The
+// rows of `detail_stages` (small artifacts: the Area Graphs) hold their
+// payload digest and size, summary and compute time; other rows leave them
+// to the shard (collection_index_sql.h says why). Each shard is read
+// without being changed, and only its rows' first columns are read, not the
+// pages of big payloads. Throws StoreError naming the shard
 // when it is not a store of schema 5 or newer (but not newer than this
 // build's), is itself an index, is given twice, or shares a map with another.
 std::vector<CollectionShard> WriteCollectionIndex(const std::string& path,
                                                   const std::string& final_path,
                                                   const std::vector<std::string>& shards,
-                                                  const std::vector<std::string>& head_stages);
+                                                  const std::vector<std::string>& head_stages,
+                                                  const std::vector<std::string>& detail_stages);
 
 // The index's scope and shards. Throws StoreError when `path` is not a
 // collection index this build reads.

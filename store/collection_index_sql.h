@@ -8,11 +8,17 @@ namespace areagraph::collection_sql {
 
 // One row: what the index holds. `head_stages` is empty when every artifact
 // of every shard is indexed, else the newline-joined stages whose heads alone
-// are (ag-store index --only final).
+// are (ag-store index --only final). `detail_stages` (newline-joined): the
+// stages whose rows hold their payload's digest and size, summary and
+// compute time; other rows leave them NULL and the shard answers. A store
+// keeps those columns after the payload, so reading them walks the payload's
+// pages: the index copies them only for the small final artifacts and stays
+// quick however big the intermediate ones are.
 inline constexpr char kCreateCollectionTable[] = R"sql(
 CREATE TABLE collection (
   id INTEGER PRIMARY KEY CHECK (id = 1),
   head_stages TEXT NOT NULL,
+  detail_stages TEXT NOT NULL,
   created_at TEXT NOT NULL)
 )sql";
 
@@ -44,11 +50,11 @@ CREATE TABLE artifacts (
   options TEXT NOT NULL,
   stage_version INTEGER NOT NULL,
   proto_type TEXT NOT NULL,
-  payload_digest TEXT NOT NULL,
-  payload_size INTEGER NOT NULL,
   created_at TEXT NOT NULL,
-  elapsed_ms REAL NOT NULL,
-  summary TEXT NOT NULL,
+  payload_digest TEXT,
+  payload_size INTEGER,
+  elapsed_ms REAL,
+  summary TEXT,
   UNIQUE (map_id, cache_key))
 )sql";
 
@@ -85,8 +91,8 @@ CREATE TABLE failures (
 )sql";
 
 inline constexpr char kWriteCollection[] =
-    "INSERT INTO collection (id, head_stages, created_at)"
-    " VALUES (1, ?1, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))";
+    "INSERT INTO collection (id, head_stages, detail_stages, created_at)"
+    " VALUES (1, ?1, ?2, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'))";
 inline constexpr char kReadCollection[] = "SELECT head_stages FROM collection WHERE id = 1";
 
 // --- Indexing one shard (attached as `shard`) --------------------------------
@@ -108,19 +114,26 @@ inline constexpr char kCopyMaps[] =
     " SELECT name, source_path, source_digest, ?1 FROM shard.maps ORDER BY name";
 
 // `?2` is the JSON array of the stages whose heads alone are indexed, or
-// NULL for every artifact.
-inline constexpr char kCopyArtifacts[] = R"sql(
-INSERT INTO main.artifacts (map_id, stage, cache_key, input_keys, options, stage_version,
-                            proto_type, payload_digest, payload_size, created_at, elapsed_ms,
-                            summary)
-SELECT m.id, a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type,
-       a.payload_digest, a.payload_size, a.created_at, a.elapsed_ms, a.summary
-FROM shard.artifacts a
-JOIN shard.maps sm ON sm.id = a.map_id
-JOIN main.maps m ON m.name = sm.name AND m.shard_id = ?1
-WHERE ?2 IS NULL OR a.id IN (SELECT artifact_id FROM shard.heads
-                             WHERE stage IN (SELECT value FROM json_each(?2)))
-ORDER BY a.map_id, a.id)sql";
+// NULL for every artifact; `?3` that of the stages whose rows get their
+// details. The creation time comes from the shard's index by map and time,
+// which holds it beside the row id: reading it from the row would walk the
+// payload's pages.
+#define AG_DETAIL(column) \
+  "CASE WHEN a.stage IN (SELECT value FROM json_each(?3)) THEN " column " END"
+inline constexpr char kCopyArtifacts[] =
+    "INSERT INTO main.artifacts (map_id, stage, cache_key, input_keys, options, stage_version,"
+    " proto_type, created_at, payload_digest, payload_size, elapsed_ms, summary)"
+    " SELECT m.id, a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type,"
+    " (SELECT t.created_at FROM shard.artifacts t INDEXED BY artifacts_by_map_and_time"
+    "  WHERE t.map_id = a.map_id AND t.rowid = a.id), " AG_DETAIL("a.payload_digest") ", "
+    AG_DETAIL("a.payload_size") ", " AG_DETAIL("a.elapsed_ms") ", " AG_DETAIL("a.summary")
+    " FROM shard.artifacts a"
+    " JOIN shard.maps sm ON sm.id = a.map_id"
+    " JOIN main.maps m ON m.name = sm.name AND m.shard_id = ?1"
+    " WHERE ?2 IS NULL OR a.id IN (SELECT artifact_id FROM shard.heads"
+    "                              WHERE stage IN (SELECT value FROM json_each(?2)))"
+    " ORDER BY a.map_id, a.id";
+#undef AG_DETAIL
 
 inline constexpr char kCopyHeads[] = R"sql(
 INSERT INTO main.heads (map_id, stage, artifact_id)
@@ -139,15 +152,16 @@ FROM shard.versions v
 JOIN shard.maps sm ON sm.id = v.map_id
 JOIN main.maps m ON m.name = sm.name AND m.shard_id = ?1)sql";
 
-// A failure that a later head of its map outdates is left out, as a merge
-// drops it; the later of two failures of one name (overlapping shards) wins.
+// A failure that a later indexed head of its map outdates is left out, as a
+// merge drops it (run after the heads are copied); the later of two failures
+// of one name (overlapping shards) wins.
 inline constexpr char kCopyFailures[] = R"sql(
 INSERT INTO main.failures (map_name, stage, message, source_path, failed_at, shard_id)
 SELECT f.map_name, f.stage, f.message, f.source_path, f.failed_at, ?1
 FROM shard.failures f
-WHERE NOT EXISTS (SELECT 1 FROM shard.maps sm JOIN shard.heads h ON h.map_id = sm.id
-                  JOIN shard.artifacts a ON a.id = h.artifact_id
-                  WHERE sm.name = f.map_name AND a.created_at > f.failed_at)
+WHERE NOT EXISTS (SELECT 1 FROM main.maps m JOIN main.heads h ON h.map_id = m.id
+                  JOIN main.artifacts a ON a.id = h.artifact_id
+                  WHERE m.name = f.map_name AND a.created_at > f.failed_at)
 ON CONFLICT (map_name) DO UPDATE SET
   stage = excluded.stage, message = excluded.message, source_path = excluded.source_path,
   failed_at = excluded.failed_at, shard_id = excluded.shard_id
@@ -177,12 +191,13 @@ inline constexpr char kReadAllMaps[] =
 inline constexpr char kReadMap[] =
     "SELECT id, name, source_path, source_digest FROM maps WHERE name = ?1";
 
-// Artifact rows as ReadArtifactRow (collection_index_store.cc) reads them:
-// the payload's size stands where a store has the payload.
-#define AG_INDEX_ARTIFACT_COLUMNS                                                  \
-  "a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type, " \
-  "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL, "      \
-  "a.summary, a.payload_size, m.shard_id"
+// Artifact rows as ReadIndexedRow (collection_index_store.cc) reads them;
+// the last column says whether the row has its details.
+#define AG_INDEX_ARTIFACT_COLUMNS                                                                 \
+  "a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type, "                \
+  "coalesce(a.payload_digest, ''), a.created_at, coalesce(a.elapsed_ms, 0.0), "                   \
+  "h.artifact_id IS NOT NULL, coalesce(a.summary, ''), coalesce(a.payload_size, 0), m.shard_id, " \
+  "a.summary IS NOT NULL"
 #define AG_INDEX_JOIN_HEAD \
   " LEFT JOIN heads h ON h.map_id = a.map_id AND h.stage = a.stage AND h.artifact_id = a.id"
 inline constexpr char kReadArtifact[] =
@@ -205,6 +220,8 @@ inline constexpr char kReadShardArtifacts[] =
 #undef AG_INDEX_ARTIFACT_COLUMNS
 #undef AG_INDEX_JOIN_HEAD
 
+inline constexpr char kCountArtifacts[] =
+    "SELECT count(*) FROM maps m JOIN artifacts a ON a.map_id = m.id WHERE m.name = ?1";
 inline constexpr char kHasArtifact[] =
     "SELECT 1 FROM maps m JOIN artifacts a ON a.map_id = m.id"
     " WHERE m.name = ?1 AND a.cache_key = ?2";

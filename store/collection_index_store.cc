@@ -5,6 +5,7 @@
 
 #include <sqlite3.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "common/error.h"
@@ -91,6 +92,7 @@ CollectionIndexStore::CollectionIndexStore(const std::string& path)
   sql_read_artifact_ = prepare(kReadArtifact, "reading an artifact");
   sql_read_head_ = prepare(kReadHead, "reading a head artifact");
   sql_read_artifact_summaries_ = prepare(kReadArtifactSummaries, "listing the artifacts of a map");
+  sql_count_artifacts_ = prepare(kCountArtifacts, "counting the artifacts of a map");
   sql_has_artifact_ = prepare(kHasArtifact, "looking up an artifact");
   sql_read_head_key_ = prepare(kReadHeadKey, "looking up a head");
   sql_read_versions_ = prepare(kReadVersions, "reading the history of a map");
@@ -151,6 +153,7 @@ CollectionIndexStore::IndexedArtifact CollectionIndexStore::ReadIndexedRow(
   artifact.summary_line = statement.ColumnText(first + 10, "artifacts.summary");
   artifact.payload_bytes = statement.ColumnInt64(first + 11, "artifacts.payload_size");
   indexed.shard_id = statement.ColumnInt64(first + 12, "maps.shard_id");
+  indexed.detailed = statement.ColumnInt64(first + 13, "artifacts.summary") != 0;
   return indexed;
 }
 
@@ -191,20 +194,51 @@ ArtifactStore& CollectionIndexStore::Shard(int64_t shard_id, const std::string& 
   return *open->second;
 }
 
+namespace {
+
+// What an index row without details takes from its shard's row.
+void CopyDetails(const ArtifactRecord& from, ArtifactRecord& into) {
+  into.payload_digest = from.payload_digest;
+  into.payload_bytes = from.payload_bytes;
+  into.summary_line = from.summary_line;
+  into.elapsed_ms = from.elapsed_ms;
+}
+
+}  // namespace
+
+StoreError CollectionIndexStore::ShardChanged(const IndexedArtifact& indexed, bool stored) const {
+  const ArtifactRecord& artifact = indexed.record;
+  return StoreError("artifact " + ShortKey(artifact.cache_key) + " (" + artifact.stage +
+                    ") of map '" + artifact.map_name + "' is " +
+                    (stored ? "another payload" : "no longer") + " in shard store '" +
+                    FindShard(indexed.shard_id, artifact.map_name)->path +
+                    "': the shard changed after collection index '" + path_ +
+                    "' was written; run ag-store index again");
+}
+
 ArtifactRecord CollectionIndexStore::WithPayload(IndexedArtifact indexed) {
   ArtifactRecord& artifact = indexed.record;
   std::optional<ArtifactRecord> stored = Shard(indexed.shard_id, artifact.map_name)
                                              .ReadArtifact(artifact.map_name, artifact.cache_key);
-  if (!stored || stored->payload_digest != artifact.payload_digest) {
-    const std::string& shard_path = FindShard(indexed.shard_id, artifact.map_name)->path;
-    throw StoreError("artifact " + ShortKey(artifact.cache_key) + " (" + artifact.stage +
-                     ") of map '" + artifact.map_name + "' is " +
-                     (stored ? "another payload" : "no longer") + " in shard store '" + shard_path +
-                     "': the shard changed after collection index '" + path_ +
-                     "' was written; run ag-store index again");
+  if (!stored) throw ShardChanged(indexed, false);
+  if (!indexed.detailed) {
+    CopyDetails(*stored, artifact);
+  } else if (stored->payload_digest != artifact.payload_digest) {
+    throw ShardChanged(indexed, true);
   }
   artifact.payload = std::move(stored->payload);
   artifact.payload_bytes = static_cast<int64_t>(artifact.payload.size());
+  return std::move(artifact);
+}
+
+ArtifactRecord CollectionIndexStore::WithDetails(IndexedArtifact indexed) {
+  if (indexed.detailed) return std::move(indexed.record);
+  ArtifactRecord& artifact = indexed.record;
+  const std::optional<ArtifactRecord> stored =
+      Shard(indexed.shard_id, artifact.map_name)
+          .ReadArtifactSummary(artifact.map_name, artifact.cache_key);
+  if (!stored) throw ShardChanged(indexed, false);
+  CopyDetails(*stored, artifact);
   return std::move(artifact);
 }
 
@@ -238,23 +272,57 @@ std::optional<ArtifactRecord> CollectionIndexStore::ReadHead(const std::string& 
 
 std::vector<ArtifactRecord> CollectionIndexStore::ReadArtifactSummaries(
     const std::string& map_name) {
-  SqliteStatement& statement = *sql_read_artifact_summaries_;
-  StatementUse use(statement);
-  statement.BindText(1, map_name);
+  std::vector<IndexedArtifact> rows;
+  {
+    SqliteStatement& statement = *sql_read_artifact_summaries_;
+    StatementUse use(statement);
+    statement.BindText(1, map_name);
+    while (statement.Step()) rows.push_back(ReadIndexedRow(statement, map_name, 0));
+  }
   std::vector<ArtifactRecord> summaries;
-  while (statement.Step()) summaries.push_back(ReadIndexedRow(statement, map_name, 0).record);
+  const bool all_detailed = std::all_of(rows.begin(), rows.end(),
+                                        [](const IndexedArtifact& row) { return row.detailed; });
+  if (all_detailed) {
+    for (IndexedArtifact& row : rows) summaries.push_back(std::move(row.record));
+    return summaries;
+  }
+  // One read of the map's rows in its shard rather than one per artifact.
+  std::map<std::string, ArtifactRecord> stored;
+  for (ArtifactRecord& record :
+       Shard(rows.front().shard_id, map_name).ReadArtifactSummaries(map_name)) {
+    stored.emplace(record.cache_key, std::move(record));
+  }
+  for (IndexedArtifact& row : rows) {
+    if (!row.detailed) {
+      const auto found = stored.find(row.record.cache_key);
+      if (found == stored.end()) throw ShardChanged(row, false);
+      CopyDetails(found->second, row.record);
+    }
+    summaries.push_back(std::move(row.record));
+  }
   return summaries;
 }
 
 std::optional<ArtifactRecord> CollectionIndexStore::ReadArtifactSummary(
     const std::string& map_name, const std::string& cache_key) {
-  SqliteStatement& statement = *sql_read_artifact_;
+  std::optional<IndexedArtifact> indexed;
+  {
+    SqliteStatement& statement = *sql_read_artifact_;
+    StatementUse use(statement);
+    statement.BindText(1, map_name);
+    statement.BindText(2, cache_key);
+    indexed = ReadOneRow(statement, map_name);
+  }
+  if (!indexed) return std::nullopt;
+  return WithDetails(std::move(*indexed));
+}
+
+int64_t CollectionIndexStore::CountArtifacts(const std::string& map_name) {
+  SqliteStatement& statement = *sql_count_artifacts_;
   StatementUse use(statement);
   statement.BindText(1, map_name);
-  statement.BindText(2, cache_key);
-  std::optional<IndexedArtifact> indexed = ReadOneRow(statement, map_name);
-  if (!indexed) return std::nullopt;
-  return std::move(indexed->record);
+  statement.Step();
+  return statement.ColumnInt64(0, "count(*)");
 }
 
 bool CollectionIndexStore::HasArtifact(const std::string& map_name, const std::string& cache_key) {

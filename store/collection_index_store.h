@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/error.h"
 #include "store/artifact_store.h"
 #include "store/collection_index.h"
 #include "store/sqlite_connection.h"
@@ -32,6 +33,7 @@ class CollectionIndexStore : public ArtifactStore {
   std::vector<ArtifactRecord> ReadArtifactSummaries(const std::string& map_name) override;
   std::optional<ArtifactRecord> ReadArtifactSummary(const std::string& map_name,
                                                     const std::string& cache_key) override;
+  int64_t CountArtifacts(const std::string& map_name) override;
   bool HasArtifact(const std::string& map_name, const std::string& cache_key) override;
   std::optional<std::string> ReadHeadKey(const std::string& map_name,
                                          const std::string& stage) override;
@@ -62,10 +64,13 @@ class CollectionIndexStore : public ArtifactStore {
   const CollectionIndexInfo& info() const { return info_; }
 
  private:
-  // An indexed artifact row and the shard that holds its payload.
+  // An indexed artifact row and the shard that holds its payload; a row
+  // without details (payload digest and size, summary, compute time) takes
+  // them from the shard.
   struct IndexedArtifact {
     ArtifactRecord record;
     int64_t shard_id = 0;
+    bool detailed = false;
   };
   IndexedArtifact ReadIndexedRow(const SqliteStatement& statement, const std::string& map_name,
                                  int first) const;
@@ -79,6 +84,11 @@ class CollectionIndexStore : public ArtifactStore {
   ArtifactStore& Shard(int64_t shard_id, const std::string& map_name);
   // The row with its payload from its shard.
   ArtifactRecord WithPayload(IndexedArtifact indexed);
+  // The row with its details, from its shard when the index lacks them.
+  ArtifactRecord WithDetails(IndexedArtifact indexed);
+  // The error for an indexed artifact that its shard no longer holds as
+  // indexed (`stored`: another payload under its key, else none).
+  StoreError ShardChanged(const IndexedArtifact& indexed, bool stored) const;
   [[noreturn]] void ThrowReadOnly(const std::string& what) const;
 
   // Verify helpers (collection_index_verify.cc).
@@ -105,6 +115,7 @@ class CollectionIndexStore : public ArtifactStore {
   LazyStatement sql_read_artifact_;
   LazyStatement sql_read_head_;
   LazyStatement sql_read_artifact_summaries_;
+  LazyStatement sql_count_artifacts_;
   LazyStatement sql_has_artifact_;
   LazyStatement sql_read_head_key_;
   LazyStatement sql_read_versions_;

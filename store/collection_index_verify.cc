@@ -135,9 +135,16 @@ void CollectionIndexStore::CheckIndexedRows(const CollectionShard& shard, Artifa
   rows.BindInt64(1, shard.id);
   while (rows.Step()) {
     const std::string map_name = rows.ColumnText(0, "maps.name");
-    const ArtifactRecord indexed = ReadIndexedRow(rows, map_name, 1).record;
-    const std::optional<ArtifactRecord> stored =
-        store.ReadArtifactSummary(map_name, indexed.cache_key);
+    const IndexedArtifact row = ReadIndexedRow(rows, map_name, 1);
+    const ArtifactRecord& indexed = row.record;
+    // A row without details is only looked up: its digest would be read past
+    // the payload's pages.
+    std::optional<ArtifactRecord> stored;
+    if (row.detailed) {
+      stored = store.ReadArtifactSummary(map_name, indexed.cache_key);
+    } else if (store.HasArtifact(map_name, indexed.cache_key)) {
+      stored = indexed;
+    }
     if (!stored) {
       problems.push_back({map_name, indexed.stage, indexed.cache_key,
                           "not in " + ShardName(shard) + " any more" + kChanged});

@@ -113,7 +113,8 @@ class IndexWriter {
     CheckSqlite(db_, path_, sqlite3_exec(db_, sql, nullptr, nullptr, nullptr), action);
   }
 
-  void CreateSchema(const std::vector<std::string>& head_stages) {
+  void CreateSchema(const std::vector<std::string>& head_stages,
+                    const std::vector<std::string>& detail_stages) {
     Exec("BEGIN", "starting the index");
     Exec(collection_sql::kCreateCollectionTable, "creating the collection table");
     Exec(collection_sql::kCreateShardsTable, "creating the shards table");
@@ -123,8 +124,10 @@ class IndexWriter {
     Exec(collection_sql::kCreateHeadsTable, "creating the heads table");
     Exec(collection_sql::kCreateVersionsTable, "creating the versions table");
     Exec(collection_sql::kCreateFailuresTable, "creating the failures table");
-    Run(collection_sql::kWriteCollection, "recording the collection",
-        [&](SqliteStatement& s) { s.BindText(1, JoinLines(head_stages)); });
+    Run(collection_sql::kWriteCollection, "recording the collection", [&](SqliteStatement& s) {
+      s.BindText(1, JoinLines(head_stages));
+      s.BindText(2, JoinLines(detail_stages));
+    });
     Exec(("PRAGMA user_version = " +
           std::to_string(kCollectionIndexVersionBase + kCollectionIndexSchemaVersion))
              .c_str(),
@@ -133,7 +136,8 @@ class IndexWriter {
   }
 
   CollectionShard AddShard(const std::string& shard, const std::string& final_path,
-                           const std::vector<std::string>& head_stages) {
+                           const std::vector<std::string>& head_stages,
+                           const std::vector<std::string>& detail_stages) {
     {
       SqliteStatement attach(db_, path_, collection_sql::kAttachShard,
                              "attaching shard '" + shard + "'");
@@ -164,6 +168,7 @@ class IndexWriter {
     Run(collection_sql::kCopyArtifacts, action + "artifacts", [&](SqliteStatement& s) {
       s.BindInt64(1, added.id);
       if (!head_stages.empty()) s.BindText(2, JsonArray(head_stages));
+      s.BindText(3, JsonArray(detail_stages));
     });
     if (!head_stages.empty()) {
       Run(collection_sql::kDropMapsWithoutArtifacts, action + "maps", with_shard);
@@ -219,15 +224,16 @@ class IndexWriter {
 std::vector<CollectionShard> WriteCollectionIndex(const std::string& path,
                                                   const std::string& final_path,
                                                   const std::vector<std::string>& shards,
-                                                  const std::vector<std::string>& head_stages) {
+                                                  const std::vector<std::string>& head_stages,
+                                                  const std::vector<std::string>& detail_stages) {
   if (shards.empty()) throw StoreError("an index needs at least one shard store");
   CheckShards(shards, final_path);
   std::vector<CollectionShard> added;
   try {
     IndexWriter writer(path);
-    writer.CreateSchema(head_stages);
+    writer.CreateSchema(head_stages, detail_stages);
     for (const std::string& shard : shards) {
-      added.push_back(writer.AddShard(shard, final_path, head_stages));
+      added.push_back(writer.AddShard(shard, final_path, head_stages, detail_stages));
     }
   } catch (...) {
     std::error_code ignored;

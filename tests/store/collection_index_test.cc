@@ -60,7 +60,8 @@ class CollectionIndexTest : public ::testing::Test {
   // A new index of both shards (the API writes a new file; ag-store replaces one).
   std::vector<CollectionShard> Index(const std::vector<std::string>& head_stages = {}) {
     fs::remove(index());
-    return WriteCollectionIndex(index(), index(), {shard("a"), shard("b")}, head_stages);
+    return WriteCollectionIndex(index(), index(), {shard("a"), shard("b")}, head_stages,
+                                kFinalStages);
   }
 
   TempDir dir_;
@@ -95,16 +96,34 @@ TEST_F(CollectionIndexTest, ReadsAsOneStoreOfItsShards) {
   EXPECT_TRUE(store->HasArtifact("hall", "hall-merge"));
   EXPECT_FALSE(store->HasArtifact("hall", "lab-merge"));
 
-  // What a shard answers, the index answers, row for row.
+  // What a shard answers, the index answers, row for row: the final stages'
+  // rows from the index itself, the others' details from the shard.
   auto b = OpenArtifactStore(shard("b"), StoreMode::kReadOnly);
-  const std::optional<ArtifactRecord> in_shard = b->ReadArtifactSummary("office", "office-merge");
-  const std::optional<ArtifactRecord> in_index =
-      store->ReadArtifactSummary("office", "office-merge");
-  ASSERT_TRUE(in_shard && in_index);
-  EXPECT_EQ(in_index->created_at, in_shard->created_at);
-  EXPECT_EQ(in_index->payload_digest, in_shard->payload_digest);
-  EXPECT_EQ(in_index->payload_bytes, in_shard->payload_bytes);
-  EXPECT_EQ(in_index->summary_line, in_shard->summary_line);
+  for (const std::string key : {"office-merge", "office-import"}) {
+    const std::optional<ArtifactRecord> in_shard = b->ReadArtifactSummary("office", key);
+    const std::optional<ArtifactRecord> in_index = store->ReadArtifactSummary("office", key);
+    ASSERT_TRUE(in_shard && in_index);
+    EXPECT_EQ(in_index->created_at, in_shard->created_at);
+    EXPECT_EQ(in_index->payload_digest, in_shard->payload_digest);
+    EXPECT_EQ(in_index->payload_bytes, in_shard->payload_bytes);
+    EXPECT_EQ(in_index->summary_line, in_shard->summary_line);
+    EXPECT_EQ(in_index->elapsed_ms, in_shard->elapsed_ms);
+    EXPECT_EQ(in_index->input_keys, in_shard->input_keys);
+  }
+  const std::vector<ArtifactRecord> rows = store->ReadArtifactSummaries("office");
+  const std::vector<ArtifactRecord> shard_rows = b->ReadArtifactSummaries("office");
+  ASSERT_EQ(rows.size(), shard_rows.size());
+  for (size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].cache_key, shard_rows[i].cache_key);
+    EXPECT_EQ(rows[i].summary_line, shard_rows[i].summary_line);
+    EXPECT_EQ(rows[i].is_head, shard_rows[i].is_head);
+  }
+  EXPECT_EQ(store->CountArtifacts("office"), 3);
+  EXPECT_EQ(QueryColumn(index(),
+                        "SELECT stage FROM artifacts WHERE summary IS NOT NULL"
+                        " ORDER BY stage"),
+            (std::vector<std::string>{"match", "match", "match", "merge", "merge", "merge"}))
+      << "only the final stages' rows hold their details";
   const std::vector<VersionRecord> versions = store->ReadVersions("lab");
   ASSERT_EQ(versions.size(), 1u);
   EXPECT_EQ(versions[0].cache_key, "lab-match");
@@ -179,7 +198,7 @@ TEST_F(CollectionIndexTest, ShardsOutsideTheFolderAreNamedRelatively) {
   const std::string outside = dir_.File("indexes/c.db");
   fs::create_directories(fs::path(outside).parent_path());
   const std::vector<CollectionShard> shards =
-      WriteCollectionIndex(outside, outside, {shard("a")}, {});
+      WriteCollectionIndex(outside, outside, {shard("a")}, {}, kFinalStages);
   EXPECT_EQ(shards[0].path, "../collection/a.db");
   auto store = OpenArtifactStore(outside, StoreMode::kReadOnly);
   EXPECT_TRUE(store->ReadHead("hall", "match"));
@@ -290,7 +309,7 @@ TEST_F(CollectionIndexTest, RefusesWhatIsNotOneCollection) {
   Index();
   const auto refusal = [&](const std::vector<std::string>& shards) {
     return ErrorOf<StoreError>(
-        [&] { WriteCollectionIndex(dir_.File("new.db"), dir_.File("new.db"), shards, {}); });
+        [&] { WriteCollectionIndex(dir_.File("new.db"), dir_.File("new.db"), shards, {}, {}); });
   };
   EXPECT_NE(refusal({index()}).find("is a collection index, not a shard store"), std::string::npos);
   EXPECT_NE(refusal({shard("a"), shard("a")}).find("is named twice"), std::string::npos);

@@ -49,7 +49,7 @@ std::vector<CollectionShard> WriteIndexInPlace(const std::string& output,
   RemoveTemporary(temporary);  // left by a killed run of this process id
   try {
     std::vector<CollectionShard> written =
-        WriteCollectionIndex(temporary, output, shards, head_stages);
+        WriteCollectionIndex(temporary, output, shards, head_stages, FinalStageNames());
     if (::rename(temporary.c_str(), output.c_str()) != 0) {
       throw StoreError("cannot write '" + output + "': " + ErrnoText(errno));
     }
