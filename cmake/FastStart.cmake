@@ -1,5 +1,5 @@
-# Fast start-up for the pipeline's executables (docs/performance.md, issue 14,
-# ninth pass). A map of lab_a's size is drawn or computed in tens of
+# Fast start-up for the pipeline's executables (docs/performance.md,
+# "Start-up"). A map of lab_a's size is drawn or computed in tens of
 # milliseconds, while loading the 28 shared libraries of a stage executable
 # took 40 ms of CPU on the development machine: every library is mapped and
 # relocated (Debian links them with BIND_NOW), each page it writes is a page
@@ -99,13 +99,13 @@ if(AG_FAST_START)
   # OpenCV's static core calls them (cv::parallel_for_, cv::solve, cv::gemm),
   # but most runs of ag-render, ag-inspect and the stages never do, and
   # loading them (with libgfortran and libquadmath) was 2.5-3 ms of every
-  # start (docs/performance.md, issue 14, tenth pass). lazy_libraries.sh
+  # start (docs/performance.md, "Start-up"). lazy_libraries.sh
   # writes an entry point for each of their functions that the OpenCV
   # archives call (x86-64 only; elsewhere they are linked as before).
   # LCM too, with an entry point for each of its functions (--all): our own
   # code calls it, and ag-run only when it publishes; with glib and pcre2
   # behind it, it was 3 of the 9 libraries ag-run loaded at every start
-  # (docs/performance.md, eleventh pass). Debian ships no liblcm.a.
+  # (docs/performance.md, "Start-up"). Debian ships no liblcm.a.
   find_library(AG_LCM_LIBRARY NAMES liblcm.so.1 lcm REQUIRED)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
     set(entries ${CMAKE_BINARY_DIR}/lazy_library_entries.cc)
@@ -176,7 +176,7 @@ endfunction()
 # ag_fast_start_own_runtime(TARGET...): a fast-start executable that also
 # links libstdc++ and libgcc statically, which saves about 3 ms of every
 # start (resolving libstdc++'s thousands of symbols; docs/performance.md,
-# issue 14, tenth pass). Only for a program that never loads a shared library
+# "Start-up"). Only for a program that never loads a shared library
 # that brings libstdc++.so: it would hold a second C++ runtime. So the program
 # calls cv::setNumThreads(0) first (OpenCV then never loads TBB) and never
 # reaches the image-codecs module (ag-render: its pictures are 8-bit, which
@@ -193,7 +193,7 @@ endfunction()
 # ag_fully_static(TARGET...): a fast-start executable with its own runtime
 # (above) that links glibc statically too (-static): no dynamic loader, no
 # libc.so or libm.so to map and relocate. lab_a's import picture took 1.4 ms
-# less CPU of 10.4 (docs/performance.md, issue-14-render3). Such a program
+# less CPU of 10.4 (docs/performance.md, "Start-up"). Such a program
 # loads no library at run time: common/lazy_libraries.cc refuses to (its
 # callers, TBB's, LAPACK's and LCM's, are never reached in ag-render), and it
 # must never read an image through the codecs module.

@@ -23,7 +23,7 @@ std::string ToHex(const uint8_t* bytes, size_t size) {
 // the store's keys and payload checks do not change). OpenSSL 3 reaches its
 // SHA-256 only through the provider machinery: initialising it and one
 // EVP_MD_fetch were 3.5 M instructions and about 2 ms of a 25-ms ag-render
-// (docs/performance.md, issue 14, tenth pass). Nettle's context is plain
+// (docs/performance.md, "Start-up"). Nettle's context is plain
 // memory and it picks the SHA-NI code on CPUs that have it, as OpenSSL did.
 Sha256::Sha256() : ctx_(new sha256_ctx) { sha256_init(Ctx(ctx_)); }
 

@@ -25,7 +25,7 @@ namespace {
 // `raw_bytes` (so it records its content size, as DecodePayload needs). With
 // `threaded`, on a thread of its own: the caller serializes and hashes the
 // next piece meanwhile (zstd was about half of a big write's time on the
-// calling thread, docs/performance.md, seventeenth pass). zstd's buffered
+// calling thread, docs/performance.md, "Writing artifacts"). zstd's buffered
 // stream makes the same frame whatever the pieces' sizes, so the frame is the
 // one the serial stream made before.
 class FrameCompressor {

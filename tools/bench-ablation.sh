@@ -33,8 +33,8 @@ while [ $# -gt 0 ]; do
 done
 if [ -n "$BUILD" ]; then BIN=$BUILD/bin; else tools/build.sh >/dev/null; BIN=build/bin; fi
 
-# One step per rule, in the order they were built (docs/quality.md has each
-# rule's section); each step keeps the assignments of the steps before it.
+# One step per rule, in the order they were built (docs/quality.md, "Options beyond
+# the paper", says what each does); each step keeps the assignments of the steps before it.
 STEPS=(
   "paper (examples/options/paper.pbtxt)|"
   "+ 2026-11-21 options (unknown islands, min area, growth gap, freed cells out)|clean.unknown_island_max_m2=0.25 merge.min_area_m2=4 merge.grow_min_gap_m=0.5 merge.cover_removed_obstacles=false"
@@ -44,8 +44,8 @@ STEPS=(
   "+ merge.join_corridor_pieces|merge.join_corridor_pieces=true"
   "+ merge.fold_open_bays|merge.fold_open_bays=true"
   "+ prune.min_component_m2 4|prune.min_component_m2=4"
-  "+ merge.outline_tolerance_m 0.1 and merge.min_hole_m2 0.05 (issue 10)|merge.outline_tolerance_m=0.1 merge.min_hole_m2=0.05"
-  "+ cut.room_island_max_m 4 and merge.join_rooms_without_doors (issue 12)|cut.room_island_max_m=4 merge.join_rooms_without_doors=true"
+  "+ merge.outline_tolerance_m 0.1 and merge.min_hole_m2 0.05|merge.outline_tolerance_m=0.1 merge.min_hole_m2=0.05"
+  "+ cut.room_island_max_m 4 and merge.join_rooms_without_doors|cut.room_island_max_m=4 merge.join_rooms_without_doors=true"
   "+ cut.close_wall_doors|cut.close_wall_doors=true"
   "+ merge.join_furniture_gaps and merge.label_corridors_by_shape|merge.join_furniture_gaps=true merge.label_corridors_by_shape=true"
   "+ cut.close_wall_gaps_max_m 3.5|cut.close_wall_gaps_max_m=3.5"

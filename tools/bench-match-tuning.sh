@@ -2,10 +2,10 @@
 # Replays the simulated exploration of tools/bench-live.sh through ag-match
 # alone (ag-bench-match: the stages up to merge once per update, then match
 # under each variant) on the TUNING maps: real maps with ground truth other
-# than freiburg_building79 (and its furnished twin) and lab_e, which the
-# issue reports on. Match's constants are chosen here (docs/performance.md);
-# tools/bench-live.sh then reports the report maps. Prints one Markdown row
-# per map and variant; a benchmark: it checks nothing.
+# than freiburg_building79 (and its furnished twin) and lab_e, the report
+# maps. Match's constants are chosen here (docs/performance.md, "Match's
+# constants"); tools/bench-live.sh then reports the report maps. Prints one
+# Markdown row per map and variant; a benchmark: it checks nothing.
 #
 # Usage: tools/bench-match-tuning.sh [--no-build] [--build-dir DIR] [--data DIR]
 #          [--cache DIR] [--variant TEXT]... [--report-maps]

@@ -16,7 +16,7 @@
 # Every set also runs with W = 1.25 m (the defaults otherwise: a number for W
 # skips the width estimate, so cut.close_wall_doors, which closes the doors the
 # estimate finds, closes none there; that column differs from the defaults in
-# W and in that rule, docs/quality.md, merge 13) and with the
+# W and in that rule, docs/quality.md, "How to score") and with the
 # paper's behaviour (examples/options/paper.pbtxt); the generated floors also
 # with W from their true door and corridor widths (the paper's rule).
 # Prints a summary and per-map tables (Markdown) on stdout.

@@ -1,6 +1,6 @@
 # shellcheck shell=bash disable=SC2154
 # Sourced by tools/bench-speed.sh: the tables that grow one map against the
-# floor (issue 14), each in one run of the script. Expects `bin`, `work`,
+# floor, each in one run of the script. Expects `bin`, `work`,
 # `runs`, `floor_repeat`, `data`, `tiles`, `clutter_sizes` and `notes` set. Every timed command runs under /usr/bin/time, which
 # gives its wall time, CPU time (user + system) and peak resident memory (the
 # largest of the process and the children it waited for).
@@ -36,7 +36,7 @@ floor_of() {
 
 # The same floor with glibc's huge-page tunable, which ag-run sets for itself
 # on maps over 5 Mpx (stages/common/huge_page_restart.h): sets floor_hp_ms. The
-# tables' "× floor" keeps the floor as issue 14 defines it (glibc's defaults);
+# tables' "× floor" keeps the floor as the targets define it (glibc's defaults);
 # this one shows how much of ag-run's gain on big maps the floor would get too.
 floor_with_huge_pages_of() {
   floor_hp_ms=$(GLIBC_TUNABLES=glibc.malloc.hugetlb=1 \
@@ -136,12 +136,11 @@ own_cpu() {
   awk '{ printf "%s %.4f %s\n", $2, $8 / 1000, $10 }' "$work/exec.txt"
 }
 
-# loop_cpu N COMMAND...: the method of this table before issue-14-render4,
-# kept as a column to set against own_cpu: N runs in one bash loop under
-# /usr/bin/time, the mean CPU milliseconds per run. It also charges bash's
-# fork of each run (the page-table copy and copy-on-write faults, several ms a
-# process on a loaded machine) to the command (docs/performance.md, issue 14,
-# thirteenth pass). A failure becomes a note and prints nothing.
+# loop_cpu N COMMAND...: the table's older method, kept as a column to set
+# against own_cpu: N runs in one bash loop under /usr/bin/time, the mean CPU
+# milliseconds per run. It also charges bash's fork of each run (the
+# page-table copy and copy-on-write faults, several ms a process on a loaded
+# machine) to the command. A failure becomes a note and prints nothing.
 loop_cpu() {
   local n=$1 status=0
   shift
@@ -207,7 +206,7 @@ render_table() {
   echo
 }
 
-# The 16 maps as the issue measures them: ag-run --jobs 1 per map from a new
+# The 16 maps as the target measures them: ag-run --jobs 1 per map from a new
 # store, start-up included, against each map's floor.
 runs_table() {
   local map name

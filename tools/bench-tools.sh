@@ -8,8 +8,8 @@
 # ag-inspect (summary and --json) of every stage, ag-store verify, and ag-eval
 # against the map's ground truth where the data has one. Prints a Markdown
 # table on stdout: per executable the runs, the slowest map, its CPU time (user + system) and wall
-# time, and how many runs took more than 2 s of CPU (issue 13's bar). CPU time
-# is what counts on a machine shared with others; wall time is shown too.
+# time, and how many runs took more than 2 s of CPU (the bar no tool may pass).
+# CPU time is what counts on a machine shared with others; wall time is shown too.
 # A benchmark: it checks nothing. Progress goes to stderr.
 #
 # --quick runs per map only ag-run --force (every stage computed), ag-render

@@ -6,7 +6,7 @@
 # and the JSON, building the default layers), and the wall time of a
 # screenshot (load, layout, paint, capture) with the default layers and with
 # every layer on, each minus that of a blank page taken just before it.
-# Medians of --runs runs; prints a Markdown table. Targets (issue 17): under 5 MB, open in under 2 s.
+# Medians of --runs runs; prints a Markdown table. Targets: under 5 MB, open in under 2 s.
 #
 #   tools/bench-viewer.sh [--data DIR] [--out DIR] [--build DIR] [--top N] [--runs N] [--reuse]
 # --reuse measures the pages of an earlier run in --out again.

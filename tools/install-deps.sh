@@ -15,10 +15,15 @@ PACKAGES=(
   libgtest-dev libgmock-dev
   time  # /usr/bin/time: peak memory in tools/bench-speed.sh
   iproute2  # ip: multicast on loopback for the cross-process LCM tests
-  python3-protobuf python3-networkx python3-zstandard  # examples/python and its test
+  # The Python package (python/, tools/install-python.sh): pybind11 builds it
+  # for Debian's python3; it hands out numpy, shapely, networkx and protobuf
+  # objects, and reads stores; its tests make venvs.
+  python3-dev pybind11-dev python3-pybind11
+  python3-numpy python3-shapely python3-networkx python3-protobuf python3-zstandard python3-venv
   # Test dependencies: ag-export's files opened with the users' own tools
   # (tests/tools/export/ecosystem_test.cc): GDAL's ogr2ogr/ogrinfo, shapely.
-  gdal-bin python3-shapely
+  gdal-bin
+  josm  # JOSM's validator run headless on the osmAG of real maps (tests/tools/export/josm_validation_test.cc)
   chromium  # headless browser for the HTML viewer's tests (tests/tools/export, tests/tools/report)
   # Test dependencies: the one-node Slurm cluster of tools/slurm-local.sh, on
   # which tests/examples/cluster runs examples/cluster's Slurm scripts.

@@ -1,36 +1,30 @@
 #!/usr/bin/env python3
-"""Prints the Area Graph of one map of a store, as networkx sees it.
+"""Prints the Area Graph of one map of a store, as networkx sees it, through the package
+areagraph (bash tools/install-python.sh installs it):
 
     python3 examples/python/show_area_graph.py --store areagraph.db --map lab_a
 """
 
 import argparse
 import json
-import os
 import sys
 
 import networkx
 
-from areagraph_store import AreagraphStore, to_networkx
-
-HERE = os.path.dirname(os.path.abspath(__file__))
-DEFAULT_DESCRIPTORS = os.path.join(HERE, "..", "..", "build", "python",
-                                   "areagraph_descriptors.pb")
+import areagraph
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--store", default="areagraph.db", help="SQLite store")
     parser.add_argument("--map", required=True, help="map name")
-    parser.add_argument("--descriptors", default=DEFAULT_DESCRIPTORS,
-                        help="descriptor set the build writes (default: %(default)s)")
     parser.add_argument("--json", action="store_true",
                         help="print networkx's node-link JSON instead of a summary")
     args = parser.parse_args()
     try:
-        store = AreagraphStore(args.store, args.descriptors)
-        graph = to_networkx(store.area_graph(args.map))
-    except (OSError, LookupError, ValueError) as error:
+        with areagraph.Store(args.store) as store:
+            graph = store.area_graph(args.map).to_networkx()
+    except areagraph.Error as error:
         sys.exit(f"show_area_graph: {error}")
     if args.json:
         print(json.dumps(networkx.node_link_data(graph)))

@@ -34,7 +34,7 @@ int Live(const LiveFlags& flags, char** argv) {
   // A grid's size is known only once it arrives, so the server restarts at
   // start-up, while it holds nothing open yet (no store, no LCM, no thread):
   // one 9-ms restart, then any grid's heap grows in huge pages (half the page
-  // faults even on a small map; docs/performance.md, nineteenth pass).
+  // faults even on a small map; docs/performance.md, "Memory between stages").
   if (MayRestartWithHugePageTunable()) RestartWithHugePageTunable(argv);
   const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(flags.stage.store_path);
   AreaGraphPublisher publisher(url);

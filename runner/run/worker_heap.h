@@ -29,11 +29,11 @@ inline constexpr size_t kWorkerHugePageReserve = size_t{48} << 20;
 
 // The largest map (pixels of its PNG) whose worker gets the huge-page heap.
 // Chosen on lab_a tiled N x N and bormann's two largest maps
-// (docs/performance.md, 2026-12-02): lab_a 3 x 3 (3.3 Mpx), office_i (3.4)
+// (docs/performance.md, "Memory between stages"): lab_a 3 x 3 (3.3 Mpx), office_i (3.4)
 // and office_g (4.7) took less CPU with it, fewer faults at the same user
 // time; from lab_a 4 x 4 (5.9 Mpx) on the worker took more user time than it
-// saved in faults (8 x 8: 8-11 s more of 35 s), as the eighth pass found for
-// ag-render's heap, for a reason not found. Every map of areagraph/, bormann/
+// saved in faults (8 x 8: 8-11 s more of 35 s), as it did for ag-render's
+// heap too, for a reason not found. Every map of areagraph/, bormann/
 // and RobotMap is smaller.
 // Larger maps make ag-run start itself again with glibc's huge-page tunable
 // (stages/common/huge_page_restart.h) instead.
@@ -48,7 +48,7 @@ bool GetsHugePageHeap(const std::string& map_path);
 // this project's virtual machines every 4-kB page a process touches for the
 // first time costs 20-50 microseconds (a 2-MB huge page, the same as a few
 // 4-kB ones), and a cold ag-run on a small map spent a quarter of its CPU
-// time on 2 000-13 000 such faults (docs/performance.md, 2026-12-02).
+// time on 2 000-13 000 such faults (docs/performance.md, "Memory between stages").
 //
 // - Buffers of up to kWorkerMmapThreshold come from the heap from the start
 //   (glibc maps each one over 128 kB afresh until a free raises its

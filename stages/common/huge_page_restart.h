@@ -12,7 +12,7 @@ namespace areagraph {
 // starts, so a program cannot set it for itself or its forked workers any
 // other way. Why: on this project's virtual machines a 4-kB page costs 10-40
 // us to fault in, and lab_a tiled 8 x 8 faulted in 512 000 of them; with the
-// tunable 50 000, a quarter less time (docs/performance.md, eighteenth pass).
+// tunable 50 000, a quarter less time (docs/performance.md, "Memory between stages").
 // Small maps gain nothing from it (ag-run's workers have PrepareWorkerHeap's
 // reserve) and would only pay the second start (about 9 ms).
 

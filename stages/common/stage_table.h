@@ -53,9 +53,8 @@ struct StageDefinition {
   // The artifact type's full name, as the store's proto_type records it, and
   // the format_version of a parsed artifact of that type: what reading an
   // artifact checks, here so that a reader need not build protobuf's
-  // descriptors for it (0.9 M instructions of ag-render's 28 M; docs/
-  // performance.md, thirteenth pass). stage_table_test ties both to
-  // `prototype`.
+  // descriptors for it (0.9 M instructions of ag-render's 28 M).
+  // stage_table_test ties both to `prototype`.
   const char* proto_type;
   uint32_t (*format_version_of)(const google::protobuf::Message& artifact);
   // Computes its artifact from its input artifacts (in `inputs` order, each of

@@ -16,7 +16,7 @@ namespace areagraph {
 //
 // Why not OpenCV's: its statistics op runs per cell, background included,
 // and sums the centroids in 64 bits; that was 2.5 times the labelling
-// itself (issue 14, docs/performance.md, 2026-12-02). Here the labels come
+// itself. Here the labels come
 // from cv::connectedComponents (the same algorithm, so the same numbering)
 // and one pass over the rows' runs of equal labels gives the boxes.
 // tests/stages/geometry/region_boxes_test.cc holds it to OpenCV's.

@@ -39,8 +39,8 @@ size_t SiteTriangulationBytes(const SiteTriangulation& triangulation);
 // TakeSiteTriangulation in this process, replacing any kept before. Kept at
 // every size: prune would build the same one (about 176 bytes a site, 170 MB
 // on lab_a tiled 8 x 8), and holding it from voronoi's end to prune's start
-// stays under cut's and merge's peak memory there (512 MB against 561 MB,
-// docs/performance.md, thirteenth pass), while triangulating again cost
+// stays under cut's and merge's peak memory there (512 MB against 561 MB),
+// while triangulating again cost
 // prune a tenth of its time.
 void KeepSiteTriangulation(SiteTriangulationPtr triangulation, std::vector<Eigen::Vector2d> sites);
 // The kept triangulation when it was made from exactly `sites` (the same

@@ -7,7 +7,7 @@
 namespace areagraph {
 
 // The constants of JoinCorridorStems, chosen on the generated tuning and
-// tuning-extra floors and the real maps (docs/quality.md, merge 13).
+// tuning-extra floors and the real maps (docs/quality.md, "Options beyond the paper").
 struct CorridorStemParams {
   // No narrowing at the stem's mouth: its opening there is at least this
   // share of its own median free width (a closet or a room is wider than

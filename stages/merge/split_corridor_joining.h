@@ -8,7 +8,7 @@ namespace areagraph {
 
 // The constants of JoinSplitCorridors, chosen on the generated tuning and
 // tuning-extra floors and the real maps (areagraph/, RobotMap, bormann/;
-// docs/quality.md, merge 12 section).
+// docs/quality.md, "Options beyond the paper").
 struct SplitCorridorParams {
   // No narrowing between the pieces: the opening at their shared vertex is at
   // least this share of the wider piece's median free width (a door is

@@ -8,7 +8,7 @@
 // the exec to its exit, start-up included. A launcher that forks, as a bash
 // loop under /usr/bin/time does, is charged the fork's page-table copy and
 // copy-on-write faults besides, several ms per process on a loaded machine
-// (docs/performance.md, issue 14, thirteenth pass). Prints the medians of
+// (docs/performance.md, "How to benchmark"). Prints the medians of
 // CPU (user + system), user, system and wall milliseconds and of the minor
 // page faults, and the mean CPU milliseconds. The command's output is
 // discarded. A benchmark: it checks nothing but the command's exit status.

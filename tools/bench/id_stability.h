@@ -54,7 +54,7 @@ GroundTruthView ViewAgainstGroundTruth(const proto::AreaGraph& graph, const cv::
 // noise tips it under, and an area that keeps its id while merge joins a
 // piece of newly seen corridor to it as lost as well as the piece it
 // swallowed; it also let an id move to another area of the same room
-// (docs/performance.md).
+// (docs/performance.md, "Live updates and stable ids").
 struct IdStability {
   int tracked = 0;
   int kept = 0;

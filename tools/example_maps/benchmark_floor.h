@@ -39,7 +39,7 @@ struct BenchmarkPart {
 // chosen on the tuning part; the held-out part is only reported.
 inline constexpr BenchmarkPart kTuningPart{"tuning", 1, 30};
 inline constexpr BenchmarkPart kHeldOutPart{"held-out", 100001, 30};
-// More floors to tune on (issue 12, 2026-12-02): the 30 tuning floors hold too
+// More floors to tune on: the 30 tuning floors hold too
 // few cases of some furniture (a desk in line with a door's jamb) to choose a
 // rule's constants on. Seeds apart from both parts above; never reported as
 // held-out.

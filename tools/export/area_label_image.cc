@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "tools/export/area_polygons.h"
+#include "tools/export/export_ids.h"
 
 namespace areagraph {
 
@@ -55,15 +56,17 @@ cv::Mat AreaLabelImage(const proto::AreaGraph& graph) {
   if (width <= 0 || height <= 0) {
     throw InputError("the Area Graph's frame has no image size; cannot draw a label image");
   }
+  const ExportIds ids(graph);
   cv::Mat labels(height, width, CV_16U, cv::Scalar(0));
   for (const proto::Area& area : graph.areas()) {
-    if (area.id() < 0 || area.id() > 65534) {
-      throw InputError("area id " + std::to_string(area.id()) +
+    const int32_t id = ids.Of(area);
+    if (id < 0 || id > 65534) {
+      throw InputError("area id " + std::to_string(id) +
                        " does not fit a 16-bit label image (label = id + 1)");
     }
     const proto::Polygon polygon = AreaPolygonPixels(graph, area);
-    RequireFiniteVertices(polygon, AreaName(area.id()));
-    FillPolygonByPixelCentres(polygon, static_cast<uint16_t>(area.id() + 1), &labels);
+    RequireFiniteVertices(polygon, AreaName(id));
+    FillPolygonByPixelCentres(polygon, static_cast<uint16_t>(id + 1), &labels);
   }
   return labels;
 }

@@ -8,7 +8,8 @@
 namespace areagraph {
 
 // A CV_16U image the size of the map (frame width x height): 0 where no area
-// is, area id + 1 inside area `id`. A pixel belongs to an area when its centre
+// is, id + 1 inside the area with that id (ExportIds: its stable id in a
+// graph from ag-match, else its index). A pixel belongs to an area when its centre
 // (c + .5, r + .5) lies inside the outer ring of polygon_px and outside its
 // holes. Throws InputError for ids that do not fit (negative or > 65534) or a
 // frame without a size.

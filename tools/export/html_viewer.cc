@@ -63,10 +63,12 @@ viewer::Page BuildViewerPage(ArtifactStore& store, const std::string& map_name,
 }
 
 std::string ViewerPageHtml(const viewer::Page& page) {
-  return FillTemplate(embedded::kViewerHtml, {{"{{TITLE}}", MarkupEscaped(page.map_name())},
-                                              {"/*{{STYLE}}*/", embedded::kViewerCss},
-                                              {"/*{{SCRIPT}}*/", embedded::kViewerJs},
-                                              {"{{DATA}}", ScriptJson(page)}});
+  return FillTemplate(
+      embedded::kViewerHtml,
+      {{"{{TITLE}}", MarkupEscaped(page.map_name())},
+       {"/*{{STYLE}}*/", embedded::kViewerCss},
+       {"/*{{SCRIPT}}*/", std::string(embedded::kViewerRouteJs) + embedded::kViewerJs},
+       {"{{DATA}}", ScriptJson(page)}});
 }
 
 int ExportViewerPage(const std::string& store_path, const std::string& map_name,

@@ -3,6 +3,7 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 
 #include "common/error.h"
@@ -42,6 +43,13 @@ std::string JsonNumber(double value) {
   char text[32];
   const auto result = std::to_chars(text, text + sizeof(text), value);
   return std::string(text, result.ptr);
+}
+
+std::string JsonNumber(double value, int decimals) {
+  const double scale = std::pow(10.0, decimals);
+  const double rounded = std::round(value * scale) / scale;
+  // A value too large to scale is printed as it is; -0 prints as 0.
+  return JsonNumber(std::isfinite(rounded) ? rounded + 0.0 : value);
 }
 
 std::string MessageJson(const google::protobuf::Message& message) {

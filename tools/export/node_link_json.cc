@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "tools/export/area_polygons.h"
+#include "tools/export/export_ids.h"
 #include "tools/export/json_text.h"
 
 namespace areagraph {
@@ -15,7 +16,8 @@ std::string Position(const proto::Point2& point) {
   if (!std::isfinite(point.x()) || !std::isfinite(point.y())) {
     throw InputError("the Area Graph has a coordinate that is not a finite number");
   }
-  return "[" + JsonNumber(point.x()) + "," + JsonNumber(point.y()) + "]";
+  return "[" + JsonNumber(point.x(), kMetreDecimals) + "," + JsonNumber(point.y(), kMetreDecimals) +
+         "]";
 }
 
 std::string Positions(const std::vector<proto::Point2>& points) {
@@ -24,32 +26,36 @@ std::string Positions(const std::vector<proto::Point2>& points) {
   return "[" + text + "]";
 }
 
-// ',"stable_id":N' for a graph with stable ids (ag-match's), else nothing.
-std::string StableId(const proto::AreaGraph& graph, int32_t stable_id) {
-  return graph.has_version() ? ",\"stable_id\":" + std::to_string(stable_id) : "";
+// ',"stable_id":N' for a graph with stable ids (ag-match's), else nothing;
+// then the index in this version.
+std::string StableIdAndIndex(const ExportIds& ids, int32_t stable_id, int32_t index) {
+  return (ids.stable() ? ",\"stable_id\":" + std::to_string(stable_id) : "") +
+         ",\"index\":" + std::to_string(index);
 }
 
-std::string Node(const proto::AreaGraph& graph, const proto::Area& area) {
+std::string Node(const proto::AreaGraph& graph, const ExportIds& ids, const proto::Area& area) {
   const proto::Polygon polygon = AreaPolygonMetres(graph, area);
   std::string holes;
   for (const proto::Ring& hole : polygon.holes()) {
     holes += (holes.empty() ? "" : ",") + Positions(OrientedRing(hole, false));
   }
-  return "{\"id\":" + std::to_string(area.id()) + StableId(graph, area.stable_id()) +
-         ",\"name\":" + JsonString(AreaName(area.id())) +
+  const int32_t id = ids.Of(area);
+  return "{\"id\":" + std::to_string(id) + StableIdAndIndex(ids, area.stable_id(), area.id()) +
+         ",\"name\":" + JsonString(AreaName(id)) +
          ",\"kind\":" + JsonString(AreaKindName(area.kind())) +
-         ",\"area_m2\":" + JsonNumber(area.area_m2()) +
+         ",\"area_m2\":" + JsonNumber(area.area_m2(), kMetreDecimals) +
          ",\"centroid\":" + Position(area.centroid_m()) +
          ",\"polygon\":" + Positions(OrientedRing(polygon.outer(), true)) + ",\"holes\":[" + holes +
          "]}";
 }
 
-std::string Link(const proto::AreaGraph& graph, const proto::Passage& passage) {
-  const std::string id = std::to_string(passage.id());
-  return "{\"source\":" + std::to_string(passage.area_a()) +
-         ",\"target\":" + std::to_string(passage.area_b()) + ",\"key\":" + id + ",\"id\":" + id +
-         StableId(graph, passage.stable_id()) + ",\"name\":\"passage_" + id +
-         "\",\"width_m\":" + JsonNumber(passage.width_m()) +
+std::string Link(const ExportIds& ids, const proto::Passage& passage) {
+  const std::string id = std::to_string(ids.Of(passage));
+  return "{\"source\":" + std::to_string(ids.OfArea(passage.area_a())) +
+         ",\"target\":" + std::to_string(ids.OfArea(passage.area_b())) + ",\"key\":" + id +
+         ",\"id\":" + id + StableIdAndIndex(ids, passage.stable_id(), passage.id()) +
+         ",\"name\":\"passage_" + id +
+         "\",\"width_m\":" + JsonNumber(passage.width_m(), kMetreDecimals) +
          ",\"point\":" + Position(passage.point_m()) +
          ",\"border\":" + Positions(PassageLine(passage)) + "}";
 }
@@ -57,10 +63,12 @@ std::string Link(const proto::AreaGraph& graph, const proto::Passage& passage) {
 }  // namespace
 
 std::string AreaGraphToNodeLinkJson(const proto::AreaGraph& graph, const std::string& map_name) {
+  const ExportIds ids(graph);
   std::vector<std::string> nodes, links;
-  for (const proto::Area& area : graph.areas()) nodes.push_back(Node(graph, area));
-  for (const proto::Passage& passage : graph.passages()) links.push_back(Link(graph, passage));
+  for (const proto::Area& area : graph.areas()) nodes.push_back(Node(graph, ids, area));
+  for (const proto::Passage& passage : graph.passages()) links.push_back(Link(ids, passage));
   return "{\"directed\":false,\"multigraph\":true,\"graph\":{\"name\":" + JsonString(map_name) +
+         ",\"ids\":" + JsonString(IdsKindName(ids)) +
          (graph.has_version() ? ",\"version\":" + std::to_string(graph.version().number()) : "") +
          ",\"frame\":" + MessageJson(graph.frame()) +
          ",\"units\":\"metres\"},\n\"nodes\":" + JsonLines(nodes) +

@@ -11,10 +11,21 @@ namespace areagraph {
 
 namespace {
 
-std::string NodeXml(int64_t id, const LatLon& position, const std::string& tags) {
+// OSM's precision: the OSM database, and JOSM when it looks for duplicated
+// nodes, know positions to 7 decimals of a degree (about a centimetre).
+constexpr int kOsmDegreeDecimals = 7;
+constexpr double kDegreeUnits = 1e7;
+
+GridPoint GridPointOf(const LatLon& position) {
+  return {std::llround(position.lon_deg * kDegreeUnits),
+          std::llround(position.lat_deg * kDegreeUnits)};
+}
+
+std::string NodeXml(int64_t id, const GridPoint& point, const std::string& tags) {
   const std::string head = "  <node id=\"" + std::to_string(id) + "\" visible=\"true\" lat=\"" +
-                           FixedDecimals(position.lat_deg, 10) + "\" lon=\"" +
-                           FixedDecimals(position.lon_deg, 10) + "\"";
+                           FixedDecimals(point.second / kDegreeUnits, kOsmDegreeDecimals) +
+                           "\" lon=\"" +
+                           FixedDecimals(point.first / kDegreeUnits, kOsmDegreeDecimals) + "\"";
   return tags.empty() ? head + "/>\n" : head + ">\n" + tags + "  </node>\n";
 }
 
@@ -38,30 +49,47 @@ std::string OsmWayXml(int64_t id, const std::vector<int64_t>& nodes, const std::
   return xml + tags + "  </way>\n";
 }
 
-int64_t OsmNodeTable::NodeAt(double x_m, double y_m) {
+std::string OsmRelationXml(int64_t id, const std::vector<OsmWayMember>& members,
+                           const std::string& tags) {
+  std::string xml = "  <relation id=\"" + std::to_string(id) + "\" visible=\"true\">\n";
+  for (const OsmWayMember& member : members) {
+    xml += "    <member type=\"way\" ref=\"" + std::to_string(member.way) + "\" role=\"" +
+           MarkupEscaped(member.role) + "\"/>\n";
+  }
+  return xml + tags + "  </relation>\n";
+}
+
+GridPosition OsmNodeTable::GridPositionOf(double x_m, double y_m) const {
   if (!std::isfinite(x_m) || !std::isfinite(y_m)) {
     throw InputError("the Area Graph has a vertex that is not a finite number");
   }
-  const std::pair<int64_t, int64_t> key{std::llround(x_m * 1e6), std::llround(y_m * 1e6)};
-  auto [it, inserted] = ids_.emplace(key, 0);
+  const LatLon position = MetresToLatLon(anchor_, x_m, y_m);
+  if (!(std::fabs(position.lat_deg) <= 90) || !(std::fabs(position.lon_deg) <= 180)) {
+    throw InputError("the Area Graph's point (" + FixedDecimals(x_m, 3) + ", " +
+                     FixedDecimals(y_m, 3) + ") m lies off the globe from the anchor (latitude " +
+                     FixedDecimals(position.lat_deg, 3) +
+                     "); osmAG needs map coordinates in local metres near "
+                     "--anchor-lat/--anchor-lon");
+  }
+  return {position.lon_deg * kDegreeUnits, position.lat_deg * kDegreeUnits};
+}
+
+int64_t OsmNodeTable::NodeAt(const GridPoint& point) {
+  auto [it, inserted] = ids_.emplace(point, 0);
   if (inserted) {
-    const LatLon position = MetresToLatLon(anchor_, x_m, y_m);
-    if (!(std::fabs(position.lat_deg) <= 90) || !(std::fabs(position.lon_deg) <= 180)) {
-      ids_.erase(it);
-      throw InputError("the Area Graph's point (" + FixedDecimals(x_m, 3) + ", " +
-                       FixedDecimals(y_m, 3) + ") m lies off the globe from the anchor (latitude " +
-                       FixedDecimals(position.lat_deg, 3) +
-                       "); osmAG needs map coordinates in local metres near "
-                       "--anchor-lat/--anchor-lon");
-    }
     it->second = NextId();
-    xml_ += NodeXml(it->second, position, "");
+    xml_ += NodeXml(it->second, point, "");
   }
   return it->second;
 }
 
+int64_t OsmNodeTable::NodeAt(double x_m, double y_m) {
+  const GridPosition position = GridPositionOf(x_m, y_m);
+  return NodeAt(GridPoint{std::llround(position.x), std::llround(position.y)});
+}
+
 void OsmNodeTable::AddAnchorNode(const std::string& tags) {
-  xml_ += NodeXml(NextId(), {anchor_.lat_deg, anchor_.lon_deg}, tags);
+  xml_ += NodeXml(NextId(), GridPointOf({anchor_.lat_deg, anchor_.lon_deg}), tags);
 }
 
 }  // namespace areagraph

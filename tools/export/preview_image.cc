@@ -8,6 +8,7 @@
 #include "stages/common/map_frame.h"
 #include "tools/export/area_label_image.h"
 #include "tools/export/area_polygons.h"
+#include "tools/export/export_ids.h"
 
 namespace areagraph {
 
@@ -37,6 +38,7 @@ cv::Point Scaled(double x_px, double y_px, int scale) {
 
 cv::Mat AreaGraphPreview(const proto::AreaGraph& graph) {
   const cv::Mat labels = AreaLabelImage(graph);
+  const ExportIds ids(graph);
   const int long_side = std::max(1, std::max(labels.cols, labels.rows));
   const int scale = std::clamp((kMinLongSidePx + long_side - 1) / long_side, 1, kMaxScale);
   std::vector<cv::Vec3b> colours(graph.areas_size());
@@ -44,7 +46,7 @@ cv::Mat AreaGraphPreview(const proto::AreaGraph& graph) {
   std::vector<int> index_of_label(65536, -1);
   for (int i = 0; i < graph.areas_size(); ++i) {
     colours[i] = AreaColour(graph.areas(i));
-    index_of_label[graph.areas(i).id() + 1] = i;
+    index_of_label[ids.Of(graph.areas(i)) + 1] = i;
   }
   for (int r = 0; r < labels.rows; ++r) {
     for (int c = 0; c < labels.cols; ++c) {

@@ -10,6 +10,7 @@
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
 #include "tools/export/viewer_options.h"
+#include "tools/export/viewer_route_layer.h"
 #include "tools/inspect/store_report.h"
 
 namespace areagraph {
@@ -91,7 +92,9 @@ void AddLayer(const ArtifactRecord& artifact, const ArtifactRecord* grid_artifac
   } else if (stage == kMergeStage.name || stage == kMatchStage.name) {
     // Match comes after merge: its graph (stable ids, noise pieces folded
     // back) is the one published, and replaces merge's.
-    *run->mutable_area_graph() = AreaLayerOf(Parse<proto::AreaGraph>(artifact));
+    const auto graph = Parse<proto::AreaGraph>(artifact);
+    *run->mutable_area_graph() = AreaLayerOf(graph);
+    SetRouteGraph(graph, run);
   }
 }
 

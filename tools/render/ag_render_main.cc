@@ -44,7 +44,7 @@ BaseMap ReadBaseMap(ArtifactStore& store, const std::string& map, const StageInf
 
 // The canvas above which the heap grows by huge pages once more: at lab_a
 // tiled 2 x 2 (1.5 Mpx) it saved nothing, at 8 x 8 (24 Mpx) 31 000 of 31 600
-// faults (docs/performance.md, eleventh pass).
+// faults (docs/performance.md, "Memory between stages").
 constexpr double kHugePageCanvasPixels = 4e6;
 
 // The canvas pixels of a window "X,Y,W,H" given in map cells.
@@ -78,7 +78,7 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
   // A big canvas, its masks and the parsed artifact outgrow the heap's
   // reserve, and glibc maps each buffer over 32 MB (the BGR picture of lab_a
   // tiled 8 x 8 is 71 MB) in 4-kB pages: its Voronoi picture faulted 31 000
-  // pages, 0.85 of its 2 s of CPU (docs/performance.md, eleventh pass).
+  // pages, 0.85 of its 2 s of CPU (docs/performance.md, "Memory between stages").
   const double canvas_pixels = static_cast<double>(width_px) * height_px * scale * scale;
   if (canvas_pixels > kHugePageCanvasPixels) {
     GrowFaultThriftyHeap(static_cast<size_t>(std::min(canvas_pixels * 40, double{1 << 30})));
@@ -119,7 +119,7 @@ void Render(ArtifactStore& store, const std::string& map, const std::string& sta
 int main(int argc, char** argv) {
   // A render writes each of its big buffers (the payloads, their parsed
   // arrays, the canvas and its masks) once: faulting them in was half of its
-  // CPU time (docs/performance.md, eighth pass).
+  // CPU time (docs/performance.md, "Memory between stages").
   areagraph::UseFaultThriftyHeap(size_t{256} << 20);
   // OpenCV's functions run on the calling thread: a picture is drawn in
   // milliseconds, and its parallel loops would load TBB (common/

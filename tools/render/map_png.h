@@ -10,9 +10,8 @@ namespace areagraph {
 // Canvas's greys through WriteGreyPngFileAsColour, and the same palette (the
 // greys in the order they first appear, 1 or 2 bits per pixel), without the
 // grey picture, its palette indices and libpng's packing of them: those
-// were a third of lab_a's import picture (docs/performance.md, issue 14,
-// tenth pass). Compressed for runs (zlib's Z_RLE). Throws Error when libpng
-// fails.
+// were a third of lab_a's import picture. Compressed for runs (zlib's Z_RLE). Throws Error when
+// libpng fails.
 std::string EncodeMapPng(const std::string& cells, int width, int height, int scale);
 
 }  // namespace areagraph

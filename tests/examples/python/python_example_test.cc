@@ -1,5 +1,5 @@
-// examples/python: the store read from Python through the descriptor set,
-// and the Area Graph as a networkx MultiGraph.
+// examples/python: the store read from Python through the package areagraph
+// (from the build tree), and the Area Graph as a networkx MultiGraph.
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -9,8 +9,8 @@
 namespace areagraph::testing {
 namespace {
 
-// Debian's interpreter, which has python3-protobuf and python3-networkx
-// (tools/install-deps.sh); another python3 on PATH may not.
+// Debian's interpreter, for which the package is built and which has
+// python3-networkx (tools/install-deps.sh); another python3 on PATH may not.
 constexpr char kPython[] = "/usr/bin/python3";
 
 class PythonExampleTest : public ::testing::Test {
@@ -23,9 +23,9 @@ class PythonExampleTest : public ::testing::Test {
   }
   CommandResult Show(std::vector<std::string> extra) const {
     std::vector<std::string> argv = {
-        kPython,         SourcePath("examples/python/show_area_graph.py"),
-        "--store",       store_,
-        "--descriptors", AG_DESCRIPTOR_SET};
+        "/usr/bin/env", "PYTHONPATH=" AG_PYTHON_PACKAGE_DIR,
+        kPython,        SourcePath("examples/python/show_area_graph.py"),
+        "--store",      store_};
     argv.insert(argv.end(), extra.begin(), extra.end());
     return RunProgram(argv);
   }
@@ -67,7 +67,7 @@ TEST_F(PythonExampleTest, NodeLinkJsonIsAnUndirectedMultigraph) {
 TEST_F(PythonExampleTest, UnknownMapIsOneLineError) {
   const CommandResult shown = Show({"--map", "nowhere"});
   EXPECT_EQ(shown.exit_code, 1);
-  EXPECT_EQ(shown.err, "show_area_graph: map 'nowhere' has no merge artifact\n");
+  EXPECT_EQ(shown.err, "show_area_graph: map 'nowhere' is not in the store\n");
 }
 
 }  // namespace

@@ -357,7 +357,7 @@ TEST(AgRunPartsTest, TilesOfAMapAreComponentsAndTheSummarySaysSo) {
   // With cut.close_wall_gaps_max_m one tile has an area less (113 against
   // 4 x 28): the tiles' Topology Graphs already differ slightly, and an
   // office of about merge.min_area_m2 folds in one tile only (docs/quality.md,
-  // island_end_on_face section), so this test of components and summaries runs without it.
+  // "Known weak spots"), so this test of components and summaries runs without it.
   // The same holds for merge.fold_corridor_pieces_below_m2: its small corridor "rooms" come out
   // of those slightly different graphs (110 areas against 4 x 29 with it on).
   const std::vector<std::string> options = {"--set", "cut.close_wall_gaps_max_m=0", "--set",

@@ -1,7 +1,6 @@
 // The pipeline's executables start without the shared libraries that
 // cmake/FastStart.cmake links statically or loads on first use, and as
-// position-dependent executables (docs/performance.md, issue 14, ninth and
-// eleventh passes).
+// position-dependent executables (docs/performance.md, "Start-up").
 #include <elf.h>
 #include <gtest/gtest.h>
 

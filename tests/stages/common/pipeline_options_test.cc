@@ -75,7 +75,7 @@ TEST(PipelineOptionsTest, DefaultsReproduceThePaper) {
   EXPECT_DOUBLE_EQ(options.clean().robot_width_m(), 0.5);
   EXPECT_EQ(options.clean().outlier_neighbors(), 18);
   // The paper's 0.25 m is in examples/options/paper.pbtxt; the default
-  // keeps narrower gaps (issue 5).
+  // keeps narrower gaps (docs/quality.md, "Options beyond the paper").
   EXPECT_DOUBLE_EQ(options.prune().min_clearance_m(), 0.15);
   EXPECT_DOUBLE_EQ(options.prune().boundary_alpha_radius_m(), 3.0);
 }

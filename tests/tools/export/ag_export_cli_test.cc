@@ -156,9 +156,12 @@ TEST_F(AgExportCli, GeoJsonWithAnAnchorIsWgs84) {
                           .values(0)
                           .list_value();
   // Border point (12, 4) px is world (1.6, 2.8) m: [lon, lat] as RFC 7946 orders them.
+  // Degrees to 8 decimals (about a millimetre), with no float noise.
   const LatLon expected = MetresToLatLon({48.1, 11.5}, 1.6, 2.8);
-  EXPECT_NEAR(Number(first.values(0)), expected.lon_deg, 1e-12);
-  EXPECT_NEAR(Number(first.values(1)), expected.lat_deg, 1e-12);
+  EXPECT_EQ(Number(first.values(0)), std::round(expected.lon_deg * 1e8) / 1e8);
+  EXPECT_EQ(Number(first.values(1)), std::round(expected.lat_deg * 1e8) / 1e8);
+  const std::string text = ReadFile(dir_.File("map.geojson"));
+  EXPECT_NE(text.find("[11.50002152,48.10002515]"), std::string::npos) << text;
 }
 
 // The <way> blocks of an OSM file, in order.
@@ -194,32 +197,43 @@ TEST_F(AgExportCli, OsmAgHasAreasThenPassagesWithTheirTags) {
   const std::string xml = ReadFile(dir_.File("map.osm"));
   EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\" upload=\"never\">"),
             std::string::npos);
-  EXPECT_NE(xml.find("lat=\"48.1000000000\" lon=\"11.5000000000\">"), std::string::npos);
+  EXPECT_NE(xml.find("lat=\"48.1000000\" lon=\"11.5000000\">"), std::string::npos);
   EXPECT_NE(xml.find("<tag k=\"osmAG:map\" v=\"house\"/>"), std::string::npos);
   EXPECT_LT(xml.rfind("<node "), xml.find("<way "));
 
+  // The structure, the room, the corridor's outer ring and hole (untagged:
+  // its relation is the area), the passage; then the corridor's relation.
   const std::vector<std::string> ways = WayBlocks(xml);
-  ASSERT_EQ(ways.size(), 4u);
+  ASSERT_EQ(ways.size(), 5u);
   EXPECT_TRUE(HasTag(ways[0], "osmAG:areaType", "structure"));
   EXPECT_TRUE(HasTag(ways[0], "name", "house"));
+  const size_t relation_at = xml.find("<relation ");
+  ASSERT_NE(relation_at, std::string::npos);
+  EXPECT_LT(xml.rfind("<way "), relation_at);
+  const std::string relation = xml.substr(relation_at);
+  EXPECT_TRUE(HasTag(relation, "type", "multipolygon"));
+  const std::vector<std::string> areas = {ways[1], relation};
+  for (size_t i = 0; i < areas.size(); ++i) {
+    EXPECT_TRUE(HasTag(areas[i], "osmAG:type", "area"));
+    EXPECT_TRUE(HasTag(areas[i], "osmAG:areaType", "room"));
+    EXPECT_TRUE(HasTag(areas[i], "osmAG:parent", "house"));
+    EXPECT_TRUE(HasTag(areas[i], "name", "area_" + std::to_string(i)));
+  }
+  EXPECT_TRUE(HasTag(ways[1], "areagraph:kind", "room"));
+  EXPECT_TRUE(HasTag(relation, "areagraph:kind", "corridor"));
+  EXPECT_EQ(ways[2].find("<tag "), std::string::npos);
+  EXPECT_EQ(ways[3].find("<tag "), std::string::npos);
   for (int i = 1; i < 3; ++i) {
     const std::vector<std::string> refs = NodeRefs(ways[i]);
     ASSERT_EQ(refs.size(), 8u);            // 4 corners, 3 border points, the closing repeat
     EXPECT_EQ(refs.front(), refs.back());  // closed
-    EXPECT_TRUE(HasTag(ways[i], "osmAG:type", "area"));
-    EXPECT_TRUE(HasTag(ways[i], "osmAG:areaType", "room"));
-    EXPECT_TRUE(HasTag(ways[i], "osmAG:parent", "house"));
-    EXPECT_TRUE(HasTag(ways[i], "name", "area_" + std::to_string(i - 1)));
   }
-  EXPECT_TRUE(HasTag(ways[1], "areagraph:kind", "room"));
-  EXPECT_TRUE(HasTag(ways[2], "areagraph:kind", "corridor"));
-  const std::vector<std::string> passage = NodeRefs(ways[3]);
+  const std::vector<std::string> passage = NodeRefs(ways[4]);
   EXPECT_EQ(passage.size(), 3u);
-  EXPECT_TRUE(HasTag(ways[3], "osmAG:type", "passage"));
-  EXPECT_TRUE(HasTag(ways[3], "indoor", "door"));
-  EXPECT_TRUE(HasTag(ways[3], "door", "yes"));
-  EXPECT_TRUE(HasTag(ways[3], "osmAG:from", "area_0"));
-  EXPECT_TRUE(HasTag(ways[3], "osmAG:to", "area_1"));
+  EXPECT_TRUE(HasTag(ways[4], "osmAG:type", "passage"));
+  EXPECT_TRUE(HasTag(ways[4], "areagraph:width", "0.300"));
+  EXPECT_TRUE(HasTag(ways[4], "osmAG:from", "area_0"));
+  EXPECT_TRUE(HasTag(ways[4], "osmAG:to", "area_1"));
   // The two squares share their common edge's two corners and the passage's
   // three nodes.
   std::vector<std::string> room = NodeRefs(ways[1]), corridor = NodeRefs(ways[2]);

@@ -44,37 +44,162 @@ std::vector<std::string> AllMatches(const std::string& text, const std::string& 
   return found;
 }
 
+// The blocks of one element type (<way ...>...</way>), in order.
+std::vector<std::string> Blocks(const std::string& xml, const std::string& element) {
+  std::vector<std::string> blocks;
+  const std::regex block("<" + element + " [^>]*>[\\s\\S]*?</" + element + ">");
+  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), block); it != std::sregex_iterator();
+       ++it) {
+    blocks.push_back(it->str());
+  }
+  return blocks;
+}
+
+std::vector<std::string> NodeRefs(const std::string& way) {
+  return AllMatches(way, "<nd ref=\"(-?\\d+)\"/>");
+}
+
+bool Has(const std::vector<std::string>& refs, const std::string& ref) {
+  return std::count(refs.begin(), refs.end(), ref) > 0;
+}
+
+bool HasTag(const std::string& block, const std::string& key, const std::string& value) {
+  return block.find("<tag k=\"" + key + "\" v=\"" + value + "\"/>") != std::string::npos;
+}
+
 TEST(OsmAgExport, SharesNodesAndOrdersWays) {
   const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), {"house", GeoAnchor()});
   EXPECT_EQ(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n", 0), 0u);
   EXPECT_NE(xml.find("<osm version=\"0.6\" generator=\"areagraph\" upload=\"never\">"),
             std::string::npos);
-  // Root + 6 distinct square corners (2 shared) + 3 border points + 4
-  // structure corners.
+  // Root + 6 distinct square corners (2 shared) + 3 border points + 4 hole
+  // corners + 4 structure corners.
   const std::vector<std::string> node_ids = AllMatches(xml, "<node id=\"(-?\\d+)\"");
-  EXPECT_EQ(node_ids.size(), 14u);
+  EXPECT_EQ(node_ids.size(), 18u);
   EXPECT_EQ(node_ids.front(), "-1");
-  EXPECT_NE(xml.find("lat=\"31.1794700000\" lon=\"121.5904200000\">\n"
+  // OSM's precision: 7 decimals. A graph without stable ids says so.
+  EXPECT_NE(xml.find("lat=\"31.1794700\" lon=\"121.5904200\">\n"
+                     "    <tag k=\"areagraph:ids\" v=\"index\"/>\n"
                      "    <tag k=\"name\" v=\"root\"/>"),
             std::string::npos)
       << xml;
+  // Area 1 has a hole, so it is a multipolygon relation, written last.
   const std::vector<std::string> names = AllMatches(xml, "<tag k=\"name\" v=\"([^\"]+)\"");
-  EXPECT_EQ(names, (std::vector<std::string>{"root", "house", "area_0", "area_1", "passage_0"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"root", "house", "area_0", "passage_0", "area_1"}));
   const std::vector<std::string> way_ids = AllMatches(xml, "<way id=\"(-?\\d+)\"");
-  ASSERT_EQ(way_ids.size(), 4u);
+  ASSERT_EQ(way_ids.size(), 5u);  // structure, area 0, area 1's two rings, passage
+  const std::vector<std::string> relation_ids = AllMatches(xml, "<relation id=\"(-?\\d+)\"");
+  ASSERT_EQ(relation_ids.size(), 1u);
   std::set<std::string> ids(node_ids.begin(), node_ids.end());
   ids.insert(way_ids.begin(), way_ids.end());
-  EXPECT_EQ(ids.size(), 18u);  // unique across nodes and ways
+  ids.insert(relation_ids.begin(), relation_ids.end());
+  EXPECT_EQ(ids.size(), 24u);  // unique across nodes, ways and relations
   for (const std::string& id : ids) EXPECT_LT(std::stoi(id), 0);
-  // The holes of area 1 are not written; the passage's 3 border points join
-  // both squares: structure 5, squares 5 + 3 each, passage 3.
-  EXPECT_EQ(AllMatches(xml, "<nd ref=\"(-?\\d+)\"").size(), 24u);
+  // The passage's 3 border points join both squares: structure 5, squares
+  // 5 + 3 each, the hole 5, passage 3.
+  EXPECT_EQ(AllMatches(xml, "<nd ref=\"(-?\\d+)\"").size(), 29u);
   EXPECT_EQ(AllMatches(xml, "<tag k=\"osmAG:parent\" v=\"(house)\"").size(), 2u);
   EXPECT_EQ(AllMatches(xml, "<tag k=\"level\" v=\"(0)\"").size(), 4u);
   EXPECT_EQ(xml.find("\"height\""), std::string::npos);
 }
 
-TEST(OsmAgExport, TagsTheStableIdsOfAMatchedGraphOnly) {
+TEST(OsmAgExport, AnAreaWithHolesIsAMultipolygonOfUntaggedRings) {
+  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), {"house", GeoAnchor()});
+  const std::vector<std::string> ways = Blocks(xml, "way");
+  ASSERT_EQ(ways.size(), 5u);
+  const std::string relation = Blocks(xml, "relation").at(0);
+  EXPECT_EQ(AllMatches(relation, "<member type=\"way\" ref=\"(-\\d+)\" role=\"outer\"/>"),
+            AllMatches(ways[2], "<way id=\"(-\\d+)\""));
+  EXPECT_EQ(AllMatches(relation, "<member type=\"way\" ref=\"(-\\d+)\" role=\"inner\"/>"),
+            AllMatches(ways[3], "<way id=\"(-\\d+)\""));
+  for (const char* tag : {"<tag k=\"type\" v=\"multipolygon\"/>", "<tag k=\"name\" v=\"area_1\"/>",
+                          "<tag k=\"osmAG:type\" v=\"area\"/>", "<tag k=\"indoor\" v=\"room\"/>"}) {
+    EXPECT_NE(relation.find(tag), std::string::npos) << tag;
+  }
+  // The rings carry no tags: the relation is the area.
+  EXPECT_EQ(ways[2].find("<tag "), std::string::npos);
+  EXPECT_EQ(ways[3].find("<tag "), std::string::npos);
+  EXPECT_EQ(NodeRefs(ways[2]).size(), 8u);  // 4 corners, 3 border points, closed
+  EXPECT_EQ(NodeRefs(ways[3]).size(), 5u);  // the hole
+}
+
+// A passage whose border lies on a hole joins the hole's ring, which is where
+// its nodes belong; put into the outer ring it made that ring cross itself
+// (lab_a's corridor loop: 132 m2 of overlap with the rooms it circles).
+TEST(OsmAgExport, PassageOnAHoleJoinsTheInnerRing) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  // A room filling the corridor's hole, and a passage along the hole's left
+  // edge (x = 16 px, y 6..8 px) through a point that is no vertex yet.
+  proto::Area* inside = graph.add_areas();
+  inside->set_id(2);
+  const proto::Ring& hole_m = graph.areas(1).polygon_m().holes(0);
+  *inside->mutable_polygon_m()->mutable_outer() = hole_m;
+  *inside->mutable_polygon_px()->mutable_outer() = graph.areas(1).polygon_px().holes(0);
+  proto::Passage* passage = graph.add_passages();
+  passage->set_id(1);
+  passage->set_area_a(1);
+  passage->set_area_b(2);
+  passage->set_width_m(0.1);
+  const double x = hole_m.points(0).x();  // the hole's left edge in metres
+  for (const double y : {hole_m.points(0).y(), (hole_m.points(0).y() + hole_m.points(2).y()) / 2,
+                         hole_m.points(2).y()}) {
+    proto::Point2* point = passage->add_border_m();
+    point->set_x(x);
+    point->set_y(y);
+  }
+  const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  const std::vector<std::string> ways = Blocks(xml, "way");
+  ASSERT_EQ(ways.size(), 7u);  // structure, area 0, area 1's rings, area 2, passages
+  const std::vector<std::string> outer = NodeRefs(ways[2]), inner = NodeRefs(ways[3]);
+  const std::vector<std::string> room = NodeRefs(ways[4]), line = NodeRefs(ways[6]);
+  ASSERT_TRUE(HasTag(ways[6], "name", "passage_1"));
+  ASSERT_EQ(line.size(), 3u);
+  for (const std::string& node : line) {
+    EXPECT_TRUE(Has(inner, node)) << node;
+    EXPECT_TRUE(Has(room, node)) << node;
+    EXPECT_FALSE(Has(outer, node)) << node;
+  }
+  EXPECT_EQ(outer.size(), 8u);  // unchanged: 4 corners, 3 points of passage 0, closed
+  EXPECT_EQ(inner.size(), 6u);  // 4 corners, the new point, closed
+}
+
+// Vertices closer than OSM's precision (7 decimals, about a centimetre)
+// become one node. Where the outline comes back within that distance of
+// itself (a neck 1 mm wide here) the node would be visited twice, which JOSM
+// reports as a self-intersecting way: the outline is cut there into two
+// rings of a multipolygon that share the node.
+TEST(OsmAgExport, ANeckNarrowerThanOsmPrecisionSplitsTheOutline) {
+  proto::AreaGraph graph;
+  graph.set_format_version(1);
+  proto::Area* area = graph.add_areas();
+  area->set_id(0);
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {0, 0}, {1, 0.4995}, {2, 0}, {2, 1}, {1, 0.5005}, {0, 1}}) {
+    proto::Point2* point = area->mutable_polygon_m()->mutable_outer()->add_points();
+    point->set_x(x);
+    point->set_y(y);
+  }
+  const std::string xml = AreaGraphToOsmAg(graph, {"neck", GeoAnchor()});
+  const std::vector<std::string> relations = Blocks(xml, "relation");
+  ASSERT_EQ(relations.size(), 1u) << xml;
+  EXPECT_EQ(AllMatches(relations[0], "role=\"(outer)\"").size(), 2u);
+  EXPECT_EQ(AllMatches(relations[0], "role=\"(inner)\"").size(), 0u);
+  const std::vector<std::string> ways = Blocks(xml, "way");
+  ASSERT_EQ(ways.size(), 3u);  // structure and the two loops
+  std::set<std::string> shared;
+  for (int i = 1; i < 3; ++i) {
+    std::vector<std::string> refs = NodeRefs(ways[i]);
+    EXPECT_EQ(refs.size(), 4u);  // triangles, closed
+    refs.pop_back();
+    EXPECT_EQ(std::set<std::string>(refs.begin(), refs.end()).size(), 3u);  // no node twice
+    for (const std::string& ref : refs) {
+      if (Has(NodeRefs(ways[3 - i]), ref)) shared.insert(ref);
+    }
+  }
+  EXPECT_EQ(shared.size(), 1u);  // the neck
+}
+
+TEST(OsmAgExport, NamesAndReferencesUseTheStableIdsOfAMatchedGraph) {
   proto::AreaGraph graph = testing::TwoRoomAreaGraph();
   const std::string unmatched = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
   EXPECT_EQ(unmatched.find("areagraph:stable_id"), std::string::npos);
@@ -83,8 +208,32 @@ TEST(OsmAgExport, TagsTheStableIdsOfAMatchedGraphOnly) {
   graph.mutable_areas(1)->set_stable_id(2);
   graph.mutable_passages(0)->set_stable_id(11);
   const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  // Area 0's way, the passage, then area 1's relation.
   EXPECT_EQ(AllMatches(xml, "<tag k=\"areagraph:stable_id\" v=\"(\\d+)\"/>"),
-            (std::vector<std::string>{"7", "2", "11"}));
+            (std::vector<std::string>{"7", "11", "2"}));
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"areagraph:index\" v=\"(\\d+)\"/>"),
+            (std::vector<std::string>{"0", "0", "1"}));
+  EXPECT_EQ(AllMatches(xml, "<tag k=\"name\" v=\"([^\"]+)\"/>"),
+            (std::vector<std::string>{"root", "house", "area_7", "passage_11", "area_2"}));
+  EXPECT_NE(xml.find("<tag k=\"osmAG:from\" v=\"area_7\"/>\n"
+                     "    <tag k=\"osmAG:to\" v=\"area_2\"/>"),
+            std::string::npos)
+      << xml;
+  EXPECT_NE(xml.find("<tag k=\"areagraph:ids\" v=\"stable\"/>"), std::string::npos);
+}
+
+// osmAG's passage tags and nothing that JOSM reads as a door node on a way
+// (indoor=door, door=*, width); the width is kept as areagraph:width.
+TEST(OsmAgExport, PassagesCarryNoDoorTags) {
+  const std::string xml = AreaGraphToOsmAg(testing::TwoRoomAreaGraph(), {"house", GeoAnchor()});
+  const std::string passage = Blocks(xml, "way").at(4);
+  ASSERT_TRUE(HasTag(passage, "osmAG:type", "passage"));
+  EXPECT_TRUE(HasTag(passage, "osmAG:from", "area_0"));
+  EXPECT_TRUE(HasTag(passage, "osmAG:to", "area_1"));
+  EXPECT_TRUE(HasTag(passage, "areagraph:width", "0.300"));
+  for (const char* key : {"\"indoor\"", "\"door\"", "\"width\""}) {
+    EXPECT_EQ(passage.find(std::string("k=") + key), std::string::npos) << key;
+  }
 }
 
 TEST(OsmAgExport, WritesLevelAndHeightWhenGiven) {
@@ -102,21 +251,39 @@ TEST(OsmAgExport, PassageWithoutBorderPutsItsEndsIntoBothOutlines) {
   proto::AreaGraph graph = testing::TwoRoomAreaGraph();
   graph.mutable_passages(0)->clear_border_m();
   const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
-  std::vector<std::vector<std::string>> ways;
-  const std::regex way("<way [^>]*>([\\s\\S]*?)</way>");
-  for (auto it = std::sregex_iterator(xml.begin(), xml.end(), way); it != std::sregex_iterator();
-       ++it) {
-    const std::string body = (*it)[1];
-    ways.push_back(AllMatches(body, "<nd ref=\"(-?\\d+)\"/>"));
+  const std::vector<std::string> ways = Blocks(xml, "way");
+  ASSERT_EQ(ways.size(), 5u);  // structure, area 0, area 1's two rings, passage
+  const std::vector<std::string> room = NodeRefs(ways[1]), corridor = NodeRefs(ways[2]);
+  const std::vector<std::string> line = NodeRefs(ways[4]);
+  EXPECT_EQ(room.size(), 7u);  // 4 corners + 2 passage ends + the closing repeat
+  EXPECT_EQ(corridor.size(), 7u);
+  ASSERT_EQ(line.size(), 2u);
+  for (const std::string& end : line) {
+    EXPECT_EQ(std::count(room.begin(), room.end(), end), 1);
+    EXPECT_EQ(std::count(corridor.begin(), corridor.end(), end), 1);
   }
-  ASSERT_EQ(ways.size(), 4u);     // structure, two areas, passage
-  EXPECT_EQ(ways[1].size(), 7u);  // 4 corners + 2 passage ends + the closing repeat
-  EXPECT_EQ(ways[2].size(), 7u);
-  ASSERT_EQ(ways[3].size(), 2u);
-  for (const std::string& end : ways[3]) {
-    EXPECT_EQ(std::count(ways[1].begin(), ways[1].end(), end), 1);
-    EXPECT_EQ(std::count(ways[2].begin(), ways[2].end(), end), 1);
-  }
+}
+
+// A passage whose areas share no border holds the obstacles on either side
+// of the opening; those points lie on no outline, and bending the outlines
+// out to them made areas overlap (lab_ipa_furnitures).
+TEST(OsmAgExport, PassageEndsOffTheOutlinesLeaveTheOutlinesAlone) {
+  proto::AreaGraph graph = testing::TwoRoomAreaGraph();
+  proto::Passage* passage = graph.mutable_passages(0);
+  passage->clear_border_m();
+  passage->mutable_segment_m()->mutable_a()->set_x(passage->segment_m().a().x() - 0.02);
+  const std::string xml = AreaGraphToOsmAg(graph, {"house", GeoAnchor()});
+  const std::vector<std::string> ways = Blocks(xml, "way");
+  ASSERT_EQ(ways.size(), 5u);
+  const std::vector<std::string> line = NodeRefs(ways[4]);
+  ASSERT_EQ(line.size(), 2u);
+  // End b lies on the shared edge and joins both; end a, 2 cm into area 0,
+  // joins neither.
+  EXPECT_FALSE(Has(NodeRefs(ways[1]), line[0]));
+  EXPECT_FALSE(Has(NodeRefs(ways[2]), line[0]));
+  EXPECT_TRUE(Has(NodeRefs(ways[1]), line[1]));
+  EXPECT_TRUE(Has(NodeRefs(ways[2]), line[1]));
+  EXPECT_EQ(NodeRefs(ways[1]).size(), 6u);
 }
 
 TEST(OsmAgExport, EscapesTheMapName) {
@@ -163,8 +330,8 @@ TEST(OsmAgExport, PointsOffTheGlobeAreRefusedAndFarOnesStayWellFormed) {
   const std::vector<std::string> nodes = AllMatches(xml, "(<node [^\n]*)\n");
   ASSERT_GE(nodes.size(), 9u);  // root, structure corners, area vertices
   const std::regex whole(
-      "<node id=\"-\\d+\" visible=\"true\" lat=\"-?\\d+\\.\\d{10}\" "
-      "lon=\"-?\\d+\\.\\d{10}\"/?>");
+      "<node id=\"-\\d+\" visible=\"true\" lat=\"-?\\d+\\.\\d{7}\" "
+      "lon=\"-?\\d+\\.\\d{7}\"/?>");
   for (const std::string& node : nodes) EXPECT_TRUE(std::regex_match(node, whole)) << node;
 }
 

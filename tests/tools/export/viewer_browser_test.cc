@@ -159,6 +159,25 @@ TEST_F(ViewerInBrowser, SelectInTheFragmentShowsTheAreaInThePanel) {
       std::regex_search(load.dom, std::regex("class=\"area selected\"[^>]*data-sel=\"area/3\"")));
 }
 
+// The panel names the areas a passage joins by their stable ids too, as the
+// map's labels do, not by their indices in this version.
+TEST_F(ViewerInBrowser, PanelNamesNeighboursByStableId) {
+  const proto::AreaGraph& graph = example_->graph;
+  const proto::Passage* chosen = nullptr;
+  for (const proto::Passage& passage : graph.passages()) {
+    if (graph.areas(passage.area_b()).stable_id() != passage.area_b()) chosen = &passage;
+  }
+  ASSERT_NE(chosen, nullptr) << "every neighbour's stable id equals its index";
+  const int other = graph.areas(chosen->area_b()).stable_id();
+  const auto load = HeadlessChromium::DumpDom(FileUrl(example_->page) + "#select=area/" +
+                                              std::to_string(chosen->area_a()));
+  SKIP_UNLESS_BROWSER_RAN(load.exit_code == 0);
+  ASSERT_EQ(load.exit_code, 0);
+  const std::string info = ElementText(load.dom, "info");
+  EXPECT_NE(info.find("to area " + std::to_string(other) + ")"), std::string::npos) << info;
+  EXPECT_NE(info.find(" " + std::to_string(chosen->stable_id()) + " "), std::string::npos) << info;
+}
+
 // Whether a page load shows any sign of a request or a script error: a
 // console message (chromium logs blocked requests there) or an error that
 // the page recorded itself.

@@ -106,8 +106,11 @@ TEST_F(HistoryCliTest, DiffSaysTheWallIsGoneAndWhichIdSurvived) {
                 .exit_code,
             0);
   const std::string nodes = ReadFile(node_link);
-  EXPECT_NE(nodes.find("\"graph\":{\"name\":\"house\",\"version\":2,"), std::string::npos) << nodes;
-  EXPECT_NE(nodes.find("{\"id\":0,\"stable_id\":0,\"name\":\"area_0\""), std::string::npos)
+  EXPECT_NE(nodes.find("\"graph\":{\"name\":\"house\",\"ids\":\"stable\",\"version\":2,"),
+            std::string::npos)
+      << nodes;
+  EXPECT_NE(nodes.find("{\"id\":0,\"stable_id\":0,\"index\":0,\"name\":\"area_0\""),
+            std::string::npos)
       << nodes;
   const std::string geojson = dir_.File("house.geojson");
   ASSERT_EQ(RunTool("ag-export",

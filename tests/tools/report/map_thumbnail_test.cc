@@ -71,5 +71,20 @@ TEST(MapThumbnailTest, DrawsTheMatchArtifactOverMerges) {
   EXPECT_FALSE(SamePixels(merge_only, Thumbnail({FreeGrid()})));
 }
 
+// The thumbnail keys areas by stable id, as the viewer and the exports do:
+// an area drawn with stable id 7 looks as an area whose only id is 7.
+TEST(MapThumbnailTest, ColoursAndLabelsAreasByStableId) {
+  proto::AreaGraph matched = OneArea(0, kWidth);
+  matched.mutable_version()->set_number(2);
+  matched.mutable_areas(0)->set_stable_id(7);
+  proto::AreaGraph indexed = OneArea(0, kWidth);
+  indexed.mutable_areas(0)->set_id(7);
+  proto::AreaGraph renumbered = matched;
+  renumbered.mutable_areas(0)->set_stable_id(3);
+  const cv::Mat seven = Thumbnail({FreeGrid(), Record(kMatchStage, matched)});
+  EXPECT_TRUE(SamePixels(seven, Thumbnail({FreeGrid(), Record(kMatchStage, indexed)})));
+  EXPECT_FALSE(SamePixels(seven, Thumbnail({FreeGrid(), Record(kMatchStage, renumbered)})));
+}
+
 }  // namespace
 }  // namespace areagraph

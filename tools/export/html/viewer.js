@@ -394,8 +394,8 @@
         applyTransforms();
       }
     });
-    element.addEventListener('pointerup', () => {
-      if (drag && !drag.moved) {
+    element.addEventListener('pointerup', (event) => {
+      if (drag && !drag.moved && !routes.click(view, event)) {
         const target = drag.target.closest && drag.target.closest('[data-sel]');
         select(target ? selectionOf(target, view) : null);
       }
@@ -444,12 +444,19 @@
     return td;
   }
 
-  function linkList(runIndex, kind, ids, describe) {
+  // The id an item is shown by (areas and passages: their stable id), from
+  // its index.
+  function shownIdOf(run, kind, id) {
+    const item = (kind === 'area' || kind === 'passage') ? findItem(run, kind, id) : undefined;
+    return item ? shownId(item) : id;
+  }
+
+  function linkList(run, kind, ids, describe) {
     const span = document.createElement('span');
     if (!ids || ids.length === 0) { span.textContent = 'none'; return span; }
     ids.forEach((id, i) => {
       if (i > 0) span.appendChild(document.createTextNode(', '));
-      link(span, kind, id, runIndex, String(id));
+      link(span, kind, id, run.index, String(shownIdOf(run, kind, id)));
       if (describe) span.appendChild(document.createTextNode(describe(id)));
     });
     return span;
@@ -459,12 +466,12 @@
     area(run, area, table) {
       row(table, 'kind', area.kind.replace('_', ' '));
       row(table, 'area', (area.area_m2 || 0).toFixed(2) + ' m²');
-      row(table, 'topology edges', linkList(run.index, 'cutedge', area.topology_edge_ids));
-      row(table, 'passages', linkList(run.index, 'passage', area.passage_ids, (id) => {
+      row(table, 'topology edges', linkList(run, 'cutedge', area.topology_edge_ids));
+      row(table, 'passages', linkList(run, 'passage', area.passage_ids, (id) => {
         const passage = findItem(run, 'passage', id);
         if (!passage) return '';
         const other = passage.area_a === area.id ? passage.area_b : passage.area_a;
-        return ' (' + metres(passage.width_m) + ' to area ' + other + ')';
+        return ' (' + metres(passage.width_m) + ' to area ' + shownIdOf(run, 'area', other) + ')';
       }));
       if (area.stable_id !== undefined) row(table, 'index in this version', String(area.id));
       return 'Area ' + shownId(area);
@@ -472,9 +479,9 @@
     passage(run, passage, table) {
       row(table, 'width', metres(passage.width_m));
       const between = document.createElement('span');
-      link(between, 'area', passage.area_a, run.index, 'area ' + passage.area_a);
+      link(between, 'area', passage.area_a, run.index, 'area ' + shownIdOf(run, 'area', passage.area_a));
       between.appendChild(document.createTextNode(' and '));
-      link(between, 'area', passage.area_b, run.index, 'area ' + passage.area_b);
+      link(between, 'area', passage.area_b, run.index, 'area ' + shownIdOf(run, 'area', passage.area_b));
       row(table, 'between', between);
       if (passage.stable_id !== undefined) row(table, 'index in this version', String(passage.id));
       return 'Passage ' + shownId(passage);
@@ -503,12 +510,12 @@
       row(table, 'length', metres(edge.length_m));
       row(table, 'min clearance', metres(edge.min_clearance_m));
       const areas = ((run.area_graph || {}).areas || []).filter((area) => (area.topology_edge_ids || []).includes(edge.id));
-      row(table, 'in area', linkList(run.index, 'area', areas.map((area) => area.id)));
+      row(table, 'in area', linkList(run, 'area', areas.map((area) => area.id)));
       return 'Cut graph edge ' + edge.id;
     },
     room(run, room, table) {
       const edges = ((run.cut || {}).edges || []).filter((edge) => edge.room_id === room.id);
-      row(table, 'edges', linkList(run.index, 'cutedge', edges.map((edge) => edge.id)));
+      row(table, 'edges', linkList(run, 'cutedge', edges.map((edge) => edge.id)));
       return 'Room shape ' + room.id;
     },
     cut(run, point, table) {
@@ -781,6 +788,7 @@
     container.replaceChildren();
     const shown = state.view === 'side' ? [runs[0], runs[1]] : state.view === 'b' ? [runs[1]] : [runs[0]];
     views = shown.map((run) => new MapView(container, run, compare));
+    routes.redraw();
     if (state.view === 'overlay') state.layers.add('compare');
     for (const box of document.querySelectorAll('input[data-view]')) box.checked = box.value === state.view;
     applyLayers();
@@ -834,6 +842,8 @@
   buildCounts();
   buildStages();
   buildOptions();
+  // Routes between two clicked points (route.js).
+  const routes = areagraphRoutes({ state, resolution, svg, html, views: () => views });
   applyFragment();
   window.addEventListener('hashchange', applyFragment);
   window.addEventListener('resize', applyTransforms);
