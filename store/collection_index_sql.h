@@ -183,13 +183,11 @@ inline constexpr char kCountShardRows[] =
     " WHERE id = ?1 RETURNING maps, artifacts";
 
 // --- Reading the index -------------------------------------------------------
+// Maps, heads, versions and failures are read with the store's own
+// statements (sqlite_store_sql.h, sqlite_versions_sql.h): the tables and
+// columns they name are the same here.
 
 inline constexpr char kReadShards[] = "SELECT id, path, maps, artifacts FROM shards ORDER BY id";
-
-inline constexpr char kReadAllMaps[] =
-    "SELECT id, name, source_path, source_digest FROM maps ORDER BY name";
-inline constexpr char kReadMap[] =
-    "SELECT id, name, source_path, source_digest FROM maps WHERE name = ?1";
 
 // Artifact rows as ReadIndexedRow (collection_index_store.cc) reads them;
 // the last column says whether the row has its details.
@@ -222,34 +220,11 @@ inline constexpr char kReadShardArtifacts[] =
 
 inline constexpr char kCountArtifacts[] =
     "SELECT count(*) FROM maps m JOIN artifacts a ON a.map_id = m.id WHERE m.name = ?1";
-inline constexpr char kHasArtifact[] =
-    "SELECT 1 FROM maps m JOIN artifacts a ON a.map_id = m.id"
-    " WHERE m.name = ?1 AND a.cache_key = ?2";
-inline constexpr char kReadHeadKey[] =
-    "SELECT a.cache_key FROM maps m"
-    " JOIN heads h ON h.map_id = m.id JOIN artifacts a ON a.id = h.artifact_id"
-    " WHERE m.name = ?1 AND h.stage = ?2";
-inline constexpr char kReadFailures[] =
-    "SELECT map_name, stage, message, source_path, failed_at FROM failures ORDER BY map_name";
-
-// As a store's (sqlite_versions_sql.h): whether the version's artifact is
-// indexed and is its stage's head.
-#define AG_INDEX_READ_VERSIONS(where)                                                         \
-  "SELECT v.cache_key, v.predecessor_key, v.number, v.stage, v.created_at, a.id IS NOT NULL," \
-  " h.artifact_id IS NOT NULL FROM maps m JOIN versions v ON v.map_id = m.id"                 \
-  " LEFT JOIN artifacts a ON a.map_id = v.map_id AND a.cache_key = v.cache_key"               \
-  " LEFT JOIN heads h ON h.map_id = v.map_id AND h.stage = v.stage AND h.artifact_id = a.id"  \
-  " WHERE m.name = ?1" where
-inline constexpr char kReadVersions[] = AG_INDEX_READ_VERSIONS(" ORDER BY v.created_at, v.number");
-inline constexpr char kReadVersion[] = AG_INDEX_READ_VERSIONS(" AND v.cache_key = ?2");
-#undef AG_INDEX_READ_VERSIONS
 
 // --- Verify ------------------------------------------------------------------
 
 inline constexpr char kIntegrityCheck[] = "PRAGMA integrity_check";
 inline constexpr char kQuickCheck[] = "PRAGMA quick_check";
-inline constexpr char kBeginRead[] = "BEGIN DEFERRED";
-inline constexpr char kEndRead[] = "COMMIT";
 
 // The heads of one shard's maps, to compare with the shard's own.
 inline constexpr char kReadShardHeads[] =

@@ -12,6 +12,8 @@
 #include "common/text.h"
 #include "store/collection_index_sql.h"
 #include "store/sqlite_artifact_store.h"
+#include "store/sqlite_store_sql.h"
+#include "store/sqlite_versions_sql.h"
 
 namespace areagraph {
 namespace {
@@ -87,17 +89,19 @@ CollectionIndexStore::CollectionIndexStore(const std::string& path)
   const auto prepare = [&](const char* sql, const char* action) {
     return LazyStatement(db_, path_, sql, action);
   };
-  sql_read_all_maps_ = prepare(kReadAllMaps, "reading the maps");
-  sql_read_map_ = prepare(kReadMap, "reading a map");
+  // The index's maps, heads, versions and failures tables answer the store's
+  // own statements; its artifacts table has statements of its own.
+  sql_read_all_maps_ = prepare(store_sql::kReadAllMaps, "reading the maps");
+  sql_read_map_ = prepare(store_sql::kReadMap, "reading a map");
   sql_read_artifact_ = prepare(kReadArtifact, "reading an artifact");
   sql_read_head_ = prepare(kReadHead, "reading a head artifact");
   sql_read_artifact_summaries_ = prepare(kReadArtifactSummaries, "listing the artifacts of a map");
   sql_count_artifacts_ = prepare(kCountArtifacts, "counting the artifacts of a map");
-  sql_has_artifact_ = prepare(kHasArtifact, "looking up an artifact");
-  sql_read_head_key_ = prepare(kReadHeadKey, "looking up a head");
-  sql_read_versions_ = prepare(kReadVersions, "reading the history of a map");
-  sql_read_version_ = prepare(kReadVersion, "reading a version");
-  sql_read_failures_ = prepare(kReadFailures, "reading the failures");
+  sql_has_artifact_ = prepare(store_sql::kHasArtifact, "looking up an artifact");
+  sql_read_head_key_ = prepare(store_sql::kReadHeadKey, "looking up a head");
+  sql_read_versions_ = prepare(store_sql::kReadVersions, "reading the history of a map");
+  sql_read_version_ = prepare(store_sql::kReadVersion, "reading a version");
+  sql_read_failures_ = prepare(store_sql::kReadFailures, "reading the failures");
 }
 
 std::unique_ptr<ArtifactStore> OpenCollectionIndexStore(const std::string& path, StoreMode mode) {
@@ -155,12 +159,6 @@ CollectionIndexStore::IndexedArtifact CollectionIndexStore::ReadIndexedRow(
   indexed.shard_id = statement.ColumnInt64(first + 12, "maps.shard_id");
   indexed.detailed = statement.ColumnInt64(first + 13, "artifacts.summary") != 0;
   return indexed;
-}
-
-std::optional<CollectionIndexStore::IndexedArtifact> CollectionIndexStore::ReadOneRow(
-    SqliteStatement& statement, const std::string& map_name) {
-  if (!statement.Step()) return std::nullopt;
-  return ReadIndexedRow(statement, map_name, 0);
 }
 
 const CollectionShard* CollectionIndexStore::FindShard(int64_t shard_id,
@@ -242,30 +240,25 @@ ArtifactRecord CollectionIndexStore::WithDetails(IndexedArtifact indexed) {
   return std::move(artifact);
 }
 
+std::optional<CollectionIndexStore::IndexedArtifact> CollectionIndexStore::ReadOneRow(
+    LazyStatement& statement, const std::string& map_name, const std::string& second) {
+  StatementUse use(*statement);
+  statement->BindText(1, map_name);
+  statement->BindText(2, second);
+  if (!statement->Step()) return std::nullopt;
+  return ReadIndexedRow(*statement, map_name, 0);
+}
+
 std::optional<ArtifactRecord> CollectionIndexStore::ReadArtifact(const std::string& map_name,
                                                                  const std::string& cache_key) {
-  std::optional<IndexedArtifact> indexed;
-  {
-    SqliteStatement& statement = *sql_read_artifact_;
-    StatementUse use(statement);
-    statement.BindText(1, map_name);
-    statement.BindText(2, cache_key);
-    indexed = ReadOneRow(statement, map_name);
-  }
+  std::optional<IndexedArtifact> indexed = ReadOneRow(sql_read_artifact_, map_name, cache_key);
   if (!indexed) return std::nullopt;
   return WithPayload(std::move(*indexed));
 }
 
 std::optional<ArtifactRecord> CollectionIndexStore::ReadHead(const std::string& map_name,
                                                              const std::string& stage) {
-  std::optional<IndexedArtifact> indexed;
-  {
-    SqliteStatement& statement = *sql_read_head_;
-    StatementUse use(statement);
-    statement.BindText(1, map_name);
-    statement.BindText(2, stage);
-    indexed = ReadOneRow(statement, map_name);
-  }
+  std::optional<IndexedArtifact> indexed = ReadOneRow(sql_read_head_, map_name, stage);
   if (!indexed) return std::nullopt;
   return WithPayload(std::move(*indexed));
 }
@@ -305,14 +298,7 @@ std::vector<ArtifactRecord> CollectionIndexStore::ReadArtifactSummaries(
 
 std::optional<ArtifactRecord> CollectionIndexStore::ReadArtifactSummary(
     const std::string& map_name, const std::string& cache_key) {
-  std::optional<IndexedArtifact> indexed;
-  {
-    SqliteStatement& statement = *sql_read_artifact_;
-    StatementUse use(statement);
-    statement.BindText(1, map_name);
-    statement.BindText(2, cache_key);
-    indexed = ReadOneRow(statement, map_name);
-  }
+  std::optional<IndexedArtifact> indexed = ReadOneRow(sql_read_artifact_, map_name, cache_key);
   if (!indexed) return std::nullopt;
   return WithDetails(std::move(*indexed));
 }
@@ -343,28 +329,12 @@ std::optional<std::string> CollectionIndexStore::ReadHeadKey(const std::string& 
   return statement.ColumnText(0, "artifacts.cache_key");
 }
 
-namespace {
-
-VersionRecord ReadVersionRow(const SqliteStatement& statement) {
-  VersionRecord version;
-  version.cache_key = statement.ColumnText(0, "versions.cache_key");
-  version.predecessor_key = statement.ColumnText(1, "versions.predecessor_key");
-  version.number = statement.ColumnInt64(2, "versions.number");
-  version.stage = statement.ColumnText(3, "versions.stage");
-  version.created_at = statement.ColumnText(4, "versions.created_at");
-  version.stored = statement.ColumnInt64(5, "artifacts.id") != 0;
-  version.is_head = statement.ColumnInt64(6, "heads.artifact_id") != 0;
-  return version;
-}
-
-}  // namespace
-
 std::vector<VersionRecord> CollectionIndexStore::ReadVersions(const std::string& map_name) {
   SqliteStatement& statement = *sql_read_versions_;
   StatementUse use(statement);
   statement.BindText(1, map_name);
   std::vector<VersionRecord> versions;
-  while (statement.Step()) versions.push_back(ReadVersionRow(statement));
+  while (statement.Step()) versions.push_back(store_internal::ReadVersionRow(statement));
   return versions;
 }
 
@@ -375,22 +345,14 @@ std::optional<VersionRecord> CollectionIndexStore::ReadVersion(const std::string
   statement.BindText(1, map_name);
   statement.BindText(2, cache_key);
   if (!statement.Step()) return std::nullopt;
-  return ReadVersionRow(statement);
+  return store_internal::ReadVersionRow(statement);
 }
 
 std::vector<FailureRecord> CollectionIndexStore::ReadFailures() {
   SqliteStatement& statement = *sql_read_failures_;
   StatementUse use(statement);
   std::vector<FailureRecord> failures;
-  while (statement.Step()) {
-    FailureRecord failure;
-    failure.map_name = statement.ColumnText(0, "failures.map_name");
-    failure.stage = statement.ColumnText(1, "failures.stage");
-    failure.message = statement.ColumnText(2, "failures.message");
-    failure.source_path = statement.ColumnText(3, "failures.source_path");
-    failure.failed_at = statement.ColumnText(4, "failures.failed_at");
-    failures.push_back(std::move(failure));
-  }
+  while (statement.Step()) failures.push_back(store_internal::ReadFailureRow(statement));
   return failures;
 }
 

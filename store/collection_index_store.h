@@ -74,8 +74,10 @@ class CollectionIndexStore : public ArtifactStore {
   };
   IndexedArtifact ReadIndexedRow(const SqliteStatement& statement, const std::string& map_name,
                                  int first) const;
-  std::optional<IndexedArtifact> ReadOneRow(SqliteStatement& statement,
-                                            const std::string& map_name);
+  // The row that `statement` finds by map name and a second text (a key or a
+  // stage), if any.
+  std::optional<IndexedArtifact> ReadOneRow(LazyStatement& statement, const std::string& map_name,
+                                            const std::string& second);
   // The shard of `shard_id` (a StoreError naming `map_name` when the index
   // lists no such shard).
   const CollectionShard* FindShard(int64_t shard_id, const std::string& map_name) const;
