@@ -13,9 +13,9 @@
 #    shard tasks (ag-run --shard, then ag-store verify of the shard) and the
 #    index job. Compute: the array's wall time from submission to its last
 #    task's end, and the sum of the tasks' ag-run times from their logs.
-# 2. The index job's own time (its log's "collection: N s": ag-store index
-#    and verify --shallow) and the merge job's on the same shards (ag-store
-#    merge and verify), run after it; then ag-store index alone (median of
+# 2. The index job's own time (its log's "collection: N s": ag-store index)
+#    and the merge job's on the same shards (ag-store merge and verify), run
+#    after it; then ag-store index alone (median of
 #    --repeats), verify of the index with and without --shallow, the maps
 #    listed, and the file sizes.
 # 3. ag-export --format geojson of every map, one process each as a user
