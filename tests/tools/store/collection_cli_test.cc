@@ -167,6 +167,23 @@ TEST_F(CollectionCliTest, EveryReadingToolReadsTheIndexAsOneStore) {
   EXPECT_EQ(HeadDigests(test_dir_.File("one.db")), HeadDigests(merged()));
 }
 
+// ag-eval reads label images, not stores: it scores the labels exported from
+// the index exactly as the unsharded run's (every pixel and segment agrees).
+TEST_F(CollectionCliTest, EvalScoresTheIndexsLabelsAsTheUnshardedRuns) {
+  const std::string index = IndexedCopy("collection");
+  for (const std::string& map : {MapNames().front(), MapNames().back()}) {
+    const std::string result = test_dir_.File("index-" + std::to_string(serial_) + ".png");
+    const std::string truth = test_dir_.File("unsharded-" + std::to_string(serial_++) + ".png");
+    Ok(RunTool("ag-export",
+               {"--store", index, "--map", map, "--format", "labels", "--out", result}));
+    Ok(RunTool("ag-export",
+               {"--store", unsharded(), "--map", map, "--format", "labels", "--out", truth}));
+    const std::string scores =
+        Ok(RunTool("ag-eval", {"--result", result, "--gt", truth, "--gt-style", "labels"})).out;
+    EXPECT_EQ(scores.rfind("MCC 1.000\nprecision 1.000\nrecall 1.000\n", 0), 0u) << scores;
+  }
+}
+
 TEST_F(CollectionCliTest, WritersRefuseAnIndex) {
   const std::string index = IndexedCopy("collection");
   const std::string refused = "is a collection index of 3 shard stores, which is only read";
