@@ -220,17 +220,20 @@ class ArtifactStore {
   // its import head. A failure goes to the later one, and is dropped when the
   // merged map has a head created after it. The history rows of both are
   // kept (matched by map and key). The store at `path` must pass SQLite's
-  // quick_check, and every payload copied is checked (digest and wire
-  // format) before the transaction commits. Throws StoreError naming `path`
-  // when it is damaged (and nothing of it is merged), when it is this store,
-  // or when it is not an areagraph store of this build's schema or older.
+  // integrity_check (indexes included: lookups by name and key go through
+  // them), every artifact row of it its row digest, and every payload copied
+  // is checked (digest and wire format) before the transaction commits.
+  // Throws StoreError naming `path` when it is damaged (and nothing of it is
+  // merged), when it is this store, or when it is not an areagraph store of
+  // this build's schema or older.
   virtual MaintenanceCounts MergeFrom(const std::string& path) = 0;
 
   // Writes everything in the write-ahead log back into the store file and
   // empties the log (a TRUNCATE checkpoint), so that the file alone holds
   // every artifact. Does not wait for others: returns false when another
-  // process is reading or writing (its own close folds the log then). Every
-  // read-write store does this when it closes.
+  // process is reading or writing (its own close folds the log then); throws
+  // StoreError (UnfoldedLogMessage) when the fold fails, e.g. on a full disk.
+  // Every read-write store does this when it closes.
   virtual bool FoldWriteAheadLog() = 0;
   // For a process that hands the store to writers coming next (ag-run before
   // its workers): closing then leaves the write-ahead log for them to append
@@ -259,12 +262,25 @@ std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path,
 // (which would replay the whole log first); false for ":memory:".
 bool HasWriteAheadLog(const std::string& path);
 
+// What to tell the user when the write-ahead log of store `path` could not
+// be folded into its file (`why`: a full disk): the -wal then holds commits
+// that the file alone lacks.
+std::string UnfoldedLogMessage(const std::string& path, const std::string& why);
+
+// The message of the last store closed since the previous call whose log
+// could not be folded on close (UnfoldedLogMessage), or nullopt. A store's
+// close cannot throw; RunCommand reports this instead.
+std::optional<std::string> TakeUnfoldedLogProblem();
+
 // The schema version this build writes and the newest it reads. 2 added the
 // failures table, 3 the artifacts' summary line, 4 the versions table (each
 // map's history of Area Graphs), 5 zstd-compressed payloads (a codec per
-// artifact; rows written before stay uncompressed and readable). An older
-// store is upgraded when opened read-write, and read as it is (without
-// failures, summary lines or history) when opened read-only.
-constexpr int kStoreSchemaVersion = 5;
+// artifact; rows written before stay uncompressed and readable), 6 a digest
+// of each artifact row's other columns (key, inputs, options, summary, ...;
+// store/row_digest.h), checked wherever the row is read, by verify and by
+// merge. An older store is upgraded when opened read-write (rows written
+// before get their digest then), and read as it is (without failures,
+// summary lines, history or row checks) when opened read-only.
+constexpr int kStoreSchemaVersion = 6;
 
 }  // namespace areagraph

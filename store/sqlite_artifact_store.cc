@@ -17,6 +17,7 @@
 #include "store/digest.h"
 #include "store/payload_codec.h"
 #include "store/payload_encoder.h"
+#include "store/row_digest.h"
 #include "store/sqlite_store_sql.h"
 #include "store/sqlite_versions_sql.h"
 
@@ -58,6 +59,7 @@ SqliteArtifactStore::SqliteArtifactStore(const std::string& path, StoreMode mode
     : path_(path), mode_(mode), connection_(path, mode), db_(connection_.get()) {
   CheckSqlite(db_, path_, sqlite3_busy_timeout(db_, kStoreBusyTimeoutMs),
               "setting the busy timeout");
+  store_internal::RegisterRowDigestFunction(db_, path_);
   const SchemaState state = ReadSchemaState();
   CheckIsAreagraphStore(state, mode);
   // Only now is the file known to be ours (or new) and may be changed.
@@ -90,6 +92,7 @@ SqliteArtifactStore::SqliteArtifactStore(const std::string& path, UnpublishedFil
   Exec("PRAGMA journal_mode = OFF", "building a new store without a journal");
   Exec("PRAGMA synchronous = OFF", "building a new store without syncs");
   Exec("PRAGMA foreign_keys = ON", "enabling foreign keys");
+  store_internal::RegisterRowDigestFunction(db_, path_);
   sql_stmt_begin_ = Prepare(store_sql::kBegin, "starting a transaction");
   sql_stmt_commit_ = Prepare(store_sql::kCommit, "committing a transaction");
   sql_stmt_rollback_ = Prepare(store_sql::kRollback, "rolling back a transaction");
@@ -211,6 +214,10 @@ void SqliteArtifactStore::CreateOrUpgradeSchema() {
     Exec(store_sql::kAddPayloadSizeColumn, "adding the artifacts' payload size column");
     Exec(store_sql::kFillPayloadSizes, "recording the payload sizes");
   }
+  if (version >= 1 && version < 6) {
+    Exec(store_sql::kAddRowDigestColumn, "adding the artifacts' row digest column");
+    Exec(store_sql::kFillRowDigests, "recording the row digests");
+  }
   if (version < kStoreSchemaVersion) {
     Exec(("PRAGMA user_version = " + std::to_string(kStoreSchemaVersion)).c_str(),
          "setting the schema version");
@@ -237,28 +244,32 @@ void SqliteArtifactStore::PrepareStatements() {
   sql_stmt_read_all_maps_ = Prepare(store_sql::kReadAllMaps, "reading the maps");
   sql_stmt_read_map_ = Prepare(store_sql::kReadMap, "reading a map");
   const int v = schema_version_;
-  sql_stmt_read_artifact_ = Prepare(
-      store_internal::ForSchema(v, store_sql::kReadArtifact, store_sql::kReadArtifactBeforeSchema5,
-                                store_sql::kReadArtifactBeforeSchema3),
-      "reading an artifact");
+  sql_stmt_read_artifact_ =
+      Prepare(store_internal::ForSchema(
+                  v, store_sql::kReadArtifact, store_sql::kReadArtifactBeforeSchema6,
+                  store_sql::kReadArtifactBeforeSchema5, store_sql::kReadArtifactBeforeSchema3),
+              "reading an artifact");
   sql_stmt_read_head_ =
-      Prepare(store_internal::ForSchema(v, store_sql::kReadHead, store_sql::kReadHeadBeforeSchema5,
+      Prepare(store_internal::ForSchema(v, store_sql::kReadHead, store_sql::kReadHeadBeforeSchema6,
+                                        store_sql::kReadHeadBeforeSchema5,
                                         store_sql::kReadHeadBeforeSchema3),
               "reading a head artifact");
   sql_stmt_read_artifact_summaries_ =
       Prepare(store_internal::ForSchema(v, store_sql::kReadArtifactSummaries,
+                                        store_sql::kReadArtifactSummariesBeforeSchema6,
                                         store_sql::kReadArtifactSummariesBeforeSchema5,
                                         store_sql::kReadArtifactSummariesBeforeSchema3),
               "listing the artifacts of a map");
   sql_stmt_read_artifact_summary_ =
       Prepare(store_internal::ForSchema(v, store_sql::kReadArtifactSummary,
+                                        store_sql::kReadArtifactSummaryBeforeSchema6,
                                         store_sql::kReadArtifactSummaryBeforeSchema5,
                                         store_sql::kReadArtifactSummaryBeforeSchema3),
               "reading an artifact");
   sql_stmt_read_artifact_ref_ = Prepare(store_sql::kReadArtifactRef, "finding an artifact");
   sql_stmt_read_artifact_id_ = Prepare(store_sql::kReadArtifactId, "finding an artifact");
   sql_stmt_upsert_map_ = Prepare(store_sql::kUpsertMap, "writing a map");
-  if (HasPayloadCodecs()) {  // an older store is only ever read
+  if (HasRowDigests()) {  // an older store is only ever read
     sql_stmt_upsert_artifact_ = Prepare(store_sql::kUpsertArtifact, "writing an artifact");
   }
   sql_stmt_write_head_ = Prepare(store_sql::kWriteHead, "writing a head");
@@ -296,7 +307,8 @@ ArtifactRecord SqliteArtifactStore::ReadArtifactRow(const SqliteStatement& state
   artifact.map_name = map_name;
   artifact.stage = statement.ColumnText(0, "artifacts.stage");
   artifact.cache_key = statement.ColumnText(1, "artifacts.cache_key");
-  artifact.input_keys = SplitLines(statement.ColumnText(2, "artifacts.input_keys"));
+  const std::string input_keys = statement.ColumnText(2, "artifacts.input_keys");
+  artifact.input_keys = SplitLines(input_keys);
   artifact.options_text = statement.ColumnText(3, "artifacts.options");
   artifact.stage_version = static_cast<int>(statement.ColumnInt64(4, "artifacts.stage_version"));
   artifact.proto_type = statement.ColumnText(5, "artifacts.proto_type");
@@ -305,19 +317,30 @@ ArtifactRecord SqliteArtifactStore::ReadArtifactRow(const SqliteStatement& state
   artifact.elapsed_ms = statement.ColumnDouble(8, "artifacts.elapsed_ms");
   artifact.is_head = statement.ColumnInt64(9, "heads.artifact_id") != 0;
   artifact.summary_line = statement.ColumnText(10, "artifacts.summary");
-  if (!with_payload) {
-    artifact.payload_bytes = statement.ColumnInt64(11, "artifacts.payload_size");
-    return artifact;
-  }
   const auto corrupt = [&](const std::string& problem) {
     return StoreError("artifact " + ShortKey(artifact.cache_key) + " of map '" + map_name +
                       "' in store '" + path_ + "' is corrupt (" + problem + "); run ag-" +
                       artifact.stage + " --store " + path_ + " --map " + map_name +
                       " --force to recompute it");
   };
+  const std::string row_digest = statement.ColumnText(11, "artifacts.row_digest");
+  if (!row_digest.empty() &&  // empty in stores before schema 6
+      ArtifactRowDigest({map_name, artifact.stage, artifact.cache_key, input_keys,
+                         artifact.options_text, artifact.stage_version, artifact.proto_type,
+                         artifact.payload_digest, artifact.summary_line, artifact.created_at}) !=
+          row_digest) {
+    throw StoreError("artifact " + ShortKey(artifact.cache_key) + " of map '" + map_name +
+                     "' in store '" + path_ + "' is damaged (" +
+                     store_internal::kRowDigestMismatch + "); ag-store verify --store " + path_ +
+                     " lists the damage");
+  }
+  if (!with_payload) {
+    artifact.payload_bytes = statement.ColumnInt64(12, "artifacts.payload_size");
+    return artifact;
+  }
   try {
-    artifact.payload = DecodePayload(statement.ColumnBlobView(11, "artifacts.payload"),
-                                     statement.ColumnInt64(12, "artifacts.payload_codec"));
+    artifact.payload = DecodePayload(statement.ColumnBlobView(12, "artifacts.payload"),
+                                     statement.ColumnInt64(13, "artifacts.payload_codec"));
   } catch (const StoreError& error) {
     throw corrupt(error.what());
   }
@@ -399,6 +422,12 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
   if (!artifact.encoded_payload) encoded_here = EncodeRawPayload(artifact.payload);
   const EncodedPayload& payload =
       artifact.encoded_payload ? *artifact.encoded_payload : *encoded_here;
+  const std::string created_at = StoreTimeNow();
+  const std::string input_keys = JoinLines(artifact.input_keys);
+  const std::string row_digest =
+      ArtifactRowDigest({artifact.map_name, artifact.stage, artifact.cache_key, input_keys,
+                         artifact.options_text, artifact.stage_version, artifact.proto_type,
+                         payload.digest, artifact.summary_line, created_at});
   SqliteTransaction transaction = BeginTransaction();
 
   int64_t map_id = 0;
@@ -421,7 +450,7 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     insert.BindInt64(1, map_id);
     insert.BindText(2, artifact.stage);
     insert.BindText(3, artifact.cache_key);
-    insert.BindText(4, JoinLines(artifact.input_keys));
+    insert.BindText(4, input_keys);
     insert.BindText(5, artifact.options_text);
     insert.BindInt64(6, artifact.stage_version);
     insert.BindText(7, artifact.proto_type);
@@ -431,6 +460,8 @@ void SqliteArtifactStore::WriteArtifact(const NewArtifact& artifact) {
     insert.BindText(11, artifact.summary_line);
     insert.BindInt64(12, static_cast<int64_t>(PayloadCodec::kZstd));
     insert.BindInt64(13, payload.raw_bytes);
+    insert.BindText(14, created_at);
+    insert.BindText(15, row_digest);
     insert.Step();
   }
   int64_t artifact_id = 0;

@@ -92,6 +92,8 @@ class SqliteArtifactStore : public ArtifactStore {
   bool HasVersionsTable() const { return schema_version_ >= 4; }
   // Schema 5 keeps a codec per payload; older read-only stores are raw.
   bool HasPayloadCodecs() const { return schema_version_ >= 5; }
+  // Schema 6 keeps a digest of each artifact row's columns.
+  bool HasRowDigests() const { return schema_version_ >= 6; }
 
   // The statement, prepared on its first use (LazyStatement).
   LazyStatement Prepare(const char* sql, const std::string& action);
@@ -127,6 +129,8 @@ class SqliteArtifactStore : public ArtifactStore {
   // Throws StoreError naming `path` when an artifact that the merge would
   // copy from it has a payload that fails its digest or is not protobuf.
   void CheckMergeSourcePayloads(const std::string& path, int source_version);
+  // The same for an artifact row whose columns fail their row digest.
+  void CheckMergeSourceRows(const std::string& path, int source_version);
 
   const std::string path_;
   const StoreMode mode_;
@@ -165,10 +169,11 @@ class SqliteArtifactStore : public ArtifactStore {
 namespace store_internal {
 
 // The form of a statement for a store of schema `version`: older stores have
-// no payload codec (before 5) and no summary lines (before 3).
-inline const char* ForSchema(int version, const char* current, const char* before5,
-                             const char* before3) {
-  return version >= 5 ? current : version >= 3 ? before5 : before3;
+// no row digest (before 6), no payload codec (before 5) and no summary lines
+// (before 3).
+inline const char* ForSchema(int version, const char* current, const char* before6,
+                             const char* before5, const char* before3) {
+  return version >= 6 ? current : version >= 5 ? before6 : version >= 3 ? before5 : before3;
 }
 
 // Makes a new store file at `path` when none is there (sqlite_store_creation.cc).
@@ -181,6 +186,15 @@ std::vector<std::string> SplitLines(const std::string& joined);
 // (also a collection index's, whose tables answer the same statements).
 VersionRecord ReadVersionRow(const SqliteStatement& statement);
 FailureRecord ReadFailureRow(const SqliteStatement& statement);
+
+// What a row whose columns do not match its row digest (schema 6) is.
+inline constexpr char kRowDigestMismatch[] =
+    "row digest mismatch: its key, inputs, options, summary or time were changed";
+
+// Registers the SQL function ag_row_digest(map_name, stage, cache_key,
+// input_keys, options, stage_version, proto_type, payload_digest, summary,
+// created_at), ArtifactRowDigest in SQL, on the connection.
+void RegisterRowDigestFunction(sqlite3* db, const std::string& path);
 
 // What is wrong with a stored payload (decoded with `codec`): a damaged
 // frame, "payload digest mismatch" or "payload is not protobuf wire format";

@@ -1,5 +1,7 @@
 #include "store/sqlite_statement.h"
 
+#include <cctype>
+#include <cstring>
 #include <utility>
 
 #include "common/error.h"
@@ -7,12 +9,28 @@
 namespace areagraph {
 namespace {
 
-// SQLite's message for `rc`, preferring the connection's more specific text
-// when it belongs to this error.
+const char* TypeName(int type);
+
+}  // namespace
+
 std::string SqliteReason(sqlite3* db, int rc) {
-  if (db != nullptr && (sqlite3_errcode(db) & 0xff) == (rc & 0xff)) return sqlite3_errmsg(db);
+  // For a failed system call (a -shm that cannot be made on a full disk is
+  // "disk I/O error" to SQLite) the system's own reason says what to fix.
+  const int code = rc & 0xff;
+  if (db != nullptr && (code == SQLITE_IOERR || code == SQLITE_FULL || code == SQLITE_CANTOPEN) &&
+      sqlite3_system_errno(db) != 0) {
+    std::string text = std::strerror(sqlite3_system_errno(db));
+    if (!text.empty())
+      text[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(text[0])));
+    return text;
+  }
+  // SQLite keeps no errno for a write that found the disk full.
+  if (code == SQLITE_FULL) return "no space left on device";
+  if (db != nullptr && (sqlite3_errcode(db) & 0xff) == code) return sqlite3_errmsg(db);
   return sqlite3_errstr(rc);
 }
+
+namespace {
 
 const char* TypeName(int type) {
   switch (type) {

@@ -12,6 +12,11 @@ namespace areagraph {
 // How long a store waits for another process's write lock before giving up.
 constexpr int kStoreBusyTimeoutMs = 10000;
 
+// SQLite's reason for `rc` in words: the system's for a failed system call
+// ("no space left on device"), else the connection's message when it belongs
+// to this error, else SQLite's text for the code.
+std::string SqliteReason(sqlite3* db, int rc);
+
 // Throws StoreError unless `rc` is SQLITE_OK, SQLITE_ROW or SQLITE_DONE. Every
 // SQLite return code of the store goes through here, so each failure reads the
 // same way: the store path, SQLite's reason and what the store was doing.

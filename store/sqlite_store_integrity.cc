@@ -6,12 +6,15 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
+#include <optional>
 
 #include "common/error.h"
 #include "common/text.h"
 #include "store/digest.h"
 #include "store/payload_codec.h"
 #include "store/protobuf_wire.h"
+#include "store/row_digest.h"
 #include "store/sqlite_artifact_store.h"
 #include "store/sqlite_store_maintenance_sql.h"
 
@@ -36,6 +39,21 @@ std::optional<std::string> PayloadProblem(std::string_view stored, int64_t codec
 
 namespace {
 
+std::string_view TextValue(sqlite3_value* value) {
+  const auto* text = reinterpret_cast<const char*>(sqlite3_value_text(value));
+  return std::string_view(text == nullptr ? "" : text,
+                          static_cast<size_t>(sqlite3_value_bytes(value)));
+}
+
+// SQL function ag_row_digest(...): ArtifactRowDigest of its ten arguments.
+void RowDigestFunction(sqlite3_context* context, int, sqlite3_value** values) {
+  const std::string digest = ArtifactRowDigest(
+      {TextValue(values[0]), TextValue(values[1]), TextValue(values[2]), TextValue(values[3]),
+       TextValue(values[4]), sqlite3_value_int64(values[5]), TextValue(values[6]),
+       TextValue(values[7]), TextValue(values[8]), TextValue(values[9])});
+  sqlite3_result_text(context, digest.c_str(), static_cast<int>(digest.size()), SQLITE_TRANSIENT);
+}
+
 // SQL function ag_payload_problem(payload, codec, digest): NULL or the problem.
 void PayloadProblemFunction(sqlite3_context* context, int, sqlite3_value** values) {
   const auto* payload = static_cast<const char*>(sqlite3_value_blob(values[0]));
@@ -49,6 +67,17 @@ void PayloadProblemFunction(sqlite3_context* context, int, sqlite3_value** value
   if (!problem) return sqlite3_result_null(context);
   sqlite3_result_text(context, problem->c_str(), static_cast<int>(problem->size()),
                       SQLITE_TRANSIENT);
+}
+
+// Throws the refusal of merge source `path` for the artifact on `row`
+// (columns: map name, stage, key) and what is wrong with it.
+[[noreturn]] void RefuseDamagedMergeSource(const std::string& path, const SqliteStatement& row,
+                                           const std::string& what) {
+  throw StoreError("store '" + path + "' is damaged: artifact " +
+                   ShortKey(row.ColumnText(2, "artifacts.cache_key")) + " of map '" +
+                   row.ColumnText(0, "maps.name") + "' (" + row.ColumnText(1, "artifacts.stage") +
+                   ") " + what + "; nothing was merged from it (ag-store verify --store " + path +
+                   " lists the problems)");
 }
 
 // Closes a connection that is not a store's own (a backup's destination).
@@ -73,7 +102,11 @@ std::vector<std::string> SqliteArtifactStore::CheckStructure(const char* schema,
   try {
     while (check.Step()) {
       const std::string row = check.ColumnText(0, "integrity_check");
-      if (row != "ok") findings.push_back(row);
+      if (row == "ok") continue;
+      // One row may hold several findings, a line each (the b-tree checks').
+      for (const std::string& line : store_internal::SplitLines(row)) {
+        if (!line.empty()) findings.push_back(line);
+      }
     }
   } catch (const StoreError&) {
     // Damage can stop the check itself; that is its finding.
@@ -97,12 +130,26 @@ void SqliteArtifactStore::CheckMergeSourcePayloads(const std::string& path, int 
                        "merging: checking the payloads of '" + path + "'");
   StatementUse use(find);
   if (!find.Step()) return;
-  throw StoreError("store '" + path + "' is damaged: artifact " +
-                   ShortKey(find.ColumnText(2, "artifacts.cache_key")) + " of map '" +
-                   find.ColumnText(0, "maps.name") + "' (" + find.ColumnText(1, "artifacts.stage") +
-                   ") has a corrupt payload (" + find.ColumnText(3, "problem") +
-                   "); nothing was merged from it (ag-store verify --store " + path +
-                   " lists the problems)");
+  RefuseDamagedMergeSource(path, find,
+                           "has a corrupt payload (" + find.ColumnText(3, "problem") + ")");
+}
+
+void store_internal::RegisterRowDigestFunction(sqlite3* db, const std::string& path) {
+  CheckSqlite(db, path,
+              sqlite3_create_function_v2(db, "ag_row_digest", 10,
+                                         SQLITE_UTF8 | SQLITE_DETERMINISTIC | SQLITE_DIRECTONLY,
+                                         nullptr, RowDigestFunction, nullptr, nullptr, nullptr),
+              "registering the row digest");
+}
+
+void SqliteArtifactStore::CheckMergeSourceRows(const std::string& path, int source_version) {
+  if (source_version < 6) return;  // no row digests to check
+  SqliteStatement find(db_, path_, store_sql::kFindDamagedMergeRow,
+                       "merging: checking the rows of '" + path + "'");
+  StatementUse use(find);
+  if (!find.Step()) return;
+  RefuseDamagedMergeSource(
+      path, find, std::string("has a damaged row (") + store_internal::kRowDigestMismatch + ")");
 }
 
 bool HasWriteAheadLog(const std::string& path) {
@@ -122,7 +169,7 @@ bool SqliteArtifactStore::FoldWriteAheadLog() {
       sqlite3_wal_checkpoint_v2(db_, "main", SQLITE_CHECKPOINT_TRUNCATE, nullptr, nullptr);
   sqlite3_busy_timeout(db_, kStoreBusyTimeoutMs);
   if ((rc & 0xff) == SQLITE_BUSY || (rc & 0xff) == SQLITE_LOCKED) return false;
-  CheckSqlite(db_, path_, rc, "folding the write-ahead log into the store file");
+  if (rc != SQLITE_OK) throw StoreError(UnfoldedLogMessage(path_, SqliteReason(db_, rc)));
   return true;
 }
 
@@ -134,12 +181,36 @@ void SqliteArtifactStore::LeaveWriteAheadLogOnClose() {
   fold_on_close_ = false;
 }
 
+namespace {
+
+std::mutex unfolded_log_mutex;
+std::optional<std::string> unfolded_log_problem;
+
+}  // namespace
+
+std::string UnfoldedLogMessage(const std::string& path, const std::string& why) {
+  return "the write-ahead log could not be folded into store '" + path + "' (" + why + "): '" +
+         path + "-wal' holds commits that '" + path +
+         "' alone lacks; keep the two together until a later tool folds it (ag-store verify "
+         "does, once there is room)";
+}
+
+std::optional<std::string> TakeUnfoldedLogProblem() {
+  const std::lock_guard<std::mutex> lock(unfolded_log_mutex);
+  std::optional<std::string> problem;
+  problem.swap(unfolded_log_problem);
+  return problem;
+}
+
 SqliteArtifactStore::~SqliteArtifactStore() {
   if (!fold_on_close_) return;
   try {
     FoldWriteAheadLog();
-  } catch (const StoreError&) {
-    // The log stays; SQLite replays it on the next open, so nothing is lost.
+  } catch (const StoreError& error) {
+    // The log stays and SQLite replays it on the next open, so nothing is
+    // lost; but the file alone is not the store until then.
+    const std::lock_guard<std::mutex> lock(unfolded_log_mutex);
+    unfolded_log_problem = error.what();
   }
 }
 

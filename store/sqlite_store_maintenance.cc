@@ -15,7 +15,9 @@
 #include "store/digest.h"
 #include "store/payload_codec.h"
 #include "store/protobuf_wire.h"
+#include "store/row_digest.h"
 #include "store/sqlite_artifact_store.h"
+#include "store/sqlite_connection.h"
 #include "store/sqlite_store_maintenance_sql.h"
 #include "store/store_maintenance.h"
 
@@ -55,21 +57,6 @@ class MergeSourceAttachment {
  private:
   sqlite3* db_;
 };
-
-// A URI that opens `path` read-only (this SQLite build interprets URIs).
-std::string ReadOnlyUri(const std::string& path) {
-  std::string uri = "file:";
-  for (const unsigned char c : path) {
-    if (std::isalnum(c) || c == '/' || c == '.' || c == '_' || c == '-' || c == '~') {
-      uri += static_cast<char>(c);
-    } else {
-      char escaped[4];
-      std::snprintf(escaped, sizeof(escaped), "%%%02X", c);
-      uri += escaped;
-    }
-  }
-  return uri + "?mode=ro";
-}
 
 // Runs one statement to its end and returns how many rows it changed.
 int64_t Run(sqlite3* db, const std::string& store_path, const char* sql,
@@ -112,10 +99,11 @@ void SqliteArtifactStore::CheckArtifacts(const std::vector<std::string>& file_in
     count.Step();
     total = count.ColumnInt64(0, "count(*)");
   }
-  SqliteStatement rows(
-      db_, path_,
-      HasPayloadCodecs() ? store_sql::kVerifyArtifacts : store_sql::kVerifyArtifactsBeforeSchema5,
-      "verifying the artifacts");
+  SqliteStatement rows(db_, path_,
+                       HasRowDigests()      ? store_sql::kVerifyArtifacts
+                       : HasPayloadCodecs() ? store_sql::kVerifyArtifactsBeforeSchema6
+                                            : store_sql::kVerifyArtifactsBeforeSchema5,
+                       "verifying the artifacts");
   StatementUse use(rows);
   int64_t done = 0;
   while (rows.Step()) {  // one payload in memory at a time
@@ -141,6 +129,17 @@ void SqliteArtifactStore::CheckArtifactRow(SqliteStatement& row,
     found.cache_key = row.ColumnText(5, "artifacts.cache_key");
     if (row.ColumnInt64(2, "maps.id") == 0) {
       return report("artifact row " + std::to_string(id) + " belongs to no map");
+    }
+    const std::string row_digest = row.ColumnText(15, "artifacts.row_digest");
+    if (!row_digest.empty() &&
+        ArtifactRowDigest(
+            {found.map_name, found.stage, found.cache_key,
+             row.ColumnText(6, "artifacts.input_keys"), row.ColumnText(10, "artifacts.options"),
+             row.ColumnInt64(11, "artifacts.stage_version"),
+             row.ColumnText(12, "artifacts.proto_type"),
+             row.ColumnText(7, "artifacts.payload_digest"), row.ColumnText(13, "artifacts.summary"),
+             row.ColumnText(14, "artifacts.created_at")}) != row_digest) {
+      report(store_internal::kRowDigestMismatch);  // and the payload is checked too
     }
     const std::optional<std::string> damage = store_internal::PayloadProblem(
         row.ColumnBlobView(8, "artifacts.payload"), row.ColumnInt64(9, "artifacts.payload_codec"),
@@ -260,7 +259,7 @@ MaintenanceCounts SqliteArtifactStore::MergeFrom(const std::string& path) {
     SqliteStatement attach(db_, path_, store_sql::kAttachMergeSource,
                            "attaching store '" + path + "'");
     StatementUse use(attach);
-    attach.BindText(1, ReadOnlyUri(path));
+    attach.BindText(1, StoreUri(path, ChooseReadAccess(path)));
     attach.Step();
   }
   MergeSourceAttachment attachment(db_);
@@ -275,7 +274,9 @@ MaintenanceCounts SqliteArtifactStore::MergeFrom(const std::string& path) {
   if (source_version < 1 || source_version > kStoreSchemaVersion) {  // changed since checked
     throw StoreError("store '" + path + "' changed while being merged; try again");
   }
-  const std::vector<std::string> findings = CheckStructure("merge_source", StructureCheck::kQuick);
+  // The full check: an index out of step with its table (a damaged key or
+  // name) would otherwise steer the lookups below to the wrong rows.
+  const std::vector<std::string> findings = CheckStructure("merge_source", StructureCheck::kFull);
   if (!findings.empty()) {
     throw StoreError("store '" + path + "' is damaged (SQLite: " + findings.front() +
                      "); nothing was merged from it (ag-store verify --store " + path +
@@ -301,11 +302,14 @@ MaintenanceCounts SqliteArtifactStore::CopyFromMergeSource(const std::string& pa
     count.Step();
     counts.payload_bytes = count.ColumnInt64(1, "sum(length(payload))");
   }
-  CheckMergeSourcePayloads(path, source_version);  // under the write lock: what is copied next
-  counts.artifacts = run(store_internal::ForSchema(source_version, store_sql::kMergeArtifacts,
-                                                   store_sql::kMergeArtifactsBeforeSchema5,
-                                                   store_sql::kMergeArtifactsBeforeSchema3),
-                         "copying artifacts");
+  // Under the write lock: what is copied next.
+  CheckMergeSourceRows(path, source_version);
+  CheckMergeSourcePayloads(path, source_version);
+  counts.artifacts =
+      run(store_internal::ForSchema(
+              source_version, store_sql::kMergeArtifacts, store_sql::kMergeArtifactsBeforeSchema6,
+              store_sql::kMergeArtifactsBeforeSchema5, store_sql::kMergeArtifactsBeforeSchema3),
+          "copying artifacts");
   run(store_sql::kCreateWinningHeads, "comparing heads");
   run(store_sql::kFindWinningHeads, "comparing heads");
   run(store_sql::kMergeMapSources, "updating map sources");

@@ -3,6 +3,8 @@
 // The SQL of the store's maintenance (ag-store verify, gc and merge). Unlike
 // the lookups in sqlite_store_sql.h these read whole tables on purpose; they
 // run once per command, not once per stage.
+#include "store/sqlite_store_sql.h"
+
 namespace areagraph::store_sql {
 
 // --- Verify ---------------------------------------------------------------
@@ -14,13 +16,20 @@ inline constexpr char kCountArtifacts[] = "SELECT count(*) FROM artifacts";
 
 // Every artifact with its payload, in storage order; the caller holds one
 // row at a time. A row whose map is gone (hand-edited file) still shows up.
-// Before schema 5 every payload is raw.
-#define AG_VERIFY_ARTIFACTS(codec)                                                       \
+// Before schema 5 every payload is raw; before schema 6 rows have no digest
+// (the columns it covers are then not read).
+#define AG_VERIFY_ARTIFACTS(codec, row_columns)                                          \
   "SELECT a.id, a.map_id, m.id IS NOT NULL, coalesce(m.name, ''), a.stage, a.cache_key," \
-  " a.input_keys, a.payload_digest, a.payload, " codec                                   \
+  " a.input_keys, a.payload_digest, a.payload, " codec ", " row_columns                  \
   " FROM artifacts a LEFT JOIN maps m ON m.id = a.map_id ORDER BY a.id"
-inline constexpr char kVerifyArtifacts[] = AG_VERIFY_ARTIFACTS("a.payload_codec");
-inline constexpr char kVerifyArtifactsBeforeSchema5[] = AG_VERIFY_ARTIFACTS("0");
+inline constexpr char kVerifyArtifacts[] =
+    AG_VERIFY_ARTIFACTS("a.payload_codec",
+                        "a.options, a.stage_version, a.proto_type, a.summary, a.created_at,"
+                        " a.row_digest");
+inline constexpr char kVerifyArtifactsBeforeSchema6[] =
+    AG_VERIFY_ARTIFACTS("a.payload_codec", "'', 0, '', '', '', ''");
+inline constexpr char kVerifyArtifactsBeforeSchema5[] =
+    AG_VERIFY_ARTIFACTS("0", "'', 0, '', '', '', ''");
 #undef AG_VERIFY_ARTIFACTS
 
 // Heads that do not point at an artifact of their own map and stage.
@@ -99,27 +108,39 @@ inline constexpr char kFindDamagedMergePayload[] =
 inline constexpr char kFindDamagedMergePayloadBeforeSchema5[] = AG_FIND_DAMAGED_MERGE_PAYLOAD("0");
 #undef AG_FIND_DAMAGED_MERGE_PAYLOAD
 
-// Copies rows verbatim, creation time and payload codec included; an existing
-// key is kept. A source older than schema 3 has no summary lines, one older
-// than schema 5 only uncompressed payloads.
-#define AG_MERGE_ARTIFACTS(summary, codec, size)                                              \
+// The first artifact row of the source whose columns do not match its row
+// digest (schema 6): a damaged key, input, option, summary or time.
+inline constexpr char kFindDamagedMergeRow[] =
+    "SELECT sm.name, sa.stage, sa.cache_key FROM merge_source.artifacts sa"
+    " JOIN merge_source.maps sm ON sm.id = sa.map_id"
+    " WHERE sa.row_digest != " AG_ROW_DIGEST_OF("sa", "sm.name",
+                                                "sa.summary") " ORDER BY sa.id LIMIT 1";
+
+// Copies rows verbatim, creation time, payload codec and row digest
+// included; an existing key is kept. A source older than schema 3 has no
+// summary lines, one older than schema 5 only uncompressed payloads, one
+// older than 6 no row digests (they are made here).
+#define AG_MERGE_ARTIFACTS(summary, codec, size, digest)                                      \
   "INSERT INTO main.artifacts (map_id, stage, cache_key, input_keys, options, stage_version," \
   " proto_type, payload, payload_digest, created_at, elapsed_ms, summary, payload_codec,"     \
-  " payload_size)"                                                                            \
+  " payload_size, row_digest)"                                                                \
   " SELECT mm.id, sa.stage, sa.cache_key, sa.input_keys, sa.options, sa.stage_version,"       \
   " sa.proto_type, sa.payload, sa.payload_digest, sa.created_at, sa.elapsed_ms, " summary     \
-  ", " codec ", " size                                                                        \
+  ", " codec ", " size ", " digest                                                            \
   " FROM merge_source.artifacts sa"                                                           \
   " JOIN merge_source.maps sm ON sm.id = sa.map_id"                                           \
   " JOIN main.maps mm ON mm.name = sm.name"                                                   \
   " WHERE true"                                                                               \
   " ON CONFLICT (map_id, cache_key) DO NOTHING"
 inline constexpr char kMergeArtifacts[] =
-    AG_MERGE_ARTIFACTS("sa.summary", "sa.payload_codec", "sa.payload_size");
-inline constexpr char kMergeArtifactsBeforeSchema5[] =
-    AG_MERGE_ARTIFACTS("sa.summary", "0", "length(sa.payload)");
+    AG_MERGE_ARTIFACTS("sa.summary", "sa.payload_codec", "sa.payload_size", "sa.row_digest");
+inline constexpr char kMergeArtifactsBeforeSchema6[] =
+    AG_MERGE_ARTIFACTS("sa.summary", "sa.payload_codec", "sa.payload_size",
+                       AG_ROW_DIGEST_OF("sa", "sm.name", "sa.summary"));
+inline constexpr char kMergeArtifactsBeforeSchema5[] = AG_MERGE_ARTIFACTS(
+    "sa.summary", "0", "length(sa.payload)", AG_ROW_DIGEST_OF("sa", "sm.name", "sa.summary"));
 inline constexpr char kMergeArtifactsBeforeSchema3[] =
-    AG_MERGE_ARTIFACTS("''", "0", "length(sa.payload)");
+    AG_MERGE_ARTIFACTS("''", "0", "length(sa.payload)", AG_ROW_DIGEST_OF("sa", "sm.name", "''"));
 #undef AG_MERGE_ARTIFACTS
 
 // The source's heads that win, as ids of this store: where this store has no

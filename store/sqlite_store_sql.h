@@ -33,6 +33,7 @@ CREATE TABLE IF NOT EXISTS artifacts (
   summary TEXT NOT NULL DEFAULT '',
   payload_codec INTEGER NOT NULL DEFAULT 0,
   payload_size INTEGER NOT NULL DEFAULT 0,
+  row_digest TEXT NOT NULL DEFAULT '',
   UNIQUE (map_id, cache_key))
 )sql";
 
@@ -49,6 +50,18 @@ inline constexpr char kAddPayloadCodecColumn[] =
 inline constexpr char kAddPayloadSizeColumn[] =
     "ALTER TABLE artifacts ADD COLUMN payload_size INTEGER NOT NULL DEFAULT 0";
 inline constexpr char kFillPayloadSizes[] = "UPDATE artifacts SET payload_size = length(payload)";
+
+// Schema 6: the digest of the row's other columns (store/row_digest.h), so
+// that damage to a key, an option or a summary is found like damage to a
+// payload. ag_row_digest is the SQL form of ArtifactRowDigest, which every
+// store connection registers; rows of an upgraded store get theirs here.
+inline constexpr char kAddRowDigestColumn[] =
+    "ALTER TABLE artifacts ADD COLUMN row_digest TEXT NOT NULL DEFAULT ''";
+#define AG_ROW_DIGEST_OF(a, map_name, summary)                                                    \
+  "ag_row_digest(" map_name ", " a ".stage, " a ".cache_key, " a ".input_keys, " a ".options, " a \
+  ".stage_version, " a ".proto_type, " a ".payload_digest, " summary ", " a ".created_at)"
+inline constexpr char kFillRowDigests[] = "UPDATE artifacts SET row_digest = " AG_ROW_DIGEST_OF(
+    "artifacts", "(SELECT name FROM maps WHERE maps.id = artifacts.map_id)", "artifacts.summary");
 
 // Listing a map's artifacts oldest first reads this index in order.
 inline constexpr char kCreateArtifactsByTimeIndex[] = R"sql(
@@ -90,57 +103,66 @@ inline constexpr char kReadMap[] =
 
 // Artifact reads share their first columns; see ReadArtifactRow. Each comes
 // in forms for older stores opened read-only, whose artifacts have no summary
-// column (before schema 3) or no payload codec (before schema 5).
-#define AG_ARTIFACT_COLUMNS(summary)                                               \
+// column (before schema 3), no payload codec (before schema 5) or no row
+// digest (before schema 6).
+#define AG_ARTIFACT_COLUMNS(summary, digest)                                       \
   "a.stage, a.cache_key, a.input_keys, a.options, a.stage_version, a.proto_type, " \
-  "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL, " summary
+  "a.payload_digest, a.created_at, a.elapsed_ms, h.artifact_id IS NOT NULL, " summary ", " digest
 #define AG_JOIN_HEAD_OF_ARTIFACT \
   " LEFT JOIN heads h ON h.map_id = a.map_id AND h.stage = a.stage AND h.artifact_id = a.id"
-#define AG_READ_ARTIFACT(summary, codec)                                       \
-  "SELECT " AG_ARTIFACT_COLUMNS(                                               \
-      summary) ", a.payload, " codec                                           \
-               " FROM maps m"                                                  \
-               " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
-               " WHERE m.name = ?1 AND a.cache_key = ?2"
-#define AG_READ_HEAD(summary, codec)                                                 \
-  "SELECT " AG_ARTIFACT_COLUMNS(summary) ", a.payload, " codec                       \
-                                         " FROM maps m"                              \
-                                         " JOIN heads h ON h.map_id = m.id"          \
-                                         " JOIN artifacts a ON a.id = h.artifact_id" \
-                                         " WHERE m.name = ?1 AND h.stage = ?2"
+#define AG_READ_ARTIFACT(summary, codec, digest)                                       \
+  "SELECT " AG_ARTIFACT_COLUMNS(                                                       \
+      summary, digest) ", a.payload, " codec                                           \
+                       " FROM maps m"                                                  \
+                       " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
+                       " WHERE m.name = ?1 AND a.cache_key = ?2"
+#define AG_READ_HEAD(summary, codec, digest)                                                 \
+  "SELECT " AG_ARTIFACT_COLUMNS(summary, digest) ", a.payload, " codec                       \
+                                                 " FROM maps m"                              \
+                                                 " JOIN heads h ON h.map_id = m.id"          \
+                                                 " JOIN artifacts a ON a.id = h.artifact_id" \
+                                                 " WHERE m.name = ?1 AND h.stage = ?2"
 // Summaries carry the message's size: from payload_size (schema 5) or, in
 // older stores, length(), which reads a BLOB's size without loading it.
-#define AG_READ_ARTIFACT_SUMMARIES(summary, size)                              \
-  "SELECT " AG_ARTIFACT_COLUMNS(                                               \
-      summary) ", " size                                                       \
-               " FROM maps m"                                                  \
-               " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
-               " WHERE m.name = ?1 ORDER BY a.created_at, a.id"
-#define AG_READ_ARTIFACT_SUMMARY(summary, size)                                \
-  "SELECT " AG_ARTIFACT_COLUMNS(                                               \
-      summary) ", " size                                                       \
-               " FROM maps m"                                                  \
-               " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
-               " WHERE m.name = ?1 AND a.cache_key = ?2"
+#define AG_READ_ARTIFACT_SUMMARIES(summary, size, digest)                              \
+  "SELECT " AG_ARTIFACT_COLUMNS(                                                       \
+      summary, digest) ", " size                                                       \
+                       " FROM maps m"                                                  \
+                       " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
+                       " WHERE m.name = ?1 ORDER BY a.created_at, a.id"
+#define AG_READ_ARTIFACT_SUMMARY(summary, size, digest)                                \
+  "SELECT " AG_ARTIFACT_COLUMNS(                                                       \
+      summary, digest) ", " size                                                       \
+                       " FROM maps m"                                                  \
+                       " JOIN artifacts a ON a.map_id = m.id" AG_JOIN_HEAD_OF_ARTIFACT \
+                       " WHERE m.name = ?1 AND a.cache_key = ?2"
 
-inline constexpr char kReadArtifact[] = AG_READ_ARTIFACT("a.summary", "a.payload_codec");
-inline constexpr char kReadHead[] = AG_READ_HEAD("a.summary", "a.payload_codec");
-inline constexpr char kReadArtifactBeforeSchema5[] = AG_READ_ARTIFACT("a.summary", "0");
-inline constexpr char kReadHeadBeforeSchema5[] = AG_READ_HEAD("a.summary", "0");
+inline constexpr char kReadArtifact[] =
+    AG_READ_ARTIFACT("a.summary", "a.payload_codec", "a.row_digest");
+inline constexpr char kReadHead[] = AG_READ_HEAD("a.summary", "a.payload_codec", "a.row_digest");
 inline constexpr char kReadArtifactSummaries[] =
-    AG_READ_ARTIFACT_SUMMARIES("a.summary", "a.payload_size");
+    AG_READ_ARTIFACT_SUMMARIES("a.summary", "a.payload_size", "a.row_digest");
 inline constexpr char kReadArtifactSummary[] =
-    AG_READ_ARTIFACT_SUMMARY("a.summary", "a.payload_size");
+    AG_READ_ARTIFACT_SUMMARY("a.summary", "a.payload_size", "a.row_digest");
+inline constexpr char kReadArtifactBeforeSchema6[] =
+    AG_READ_ARTIFACT("a.summary", "a.payload_codec", "''");
+inline constexpr char kReadHeadBeforeSchema6[] = AG_READ_HEAD("a.summary", "a.payload_codec", "''");
+inline constexpr char kReadArtifactSummariesBeforeSchema6[] =
+    AG_READ_ARTIFACT_SUMMARIES("a.summary", "a.payload_size", "''");
+inline constexpr char kReadArtifactSummaryBeforeSchema6[] =
+    AG_READ_ARTIFACT_SUMMARY("a.summary", "a.payload_size", "''");
+inline constexpr char kReadArtifactBeforeSchema5[] = AG_READ_ARTIFACT("a.summary", "0", "''");
+inline constexpr char kReadHeadBeforeSchema5[] = AG_READ_HEAD("a.summary", "0", "''");
 inline constexpr char kReadArtifactSummariesBeforeSchema5[] =
-    AG_READ_ARTIFACT_SUMMARIES("a.summary", "length(a.payload)");
+    AG_READ_ARTIFACT_SUMMARIES("a.summary", "length(a.payload)", "''");
 inline constexpr char kReadArtifactSummaryBeforeSchema5[] =
-    AG_READ_ARTIFACT_SUMMARY("a.summary", "length(a.payload)");
-inline constexpr char kReadArtifactBeforeSchema3[] = AG_READ_ARTIFACT("''", "0");
-inline constexpr char kReadHeadBeforeSchema3[] = AG_READ_HEAD("''", "0");
+    AG_READ_ARTIFACT_SUMMARY("a.summary", "length(a.payload)", "''");
+inline constexpr char kReadArtifactBeforeSchema3[] = AG_READ_ARTIFACT("''", "0", "''");
+inline constexpr char kReadHeadBeforeSchema3[] = AG_READ_HEAD("''", "0", "''");
 inline constexpr char kReadArtifactSummariesBeforeSchema3[] =
-    AG_READ_ARTIFACT_SUMMARIES("''", "length(a.payload)");
+    AG_READ_ARTIFACT_SUMMARIES("''", "length(a.payload)", "''");
 inline constexpr char kReadArtifactSummaryBeforeSchema3[] =
-    AG_READ_ARTIFACT_SUMMARY("''", "length(a.payload)");
+    AG_READ_ARTIFACT_SUMMARY("''", "length(a.payload)", "''");
 
 #undef AG_ARTIFACT_COLUMNS
 #undef AG_JOIN_HEAD_OF_ARTIFACT
@@ -164,16 +186,16 @@ ON CONFLICT (name) DO UPDATE SET
 // pointing at it stay valid.
 inline constexpr char kUpsertArtifact[] = R"sql(
 INSERT INTO artifacts (map_id, stage, cache_key, input_keys, options, stage_version, proto_type,
-                       payload, payload_digest, created_at, elapsed_ms, summary, payload_codec, payload_size)
-VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, strftime('%Y-%m-%dT%H:%M:%fZ', 'now'), ?10, ?11, ?12,
-        ?13)
+                       payload, payload_digest, created_at, elapsed_ms, summary, payload_codec,
+                       payload_size, row_digest)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?14, ?10, ?11, ?12, ?13, ?15)
 ON CONFLICT (map_id, cache_key) DO UPDATE SET
   stage = excluded.stage, input_keys = excluded.input_keys, options = excluded.options,
   stage_version = excluded.stage_version, proto_type = excluded.proto_type,
   payload = excluded.payload, payload_digest = excluded.payload_digest,
   created_at = excluded.created_at, elapsed_ms = excluded.elapsed_ms,
   summary = excluded.summary, payload_codec = excluded.payload_codec,
-  payload_size = excluded.payload_size)sql";
+  payload_size = excluded.payload_size, row_digest = excluded.row_digest)sql";
 
 inline constexpr char kReadArtifactId[] =
     "SELECT id FROM artifacts WHERE map_id = ?1 AND cache_key = ?2";

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/map_name.h"
 #include "runner/live/lcm_conversion.h"
 #include "stages/common/pipeline_options_check.h"
 #include "stages/import/import_stage.h"
@@ -65,7 +66,7 @@ areagraph_lcm::grid_map_t ToLcmGridMap(const std::string& map_name, int64_t utim
 
 proto::GridMap GridMapFromLcm(const areagraph_lcm::grid_map_t& message, int64_t max_cells) {
   try {
-    CheckLcmMapName(message.name);
+    CheckMapName(message.name);
   } catch (const InputError& error) {
     throw InputError(std::string("grid_map_t: ") + error.what());
   }

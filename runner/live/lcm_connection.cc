@@ -5,6 +5,8 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/stderr_capture.h"
+#include "common/text.h"
 
 namespace areagraph {
 namespace {
@@ -15,6 +17,12 @@ std::vector<std::string> Split(const std::string& text, char separator) {
   std::string part;
   while (std::getline(in, part, separator)) parts.push_back(part);
   return parts;
+}
+
+// What the LCM library printed, as " (LCM: ...)" on one line; "" when nothing.
+std::string LibraryWords(const std::string& printed) {
+  const std::string line = OneLine(printed);
+  return line.empty() ? "" : " (LCM: " + line + ")";
 }
 
 }  // namespace
@@ -63,9 +71,17 @@ std::string ReceivingLcmUrl(const std::string& url) {
 
 std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url) {
   const std::string local_url = HostLocalLcmUrl(url);
-  auto lcm = std::make_unique<lcm::LCM>(local_url);
+  std::unique_ptr<lcm::LCM> lcm;
+  std::string complaint;
+  {
+    // The LCM library prints its own lines on a failure; they become part
+    // of the one line of the error instead.
+    ScopedStderrCapture capture;
+    lcm = std::make_unique<lcm::LCM>(local_url);
+    complaint = capture.Text();
+  }
   if (!lcm->good()) {
-    std::string message = "cannot open LCM at '" + local_url + "'";
+    std::string message = "cannot open LCM at '" + local_url + "'" + LibraryWords(complaint);
     if (local_url.rfind("udpm://", 0) == 0) {
       message += ": check the multicast address and port; " + MulticastRouteHint();
     }
@@ -75,8 +91,15 @@ std::unique_ptr<lcm::LCM> OpenLcm(const std::string& url) {
 }
 
 void StartReceiving(lcm::LCM& lcm, const std::string& url) {
-  if (lcm.getFileno() < 0) {
-    std::string message = "cannot receive on LCM at '" + url + "'";
+  int fileno = -1;
+  std::string complaint;
+  {
+    ScopedStderrCapture capture;  // udpm opens its receiving socket here
+    fileno = lcm.getFileno();
+    complaint = capture.Text();
+  }
+  if (fileno < 0) {
+    std::string message = "cannot receive on LCM at '" + url + "'" + LibraryWords(complaint);
     if (url.rfind("udpm://", 0) == 0) message += "; " + MulticastRouteHint();
     throw Error(message);
   }

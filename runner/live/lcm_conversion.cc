@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/map_name.h"
 #include "runner/live/lcm_message_bounds.h"
 #include "stages/common/map_frame.h"
 #include "stages/common/stage_info.h"
@@ -224,7 +225,7 @@ areagraph_lcm::area_graph_diff_t ToLcmAreaGraphDiff(const std::string& map_name,
 
 proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
   const std::string& name = message.map_name;
-  CheckLcmMapName(name);
+  CheckMapName(name);
   if (!(message.resolution_m > 0) || !std::isfinite(message.resolution_m)) {
     Reject(name, "resolution_m must be positive and finite");
   }
@@ -320,23 +321,6 @@ proto::AreaGraph AreaGraphFromLcm(const areagraph_lcm::area_graph_t& message) {
     version->set_next_passage_id(passage_index.empty() ? 0 : passage_index.rbegin()->first + 1);
   }
   return graph;
-}
-
-void CheckLcmMapName(const std::string& name) {
-  if (name.empty() || name.size() > 256) {
-    throw InputError("map name must have 1 to 256 characters, got " + std::to_string(name.size()));
-  }
-  // '/' is allowed: ag-run names the maps of a directory by their relative path.
-  for (char c : name) {
-    const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                         (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.' || c == '/';
-    if (!allowed) {
-      throw InputError("map name may only hold letters, digits, '_', '-', '.' and '/'");
-    }
-  }
-  if (name.front() == '/' || ("/" + name + "/").find("/../") != std::string::npos) {
-    throw InputError("map name '" + name + "' must not start with '/' or contain '..'");
-  }
 }
 
 namespace {

@@ -65,10 +65,6 @@ areagraph_lcm::grid_map_t ToLcmGridMap(const std::string& map_name, int64_t utim
 proto::GridMap GridMapFromLcm(const areagraph_lcm::grid_map_t& message,
                               int64_t max_cells = kMaxLcmGridCells);
 
-// Throws InputError unless `name` is a usable map name from the network:
-// 1..256 characters from letters, digits, '_', '-', '.' and '/' (not leading, no '..').
-void CheckLcmMapName(const std::string& name);
-
 // Decodes a grid_map_t from raw LCM bytes. The cell count is checked against
 // the message size before decoding, so a forged count cannot make the decoder
 // allocate gigabytes. Throws InputError for anything that is not a whole

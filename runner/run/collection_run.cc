@@ -8,9 +8,11 @@
 #include <optional>
 #include <thread>
 
+#include "common/error.h"
 #include "common/json.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/run/fault_injection.h"
+#include "runner/run/interruption.h"
 #include "runner/run/process_pool.h"
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
@@ -29,7 +31,10 @@ std::vector<MapTask> TasksFrom(const RunFlags& flags, const proto::PipelineOptio
   std::optional<Shard> shard;
   if (!flags.shard.empty()) shard = ParseShard(flags.shard);
   std::vector<MapTask> tasks;
-  for (MapEntry& entry : CollectMaps(flags.maps)) {
+  std::vector<std::string> notes;
+  std::vector<MapEntry> entries = CollectMaps(flags.maps, &notes);
+  for (const std::string& note : notes) std::cerr << "ag-run: " << note << "\n";
+  for (MapEntry& entry : entries) {
     if (shard && !InShard(entry.name, *shard)) continue;
     proto::PipelineOptions map_options = OptionsForMap(options, entry);
     CheckPipelineOptions(map_options);
@@ -57,6 +62,24 @@ GraphPublisher MakePublisher(const std::string& url) {
 
 void RecordLeftoverFailures(ArtifactStore& store, const RunReport& report) {
   for (const FailureRecord& failure : report.UnrecordedFailures()) store.RecordFailure(failure);
+}
+
+// Records what no worker could and folds a log that no worker folded (the
+// last task crashed, the run was stopped, someone else had the store open).
+// Returns what to tell the user when the log could not be folded, or "" when
+// the file alone is the store (or another process still uses it and folds it
+// when it closes).
+std::string FinishStore(const std::string& store_path, const RunReport& report) {
+  if (report.UnrecordedFailures().empty() && !HasWriteAheadLog(store_path)) return "";
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path);
+  RecordLeftoverFailures(*store, report);
+  try {
+    store->FoldWriteAheadLog();
+  } catch (const StoreError& error) {
+    store->LeaveWriteAheadLogOnClose();  // said once, here
+    return error.what();
+  }
+  return "";
 }
 
 }  // namespace
@@ -117,22 +140,30 @@ int RunCollection(const RunFlags& flags, char** argv) {
         // own, which folds everyone's log into the file.
         if (last && worker) worker->CloseStore();
       });
-  pool.Run(static_cast<int>(tasks.size()));
+  {
+    const Interruption interruption;  // SIGINT, SIGTERM: stop, fold, say so
+    pool.StopWhen(&Interruption::signal());
+    pool.Run(static_cast<int>(tasks.size()));
+  }
   progress.Finish();
 
   proto::RunSummary summary = report.Summary(flags.jobs, flags.shard);
   summary.set_huge_page_restart(RestartedWithHugePageTunable());
-  if (!report.UnrecordedFailures().empty() || HasWriteAheadLog(settings.store_path)) {
-    // A crashed worker's map to record, or a log no worker folded (the last
-    // task crashed, or someone else had the store open): closing folds it.
-    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(settings.store_path);
-    RecordLeftoverFailures(*store, report);
+  const std::string unfolded = FinishStore(settings.store_path, report);
+  if (pool.stopped()) {
+    throw Error(std::string("stopped by ") + Interruption::SignalName(Interruption::signal()) +
+                " after " + std::to_string(summary.succeeded() + summary.failed()) + " of " +
+                std::to_string(tasks.size()) +
+                " maps; every map that finished is in the store, and the same command does the "
+                "rest" +
+                (unfolded.empty() ? "" : "; " + unfolded));
   }
   if (flags.json) {
     std::cout << MessageToJson(summary, /*with_defaults=*/true);
   } else {
     PrintSummary(summary, std::cout);
   }
+  if (!unfolded.empty()) throw Error(unfolded);
   return summary.failed() > 0 ? 1 : 0;
 }
 

@@ -2,15 +2,14 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <set>
+#include <sstream>
 
 #include "common/error.h"
+#include "common/input_file.h"
 
 namespace areagraph {
 namespace {
-
-constexpr char kUtf8ByteOrderMark[] = "\xEF\xBB\xBF";
 
 std::string Trim(const std::string& text) {
   const size_t first = text.find_first_not_of(" \t\r");
@@ -76,8 +75,7 @@ bool IsManifestPath(const std::string& path) {
 }
 
 ManifestTable ReadManifest(const std::string& path) {
-  std::ifstream file(path);
-  if (!file) throw InputError("cannot read manifest '" + path + "'");
+  std::istringstream file(ReadInputFile(path, "manifest '" + path + "'"));
   const bool csv = LowerCaseExtension(path) == ".csv";
   ManifestTable table;
   std::string line;
@@ -112,7 +110,6 @@ ManifestTable ReadManifest(const std::string& path) {
     }
     table.rows.push_back({number, std::move(cells)});
   }
-  if (file.bad()) throw InputError("cannot read manifest '" + path + "'");
   if (table.header.empty()) throw InputError("manifest '" + path + "' is empty");
   return table;
 }

@@ -6,6 +6,8 @@
 #include <set>
 
 #include "common/error.h"
+#include "common/input_file.h"
+#include "common/map_name.h"
 #include "runner/run/manifest_reader.h"
 #include "stages/common/pipeline_options.h"
 
@@ -14,13 +16,21 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void AddDirectory(const std::string& directory, std::vector<MapEntry>* entries) {
+void AddDirectory(const std::string& directory, std::vector<MapEntry>* entries,
+                  std::vector<std::string>* notes) {
   std::vector<fs::path> images;
   std::error_code error;
   for (fs::recursive_directory_iterator it(directory, error), end; !error && it != end;
        it.increment(error)) {
-    if (it->is_regular_file(error) && IsMapImagePath(it->path().string())) {
+    if (!IsMapImagePath(it->path().string())) continue;
+    if (it->is_regular_file(error)) {
       images.push_back(it->path());
+    } else if (const std::string kind = SpecialFileKind(it->path().string()); !kind.empty()) {
+      // Reading it could wait for ever (a FIFO) or never end (a device).
+      if (notes != nullptr) {
+        notes->push_back("skipping '" + it->path().string() + "': it is " + kind +
+                         ", not a regular file");
+      }
     }
   }
   if (error) {
@@ -88,12 +98,13 @@ bool IsMapImagePath(const std::string& path) {
   return kExtensions.count(LowerCaseExtension(path)) > 0;
 }
 
-std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments) {
+std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments,
+                                  std::vector<std::string>* notes) {
   std::vector<MapEntry> entries;
   for (const std::string& argument : arguments) {
     std::error_code error;
     if (fs::is_directory(argument, error)) {
-      AddDirectory(argument, &entries);
+      AddDirectory(argument, &entries, notes);
     } else if (!fs::exists(argument, error)) {
       throw InputError("'" + argument + "' does not exist");
     } else if (IsManifestPath(argument)) {
@@ -104,6 +115,12 @@ std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments) {
   }
   std::set<std::string> names;
   for (const MapEntry& entry : entries) {
+    try {
+      CheckMapName(entry.name);
+    } catch (const InputError& error) {
+      throw InputError(entry.origin + ": " + error.what() +
+                       " (rename the file, or give it a `name` in a manifest)");
+    }
     if (!names.insert(entry.name).second) {
       throw InputError(entry.origin + ": a second map named '" + entry.name +
                        "'; map names must be unique (give a `name` column in a manifest)");

@@ -30,10 +30,13 @@ bool IsMapImagePath(const std::string& path);
 //   `name` (optional) and option keys such as `cut.room_width_m`. Relative
 //   paths are relative to the manifest.
 // Throws InputError for a missing path, a directory without images, a
-// manifest without rows, an unreadable manifest row or two maps with the same
-// name, and OptionsError for a column that names no option; the message gives
-// the file and line.
-std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments);
+// manifest without rows, an unreadable manifest row, a name that breaks the
+// rule for map names (common/map_name.h) or two maps with the same name, and
+// OptionsError for a column that names no option; the message gives the file
+// and line. A file with an image's extension in a directory that is not a
+// regular file (a FIFO, a device) is skipped, with a line in `notes` saying so.
+std::vector<MapEntry> CollectMaps(const std::vector<std::string>& arguments,
+                                  std::vector<std::string>* notes = nullptr);
 
 // `base` with the entry's overrides applied. Throws OptionsError naming the
 // entry's origin.

@@ -127,6 +127,8 @@ void ProcessPool::StartWorker(Worker& worker, const std::vector<Worker>& workers
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (getppid() != parent) _exit(4);  // the parent died before prctl
     signal(SIGPIPE, SIG_DFL);
+    signal(SIGINT, SIG_IGN);   // the runner stops its workers itself
+    signal(SIGTERM, SIG_DFL);  // not the runner's handler
     for (const Worker& other : workers) {
       if (other.task_fd >= 0) close(other.task_fd);
       if (other.event_fd >= 0) close(other.event_fd);
@@ -225,10 +227,20 @@ void ProcessPool::Reap(Worker& worker) {
   if (task >= 0) on_task_end_(task, DescribeExit(status));
 }
 
+void ProcessPool::KillWorkers(std::vector<Worker>& workers) {
+  for (Worker& worker : workers) {
+    if (worker.pid < 0) continue;
+    kill(worker.pid, SIGKILL);
+    worker.task = -1;  // not run: nothing to report
+    Reap(worker);
+  }
+}
+
 void ProcessPool::Run(int task_count) {
   signal(SIGPIPE, SIG_IGN);  // a dead worker's pipe must not kill the runner
   task_count_ = task_count;
   next_task_ = 0;
+  stopped_ = false;
   std::vector<Worker> workers(static_cast<size_t>(std::max(1, std::min(jobs_, task_count))));
   if (task_count == 0) return;
   for (Worker& worker : workers) {
@@ -236,6 +248,11 @@ void ProcessPool::Run(int task_count) {
     Assign(worker);
   }
   while (true) {
+    if (stop_ != nullptr && *stop_ != 0) {
+      KillWorkers(workers);
+      stopped_ = true;
+      return;
+    }
     std::vector<pollfd> fds;
     std::vector<Worker*> owners;
     for (Worker& worker : workers) {

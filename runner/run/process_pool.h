@@ -1,5 +1,6 @@
 #pragma once
 
+#include <csignal>
 #include <functional>
 #include <string>
 #include <vector>
@@ -50,6 +51,15 @@ class ProcessPool {
   // Throws Error when a worker cannot be forked at all.
   void Run(int task_count);
 
+  // Makes Run stop as soon as `*flag` is non-zero (a signal handler sets
+  // it): the workers are killed (SIGKILL: their open transactions roll
+  // back) and reaped without reporting their tasks, which count as not run.
+  // Workers ignore SIGINT, which a terminal sends to all of them, so that
+  // the runner alone decides.
+  void StopWhen(const volatile std::sig_atomic_t* flag) { stop_ = flag; }
+  // Whether the last Run stopped that way.
+  bool stopped() const { return stopped_; }
+
  private:
   struct Worker;
   void StartWorker(Worker& worker, const std::vector<Worker>& workers);
@@ -59,6 +69,7 @@ class ProcessPool {
   void EndIdleWorkers(std::vector<Worker>& workers);
   bool ReadEvents(Worker& worker);
   void Reap(Worker& worker);
+  void KillWorkers(std::vector<Worker>& workers);
 
   int jobs_;
   Work work_;
@@ -68,6 +79,8 @@ class ProcessPool {
   OnWorkerEnd on_worker_end_;
   int next_task_ = 0;
   int task_count_ = 0;
+  const volatile std::sig_atomic_t* stop_ = nullptr;
+  bool stopped_ = false;
 };
 
 }  // namespace areagraph

@@ -2,12 +2,15 @@
 
 #include <iostream>
 #include <new>
+#include <optional>
 
 #include "common/error.h"
+#include "common/text.h"
 #include "common/version.h"
 #include "stages/common/output_file.h"
 #include "stages/common/pipeline_options.h"
 #include "stages/common/pipeline_options_check.h"
+#include "store/artifact_store.h"
 
 namespace areagraph {
 
@@ -59,21 +62,27 @@ int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
     std::cout << tool << ": " << version.what() << "\n";
     return FlushedExit(tool);
   } catch (const CLI::ParseError& e) {
-    std::cerr << tool << ": " << e.what() << " (see --help)\n";
+    std::cerr << tool << ": " << OneLine(e.what()) << " (see --help)\n";
     return 2;
   }
   try {
     const int exit_code = body();
     FlushStandardOutput();  // a report lost on a full disk is a failure
+    // A store closed by `body` whose log stayed beside it (a full disk):
+    // the file alone is not the store, which the user must know.
+    if (const std::optional<std::string> problem = TakeUnfoldedLogProblem()) {
+      std::cerr << tool << ": " << *problem << "\n";
+      return exit_code == 0 ? 1 : exit_code;
+    }
     return exit_code;
   } catch (const OptionsError& e) {
     // A bad option key, value or combination is bad usage, like a bad flag.
-    std::cerr << tool << ": " << e.what() << "\n";
+    std::cerr << tool << ": " << OneLine(e.what()) << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     std::cerr << tool << ": out of memory\n";
   } catch (const std::exception& e) {
-    std::cerr << tool << ": " << e.what() << "\n";
+    std::cerr << tool << ": " << OneLine(e.what()) << "\n";  // a library's may span lines
   }
   return 1;
 }

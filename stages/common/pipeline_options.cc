@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -14,6 +15,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/input_file.h"
 
 namespace areagraph {
 namespace {
@@ -168,18 +170,14 @@ proto::PipelineOptions ReadOptionsFile(const std::string& path) {
   if (std::filesystem::is_directory(path, error)) {
     throw InputError("options file '" + path + "' is a folder; name a .pbtxt file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError("cannot read options file '" + path + "'");
-  std::stringstream text;
-  text << in.rdbuf();
-  if (in.bad() || (!in.eof() && in.fail())) {
-    throw InputError("cannot read options file '" + path + "'");
-  }
+  std::string text = ReadInputFile(path, "options file '" + path + "'");
+  // Editors on some systems save UTF-8 with a byte-order mark; it is no part of the options.
+  if (text.rfind(kUtf8ByteOrderMark, 0) == 0) text.erase(0, std::strlen(kUtf8ByteOrderMark));
   proto::PipelineOptions options;
   google::protobuf::TextFormat::Parser parser;
   ErrorCollector errors;
   parser.RecordErrorsTo(&errors);
-  if (!parser.ParseFromString(RewriteAutoWords(text.str()), &options)) {
+  if (!parser.ParseFromString(RewriteAutoWords(text), &options)) {
     throw OptionsError("options file '" + path + "', " + errors.first_error);
   }
   NumbersTurnAutoOff(&options);

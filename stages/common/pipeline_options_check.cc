@@ -154,4 +154,11 @@ void CheckPipelineOptions(const proto::PipelineOptions& options) {
   CheckMatchOptions(options.match());
 }
 
+void CheckOutlineTolerance(const proto::MergeOptions& options, double room_width_m) {
+  if (!(room_width_m > 0) || options.outline_tolerance_m() < room_width_m / 2) return;
+  throw OptionsError("merge.outline_tolerance_m = " + FormatNumber(options.outline_tolerance_m()) +
+                     " m is not below half the room width W = " + FormatNumber(room_width_m) +
+                     " m of this map: outlines would stray across rooms");
+}
+
 }  // namespace areagraph

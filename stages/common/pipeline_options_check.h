@@ -30,6 +30,11 @@ void CheckCutOptions(const proto::CutOptions& options);
 void CheckMergeOptions(const proto::MergeOptions& options);
 void CheckMatchOptions(const proto::MatchOptions& options);
 
+// What depends on the map: merge.outline_tolerance_m must stay below half
+// the room width W that cut used (`room_width_m`; 0 when unknown), else an
+// outline may stray across a room to its other wall and leave slivers.
+void CheckOutlineTolerance(const proto::MergeOptions& options, double room_width_m);
+
 // All of the above: what every tool calls before it opens the store.
 void CheckPipelineOptions(const proto::PipelineOptions& options);
 

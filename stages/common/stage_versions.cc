@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "common/error.h"
+#include "common/text.h"
+
 namespace areagraph {
 
 VersionLink PreviousVersionOf(ArtifactStore& store, const std::string& map_name,
@@ -35,8 +38,16 @@ std::optional<std::string> NewestGraphKey(ArtifactStore& store, const std::strin
       store.ReadHeadKey(map_name, final_stage.inputs.front().name);
   if (!final_key || !input_key) return final_key ? final_key : input_key;
   const std::optional<ArtifactRecord> made = store.ReadArtifactSummary(map_name, *final_key);
-  const bool current = made && std::find(made->input_keys.begin(), made->input_keys.end(),
-                                         *input_key) != made->input_keys.end();
+  // A head that cannot be reached by its key is damage, never a reason to
+  // fall back to the graph without stable ids.
+  if (!made) {
+    throw StoreError(std::string("the ") + final_stage.info.name + " head " + ShortKey(*final_key) +
+                     " of map '" + map_name +
+                     "' cannot be found by its key: the store is damaged (ag-store verify lists "
+                     "the damage)");
+  }
+  const bool current = std::find(made->input_keys.begin(), made->input_keys.end(), *input_key) !=
+                       made->input_keys.end();
   return current ? final_key : input_key;
 }
 

@@ -29,7 +29,8 @@ std::vector<std::string> CacheKeyInputs(const std::vector<std::string>& input_ke
 // The key of a map's newest Area Graph: the final stage's head (match: the
 // graph with stable ids), unless the head of its first input (merge) is
 // newer than what it was made from, as after ag-merge alone; then that
-// input's head. nullopt when the map has neither.
+// input's head. nullopt when the map has neither; throws StoreError when the
+// final stage's head cannot be found by its key (a damaged row or index).
 std::optional<std::string> NewestGraphKey(ArtifactStore& store, const std::string& map_name);
 
 }  // namespace areagraph

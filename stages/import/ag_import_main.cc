@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "common/error.h"
+#include "common/map_name.h"
 #include "common/text.h"
 #include "stages/common/command_line.h"
 #include "stages/common/grid_cells.h"
@@ -37,6 +38,7 @@ int Import(StageCommandLine& flags, const std::string& image, const CLI::Option&
   }
   const std::string map_name = flags.map_name.empty() ? DefaultMapName(image) : flags.map_name;
   if (map_name.empty()) throw InputError("cannot name the map after '" + image + "'; use --name");
+  CheckMapName(map_name);
 
   // Everything that can be wrong with the input fails here, before the store.
   const proto::GridMap grid = ImportGridMap(source, options.import());

@@ -1,14 +1,13 @@
 #include "stages/import/import_stage.h"
 
 #include <filesystem>
-#include <fstream>
 #include <functional>
-#include <iterator>
 #include <memory>
 #include <system_error>
 #include <vector>
 
 #include "common/error.h"
+#include "common/input_file.h"
 #include "stages/common/pipeline_options_check.h"
 #include "stages/geometry/pool_tasks.h"
 #include "stages/import/grey_image.h"
@@ -19,17 +18,6 @@ namespace areagraph {
 namespace {
 
 namespace fs = std::filesystem;
-
-// `what` names the file for messages, e.g. "image 'a.png'".
-std::string ReadWholeFile(const std::string& path, const std::string& what) {
-  std::error_code error;
-  if (!fs::exists(path, error)) throw InputError(what + " does not exist");
-  if (fs::is_directory(path, error)) throw InputError(what + " is a directory");
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in.is_open() || in.bad()) throw InputError("cannot read " + what);
-  return bytes;
-}
 
 bool IsYamlPath(const std::string& path) {
   const std::string extension = fs::path(path).extension().string();
@@ -53,21 +41,21 @@ ImportSource ReadImportSource(const std::string& path) {
   source.given_path = path;
   if (IsYamlPath(path)) {
     source.yaml_path = path;
-    source.yaml_bytes = ReadWholeFile(path, "map YAML '" + path + "'");
+    source.yaml_bytes = ReadInputFile(path, "map YAML '" + path + "'");
     source.yaml = ParseMapYaml(source.yaml_bytes, path, /*image_required=*/true);
     source.image_path = source.yaml->image_path;
-    source.image_bytes = ReadWholeFile(
+    source.image_bytes = ReadInputFile(
         source.image_path, "image '" + source.image_path + "' (named in '" + path + "')");
     return source;
   }
   source.image_path = path;
-  source.image_bytes = ReadWholeFile(path, "image '" + path + "'");
+  source.image_bytes = ReadInputFile(path, "image '" + path + "'");
   // map_server keeps the metadata next to the image under the same stem.
   const std::string beside = fs::path(path).replace_extension(".yaml").string();
   std::error_code error;
   if (fs::is_regular_file(beside, error)) {
     source.yaml_path = beside;
-    source.yaml_bytes = ReadWholeFile(beside, "map YAML '" + beside + "'");
+    source.yaml_bytes = ReadInputFile(beside, "map YAML '" + beside + "'");
     // The image given on the command line wins over the YAML's `image` key.
     source.yaml = ParseMapYaml(source.yaml_bytes, beside, /*image_required=*/false);
   }

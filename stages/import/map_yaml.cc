@@ -48,6 +48,10 @@ class YamlReader {
   std::string String(const char* key) const {
     const YAML::Node node = root_[key];
     if (!node.IsScalar() || node.Scalar().empty()) Fail(std::string("'") + key + "' must be text");
+    // "map.png\0.txt" would open map.png: the file system ends a name at NUL.
+    if (node.Scalar().find('\0') != std::string::npos) {
+      Fail(std::string("'") + key + "' holds a NUL byte");
+    }
     return node.Scalar();
   }
 

@@ -1,10 +1,10 @@
 #include "stages/import/png_header.h"
 
 #include <exception>
-#include <fstream>
 #include <string>
 
 #include "common/error.h"
+#include "common/input_file.h"
 
 namespace areagraph {
 namespace {
@@ -52,12 +52,13 @@ PngHeader ReadPngHeader(std::string_view bytes, std::string_view path) {
 std::optional<int64_t> PngFilePixels(const std::string& path) {
   // The signature and the IHDR chunk: 8 + 4 + 4 + 13 + 4 bytes.
   constexpr size_t kHeaderBytes = 33;
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes(kHeaderBytes, '\0');
-  if (!in.read(bytes.data(), static_cast<std::streamsize>(kHeaderBytes)) ||
-      !HasPngSignature(bytes)) {
+  std::string bytes;
+  try {
+    bytes = ReadInputFile(path, "'" + path + "'", kHeaderBytes);  // never waits on a FIFO
+  } catch (const InputError&) {
     return std::nullopt;
   }
+  if (bytes.size() < kHeaderBytes || !HasPngSignature(bytes)) return std::nullopt;
   try {
     const PngHeader header = ReadPngHeader(bytes, path);
     return int64_t{header.width} * header.height;

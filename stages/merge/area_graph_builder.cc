@@ -112,6 +112,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   CheckMergeOptions(options);
   const CellGrid grid(map);
   CheckCutGraph(graph);
+  CheckOutlineTolerance(options, graph.room_width().room_width_m());
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);

@@ -29,7 +29,8 @@ NewArtifact Artifact(const std::string& map_name, const std::string& stage, cons
 }
 
 void SetCreatedAt(const std::string& path, const std::string& key, const std::string& time) {
-  ExecSql(path, "UPDATE artifacts SET created_at = '" + time + "' WHERE cache_key = '" + key + "'");
+  ExecSqlAndReseal(
+      path, "UPDATE artifacts SET created_at = '" + time + "' WHERE cache_key = '" + key + "'");
 }
 
 void SetFailedAt(const std::string& path, const std::string& map_name, const std::string& time) {

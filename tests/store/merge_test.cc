@@ -248,7 +248,8 @@ TEST_F(MergeTest, FailedMergeChangesNothingAndTheNextOneWorks) {
                    "PRAGMA writable_schema = ON;"
                    "UPDATE sqlite_master SET sql = replace(sql, 'created_at TEXT NOT NULL', "
                    "'created_at TEXT') WHERE name = 'artifacts';");
-  testing::ExecSql(bad, "UPDATE artifacts SET created_at = NULL WHERE cache_key = 'b1'");
+  // Sealed again: a row that passes its own check, so that the copy itself fails.
+  testing::ExecSqlAndReseal(bad, "UPDATE artifacts SET created_at = NULL WHERE cache_key = 'b1'");
   OpenArtifactStore(good)->WriteArtifact(Artifact("g", "clean", "g1", {"i"}));
 
   std::unique_ptr<ArtifactStore> store = OpenArtifactStore(main_path);

@@ -54,7 +54,9 @@ TEST(StoreCreationTest, NewFileHoldsTheWholeSchemaInWriteAheadModeAndNothingIsLe
     // While it is open: the file alone is already a whole store; the
     // temporary name is gone.
     const std::vector<std::string> facts = FileAlone(fast, elsewhere);
-    EXPECT_NE(std::find(facts.begin(), facts.end(), "user_version 5"), facts.end());
+    EXPECT_NE(std::find(facts.begin(), facts.end(),
+                        "user_version " + std::to_string(kStoreSchemaVersion)),
+              facts.end());
     EXPECT_NE(std::find(facts.begin(), facts.end(), "journal_mode wal"), facts.end());
     for (const std::string& name : FileNames(dir.path())) {
       EXPECT_TRUE(name == "new.db" || name == "new.db-wal" || name == "new.db-shm") << name;
@@ -101,7 +103,7 @@ TEST(StoreCreationTest, CreateNewStoreFileSaysWhetherThisCallMadeTheStore) {
   ASSERT_TRUE(CreateNewStoreFile(path));
   // Made whole by this call: the current schema in WAL mode, nothing beside.
   EXPECT_EQ(FileNames(dir.path()), std::set<std::string>{"s.db"});
-  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version")[0], "5");
+  EXPECT_EQ(QueryColumn(path, "PRAGMA user_version")[0], std::to_string(kStoreSchemaVersion));
   EXPECT_EQ(QueryColumn(path, "PRAGMA journal_mode")[0], "wal");
   // A store that is there already, even an empty file, is not this call's.
   OpenArtifactStore(path)->WriteArtifact(MakeArtifact("m", "clean", "k", "payload"));

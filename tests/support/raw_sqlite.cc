@@ -4,10 +4,13 @@
 
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 
 #include "store/payload_codec.h"
+#include "store/sqlite_artifact_store.h"
+#include "store/sqlite_store_sql.h"
 
 namespace areagraph::testing {
 namespace {
@@ -35,6 +38,13 @@ void Check(sqlite3* db, int rc) {
 void ExecSql(const std::string& path, const std::string& sql) {
   Connection db = OpenRaw(path);
   Check(db.get(), sqlite3_exec(db.get(), sql.c_str(), nullptr, nullptr, nullptr));
+}
+
+void ExecSqlAndReseal(const std::string& path, const std::string& sql) {
+  Connection db = OpenRaw(path);
+  store_internal::RegisterRowDigestFunction(db.get(), path);
+  Check(db.get(), sqlite3_exec(db.get(), sql.c_str(), nullptr, nullptr, nullptr));
+  Check(db.get(), sqlite3_exec(db.get(), store_sql::kFillRowDigests, nullptr, nullptr, nullptr));
 }
 
 struct WriteLockHolder::Connection {
@@ -116,10 +126,32 @@ void RewriteAsSchema4(const std::string& path) {
     Check(db.get(), sqlite3_step(raw));
   }
   Check(db.get(), sqlite3_exec(db.get(),
+                               "ALTER TABLE artifacts DROP COLUMN row_digest;"
                                "ALTER TABLE artifacts DROP COLUMN payload_codec;"
                                "ALTER TABLE artifacts DROP COLUMN payload_size;"
                                "PRAGMA user_version = 4;",
                                nullptr, nullptr, nullptr));
+}
+
+void RewriteAsSchema5(const std::string& path) {
+  ExecSql(path,
+          "ALTER TABLE artifacts DROP COLUMN row_digest;"
+          "PRAGMA user_version = 5;");
+}
+
+void ReplaceOnceInFile(const std::string& path, const std::string& from, const std::string& to) {
+  if (from.size() != to.size()) throw std::runtime_error("replacement of another length");
+  ExecSql(path, "PRAGMA wal_checkpoint(TRUNCATE)");
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  const size_t at = bytes.find(from);
+  if (at == std::string::npos || bytes.find(from, at + 1) != std::string::npos) {
+    throw std::runtime_error("'" + from + "' is not in " + path + " exactly once");
+  }
+  file.clear();
+  file.seekp(static_cast<std::streamoff>(at));
+  file.write(to.data(), static_cast<std::streamsize>(to.size()));
+  if (!file.flush()) throw std::runtime_error("cannot change " + path);
 }
 
 void FlipPayloadByte(const std::string& path, const std::string& cache_key, int offset) {

@@ -14,6 +14,11 @@ namespace areagraph::testing {
 // throws std::runtime_error.
 void ExecSql(const std::string& path, const std::string& sql);
 
+// ExecSql, then every artifact row's digest made again (schema 6): a change
+// by hand that the store takes as written by itself, e.g. a creation time
+// set to order artifacts in a test.
+void ExecSqlAndReseal(const std::string& path, const std::string& sql);
+
 // Holds the file's write lock (BEGIN IMMEDIATE on a connection of its own)
 // from construction until Release or destruction: a store's writes wait
 // meanwhile (its busy timeout is 10 s). Release may come from another thread.
@@ -45,6 +50,15 @@ std::vector<std::string> StoreHeadDigests(const std::string& path);
 // Turns a store of this build into one as schema 4 wrote it: raw payloads,
 // no payload_codec or payload_size column.
 void RewriteAsSchema4(const std::string& path);
+
+// Turns a store of this build into one as schema 5 wrote it: no row digests.
+void RewriteAsSchema5(const std::string& path);
+
+// Overwrites the one occurrence of `from` in the file's bytes with `to` (of
+// the same length), the write-ahead log folded in first: a change that
+// SQLite does not see, as bit rot would make it (a table row changed while
+// its index still holds the old value). Throws unless `from` occurs once.
+void ReplaceOnceInFile(const std::string& path, const std::string& from, const std::string& to);
 
 // Overwrites one byte of the stored artifacts.payload in place (the BLOB API,
 // no SQL rewrite), keeping the stored digest; `offset` is taken modulo the

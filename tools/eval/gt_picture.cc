@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "stages/common/png_file.h"
+#include "tools/eval/label_image.h"
 #include "tools/eval/map_evaluation.h"
 
 namespace areagraph {
@@ -24,7 +25,7 @@ cv::Vec3b SegmentColour(int id) {
 void WriteGroundTruthPicture(const std::string& gt_path, GroundTruthStyle style,
                              const std::string& out_path, int max_width) {
   const cv::Mat labels = ReadGroundTruthLabels(gt_path, &style);
-  const cv::Mat grey = cv::imread(gt_path, cv::IMREAD_GRAYSCALE);
+  const cv::Mat grey = ReadImageFile(gt_path, cv::IMREAD_GRAYSCALE);
   if (grey.empty() || grey.size() != labels.size()) {
     throw InputError("cannot read ground truth '" + gt_path + "' as an image");
   }

@@ -1,21 +1,25 @@
 #include "tools/eval/label_image.h"
 
-#include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 #include <set>
 #include <unordered_map>
 
 #include "common/error.h"
+#include "common/input_file.h"
 
 namespace areagraph {
 
-cv::Mat ReadImageFile(const std::string& path) {
-  std::error_code error;
-  if (!std::filesystem::is_regular_file(path, error)) {
-    throw InputError("image '" + path + "' does not exist");
+cv::Mat ReadImageFile(const std::string& path, int imread_flags) {
+  // The bytes through ReadInputFile, which refuses a FIFO or a device at once
+  // instead of blocking on it as cv::imread would.
+  const std::string bytes = ReadInputFile(path, "image '" + path + "'");
+  cv::Mat image;
+  if (!bytes.empty()) {
+    image = cv::imdecode(
+        cv::Mat(1, static_cast<int>(bytes.size()), CV_8U, const_cast<char*>(bytes.data())),
+        imread_flags);
   }
-  cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
   if (image.empty()) throw InputError("cannot read '" + path + "' as an image");
   if (image.depth() != CV_8U && image.depth() != CV_16U) {
     throw InputError("image '" + path + "' is neither 8 nor 16 bit per channel");

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <opencv2/core.hpp>
+#include <opencv2/imgcodecs.hpp>
 #include <string>
 
 namespace areagraph {
@@ -8,9 +9,10 @@ namespace areagraph {
 // Segmentations and ground truths are compared as label images: CV_32S, one
 // int per pixel, 0 = no segment, any other value = the segment's label.
 
-// The image at `path` as stored (8 or 16 bit, 1, 3 or 4 channels, BGR order).
-// Throws InputError when the file is missing or not an image.
-cv::Mat ReadImageFile(const std::string& path);
+// The image at `path` as stored (8 or 16 bit, 1, 3 or 4 channels, BGR order),
+// or as cv::imread's `imread_flags` turn it (IMREAD_GRAYSCALE). Throws
+// InputError when the file is missing, not a regular file or not an image.
+cv::Mat ReadImageFile(const std::string& path, int imread_flags = cv::IMREAD_UNCHANGED);
 
 // True for a BGR pixel whose channels are not all equal.
 inline bool IsChromatic(const cv::Vec3b& bgr) { return bgr[0] != bgr[1] || bgr[1] != bgr[2]; }

@@ -42,7 +42,7 @@ cv::Mat ReadGroundTruthLabels(const std::string& path, GroundTruthStyle* style) 
   cv::Mat grey;
   if (*style == GroundTruthStyle::kLines || *style == GroundTruthStyle::kMaorisLines) {
     // The way Bormann's and MAORIS' evaluations load it.
-    grey = cv::imread(path, cv::IMREAD_GRAYSCALE);
+    grey = ReadImageFile(path, cv::IMREAD_GRAYSCALE);
   }
   return GroundTruthLabels(raw, grey, *style);
 }

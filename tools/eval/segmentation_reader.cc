@@ -10,7 +10,7 @@ cv::Mat ReadSegmentationLabels(const std::string& path, SegmentationReading read
   const cv::Mat raw = ReadImageFile(path);
   if (reading == SegmentationReading::kGreyLikeMaoris) {
     // The exact call MAORIS makes, so that colours merge as they did there.
-    return LabelsFromGreyValues(cv::imread(path, cv::IMREAD_GRAYSCALE));
+    return LabelsFromGreyValues(ReadImageFile(path, cv::IMREAD_GRAYSCALE));
   }
   if (raw.channels() >= 3 && CountChromaticPixels(raw) > 0) return LabelsFromColours(raw);
   return LabelsFromGreyValues(raw);

@@ -80,8 +80,14 @@ int main(int argc, char** argv) {
                  "html: show the run behind this artifact key (prefix; default: heads)");
   app.add_option("--compare", compare_key, "html: a second key of the map to compare with");
   return areagraph::RunCommand("ag-export", app, argc, argv, [&] {
-    if (format_name == "html")
-      return areagraph::ExportViewerPage(store_path, map_name, key, compare_key, out_path);
+    if (format_name == "html") {
+      const int status =
+          areagraph::ExportViewerPage(store_path, map_name, key, compare_key, out_path);
+      if (status == 0 && !areagraph::IsStandardOutput(out_path)) {
+        std::cout << "wrote " << out_path << "\n";
+      }
+      return status;
+    }
     if (!key.empty() || !compare_key.empty()) {
       throw areagraph::OptionsError("--key and --compare go with --format html");
     }
@@ -110,6 +116,7 @@ int main(int argc, char** argv) {
     const auto graph =
         areagraph::ReadArtifactAs<areagraph::proto::AreaGraph>(*store, map_name, *graph_key);
     areagraph::WriteOutputFile(out_path, areagraph::ExportAreaGraph(graph, settings));
+    if (!areagraph::IsStandardOutput(out_path)) std::cout << "wrote " << out_path << "\n";
     return 0;
   });
 }

@@ -1,5 +1,6 @@
 // ag-inspect: lists the maps and artifacts of a store and dumps artifacts.
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -12,6 +13,16 @@
 #include "tools/inspect/failure_report.h"
 #include "tools/inspect/history_report.h"
 #include "tools/inspect/store_report.h"
+
+// CLI::Range lets NaN through (every comparison with it is false).
+const CLI::Validator Finite(
+    [](std::string& text) {
+      double value = 0;
+      return CLI::detail::lexical_cast(text, value) && std::isfinite(value)
+                 ? std::string()
+                 : "must be a finite number, got " + text;
+    },
+    "FINITE");
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -45,11 +56,11 @@ int main(int argc, char** argv) {
                  "--diff: an area grew or shrank (a passage's width changed) when it changed by "
                  "more than this fraction")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 100.0));
+      ->check(Finite & CLI::Range(0.0, 100.0));
   app.add_option("--move-threshold", thresholds.passage_m,
                  "--diff: a passage changed when it moved more than this many metres")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 1e6));
+      ->check(Finite & CLI::Range(0.0, 1e6));
   return areagraph::RunCommand("ag-inspect", app, argc, argv, [&] {
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
     if (!history_map.empty()) {

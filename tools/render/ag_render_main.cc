@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -10,6 +11,8 @@
 #include <utility>
 
 #include "common/error.h"
+#include "common/text.h"
+#include "proto/pipeline_options.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
 #include "stages/common/page_fault_thrift.h"
@@ -62,12 +65,30 @@ cv::Rect CropWindow(const std::string& text, int scale, const cv::Size& size) {
   return window;
 }
 
+// The most pixels a picture may have: what ag-import takes for a map
+// (import.max_pixels' default). The whole map is drawn at --scale before
+// --crop or --width cut it, so an unbounded scale would ask for gigabytes.
+const double kMaxPicturePixels = static_cast<double>(proto::ImportOptions().max_pixels());
+
+void CheckPictureSize(int width_px, int height_px, int scale) {
+  const double pixels = static_cast<double>(width_px) * height_px * scale * scale;
+  if (scale == 1 || pixels <= kMaxPicturePixels) return;  // scale 1: the map's own size
+  const int most = std::max(
+      1,
+      static_cast<int>(std::sqrt(kMaxPicturePixels / std::max(1.0, double{width_px} * height_px))));
+  throw InputError("--scale " + std::to_string(scale) + " would draw the " +
+                   std::to_string(width_px) + " x " + std::to_string(height_px) + " map as " +
+                   FormatNumber(pixels) + " pixels, more than " + FormatNumber(kMaxPicturePixels) +
+                   "; use --scale " + std::to_string(most) + " or less");
+}
+
 void Render(ArtifactStore& store, const std::string& map, const std::string& stage, int scale,
             bool doors, int width, const std::string& crop, const std::string& out) {
   const StageDefinition& definition = FindStage(stage, "--stage");
   const BaseMap base = ReadBaseMap(store, map, definition.info);
   const int width_px = base.frame.width_px(), height_px = base.frame.height_px();
   if (scale <= 0) scale = DefaultScale(width_px, height_px);
+  CheckPictureSize(width_px, height_px, scale);
   // The import's picture is the bare map: written from its cells
   // (EncodeMapPng), without a canvas.
   if (SameStage(definition.info, kImportStage) && !doors && crop.empty() &&

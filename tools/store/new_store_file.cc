@@ -1,10 +1,12 @@
 #include "tools/store/new_store_file.h"
 
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <filesystem>
+#include <set>
 
 #include "common/error.h"
 #include "stages/common/output_file.h"
@@ -18,13 +20,60 @@ void RemoveStoreFiles(const std::string& path) {
   }
 }
 
+std::string HostName() {
+  char name[256] = {};
+  if (::gethostname(name, sizeof(name) - 1) != 0) return "host";
+  std::string host(name);
+  for (char& c : host) {
+    if (c == '.' || c == '/') c = '_';  // keeps the temporary's name parseable
+  }
+  return host.empty() ? "host" : host;
+}
+
+// ".OUT.HOST.PID.tmp": hidden, and naming the process that writes it, so a
+// later run can tell a killed run's file from a running one's. The host
+// matters on a shared file system, where a process id says nothing about
+// another machine's processes.
+std::string TemporaryPrefix(const std::filesystem::path& target) {
+  return "." + target.filename().string() + "." + HostName() + ".";
+}
+
+std::filesystem::path FolderOf(const std::filesystem::path& target) {
+  return target.has_parent_path() ? target.parent_path() : ".";
+}
+
 std::string TemporaryBeside(const std::string& path) {
   const std::filesystem::path target(path);
-  const std::filesystem::path folder = target.has_parent_path() ? target.parent_path() : ".";
-  return (folder / ("." + target.filename().string() + "." + std::to_string(::getpid()) + ".tmp"))
+  return (FolderOf(target) / (TemporaryPrefix(target) + std::to_string(::getpid()) + ".tmp"))
       .string();
 }
 
+// The temporaries of earlier runs for `path` on this host whose process is
+// gone (killed: a finished run removes its own), with their -wal and -shm.
+void RemoveStaleTemporaries(const std::string& path) {
+  const std::filesystem::path target(path);
+  const std::string prefix = TemporaryPrefix(target);
+  std::set<std::string> stale;
+  std::error_code error;
+  for (std::filesystem::directory_iterator it(FolderOf(target), error), end; !error && it != end;
+       it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (name.rfind(prefix, 0) != 0) continue;
+    const size_t dot = name.find('.', prefix.size());
+    if (dot == std::string::npos || name.compare(dot, 4, ".tmp") != 0) continue;
+    const std::string rest = name.substr(dot + 4);
+    if (rest != "" && rest != "-wal" && rest != "-shm" && rest != "-journal") continue;
+    const std::string pid_text = name.substr(prefix.size(), dot - prefix.size());
+    if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos ||
+        pid_text.size() > 9) {
+      continue;
+    }
+    const pid_t pid = static_cast<pid_t>(std::stol(pid_text));
+    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    stale.insert((FolderOf(target) / name.substr(0, dot + 4)).string());
+  }
+  for (const std::string& temporary : stale) RemoveStoreFiles(temporary);
+}
 }  // namespace
 
 bool NothingAt(const std::string& path) {
@@ -37,6 +86,7 @@ void CreateStoreFile(const std::string& path,
   if (!NothingAt(path)) {
     throw StoreError("'" + path + "' already exists; name a new file");
   }
+  RemoveStaleTemporaries(path);
   const std::string temporary = TemporaryBeside(path);
   RemoveStoreFiles(temporary);  // left by a killed run of this process id
   try {

@@ -122,7 +122,7 @@ int VerifyStore(const std::string& store_path, bool progress, bool quick, bool s
   }
   for (const VerifyProblem& problem : problems) {
     out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "
-        << OrDash(ShortKey(problem.cache_key)) << ": " << problem.problem << "\n";
+        << OrDash(ShortKey(problem.cache_key)) << ": " << OneLine(problem.problem) << "\n";
   }
   out << "checked " << Plural(checked, "artifact") << ": "
       << (problems.empty() ? "no problems"

@@ -12,7 +12,7 @@ namespace areagraph {
 // Copies every store in `inputs` into `output` (created if needed), one
 // transaction per input, and prints per input what was new. All inputs are
 // checked before `output` is opened, so a typo creates nothing. A damaged
-// input (SQLite's quick_check, or a payload that fails its digest) is
+// input (SQLite's integrity_check, a row or payload that fails its digest) is
 // refused by name and adds nothing. A new `output` appears only when every
 // input merged; an existing one keeps the inputs merged before the failure.
 int MergeStores(const std::string& output, const std::vector<std::string>& inputs,

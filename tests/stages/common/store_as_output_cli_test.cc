@@ -37,14 +37,14 @@ struct OverwriteCase {
 
 std::ostream& operator<<(std::ostream& out, const OverwriteCase& c) { return out << c.name; }
 
-const std::vector<std::string> kExportJson = {"ag-export", "--store", "s.db",  "--map",
+const std::vector<std::string> kExportJson = {"ag-export", "--store",  "s.db", "--map",
                                               "two_rooms", "--format", "json"};
-const std::vector<std::string> kExportLabels = {"ag-export", "--store", "s.db",  "--map",
+const std::vector<std::string> kExportLabels = {"ag-export", "--store",  "s.db",  "--map",
                                                 "two_rooms", "--format", "labels"};
-const std::vector<std::string> kExportHtml = {"ag-export", "--store", "s.db",  "--map",
+const std::vector<std::string> kExportHtml = {"ag-export", "--store",  "s.db", "--map",
                                               "two_rooms", "--format", "html"};
-const std::vector<std::string> kRender = {"ag-render", "--store", "s.db",
-                                          "--map",     "two_rooms", "--stage", "merge"};
+const std::vector<std::string> kRender = {"ag-render", "--store", "s.db", "--map",
+                                          "two_rooms", "--stage", "merge"};
 
 std::vector<OverwriteCase> Cases() {
   return {

@@ -121,6 +121,10 @@ TEST_F(AreaToolsTest, BadOptionsGiveOneLine) {
                      "prune.min_clearance_m", 2);
   // A width checked against the map fails while the stage runs: exit 1.
   ExpectOneLineError(Run("ag-pipeline", {"--set", "cut.room_width_m=5000"}), "wider than the map");
+  // 10000 m was taken and turned rooms into slivers: bounded by the map's W.
+  ExpectOneLineError(Run("ag-merge", {"--set", "merge.outline_tolerance_m=10000"}),
+                     "merge.outline_tolerance_m = 10000 m is not below half the room width W = ");
+  EXPECT_EQ(Run("ag-merge", {"--set", "merge.outline_tolerance_m=0.2"}).exit_code, 0);
 }
 
 }  // namespace

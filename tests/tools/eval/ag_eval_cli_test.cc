@@ -1,5 +1,6 @@
 // ag-eval as a user runs it: PNG files in, scores out, one line on errors.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <filesystem>
 #include <opencv2/core.hpp>
@@ -85,6 +86,30 @@ TEST(AgEvalCli, MissingFileIsOneLineAndNonZero) {
   EXPECT_EQ(run.signal, 0);
   EXPECT_EQ(CountLines(run.err), 1) << run.err;
   EXPECT_NE(run.err.find("missing.png"), std::string::npos) << run.err;
+}
+
+// A FIFO with no writer, as the result, the ground truth or the picture's
+// ground truth: refused at once in one line, where cv::imread blocked forever.
+TEST(AgEvalCli, FifoInputIsRefusedInsteadOfWaitedFor) {
+  TempDir dir;
+  cv::imwrite(dir.File("gt.png"), LabelPng(20));
+  ASSERT_EQ(::mkfifo(dir.File("fifo.png").c_str(), 0600), 0);
+  const std::string bin = testing::BinDir() + "/ag-eval";
+  const std::vector<std::vector<std::string>> runs = {
+      {"--result", dir.File("fifo.png"), "--gt", dir.File("gt.png")},
+      {"--result", dir.File("gt.png"), "--gt", dir.File("fifo.png")},
+      {"--gt", dir.File("fifo.png"), "--gt-picture", dir.File("picture.png")},
+      {"--gt", dir.File("fifo.png"), "--gt-style", "lines", "--gt-picture",
+       dir.File("picture.png")},
+  };
+  for (const std::vector<std::string>& args : runs) {
+    std::vector<std::string> argv = {"timeout", "20", bin};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto run = testing::RunProgram(argv);
+    EXPECT_EQ(run.exit_code, 1) << run.err;  // timeout's 124 when it hangs
+    EXPECT_EQ(CountLines(run.err), 1) << run.err;
+    EXPECT_NE(run.err.find("FIFO"), std::string::npos) << run.err;
+  }
 }
 
 TEST(AgEvalCli, UnreadableImageIsOneLineAndNonZero) {

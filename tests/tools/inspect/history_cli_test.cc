@@ -147,5 +147,19 @@ TEST_F(HistoryCliTest, BadRequestsGiveOneLine) {
   expect_error({"--history", "house", "--map", "house"}, "--history lists one map's versions");
 }
 
+// NaN passed the range checks: every comparison with it is false.
+TEST_F(HistoryCliTest, NotANumberIsNoThreshold) {
+  for (const char* flag : {"--size-threshold", "--move-threshold"}) {
+    for (const char* value : {"nan", "NaN", "-nan"}) {
+      const CommandResult result = Inspect({"--map", "house", "--diff", "1", "2", flag, value});
+      EXPECT_EQ(result.exit_code, 2) << flag << " " << value << ": " << result.out;
+      EXPECT_EQ(CountLines(result.err), 1) << result.err;
+      EXPECT_NE(result.err.find(std::string(flag) + ": must be a finite number, got " + value),
+                std::string::npos)
+          << result.err;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace areagraph::testing

@@ -1,6 +1,7 @@
 // ag-render on a drawn map: whole pictures and zoomed windows.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <opencv2/imgcodecs.hpp>
 
 #include "tests/support/test_support.h"
@@ -61,6 +62,33 @@ TEST_F(AgRenderCli, ScaleOutsideOneToSixteenIsAUsageError) {
     EXPECT_EQ(CountLines(result.err), 1) << result.err;
     EXPECT_NE(result.err.find("--scale"), std::string::npos) << result.err;
   }
+}
+
+// The issue's --scale 16 on a 4000-px map asked for 12.3 GB and died under
+// a memory limit with OpenCV's dump: the picture's size is checked first.
+TEST(AgRenderLimitCli, PictureOverTheImportBoundIsRefusedUpFront) {
+  TempDir dir;
+  floorplan::FloorPlan plan(35, 35);  // 700 x 700 cells
+  floorplan::DrawRoom(plan, {0.5, 0.5, 34, 34});
+  const std::string image = dir.File("hall.png"), store = dir.File("s.db");
+  floorplan::WritePlanPng(plan, image);
+  ASSERT_EQ(RunTool("ag-import", {"--store", store, image}).exit_code, 0);
+  ASSERT_EQ(RunTool("ag-clean", {"--store", store, "--map", "hall"}).exit_code, 0);
+  const std::string out = dir.File("hall_x16.png");
+  for (const char* stage : {"import", "clean"}) {
+    const CommandResult result = RunTool("ag-render", {"--store", store, "--map", "hall", "--stage",
+                                                       stage, "--scale", "16", "--out", out});
+    EXPECT_EQ(result.exit_code, 1) << stage;
+    EXPECT_EQ(result.err,
+              "ag-render: --scale 16 would draw the 700 x 700 map as 1.2544e+08 pixels, more "
+              "than 1e+08; use --scale 14 or less\n")
+        << stage;
+    EXPECT_FALSE(std::filesystem::exists(out)) << stage;
+  }
+  EXPECT_EQ(RunTool("ag-render", {"--store", store, "--map", "hall", "--stage", "import", "--scale",
+                                  "2", "--out", out})
+                .exit_code,
+            0);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "stages/import/stderr_capture.h"
+#include "common/stderr_capture.h"
 
 #include <unistd.h>
 
