@@ -110,13 +110,16 @@ if(AG_FAST_START)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64)$")
     set(entries ${CMAKE_BINARY_DIR}/lazy_library_entries.cc)
     execute_process(
-      COMMAND sh ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh ${entries} ${CMAKE_NM}
+      COMMAND sh ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh ${entries}.new ${CMAKE_NM}
         ${AG_STATIC_OPENCV_CORE} ${AG_STATIC_OPENCV_IMGPROC}
         -- ${AG_TBB_LIBRARY} ${AG_LAPACK_LIBRARY} ${AG_BLAS_LIBRARY} --all ${AG_LCM_LIBRARY}
       RESULT_VARIABLE status)
     if(status)
       message(FATAL_ERROR "AG_FAST_START: cmake/lazy_libraries.sh failed")
     endif()
+    # Written only when it changed: configuring a built tree again relinks
+    # nothing.
+    execute_process(COMMAND ${CMAKE_COMMAND} -E copy_if_different ${entries}.new ${entries})
     set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
       ${CMAKE_SOURCE_DIR}/cmake/lazy_libraries.sh)
     add_library(ag_lazy_libraries STATIC ${CMAKE_SOURCE_DIR}/common/lazy_libraries.cc ${entries})
@@ -195,8 +198,9 @@ endfunction()
 # libc.so or libm.so to map and relocate. lab_a's import picture took 1.4 ms
 # less CPU of 10.4 (docs/performance.md, "Start-up"). Such a program
 # loads no library at run time: common/lazy_libraries.cc refuses to (its
-# callers, TBB's, LAPACK's and LCM's, are never reached in ag-render), and it
-# must never read an image through the codecs module.
+# callers, TBB's, LAPACK's and LCM's, are never reached in ag-render), it
+# must never read an image through the codecs module, and its dlopen finds
+# nothing (common/no_dynamic_loading.cc).
 function(ag_fully_static)
   if(NOT AG_FAST_START)
     return()
@@ -204,9 +208,11 @@ function(ag_fully_static)
   foreach(target ${ARGN})
     ag_fast_start_own_runtime(${target})
     # Exceptions unwind through the link-time table of PT_GNU_EH_FRAME, not
-    # libgcc's registry of frames (common/no_frame_registry.cc).
-    target_sources(${target} PRIVATE ${CMAKE_SOURCE_DIR}/common/no_frame_registry.cc)
+    # libgcc's registry of frames (common/no_frame_registry.cc); dlopen finds
+    # nothing (common/no_dynamic_loading.cc).
+    target_sources(${target} PRIVATE ${CMAKE_SOURCE_DIR}/common/no_frame_registry.cc
+      ${CMAKE_SOURCE_DIR}/common/no_dynamic_loading.cc)
     target_link_options(${target} PRIVATE -static -Wl,--eh-frame-hdr
-      -Wl,--wrap=__register_frame_info -Wl,--wrap=__deregister_frame_info)
+      -Wl,--wrap=__register_frame_info -Wl,--wrap=__deregister_frame_info -Wl,--wrap=dlopen)
   endforeach()
 endfunction()

@@ -35,7 +35,7 @@ floor_of() {
 }
 
 # The same floor with glibc's huge-page tunable, which ag-run sets for itself
-# on maps over 5 Mpx (stages/common/huge_page_restart.h): sets floor_hp_ms. The
+# on maps over 5 Mpx (common/process_setup/huge_page_restart.h): sets floor_hp_ms. The
 # tables' "× floor" keeps the floor as the targets define it (glibc's defaults);
 # this one shows how much of ag-run's gain on big maps the floor would get too.
 floor_with_huge_pages_of() {

@@ -17,11 +17,11 @@
 #include "runner/live/live_map_server.h"
 #include "stages/common/command_line.h"
 #include "stages/common/pipeline_options_check.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
 #include "stages/import/import_stage.h"
 #include "stages/import/map_yaml.h"
 #include "stages/pipeline/map_pipeline.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 
 namespace areagraph::python {
 namespace {

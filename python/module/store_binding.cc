@@ -13,8 +13,8 @@
 #include "common/error.h"
 #include "python/module/bindings.h"
 #include "python/module/graph_handle.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 #include "tools/route/stored_graph.h"
 

@@ -6,8 +6,8 @@
 
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
 #include "stages/pipeline/map_pipeline.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {
@@ -71,7 +71,9 @@ class FailureLog {
 // import from `import`, the stages through the cache (a map whose every key
 // is already stored sets its heads and reads nothing), then the Area Graph is
 // published when it is new or changed, and the map's failure is recorded or
-// its old one cleared. A failure of the map is returned, never thrown.
+// its old one cleared. Freed heap goes back to the system between a
+// compute's big steps (InputRelease::between_steps) and after the stages. A
+// failure of the map is returned, never thrown.
 // `observer` hears about every stage; `publish` may be empty.
 MapOutcome RunOneMap(ArtifactStore& store, FailureLog& failures, const std::string& map_name,
                      const std::string& source_path, const MapImport& import,

@@ -5,12 +5,12 @@
 #include <iostream>
 
 #include "common/error.h"
+#include "common/process_setup/huge_page_restart.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/live_map_server.h"
 #include "runner/live/serve_loop.h"
 #include "stages/common/command_line.h"
-#include "stages/common/huge_page_restart.h"
 #include "store/write_behind_store.h"
 
 namespace areagraph {
@@ -23,7 +23,7 @@ struct LiveFlags {
   bool diffs = false;
 };
 
-int Live(const LiveFlags& flags, char** argv) {
+int Live(const LiveFlags& flags) {
   flags.limits.Check();
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   if (options.import().max_pixels() <= 0) {
@@ -35,7 +35,7 @@ int Live(const LiveFlags& flags, char** argv) {
   // start-up, while it holds nothing open yet (no store, no LCM, no thread):
   // one 9-ms restart, then any grid's heap grows in huge pages (half the page
   // faults even on a small map; docs/performance.md, "Memory between stages").
-  if (MayRestartWithHugePageTunable()) RestartWithHugePageTunable(argv);
+  if (MayRestartWithHugePageTunable()) RestartWithHugePageTunable();
   const std::unique_ptr<ArtifactStore> store = OpenWriteBehindStore(flags.stage.store_path);
   AreaGraphPublisher publisher(url);
   LiveMapServer server(*store, publisher, options, std::cout, std::cerr);
@@ -88,5 +88,5 @@ int main(int argc, char** argv) {
   app.add_option("--timeout", flags.limits.timeout_s,
                  "exit after this many seconds (0: never); an error if --count was not reached")
       ->capture_default_str();
-  return RunCommand("ag-live", app, argc, argv, [&] { return Live(flags, argv); });
+  return RunCommand("ag-live", app, argc, argv, [&] { return Live(flags); });
 }

@@ -10,6 +10,8 @@
 
 #include "common/error.h"
 #include "common/json.h"
+#include "common/process_setup/huge_page_restart.h"
+#include "common/process_setup/worker_heap.h"
 #include "runner/live/area_graph_publisher.h"
 #include "runner/run/fault_injection.h"
 #include "runner/run/interruption.h"
@@ -17,11 +19,8 @@
 #include "runner/run/run_report.h"
 #include "runner/run/shard.h"
 #include "runner/run/worker_events.h"
-#include "runner/run/worker_heap.h"
 #include "runner/run/worker_threads.h"
-#include "stages/common/huge_page_restart.h"
 #include "stages/common/pipeline_options_check.h"
-#include "stages/common/stage_main.h"
 #include "store/sqlite_store_creation.h"
 
 namespace areagraph {
@@ -84,14 +83,12 @@ std::string FinishStore(const std::string& store_path, const RunReport& report) 
 
 }  // namespace
 
-int RunCollection(const RunFlags& flags, char** argv) {
+int RunCollection(const RunFlags& flags) {
   const RunSettings settings = SettingsFrom(flags);
   const proto::PipelineOptions options = LoadPipelineOptions(flags.stage);
   const std::vector<MapTask> tasks = TasksFrom(flags, options);
   // Before the store is touched: the fresh start runs from main again.
-  if (argv != nullptr && MayRestartWithHugePageTunable() && HasBigMap(tasks)) {
-    RestartWithHugePageTunable(argv);
-  }
+  if (MayRestartWithHugePageTunable() && HasBigMap(tasks)) RestartWithHugePageTunable();
   const GraphPublisher publish = MakePublisher(flags.publish ? flags.url : "");
   // Fails early on a store that is unwritable, locked, foreign or too new;
   // closed again because SQLite connections must not cross fork(). Its log

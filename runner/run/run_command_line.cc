@@ -5,7 +5,7 @@
 
 #include "common/error.h"
 #include "runner/live/lcm_connection.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 
 namespace areagraph {
 

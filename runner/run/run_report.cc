@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <iomanip>
 
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 
 namespace areagraph {
 

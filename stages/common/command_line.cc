@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "common/error.h"
+#include "common/process_setup/huge_page_restart.h"
 #include "common/text.h"
 #include "common/version.h"
 #include "stages/common/output_file.h"
@@ -65,6 +66,7 @@ int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
     std::cerr << tool << ": " << OneLine(e.what()) << " (see --help)\n";
     return 2;
   }
+  SetRestartCommandLine(argv);
   try {
     const int exit_code = body();
     FlushStandardOutput();  // a report lost on a full disk is a failure

@@ -31,7 +31,8 @@ proto::PipelineOptions LoadPipelineOptions(const StageCommandLine& flags);
 // flag, or an OptionsError: a bad option key, value or combination), 1 for
 // everything else. --help prints the help and --version the version
 // (VersionText), each exiting 0. Standard output is flushed and checked after
-// `body`, so a lost report is an error too.
+// `body`, so a lost report is an error too. The command line is what a
+// restart for a big map runs again (SetRestartCommandLine).
 int RunCommand(const std::string& tool, CLI::App& app, int argc, char** argv,
                const std::function<int()>& body);
 

@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "common/error.h"
-#include "stages/common/freed_memory.h"
 #include "stages/common/stage_info.h"
 #include "stages/cut/absorbed_polygons.h"
 #include "stages/cut/closed_passages.h"
@@ -70,7 +69,8 @@ struct CutInputs {
 };
 
 CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                          const proto::CutOptions& options, const CellGrid& grid) {
+                          const proto::CutOptions& options, const CellGrid& grid,
+                          const std::function<void()>& between_steps) {
   CutInputs in;
   const int width = grid.width(), height = grid.height();
   const double resolution_m = grid.resolution_m();
@@ -106,7 +106,7 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
            },
            /*on_caller=*/2);
   // The estimate's scratch is gone; the rasters below come from new mappings.
-  ReturnFreedMemory();
+  if (between_steps) between_steps();
   in.sites =
       StructureSitesFrom(site_cells, island_depth, width, resolution_m, options.room_island_max_m(),
                          options.island_end_on_face() ? options.island_end_on_face_share() : 0,
@@ -182,14 +182,14 @@ std::vector<proto::GraphEdge> CutEdge(const proto::GraphEdge& edge,
 }  // namespace
 
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
-                              const proto::CutOptions& options, proto::TopologyGraph* owned) {
-  // Cut's working set is a run's largest: what the stages before it freed
-  // goes back first (lab_a 8 x 8: peak 600 -> 500 MB), as its big rasters
-  // come from fresh mappings.
-  ReturnFreedMemory();
+                              const proto::CutOptions& options, proto::TopologyGraph* owned,
+                              const std::function<void()>& between_steps) {
+  // Cut's working set is a run's largest, and its big rasters come from
+  // fresh mappings: what the stages before it freed may go back first.
+  if (between_steps) between_steps();
   const CellGrid grid(map);
   CheckTopology(topology);
-  CutInputs in = GatherCutInputs(topology, map, options, grid);
+  CutInputs in = GatherCutInputs(topology, map, options, grid, between_steps);
   const proto::RoomWidthEstimate& room_width = in.room_width;
   const double room_width_px = room_width.room_width_m() / grid.resolution_m();
   auto inside_boundary = [&](const Eigen::Vector2d& p) {

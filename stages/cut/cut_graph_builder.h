@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "proto/artifacts.pb.h"
@@ -20,8 +21,12 @@ namespace areagraph {
 // which the caller gives up: its edges are taken one by one (an edge that
 // stays one piece moves into the Cut Graph, absorbed polygons move to their
 // pieces) and each is freed once read, so the copies take the memory it frees.
+// `between_steps`, when given, is called where cut's working set is about to
+// grow from fresh memory: first thing, and once the room-width estimate's
+// scratch is freed (a program may give freed memory back there).
 proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
                               const proto::CutOptions& options,
-                              proto::TopologyGraph* owned = nullptr);
+                              proto::TopologyGraph* owned = nullptr,
+                              const std::function<void()>& between_steps = nullptr);
 
 }  // namespace areagraph

@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/png_header.h"
 #include "common/stderr_capture.h"
 #include "stages/common/image_codecs.h"
 #include "stages/import/png_grey_decoder.h"
-#include "stages/import/png_header.h"
 
 namespace areagraph {
 namespace {

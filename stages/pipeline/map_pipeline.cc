@@ -1,9 +1,8 @@
 #include "stages/pipeline/map_pipeline.h"
 
 #include "common/error.h"
-#include "stages/common/freed_memory.h"
-#include "stages/common/stage_versions.h"
 #include "stages/geometry/site_triangulation.h"
+#include "stages/pipeline/stage_versions.h"
 
 namespace areagraph {
 namespace {
@@ -69,7 +68,8 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
     for (const StageInfo& input : StageOf(stages[i]).inputs) {
       if (!ReadLater(stages, i + 1, end, input)) memo->MarkLastRead(input.name);
     }
-    const StageRun run = RunStageOnHeads(store, map_name, StageOf(stages[i]), options, force, memo);
+    const StageRun run = RunStageOnHeads(store, map_name, StageOf(stages[i]), options, force, memo,
+                                         observer.between_steps);
     if (observer.on_done) observer.on_done(stages[i], run);
     // The last stage's artifact stays for the caller (ag-run's summary).
     for (const StageDefinition& stage : StageTable()) {
@@ -78,18 +78,14 @@ void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
       }
     }
   }
-  // Between stages the next one reuses what the last freed (a trim there costs
-  // its pages' faults again: 15-20 % of lab_a 8 x 8's CPU); after the map the
-  // heap goes back, so that a worker or ag-live does not keep its peak.
   store.FinishWrites();
-  ReturnFreedMemory();
 }
 
 void RunMapPipeline(ArtifactStore& store, const std::string& map_name,
                     const proto::PipelineOptions& options, bool force,
                     const std::function<void(const StageInfo&, const StageRun&)>& on_stage) {
   const std::vector<StageInfo> stages = PipelineStages();
-  RunMapPipeline(store, map_name, options, force, PipelineObserver{nullptr, on_stage},
+  RunMapPipeline(store, map_name, options, force, PipelineObserver{nullptr, on_stage, nullptr},
                  stages.front(), stages.back());
 }
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {
@@ -24,10 +24,13 @@ std::vector<std::string> PlanPipelineKeys(const std::string& import_key,
                                           const proto::PipelineOptions& options,
                                           const PreviousVersionLookup& previous = nullptr);
 
-// Hears about each stage as it starts and as it ends (either may be empty).
+// Hears about each stage as it starts and as it ends, and is the hook that
+// computes call between their big steps (InputRelease::between_steps); any
+// may be empty.
 struct PipelineObserver {
   std::function<void(const StageInfo&)> on_start;
   std::function<void(const StageInfo&, const StageRun&)> on_done;
+  std::function<void()> between_steps;
 };
 
 // Runs the stages from `first` to `last` (both after import, `first` not

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph::testing {

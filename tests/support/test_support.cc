@@ -41,6 +41,21 @@ std::string ReadFile(const std::string& path) {
   return bytes.str();
 }
 
+std::string PngHeaderBytes(uint32_t width, uint32_t height) {
+  std::string bytes("\x89PNG\r\n\x1a\n", 8);
+  const auto put32 = [&](uint32_t value) {
+    for (int shift = 24; shift >= 0; shift -= 8)
+      bytes += static_cast<char>((value >> shift) & 0xff);
+  };
+  put32(13);
+  bytes += "IHDR";
+  put32(width);
+  put32(height);
+  bytes += std::string("\x08\x00\x00\x00\x00", 5);  // 8-bit grey
+  put32(0);                                         // CRC, not checked
+  return bytes;
+}
+
 void WriteFile(const std::string& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out << bytes;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <exception>
 #include <string>
 #include <vector>
@@ -49,6 +50,10 @@ CommandResult RunProgramWithStdout(const std::vector<std::string>& argv,
 std::string VmFlagsOf(const void* address);
 
 std::string ReadFile(const std::string& path);
+
+// A PNG signature and IHDR chunk of `width` x `height` and nothing after:
+// enough for what reads only a PNG's header, not an image to decode.
+std::string PngHeaderBytes(uint32_t width, uint32_t height);
 void WriteFile(const std::string& path, const std::string& bytes);
 
 // Path of a file in the checkout or in ../shared/data.

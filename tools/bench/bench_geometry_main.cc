@@ -13,9 +13,9 @@
 
 #include "common/error.h"
 #include "stages/common/command_line.h"
-#include "stages/common/stage.h"
 #include "stages/geometry/ring_area.h"
 #include "stages/merge/area_graph_builder.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tools/bench/area_graph_checks.h"
 #include "tools/bench/outline_distance.h"

@@ -16,7 +16,7 @@
 #include "common/text.h"
 #include "stages/common/command_line.h"
 #include "stages/common/map_frame.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tools/bench/grid_geodesic.h"
 #include "tools/bench/median_timer.h"

@@ -18,10 +18,11 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/process_setup/freed_memory.h"
 #include "stages/common/command_line.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 #include "tools/bench/median_timer.h"
 
@@ -58,7 +59,8 @@ std::function<void()> StageWork(ArtifactStore& store, const std::string& map,
   return [&stage, &options, inputs] {
     std::vector<const google::protobuf::Message*> pointers;
     for (const MessagePtr& input : *inputs) pointers.push_back(input.get());
-    stage.compute(pointers, InputRelease([](size_t) {}), options);
+    // As the programs run it: freed heap goes back between its big steps.
+    stage.compute(pointers, InputRelease([](size_t) {}, {}, ReturnFreedMemory), options);
   };
 }
 

@@ -4,8 +4,8 @@
 
 #include "common/error.h"
 #include "stages/common/output_file.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"
 #include "tools/export/markup_escape.h"

@@ -6,7 +6,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "proto/artifacts.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
 #include "tools/export/viewer_options.h"

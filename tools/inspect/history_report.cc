@@ -7,7 +7,7 @@
 #include "common/json.h"
 #include "common/text.h"
 #include "proto/artifacts.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 
 namespace areagraph {
 namespace {

@@ -9,8 +9,8 @@
 #include "common/json.h"
 #include "common/text.h"
 #include "proto/artifacts.pb.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_table.h"
 #include "tools/inspect/failure_report.h"
 
 namespace areagraph {

@@ -8,7 +8,7 @@
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/cache_key.h"
 
 namespace areagraph {

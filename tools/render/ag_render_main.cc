@@ -11,13 +11,13 @@
 #include <utility>
 
 #include "common/error.h"
+#include "common/process_setup/page_fault_thrift.h"
 #include "common/text.h"
 #include "proto/pipeline_options.pb.h"
 #include "stages/common/command_line.h"
 #include "stages/common/output_file.h"
-#include "stages/common/page_fault_thrift.h"
 #include "stages/common/png_file.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tools/render/artifact_drawing.h"
 #include "tools/render/map_png.h"
 

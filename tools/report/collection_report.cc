@@ -9,7 +9,7 @@
 #include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "stages/common/output_file.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tools/export/area_graph_export.h"
 #include "tools/export/html_page_text.h"

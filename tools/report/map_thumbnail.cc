@@ -6,7 +6,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/common/image_codecs.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tools/render/artifact_drawing.h"
 
 namespace areagraph {

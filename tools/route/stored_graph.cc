@@ -3,8 +3,8 @@
 #include <optional>
 
 #include "common/error.h"
-#include "stages/common/stage.h"
-#include "stages/common/stage_versions.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_versions.h"
 #include "tools/inspect/history_report.h"
 
 namespace areagraph {

@@ -7,7 +7,7 @@
 
 #include "common/error.h"
 #include "common/text.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 #include "store/collection_index.h"
 #include "store/store_maintenance.h"

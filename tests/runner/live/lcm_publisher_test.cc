@@ -10,8 +10,8 @@
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_connection.h"
 #include "runner/live/lcm_conversion.h"
-#include "stages/common/stage.h"
 #include "stages/match/area_graph_diff.h"
+#include "stages/pipeline/stage.h"
 #include "tests/runner/live/lcm_test_maps.h"
 #include "tools/listen/area_graph_listener.h"
 

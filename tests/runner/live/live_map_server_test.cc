@@ -10,8 +10,8 @@
 
 #include "runner/live/area_graph_publisher.h"
 #include "runner/live/lcm_conversion.h"
-#include "stages/common/stage.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/stage.h"
 #include "tests/support/test_support.h"
 #include "tools/listen/area_graph_listener.h"
 

@@ -1,5 +1,5 @@
 // Programs that restart with glibc's huge-page tunable for a big map
-// (stages/common/huge_page_restart.h) do so once, say so in their report,
+// (common/process_setup/huge_page_restart.h) do so once, say so in their report,
 // and end as they would without it: ag-run before it touches the store, a
 // stage executable and ag-pipeline after reading the map's source from it.
 // Small maps do not restart.

@@ -13,10 +13,6 @@ namespace areagraph::testing {
 // as <dir>/map_<seed>.png.
 void WriteRandomMaps(const std::string& dir, int count, unsigned first_seed);
 
-// A PNG signature and IHDR chunk of `width` x `height` and nothing after:
-// enough for what reads only a PNG's header, not an image to decode.
-std::string PngHeaderBytes(uint32_t width, uint32_t height);
-
 // Runs ag-run with `args` plus --json and parses the summary; the command's
 // output is kept in `result` for messages.
 proto::RunSummary RunJson(const std::vector<std::string>& args, CommandResult* result = nullptr);

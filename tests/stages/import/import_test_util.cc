@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tests/support/test_support.h"
 #include "tools/example_maps/floor_plan.h"
 

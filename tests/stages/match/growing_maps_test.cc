@@ -6,7 +6,7 @@
 
 #include <set>
 
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tests/stages/match/plan_runs.h"
 #include "tools/example_maps/floor_plan.h"
 

@@ -6,8 +6,8 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "stages/common/stage.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/stage.h"
 
 namespace areagraph::testing {
 

@@ -6,9 +6,9 @@
 #include <map>
 #include <set>
 
-#include "stages/common/stage.h"
-#include "stages/common/stage_versions.h"
 #include "stages/pipeline/map_pipeline.h"
+#include "stages/pipeline/stage.h"
+#include "stages/pipeline/stage_versions.h"
 #include "tests/stages/match/plan_runs.h"
 #include "tools/example_maps/floor_plan.h"
 

@@ -4,9 +4,9 @@
 #include <cmath>
 
 #include "common/error.h"
-#include "stages/common/stage.h"
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/merge/area_graph_builder.h"
+#include "stages/pipeline/stage.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "tests/support/area_test_support.h"
 #include "tests/support/test_support.h"

@@ -1,12 +1,16 @@
 // In one process the stages hand artifacts on through ArtifactMemo; an input's
 // last reader gets it for itself, prune lets go of the Voronoi diagram once
 // it has copied its numbers, and cut frees the Topology Graph's edges as it
-// cuts them when the graph is its alone (the peak memory of large maps).
+// cuts them when the graph is its alone (the peak memory of large maps) and
+// calls the caller's hook between its big steps.
 #include <gtest/gtest.h>
 
-#include "stages/common/artifact_memo.h"
+#include <string>
+#include <vector>
+
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/artifact_memo.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "stages/prune/topology_graph_builder.h"
 #include "tests/support/test_support.h"
@@ -157,6 +161,24 @@ TEST(InputReleaseTest, CutTakesTheMemosGraphOnlyAsItsLastReader) {
 
 namespace areagraph {
 namespace {
+
+// Programs give freed memory back through the hook that computes call
+// between their big steps: cut calls it when it starts and after its
+// room-width estimate; a cached stage computes nothing and never calls it.
+TEST(InputReleaseTest, CutCallsTheHookBetweenItsBigStepsOnlyWhenItComputes) {
+  const proto::PipelineOptions options;
+  const auto store = StoreUpToVoronoi(options);
+  std::string running;
+  std::vector<std::string> calls;  // the stage running at each call
+  PipelineObserver observer;
+  observer.on_start = [&](const StageInfo& stage) { running = stage.name; };
+  observer.between_steps = [&] { calls.push_back(running); };
+  RunMapPipeline(*store, "m", options, false, observer, kPruneStage, kMatchStage);
+  EXPECT_EQ(calls, (std::vector<std::string>{"cut", "cut"}));
+  calls.clear();
+  RunMapPipeline(*store, "m", options, false, observer, kPruneStage, kMatchStage);
+  EXPECT_TRUE(calls.empty());
+}
 
 // ag-run reads the final graph's counts from the memo instead of the store:
 // the memo must hold the last stage's artifact, equal to the stored bytes,

@@ -1,6 +1,6 @@
 // The stage table's artifact types: the names and format versions that reading
 // an artifact checks without protobuf's descriptors agree with the protos.
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 
 #include <google/protobuf/descriptor.h>
 #include <google/protobuf/reflection.h>
@@ -11,7 +11,7 @@
 
 #include "common/error.h"
 #include "proto/artifacts.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tests/support/test_support.h"
 
 namespace areagraph::testing {

@@ -7,8 +7,8 @@
 #include <thread>
 
 #include "common/error.h"
-#include "stages/common/artifact_memo.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/artifact_memo.h"
 #include "stages/pipeline/map_pipeline.h"
 #include "store/write_behind_store.h"
 #include "tests/support/raw_sqlite.h"

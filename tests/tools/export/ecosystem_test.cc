@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tests/support/test_support.h"
 

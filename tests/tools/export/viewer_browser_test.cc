@@ -13,7 +13,7 @@
 #include <string>
 
 #include "proto/artifacts.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tests/support/headless_chromium.h"
 #include "tests/support/test_support.h"

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "stages/common/map_frame.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tests/support/headless_chromium.h"
 #include "tests/support/test_support.h"

@@ -9,7 +9,7 @@
 #include "common/error.h"
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/export/test_area_graph.h"
 #include "tools/export/html_viewer.h"

@@ -9,7 +9,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/common/image_codecs.h"
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 
 namespace areagraph {
 namespace {

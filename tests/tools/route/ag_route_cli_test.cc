@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 #include "tests/support/test_support.h"
 #include "tests/tools/route/route_test_graphs.h"

@@ -20,6 +20,10 @@ namespace areagraph {
 // workers get no heap reserve (kWorkerHugePageMaxPixels).
 inline constexpr int64_t kHugePageRestartPixels = 5'000'000;
 
+// True when `path` is a PNG of more than kHugePageRestartPixels (read from
+// its header): a map for which a program restarts.
+bool IsBigMapImage(const std::string& path);
+
 // True when `tunables` (GLIBC_TUNABLES, null when unset) already says
 // anything about glibc.malloc.hugetlb: the user's value, or this restart's.
 bool HasHugePageTunable(const char* tunables);
@@ -46,11 +50,16 @@ bool RestartedWithHugePageTunable();
 // to their report.
 std::string HugePageRestartLine(const std::string& tool);
 
+// The command line that a restart runs again. RunCommand sets it for every
+// program, so that no program passes its argv down to where it restarts.
+void SetRestartCommandLine(char** argv);
+
 // Replaces this process by a fresh start of the same executable with the
-// same arguments, the tunable and kHugePageRestartVariable added. Returns
-// only when that could not be done (no /proc/self/exe, exec refused): the
-// program then goes on as it is, with the environment it was given.
-// Whatever the process holds open (a store) must be closed first.
-void RestartWithHugePageTunable(char** argv);
+// command line SetRestartCommandLine gave, the tunable and
+// kHugePageRestartVariable added. Returns only when that could not be done
+// (no command line given, no /proc/self/exe, exec refused): the program then
+// goes on as it is, with the environment it was given. Whatever the process
+// holds open (a store) must be closed first.
+void RestartWithHugePageTunable();
 
 }  // namespace areagraph

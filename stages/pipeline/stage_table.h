@@ -15,14 +15,19 @@ namespace areagraph {
 using MessagePtr = std::unique_ptr<google::protobuf::Message>;
 
 // Called by a stage's compute with the index of an input it reads no more:
-// the caller may free that input before the stage finishes.
+// the caller may free that input before the stage finishes. It also carries
+// the caller's hook for the points between a compute's big steps.
 class InputRelease {
  public:
   using Take = std::function<std::shared_ptr<google::protobuf::Message>(size_t input)>;
-  // `release` frees input i; `take` hands it over (see TakeInput), or is empty.
+  // `release` frees input i; `take` hands it over (see TakeInput), or is
+  // empty; `between_steps` is the hook below, or empty.
   template <typename Release>
-  InputRelease(Release release, Take take = {})  // NOLINT: a plain function converts
-      : release_(std::move(release)), take_(std::move(take)) {}
+  InputRelease(Release release, Take take = {},  // NOLINT: a plain function converts
+               std::function<void()> between_steps = {})
+      : release_(std::move(release)),
+        take_(std::move(take)),
+        between_steps_(std::move(between_steps)) {}
   void operator()(size_t input) const { release_(input); }
   // Input i itself, for a compute that frees parts of it as it goes, when the
   // caller holds the only reference (the memo's last reader, or a parsed
@@ -31,10 +36,15 @@ class InputRelease {
   std::shared_ptr<google::protobuf::Message> TakeInput(size_t input) const {
     return take_ ? take_(input) : nullptr;
   }
+  // What a compute calls where one big step's scratch is freed and the next
+  // allocates afresh (cut: at its start, after its room-width estimate): a
+  // program may give freed memory back there. Empty when the caller has none.
+  const std::function<void()>& between_steps() const { return between_steps_; }
 
  private:
   std::function<void(size_t input)> release_;
   Take take_;
+  std::function<void()> between_steps_;
 };
 
 // Everything the executables, the runner and the tools know about one stage.

@@ -1,4 +1,4 @@
-#include "runner/run/worker_heap.h"
+#include "common/process_setup/worker_heap.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -10,8 +10,8 @@
 #include <unistd.h>
 #endif
 
-#include "stages/common/page_fault_thrift.h"
-#include "stages/import/png_header.h"
+#include "common/png_header.h"
+#include "common/process_setup/page_fault_thrift.h"
 
 namespace areagraph {
 

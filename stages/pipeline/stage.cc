@@ -1,4 +1,4 @@
-#include "stages/common/stage.h"
+#include "stages/pipeline/stage.h"
 
 #include <chrono>
 #include <exception>
@@ -7,7 +7,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "stages/common/pipeline_options.h"
-#include "stages/common/stage_versions.h"
+#include "stages/pipeline/stage_versions.h"
 
 namespace areagraph {
 namespace {
@@ -117,7 +117,8 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
 
 StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const proto::PipelineOptions& options,
-                         bool force, ArtifactMemo* memo) {
+                         bool force, ArtifactMemo* memo,
+                         const std::function<void()>& between_steps) {
   StageInputs inputs = HeadInputs(store, map_name, stage);
   if (stage.reads_previous_version()) {
     inputs.version = PreviousVersionOf(store, map_name, stage, options, inputs.digests);
@@ -152,7 +153,8 @@ StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                 // Made as a mutable message (parsed, or a stage's result in
                 // the memo); only `held` refers to it.
                 return std::const_pointer_cast<google::protobuf::Message>(std::move(held[i]));
-              });
+              },
+              between_steps);
           return stage.compute(views, release, options);
         }
         MessagePtr previous;

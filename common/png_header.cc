@@ -1,4 +1,4 @@
-#include "stages/import/png_header.h"
+#include "common/png_header.h"
 
 #include <exception>
 #include <string>

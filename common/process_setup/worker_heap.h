@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-#include "stages/common/huge_page_restart.h"
+#include "common/process_setup/huge_page_restart.h"
 
 namespace areagraph {
 
@@ -36,7 +36,7 @@ inline constexpr size_t kWorkerHugePageReserve = size_t{48} << 20;
 // heap too, for a reason not found. Every map of areagraph/, bormann/
 // and RobotMap is smaller.
 // Larger maps make ag-run start itself again with glibc's huge-page tunable
-// (stages/common/huge_page_restart.h) instead.
+// (common/process_setup/huge_page_restart.h) instead.
 inline constexpr int64_t kWorkerHugePageMaxPixels = kHugePageRestartPixels;
 
 // True when `map_path` is a PNG of at most kWorkerHugePageMaxPixels pixels

@@ -1,4 +1,4 @@
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 
 #include <cstdarg>
 #include <cstdio>
@@ -167,7 +167,8 @@ std::vector<StageDefinition> MakeStageTable() {
         // When the graph is this stage's alone, cut takes its edges over.
         const auto owned = std::static_pointer_cast<proto::TopologyGraph>(release.TakeInput(0));
         return Wrap(BuildCutGraph(Input<proto::TopologyGraph>(in, 0),
-                                  Input<proto::CleanedMap>(in, 1), o.cut(), owned.get()));
+                                  Input<proto::CleanedMap>(in, 1), o.cut(), owned.get(),
+                                  release.between_steps()));
       },
       SummarizeCutGraph,
       "Detects rooms (alpha shapes with alpha = (W/2)^2; W estimated from the map's doors and "

@@ -12,9 +12,9 @@
 #include "stages/common/command_line.h"
 #include "stages/common/grid_cells.h"
 #include "stages/common/pipeline_options_check.h"
-#include "stages/common/stage.h"
 #include "stages/import/grid_map_decoder.h"
 #include "stages/import/import_stage.h"
+#include "stages/pipeline/stage.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {

@@ -7,7 +7,7 @@
 #include "runner/run/collection_run.h"
 #include "stages/common/command_line.h"
 #include "stages/common/pipeline_options.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "tools/report/run_report_writer.h"
 
 int main(int argc, char** argv) {
@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
       std::cout << CanonicalText(LoadPipelineOptions(flags.stage));
       return 0;
     }
-    const int status = RunCollection(flags, argv);
+    const int status = RunCollection(flags);
     if (!report_dir.empty()) WriteRunReport(flags, report_dir);
     return status;
   });

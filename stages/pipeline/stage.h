@@ -7,9 +7,9 @@
 #include <string>
 
 #include "proto/pipeline_options.pb.h"
-#include "stages/common/artifact_memo.h"
 #include "stages/common/stage_info.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/artifact_memo.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {
@@ -28,10 +28,12 @@ StageRun RunCachedStage(ArtifactStore& store, const std::string& map_name,
 // Runs a stage that reads artifacts (not import) through the cache on the
 // current heads of its inputs: HeadInputs, then RunCachedStage with the
 // table's compute function on the inputs read by key, or taken from `memo`
-// when they were computed in this process (and kept there).
+// when they were computed in this process (and kept there). The compute gets
+// `between_steps` as its InputRelease's hook.
 StageRun RunStageOnHeads(ArtifactStore& store, const std::string& map_name,
                          const StageDefinition& stage, const proto::PipelineOptions& options,
-                         bool force = false, ArtifactMemo* memo = nullptr);
+                         bool force = false, ArtifactMemo* memo = nullptr,
+                         const std::function<void()>& between_steps = nullptr);
 
 // The head keys of `stage`'s inputs. Throws MapStepError naming the
 // executable to run first when one is missing.

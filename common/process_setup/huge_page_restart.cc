@@ -1,4 +1,4 @@
-#include "stages/common/huge_page_restart.h"
+#include "common/process_setup/huge_page_restart.h"
 
 #include <unistd.h>
 
@@ -7,8 +7,12 @@
 #include <filesystem>
 #include <optional>
 
+#include "common/png_header.h"
+
 namespace areagraph {
 namespace {
+
+char** restart_command_line = nullptr;
 
 constexpr char kTunablesVariable[] = "GLIBC_TUNABLES";
 constexpr char kHugePageTunable[] = "glibc.malloc.hugetlb";
@@ -36,6 +40,11 @@ void Restore(const char* name, const std::optional<std::string>& value) {
 
 }  // namespace
 
+bool IsBigMapImage(const std::string& path) {
+  const std::optional<int64_t> pixels = PngFilePixels(path);
+  return pixels && *pixels > kHugePageRestartPixels;
+}
+
 bool HasHugePageTunable(const char* tunables) {
   return tunables != nullptr && std::strstr(tunables, kHugePageTunable) != nullptr;
 }
@@ -62,15 +71,17 @@ std::string HugePageRestartLine(const std::string& tool) {
   return tool + ": restarted with " + kHugePageTunable + "=1\n";
 }
 
-void RestartWithHugePageTunable(char** argv) {
+void SetRestartCommandLine(char** argv) { restart_command_line = argv; }
+
+void RestartWithHugePageTunable() {
   const std::optional<std::filesystem::path> self = SelfExecutable();
-  if (!self) return;
+  if (restart_command_line == nullptr || !self) return;
   const std::optional<std::string> tunables = Variable(kTunablesVariable);
   const std::optional<std::string> marker = Variable(kHugePageRestartVariable);
   const std::string value = WithHugePageTunable(std::getenv(kTunablesVariable));
   if (setenv(kTunablesVariable, value.c_str(), /*overwrite=*/1) == 0 &&
       setenv(kHugePageRestartVariable, self->filename().c_str(), /*overwrite=*/1) == 0) {
-    execv(self->c_str(), argv);
+    execv(self->c_str(), restart_command_line);
   }
   // Not restarted: the environment goes back to what the user gave.
   Restore(kTunablesVariable, tunables);

@@ -1,4 +1,4 @@
-#include "stages/common/stage_versions.h"
+#include "stages/pipeline/stage_versions.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "stages/common/freed_memory.h"
+#include "common/process_setup/freed_memory.h"
 
 #include <cstddef>
 #include <cstdlib>  // defines __GLIBC__ where it applies

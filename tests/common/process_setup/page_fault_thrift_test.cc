@@ -1,4 +1,4 @@
-#include "stages/common/page_fault_thrift.h"
+#include "common/process_setup/page_fault_thrift.h"
 
 #include <gtest/gtest.h>
 #include <malloc.h>

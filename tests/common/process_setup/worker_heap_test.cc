@@ -2,7 +2,7 @@
 // heap, and the heap's reserve is faulted in by huge pages. Each case runs in
 // a forked child, whose heap the test may change, and reports back through
 // its exit status.
-#include "runner/run/worker_heap.h"
+#include "common/process_setup/worker_heap.h"
 
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/runner/run/runner_test_support.h"
+#include "tests/support/test_support.h"
 
 namespace areagraph {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "proto/pipeline_options.pb.h"
 #include "stages/common/stage_info.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 
 namespace areagraph {

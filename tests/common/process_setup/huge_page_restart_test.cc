@@ -1,6 +1,6 @@
 // The value of GLIBC_TUNABLES that a big map's restart sets, when a program
 // may restart at all, and how a fresh start knows that it is one.
-#include "stages/common/huge_page_restart.h"
+#include "common/process_setup/huge_page_restart.h"
 
 #include <gtest/gtest.h>
 
