@@ -9,7 +9,7 @@
 
 #include "common/error.h"
 #include "stages/common/output_file.h"
-#include "stages/common/stage_table.h"
+#include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
 #include "store/collection_index.h"
 #include "tools/store/new_store_file.h"
