@@ -48,6 +48,13 @@ bool IsCollectionIndex(const std::string& path) {
   if (path == kMemoryStorePath || !fs::is_regular_file(path)) return false;
   try {
     const SqliteConnection connection(path, StoreMode::kReadOnly);
+    // A log beside the store may be one left for the next writer (ag-run
+    // hands its store to its workers so): closing as the last connection
+    // must not fold it. Without a log there is nothing to fold, and the
+    // close removes the side files this read made.
+    if (fs::exists(path + "-wal")) {
+      sqlite3_db_config(connection.get(), SQLITE_DBCONFIG_NO_CKPT_ON_CLOSE, 1, nullptr);
+    }
     return UserVersion(connection.get()) > kCollectionIndexVersionBase;
   } catch (const StoreError&) {
     return false;  // the ordinary open says what is wrong
