@@ -150,7 +150,8 @@ export_all() {  # STORE DIR: every map's GeoJSON into DIR; prints the seconds
   mkdir -p "$dir"
   start=$(now)
   while read -r name; do
-    ag-export --store "$store" --map "$name" --format geojson --out "$dir/${name//\//_}.geojson"
+    ag-export --store "$store" --map "$name" --format geojson --out "$dir/${name//\//_}.geojson" \
+      >/dev/null  # its "wrote FILE" line
   done < <(listed_maps "$store")
   since "$start"
 }
