@@ -144,6 +144,11 @@ class ArtifactStore {
   // One artifact without its payload; nullopt when absent.
   virtual std::optional<ArtifactRecord> ReadArtifactSummary(const std::string& map_name,
                                                             const std::string& cache_key) = 0;
+  // How many artifacts the map has (a collection index counts without asking
+  // its shards for the summaries).
+  virtual int64_t CountArtifacts(const std::string& map_name) {
+    return static_cast<int64_t>(ReadArtifactSummaries(map_name).size());
+  }
 
   // Inserts the artifact (creating the map row if needed) and makes it the
   // head of its (map, stage), all in one transaction. Writing a key that the

@@ -13,6 +13,7 @@
 
 #include "common/error.h"
 #include "common/text.h"
+#include "store/collection_index_store.h"
 #include "store/digest.h"
 #include "store/payload_codec.h"
 #include "store/payload_encoder.h"
@@ -547,19 +548,22 @@ std::vector<FailureRecord> SqliteArtifactStore::ReadFailures() {
   if (!HasFailuresTable()) return failures;
   SqliteStatement& statement = *sql_stmt_read_failures_;
   StatementUse use(statement);
-  while (statement.Step()) {
-    FailureRecord failure;
-    failure.map_name = statement.ColumnText(0, "failures.map_name");
-    failure.stage = statement.ColumnText(1, "failures.stage");
-    failure.message = statement.ColumnText(2, "failures.message");
-    failure.source_path = statement.ColumnText(3, "failures.source_path");
-    failure.failed_at = statement.ColumnText(4, "failures.failed_at");
-    failures.push_back(std::move(failure));
-  }
+  while (statement.Step()) failures.push_back(store_internal::ReadFailureRow(statement));
   return failures;
 }
 
+FailureRecord store_internal::ReadFailureRow(const SqliteStatement& statement) {
+  FailureRecord failure;
+  failure.map_name = statement.ColumnText(0, "failures.map_name");
+  failure.stage = statement.ColumnText(1, "failures.stage");
+  failure.message = statement.ColumnText(2, "failures.message");
+  failure.source_path = statement.ColumnText(3, "failures.source_path");
+  failure.failed_at = statement.ColumnText(4, "failures.failed_at");
+  return failure;
+}
+
 std::unique_ptr<ArtifactStore> OpenArtifactStore(const std::string& path, StoreMode mode) {
+  if (IsCollectionIndex(path)) return OpenCollectionIndexStore(path, mode);
   if (mode == StoreMode::kReadWrite) store_internal::CreateMissingStoreFile(path);
   return std::make_unique<SqliteArtifactStore>(path, mode);
 }

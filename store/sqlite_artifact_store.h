@@ -110,7 +110,6 @@ class SqliteArtifactStore : public ArtifactStore {
   // Records `artifact` (which has a version) in its map's history; inside
   // WriteArtifact's transaction.
   void InsertVersion(int64_t map_id, const NewArtifact& artifact);
-  VersionRecord ReadVersionRow(const SqliteStatement& statement) const;
   // Copies the history rows of the attached merge source (schema 4 and later).
   void MergeVersions(int source_version);
 
@@ -182,6 +181,11 @@ void CreateMissingStoreFile(const std::string& path);
 
 // Input keys are stored newline-joined.
 std::vector<std::string> SplitLines(const std::string& joined);
+
+// A row of store_sql::kReadVersions / kReadVersion, and of kReadFailures
+// (also a collection index's, whose tables answer the same statements).
+VersionRecord ReadVersionRow(const SqliteStatement& statement);
+FailureRecord ReadFailureRow(const SqliteStatement& statement);
 
 // What a row whose columns do not match its row digest (schema 6) is.
 inline constexpr char kRowDigestMismatch[] =

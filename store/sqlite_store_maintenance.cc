@@ -11,6 +11,7 @@
 
 #include "common/error.h"
 #include "common/text.h"
+#include "store/collection_index.h"
 #include "store/digest.h"
 #include "store/payload_codec.h"
 #include "store/protobuf_wire.h"
@@ -243,6 +244,10 @@ void SqliteArtifactStore::CheckCanMergeFrom(const std::string& path) {
   std::error_code ignored;
   if (path_ != kMemoryStorePath && std::filesystem::equivalent(path, path_, ignored)) {
     throw StoreError("cannot merge store '" + path + "' into itself");
+  }
+  if (IsCollectionIndex(path)) {
+    throw StoreError("cannot merge collection index '" + path +
+                     "' as a store: merge the shard stores it names");
   }
   // The usual open checks: exists, is SQLite, is ours, is not newer.
   OpenArtifactStore(path, StoreMode::kReadOnly);

@@ -36,7 +36,7 @@ void SqliteArtifactStore::InsertVersion(int64_t map_id, const NewArtifact& artif
   insert.Step();
 }
 
-VersionRecord SqliteArtifactStore::ReadVersionRow(const SqliteStatement& statement) const {
+VersionRecord store_internal::ReadVersionRow(const SqliteStatement& statement) {
   VersionRecord version;
   version.cache_key = statement.ColumnText(0, "versions.cache_key");
   version.predecessor_key = statement.ColumnText(1, "versions.predecessor_key");
@@ -54,7 +54,7 @@ std::vector<VersionRecord> SqliteArtifactStore::ReadVersions(const std::string& 
   SqliteStatement& statement = *sql_stmt_read_versions_;
   StatementUse use(statement);
   statement.BindText(1, map_name);
-  while (statement.Step()) versions.push_back(ReadVersionRow(statement));
+  while (statement.Step()) versions.push_back(store_internal::ReadVersionRow(statement));
   return versions;
 }
 
@@ -66,7 +66,7 @@ std::optional<VersionRecord> SqliteArtifactStore::ReadVersion(const std::string&
   statement.BindText(1, map_name);
   statement.BindText(2, cache_key);
   if (!statement.Step()) return std::nullopt;
-  return ReadVersionRow(statement);
+  return store_internal::ReadVersionRow(statement);
 }
 
 void SqliteArtifactStore::MergeVersions(int source_version) {

@@ -10,9 +10,12 @@
 #   trashbins, furnitures + trashbins: 79 maps), scored against the plain
 #   map's line ground truth (lab_b_scan_furnitures_trashbins was published at
 #   2/3 scale: it runs at 0.075 m/px and its result is scaled up to the GT);
-# - tuning and held-out: the two parts of ag-make-benchmark (generated floors
-#   with drawn ground truth). Constants are chosen on tuning; held-out is only
-#   reported.
+# - tuning and held-out: the two parts of ag-make-benchmark's office floors
+#   (generated floors with drawn ground truth), and public-tuning and
+#   public-held-out, its large public buildings. Constants are chosen on the
+#   tuning parts; the held-out parts are only reported. Their ground truth has
+#   kinds, so these sets also report kind accuracy (ag-eval, with ag-export
+#   --format kinds).
 # Every set also runs with W = 1.25 m (the defaults otherwise: a number for W
 # skips the width estimate, so cut.close_wall_doors, which closes the doors the
 # estimate finds, closes none there; that column differs from the defaults in
@@ -23,17 +26,22 @@
 #
 #   tools/bench-quality.sh [--data DIR] [--out DIR] [--build DIR] [--sets LIST]
 #                          [--options FILE] [--set KEY=VALUE]... [--jobs N]
+#                          [--fixed-widths LIST]
 #
-# --sets: comma-separated subset of areagraph,robotmap,bormann,tuning,held-out
-# (default: all five). --options and --set change the "ours, defaults" runs
-# only (to try an option against the same tables).
+# --sets: comma-separated subset of areagraph,robotmap,bormann,tuning,held-out,
+# public-tuning,public-held-out (default: all seven). --options and --set
+# change the "ours, defaults" runs only (to try an option against the same
+# tables). --fixed-widths: comma-separated fixed W (m) to run every set with
+# (default 1.25, the summary's fixed column; with more, a table of each).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 DATA=../shared/data
 OUT=out/bench-quality
 BUILD=
-SETS=areagraph,robotmap,bormann,tuning,held-out
+SETS=areagraph,robotmap,bormann,tuning,held-out,public-tuning,public-held-out
+GENERATED="tuning held-out public-tuning public-held-out"
 JOBS=2
+WIDTHS=1.25
 OURS=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -44,16 +52,22 @@ while [ $# -gt 0 ]; do
     --options) OURS+=(--options "$2"); shift 2 ;;
     --set) OURS+=(--set "$2"); shift 2 ;;
     --jobs) JOBS=$2; shift 2 ;;
-    -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
+    --fixed-widths) WIDTHS=$2; shift 2 ;;
+    -h|--help) sed -n '2,36p' "$0"; exit 0 ;;
     *) echo "bench-quality: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
 for set in ${SETS//,/ }; do
-  case "$set" in areagraph|robotmap|bormann|tuning|held-out) ;;
-    *) echo "bench-quality: unknown set '$set' (areagraph, robotmap, bormann, tuning, held-out)" >&2
+  case "$set" in areagraph|robotmap|bormann|tuning|held-out|public-tuning|public-held-out) ;;
+    *) echo "bench-quality: unknown set '$set' (areagraph, robotmap, bormann, tuning, held-out," \
+         "public-tuning, public-held-out)" >&2
        exit 2 ;;
   esac
 done
+for w in ${WIDTHS//,/ }; do
+  [[ "$w" =~ ^[0-9]+(\.[0-9]+)?$ ]] || { echo "bench-quality: bad fixed width '$w'" >&2; exit 2; }
+done
+FIRST_W=${WIDTHS%%,*}
 wanted() { [[ ",$SETS," == *",$1,"* ]]; }
 AG=$DATA/areagraph
 RM=$DATA/maoris/RobotMap
@@ -69,14 +83,15 @@ else
   BIN=build/bin
 fi
 PAPER=(--options examples/options/paper.pbtxt)
-FIXED=(--set cut.room_width_m=1.25)
+FIXED=(--set "cut.room_width_m=$FIRST_W")
 rm -rf "$OUT"
 mkdir -p "$OUT/manifests"
 
 # run MANIFEST OUTDIR [ag-run flags]: runs every map of the manifest and
-# exports its labels to OUTDIR/<name>.png (a failed map gets no file). Each
-# run has its own store, removed afterwards: a store of every run would grow
-# to gigabytes.
+# exports its labels to OUTDIR/<name>.png (a failed map gets no file), and
+# with KINDS=1 the areas' kinds to OUTDIR/<name>.kinds.tsv. Each run has its
+# own store, removed afterwards: a store of every run would grow to gigabytes.
+KINDS=0
 run() {
   local manifest=$1 outdir=$2
   shift 2
@@ -88,16 +103,27 @@ run() {
   tail -n +2 "$manifest" | cut -f2 | while read -r name; do
     "$BIN/ag-export" --store "$store" --map "$name" --format labels --out "$outdir/$name.png" \
       >/dev/null 2>&1 || echo "bench-quality: no result for $name" >&2
+    if [ "$KINDS" = 1 ]; then
+      "$BIN/ag-export" --store "$store" --map "$name" --format kinds \
+        --out "$outdir/$name.kinds.tsv" >/dev/null 2>&1 || true
+    fi
   done
   rm -f "$store" "$store-wal" "$store-shm"
 }
 
-# mcc DIR GT [ag-eval flags] -> "map<TAB>mcc" lines, then "mean<TAB>x" and "median<TAB>x"
+# mcc DIR GT [ag-eval flags] -> "map<TAB>mcc" lines, then "mean<TAB>x" and
+# "median<TAB>x"; where results and GT have kinds, also DIR.kinds: the same
+# lines with the kind accuracy.
 mcc() {
   local dir=$1 gt=$2
   shift 2
-  { "$BIN/ag-eval" --dataset --results "$dir" --gt "$gt" "$@" 2>/dev/null || true; } |
-    awk -F'|' 'NR > 2 { gsub(/[ *]/, "", $2); gsub(/[ *]/, "", $3); print $2 "\t" $3 }'
+  local table
+  table=$("$BIN/ag-eval" --dataset --results "$dir" --gt "$gt" "$@" 2>/dev/null || true)
+  awk -F'|' 'NR > 2 { gsub(/[ *]/, "", $2); gsub(/[ *]/, "", $3); print $2 "\t" $3 }' <<<"$table"
+  if head -1 <<<"$table" | grep -q "kind accuracy"; then
+    awk -F'|' 'NR > 2 { gsub(/[ *]/, "", $2); gsub(/[ *]/, "", $7); print $2 "\t" $7 }' \
+      <<<"$table" >"$dir.kinds"
+  fi
 }
 
 # table TITLE LABEL:FILE... -> Markdown table with one MCC column per file
@@ -241,7 +267,8 @@ if wanted bormann; then
   summary_row "bormann/ all variants" "$T/bm-auto-all" "$T/bm-fixed-all" "$T/bm-paper-all" "-"
 fi
 
-for part in tuning held-out; do
+KINDS=1
+for part in $GENERATED; do
   wanted "$part" || continue
   G=$OUT/generated/$part
   "$BIN/ag-make-benchmark" --part "$part" "$G" >/dev/null
@@ -262,16 +289,27 @@ for part in tuning held-out; do
   run "$M" "$OUT/$part/paper" "${PAPER[@]}"
   for run_name in auto fixed true paper; do
     mcc "$OUT/$part/$run_name" "$G/gt" --gt-style labels --mcc-variant maoris >"$T/$part-$run_name"
+    if [ -e "$OUT/$part/$run_name.kinds" ]; then
+      mv "$OUT/$part/$run_name.kinds" "$T/$part-$run_name-kinds"
+    else
+      : >"$T/$part-$run_name-kinds"
+    fi
+  done
+  for w in ${WIDTHS//,/ }; do
+    [ "$w" = "$FIRST_W" ] && { cp "$T/$part-fixed" "$T/$part-w$w"; continue; }
+    run "$M" "$OUT/$part/w$w" --set "cut.room_width_m=$w"
+    mcc "$OUT/$part/w$w" "$G/gt" --gt-style labels --mcc-variant maoris >"$T/$part-w$w"
   done
   summary_row "generated $part" "$T/$part-auto" "$T/$part-fixed" "$T/$part-paper" \
-    "ours with W from the true widths $(mean_of "$T/$part-true")"
+    "ours with W from the true widths $(mean_of "$T/$part-true"); kind accuracy $(mean_of "$T/$part-auto-kinds")"
 done
+KINDS=0
 
 echo "## Segmentation quality, $(date -u +%Y-%m-%d)"
 echo
 echo "Mean MCC (ag-eval, maoris variant). Defaults: no per-map settings."
 echo
-echo "| set | maps | ours, defaults | ours, W = 1.25 m (no estimated doors closed) | ours, paper options | published / reference |"
+echo "| set | maps | ours, defaults | ours, W = $FIRST_W m (no estimated doors closed) | ours, paper options | published / reference |"
 echo "|---|---|---|---|---|---|"
 cat "$SUMMARY"
 if wanted areagraph; then
@@ -296,9 +334,24 @@ if wanted bormann; then
     "plain:$T/bm-auto-plain" "furnitures:$T/bm-auto-furnitures" \
     "trashbins:$T/bm-auto-trashbins" "furnitures + trashbins:$T/bm-auto-furnitures_trashbins"
 fi
-for part in tuning held-out; do
+for part in $GENERATED; do
   wanted "$part" || continue
   table "generated $part ($(count_of "$T/$part-auto") floors), MCC (maoris)" \
-    "ours, defaults:$T/$part-auto" "ours, W = 1.25:$T/$part-fixed" \
-    "ours, W from true widths:$T/$part-true" "ours, paper options:$T/$part-paper"
+    "ours, defaults:$T/$part-auto" "ours, W = $FIRST_W:$T/$part-fixed" \
+    "ours, W from true widths:$T/$part-true" "ours, paper options:$T/$part-paper" \
+    "kind accuracy, defaults:$T/$part-auto-kinds"
 done
+if [ "$WIDTHS" != "$FIRST_W" ]; then
+  echo
+  echo "### Generated sets: mean MCC (maoris) with each fixed W"
+  echo
+  header="| set | defaults"; rule="|---|---"
+  for w in ${WIDTHS//,/ }; do header="$header | W = $w"; rule="$rule|---"; done
+  echo "$header |"; echo "$rule|"
+  for part in $GENERATED; do
+    wanted "$part" || continue
+    line="| $part | $(mean_of "$T/$part-auto")"
+    for w in ${WIDTHS//,/ }; do line="$line | $(mean_of "$T/$part-w$w")"; done
+    echo "$line |"
+  done
+fi

@@ -25,7 +25,8 @@ class Version(NamedTuple):
 
 
 class Store:
-    """An areagraph store (one SQLite file), opened read-only.
+    """An areagraph store (one SQLite file), or a collection index of shard stores (ag-store
+    index; docs/collections.md), opened read-only.
 
         with areagraph.Store("areagraph.db") as store:
             for map_name in store.maps():

@@ -31,7 +31,7 @@ inline constexpr double kWallPieceThinnerThanM = 0.3;
 inline constexpr double kWallPieceWallRatio = 2.0;
 inline constexpr double kWallPieceMinElongation = 3.0;
 // At least as long as the short wall pieces that ag-cut takes as jambs
-// (cut.close_wall_gaps_short_tips).
+// (cut.close_wall_gaps_max_m, its short tips).
 inline constexpr double kWallPieceMinLengthM = 0.5;
 // The gap past each end is at most a door's (as kWallGapM,
 // stages/cut/structure_sites.h).

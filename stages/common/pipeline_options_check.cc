@@ -95,8 +95,8 @@ void CheckCutOptions(const proto::CutOptions& options) {
               " m gives no room width (W = corridor - 0.1 m)");
   RequirePositive(options.room_width_m(), "cut.room_width_m", "metres");
   RequireNotNegative(options.room_island_max_m(), "cut.room_island_max_m", "metres");
-  RequireNotNegative(options.room_width_door_margin_m(), "cut.room_width_door_margin_m", "metres");
   RequireNotNegative(options.close_wall_gaps_max_m(), "cut.close_wall_gaps_max_m", "metres");
+  RequireNotNegative(options.close_mouths_max_m(), "cut.close_mouths_max_m", "metres");
   const double share = options.island_end_on_face_share();
   Require(std::isfinite(share) && share >= 0 && share <= 1,
           "cut.island_end_on_face_share must be between 0 and 1, got " + FormatNumber(share));

@@ -47,7 +47,8 @@ inline constexpr StageInfo kPruneStage{"prune", 4};
 // cut 11: past a jamb, free cells the door's free space cannot reach count as wall (outside drawn
 // free, hollow blocks; cut.jamb_wall_behind_line).
 // cut 12: edge polygons and room shapes as packed rings (CutGraph format 2, as prune 4).
-inline constexpr StageInfo kCutStage{"cut", 12};
+// cut 13: the openings (narrowings, wall gaps, mouths) and their decisions kept in the CutGraph.
+inline constexpr StageInfo kCutStage{"cut", 13};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

@@ -1,6 +1,7 @@
 #include "stages/cut/cut_graph_builder.h"
 
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <memory>
 
@@ -11,7 +12,9 @@
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
+#include "stages/cut/mouth_sites.h"
 #include "stages/cut/narrow_tails.h"
+#include "stages/cut/openings.h"
 #include "stages/cut/room_width.h"
 #include "stages/cut/structure_sites.h"
 #include "stages/geometry/cell_grid.h"
@@ -65,7 +68,8 @@ struct CutInputs {
   proto::RoomWidthEstimate room_width;
   cv::Mat inside;  // BoundaryMask
   PointList sites;
-  PointList closing;  // the sites that close doors and wall gaps on purpose
+  std::vector<Opening> openings;
+  PointList closing;  // the sites that close openings on purpose
 };
 
 CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::CleanedMap& map,
@@ -75,7 +79,9 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   const int width = grid.width(), height = grid.height();
   const double resolution_m = grid.resolution_m();
   const bool islands = options.room_island_max_m() > 0;
-  const bool closes_lines = options.close_wall_doors() || options.close_wall_gaps_max_m() > 0;
+  const bool finds_gaps = options.close_wall_gaps_max_m() > 0;
+  const bool closes_lines =
+      options.close_wall_doors() || finds_gaps || options.close_mouths_max_m() > 0;
   std::vector<int> site_cells;
   IslandDepth island_depth;
   // The obstacles labelled once for the three site finders.
@@ -107,42 +113,54 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
            /*on_caller=*/2);
   // The estimate's scratch is gone; the rasters below come from new mappings.
   if (between_steps) between_steps();
-  in.sites =
-      StructureSitesFrom(site_cells, island_depth, width, resolution_m, options.room_island_max_m(),
-                         options.island_end_on_face() ? options.island_end_on_face_share() : 0,
-                         options.island_wall_piece_both_ends(), obstacles);
+  in.sites = StructureSitesFrom(site_cells, island_depth, width, resolution_m,
+                                options.room_island_max_m(), options.island_end_on_face_share(),
+                                options.island_wall_piece_both_ends(), obstacles);
   island_depth = IslandDepth();
   std::vector<int>().swap(site_cells);
   cv::Mat free_spaces;
-  if (options.jamb_wall_behind_line() && closes_lines) {
+  if (closes_lines) {
     free_spaces = LabelFreeSpaces(map.cells(), width, height);
   }
   const cv::Mat* spaces = free_spaces.empty() ? nullptr : &free_spaces;
   // The door sites beside the gap sites' edge ranges.
   std::unique_ptr<WallGapFinder> gap_finder;
-  if (options.close_wall_gaps_max_m() > 0) {
+  if (finds_gaps) {
     gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m,
                                                  options.close_wall_gaps_max_m(),
-                                                 options.close_wall_gaps_short_tips(), spaces);
+                                                 /*short_tips=*/true, spaces);
   }
   const size_t edge_count = static_cast<size_t>(topology.edges_size());
   const int gap_ranges = gap_finder ? ParallelRangeCount(edge_count, kGapEdgesPerRange) : 0;
-  std::vector<PointList> gaps(gap_ranges);
-  std::vector<std::function<void()>> tasks = {[&] {
-    if (options.close_wall_doors()) {
-      in.closing = DoorClosingSites(in.room_width, obstacles, resolution_m, spaces);
-    }
-  }};
+  std::vector<std::vector<Opening>> gaps(gap_ranges);
+  std::vector<Opening> mouths;
+  std::vector<std::function<void()>> tasks = {
+      [&] {
+        if (options.close_wall_doors()) {
+          in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, spaces);
+        }
+      },
+      [&] {
+        mouths = MouthOpenings(obstacles, resolution_m, options.close_mouths_max_m(), spaces);
+      }};
   for (int range = 0; range < gap_ranges; ++range) {
     tasks.push_back([&, range] {
-      gaps[range] = gap_finder->Sites(
+      gaps[range] = gap_finder->Openings(
           static_cast<int>(ParallelRangeBegin(edge_count, gap_ranges, range)),
           static_cast<int>(ParallelRangeBegin(edge_count, gap_ranges, range + 1)));
     });
   }
   RunTasks(tasks);
-  for (const PointList& part : gaps) in.closing.insert(in.closing.end(), part.begin(), part.end());
+  gaps.push_back(std::move(mouths));
+  for (std::vector<Opening>& part : gaps) {
+    std::move(part.begin(), part.end(), std::back_inserter(in.openings));
+  }
+  in.closing = ClosingSites(in.openings);
   in.sites.insert(in.sites.end(), in.closing.begin(), in.closing.end());
+  if (in.room_width.automatic() && options.room_width_open_doors()) {
+    KeepWidthAboveOpenDoors(in.openings, ClosedLines(in.closing, resolution_m), options,
+                            &in.room_width);
+  }
   return in;
 }
 
@@ -286,6 +304,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   outlines.resize(room_ids.size());
   for (proto::Polygon& outline : outlines) *out.add_room_shapes() = std::move(outline);
   MarkClosedPassages(closed_lines, &out);
+  AddOpenings(in.openings, &out);
   return out;
 }
 

@@ -5,149 +5,11 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "stages/cut/wall_probes.h"
 #include "stages/cut/width_estimate.h"
 
 namespace areagraph {
 namespace {
-
-// The map's non-free cells and whether each 8-connected region of them is
-// the building's structure.
-class WallStructure {
- public:
-  WallStructure(const ObstacleLabels& obstacles, double min_region_px,
-                const cv::Mat* free_spaces = nullptr)
-      : width_(obstacles.labels.cols),
-        height_(obstacles.labels.rows),
-        labels_(obstacles.labels),
-        free_spaces_(free_spaces != nullptr ? *free_spaces : cv::Mat()) {
-    const int count = obstacles.count, width = width_, height = height_;
-    const cv::Mat& stats = obstacles.stats;
-    structure_.assign(count, 0);
-    longest_.assign(count, 0);
-    for (int region = 1; region < count; ++region) {
-      const int left = stats.at<int>(region, cv::CC_STAT_LEFT);
-      const int top = stats.at<int>(region, cv::CC_STAT_TOP);
-      const int w = stats.at<int>(region, cv::CC_STAT_WIDTH);
-      const int h = stats.at<int>(region, cv::CC_STAT_HEIGHT);
-      const bool on_border = left == 0 || top == 0 || left + w == width || top + h == height;
-      structure_[region] = on_border || std::max(w, h) >= min_region_px;
-      longest_[region] = std::max(w, h);
-    }
-  }
-
-  int LabelAt(int col, int row) const {
-    return col >= 0 && row >= 0 && col < width_ && row < height_ ? labels_.at<int>(row, col) : 0;
-  }
-  int LabelAt(const Eigen::Vector2d& p) const {
-    return LabelAt(static_cast<int>(std::floor(p.x())), static_cast<int>(std::floor(p.y())));
-  }
-  bool IsStructure(int label) const { return label > 0 && structure_[label] != 0; }
-  // The longer side of the region's bounding box (px); 0 for free cells.
-  int Longest(int label) const { return label > 0 ? longest_[label] : 0; }
-  // The free space (LabelFreeSpaces) holding `p`; 0 when `p` is not free or
-  // free spaces are not told apart.
-  int SpaceAt(const Eigen::Vector2d& p) const {
-    const int col = static_cast<int>(std::floor(p.x())), row = static_cast<int>(std::floor(p.y()));
-    if (free_spaces_.empty() || col < 0 || row < 0 || col >= width_ || row >= height_) return 0;
-    return free_spaces_.at<int>(row, col);
-  }
-  // Whether `p` is behind a wall as seen from free space `space`: non-free,
-  // or free but not reachable from `space` (space 0: only non-free).
-  bool Beyond(const Eigen::Vector2d& p, int space) const {
-    if (LabelAt(p) != 0) return true;
-    const int other = space > 0 ? SpaceAt(p) : 0;
-    return other > 0 && other != space;
-  }
-
- private:
-  int width_;
-  int height_;
-  // Shared with the caller's labels, read only.
-  cv::Mat labels_;
-  cv::Mat free_spaces_;
-  std::vector<uint8_t> structure_;
-  std::vector<int> longest_;
-};
-
-// The nearest non-free cell centre to `p` within `radius` px, optionally only
-// on the far side of `p` from `away` (angle above 120 degrees); false if none.
-bool NearestObstacle(const WallStructure& walls, const Eigen::Vector2d& p, double radius,
-                     const Eigen::Vector2d* away, Eigen::Vector2d* found) {
-  double best = radius * radius;
-  bool any = false;
-  const int r = static_cast<int>(std::ceil(radius));
-  const int pc = static_cast<int>(std::floor(p.x())), pr = static_cast<int>(std::floor(p.y()));
-  for (int row = pr - r; row <= pr + r; ++row) {
-    for (int col = pc - r; col <= pc + r; ++col) {
-      if (walls.LabelAt(col, row) == 0) continue;
-      const Eigen::Vector2d c(col + 0.5, row + 0.5);
-      const Eigen::Vector2d d = c - p;
-      const double d2 = d.squaredNorm();
-      if (d2 > best) continue;
-      if (away != nullptr) {
-        const Eigen::Vector2d a = *away - p;
-        if (d.dot(a) > -0.5 * d.norm() * a.norm()) continue;
-      }
-      best = d2, *found = c, any = true;
-    }
-  }
-  return any;
-}
-
-// Whether non-free cells run on from `jamb` in `direction` for `run_px`.
-// Free cells that the door's free space `space` cannot reach count as
-// non-free (space 0: none do): they lie behind a wall drawn as a thin line,
-// the outside of a map whose outside is drawn free, or the inside of a block
-// drawn as a hollow outline.
-bool WallRunsOn(const WallStructure& walls, const Eigen::Vector2d& jamb,
-                const Eigen::Vector2d& direction, double run_px, int space) {
-  int samples = 0, non_free = 0;
-  for (double t = 1; t <= run_px; t += 1, ++samples) {
-    non_free += walls.Beyond(jamb + t * direction, space);
-  }
-  return samples == 0 || non_free >= kJambRunShare * samples;
-}
-
-// Sites along the line from `a` to `b`, about one per pixel, ends excluded.
-void AddLineSites(const Eigen::Vector2d& a, const Eigen::Vector2d& b, PointList* sites) {
-  const int steps = static_cast<int>(std::ceil((b - a).norm()));
-  for (int k = 1; k < steps; ++k) sites->push_back(a + (b - a) * (static_cast<double>(k) / steps));
-}
-
-// How far non-free cells run from `from` in `direction` (px, whole steps),
-// or -1 when they still run at `limit_px` (no free cell within reach).
-double NonFreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
-                  const Eigen::Vector2d& direction, double limit_px) {
-  for (double t = 0; t <= limit_px; t += 0.5) {
-    if (walls.LabelAt(from + t * direction) == 0) return t;
-  }
-  return -1;
-}
-
-// Whether the wall at `probe` is at most `max_thickness_px` thick across
-// `outward` with free cells on both sides.
-bool IsThinAt(const WallStructure& walls, const Eigen::Vector2d& probe,
-              const Eigen::Vector2d& outward, double max_thickness_px) {
-  if (walls.LabelAt(probe) == 0) return false;
-  const Eigen::Vector2d across(-outward.y(), outward.x());
-  const double one = NonFreeRun(walls, probe, across, max_thickness_px);
-  const double other = NonFreeRun(walls, probe, -across, max_thickness_px);
-  return one > 0 && other > 0 && one + other <= max_thickness_px;
-}
-
-// Whether `jamb` is the end of a thin wall running on away from the gap in
-// `outward`: thin (IsThinAt) from the jamb on for kJambRunM and at least
-// `min_run_px` (a short stub in a room is no door's jamb; a partition wall
-// meeting a corridor's wall beside a door is thick at the jamb).
-bool IsThinWallEnd(const WallStructure& walls, const Eigen::Vector2d& jamb,
-                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px,
-                   double min_run_px) {
-  for (double t = 1; t <= std::max(run_px, min_run_px); t += 1) {
-    if (!IsThinAt(walls, jamb + t * outward, outward, max_thickness_px)) return false;
-  }
-  return true;
-}
-
 // The Topology Graph's edges with the arc length (px) at each path point,
 // and the edges that meet at each vertex.
 struct EdgeArcs {
@@ -221,7 +83,8 @@ double WidestNearVertex(const proto::TopologyGraph& topology, const EdgeArcs& ar
 // opens into a wider space, while a cross-section of a corridor (between
 // two doors facing each other) has the corridor's width on both sides.
 bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs, int e,
-                     double at_px, double gap_px, double reach_px, double rise_px) {
+                     double at_px, double gap_px, double reach_px, double rise_px,
+                     double* before_px, double* after_px) {
   const proto::GraphEdge& edge = topology.edges(e);
   const std::vector<double>& arc = arcs.arcs[e];
   double before = WidestOnEdge(edge, arc, at_px - reach_px, at_px);
@@ -233,6 +96,7 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
     after = std::max(
         after, WidestNearVertex(topology, arcs, edge.target(), e, reach_px - (arc.back() - at_px)));
   }
+  *before_px = before, *after_px = after;
   const double needed = gap_px + std::max(rise_px, kDoorRiseRatio * gap_px);
   return before >= needed || after >= needed;
 }
@@ -243,6 +107,7 @@ struct WallGapFinder::Impl {
   Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
        double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
       : topology(topology),
+        resolution_m(resolution_m),
         walls(obstacles, kMinWallRegionM / resolution_m, free_spaces),
         arcs(topology),
         short_tips(short_tips),
@@ -254,7 +119,12 @@ struct WallGapFinder::Impl {
         min_gap_px(kMinGapM / resolution_m + 1),
         min_tip_px(kMinShortTipM / resolution_m) {}
 
+  // The wall gap of segment `s` of edge `e` (sites a and b), if it is one;
+  // its line is a to b.
+  bool Find(int e, int s, Opening* found) const;
+
   const proto::TopologyGraph& topology;
+  const double resolution_m;
   const WallStructure walls;
   const EdgeArcs arcs;
   const bool short_tips;
@@ -269,91 +139,130 @@ WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const Obstacl
 
 WallGapFinder::~WallGapFinder() = default;
 
-PointList WallGapFinder::Sites(int begin, int end) const {
+bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
+  const proto::GraphEdge& edge = topology.edges(e);
+  const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
+  const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
+  const double span = (b - a).norm();
+  if (span > max_gap_px || span < min_gap_px) return false;
+  // The gap's middle must lie on this segment: its narrowest crossing.
+  const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
+  const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
+  const double length2 = (q - p).squaredNorm();
+  if (length2 <= 0) return false;
+  const double t = (0.5 * (a + b) - p).dot(q - p) / length2;
+  if (t < 0 || t > 1) return false;
+  const int label_a = walls.LabelAt(a), label_b = walls.LabelAt(b);
+  const bool wall_a = walls.IsStructure(label_a), wall_b = walls.IsStructure(label_b);
+  if (!wall_a && !wall_b) return false;
+  const Eigen::Vector2d along = (b - a) / span;
+  const int space = walls.SpaceAt(0.5 * (a + b));
+  if (!WallRunsOn(walls, a, -along, run_px, space) || !WallRunsOn(walls, b, along, run_px, space)) {
+    return false;
+  }
+  const double min_run_px = kMinTipRunGaps * span;
+  const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
+  const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
+  if (!tip_a && !tip_b) return false;
+  // With short_tips, a thin wall end facing the structure may be a short
+  // piece of wall (between two doors, a partition, a block of a row).
+  auto jamb = [&](bool wall, bool tip, int label) {
+    return wall || (short_tips && tip && walls.Longest(label) >= min_tip_px);
+  };
+  if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) return false;
+  const std::vector<double>& arc = arcs.arcs[e];
+  const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
+  double before = 0, after = 0;
+  if (!WidensOnOneSide(topology, arcs, e, at_px, span - 1, reach_px, rise_px, &before, &after)) {
+    return false;
+  }
+  *found = Opening();
+  found->kind = proto::Opening::WALL_GAP;
+  found->position = p + t * (q - p);
+  found->width_m = (span - 1) * resolution_m;
+  found->has_jambs = true;
+  found->jamb_a = a, found->jamb_b = b;
+  found->side_a_m = before * resolution_m, found->side_b_m = after * resolution_m;
+  found->closed = true;
+  found->lines = {{a, b}};
+  return true;
+}
+
+std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
   const Impl& in = *impl_;
-  const proto::TopologyGraph& topology = in.topology;
-  const WallStructure& walls = in.walls;
-  const double run_px = in.run_px, max_thickness_px = in.max_thickness_px;
-  PointList sites;
+  std::vector<Opening> openings;
   for (int e = begin; e < end; ++e) {
-    const proto::GraphEdge& edge = topology.edges(e);
-    const std::vector<double>& arc = in.arcs.arcs[e];
+    const proto::GraphEdge& edge = in.topology.edges(e);
     const int segments =
         std::min({edge.path_size() - 1, edge.left_sites_size(), edge.right_sites_size()});
+    bool in_run = false;  // consecutive segments across one gap
     for (int s = 0; s < segments; ++s) {
-      const Eigen::Vector2d a(edge.left_sites(s).x(), edge.left_sites(s).y());
-      const Eigen::Vector2d b(edge.right_sites(s).x(), edge.right_sites(s).y());
-      const double span = (b - a).norm();
-      if (span > in.max_gap_px || span < in.min_gap_px) continue;
-      // The gap's middle must lie on this segment: its narrowest crossing.
-      const Eigen::Vector2d p(edge.path(s).x(), edge.path(s).y());
-      const Eigen::Vector2d q(edge.path(s + 1).x(), edge.path(s + 1).y());
-      const double length2 = (q - p).squaredNorm();
-      if (length2 <= 0) continue;
-      const double t = (0.5 * (a + b) - p).dot(q - p) / length2;
-      if (t < 0 || t > 1) continue;
-      const int label_a = walls.LabelAt(a), label_b = walls.LabelAt(b);
-      const bool wall_a = walls.IsStructure(label_a), wall_b = walls.IsStructure(label_b);
-      if (!wall_a && !wall_b) continue;
-      const Eigen::Vector2d along = (b - a) / span;
-      const int space = walls.SpaceAt(0.5 * (a + b));
-      if (!WallRunsOn(walls, a, -along, run_px, space) ||
-          !WallRunsOn(walls, b, along, run_px, space)) {
+      Opening found;
+      if (!in.Find(e, s, &found)) {
+        in_run = false;
         continue;
       }
-      const double min_run_px = kMinTipRunGaps * span;
-      const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
-      const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
-      if (!tip_a && !tip_b) continue;
-      // With short_tips, a thin wall end facing the structure may be a short
-      // piece of wall (between two doors, a partition, a block of a row).
-      auto jamb = [&](bool wall, bool tip, int label) {
-        return wall || (in.short_tips && tip && walls.Longest(label) >= in.min_tip_px);
-      };
-      if (!jamb(wall_a, tip_a, label_a) || !jamb(wall_b, tip_b, label_b)) continue;
-      const double at_px = arc[s] + t * (arc[s + 1] - arc[s]);
-      if (!WidensOnOneSide(topology, in.arcs, e, at_px, span - 1, in.reach_px, in.rise_px)) {
-        continue;
+      if (in_run) {
+        Opening& run = openings.back();
+        run.lines.push_back(found.lines.front());
+        // The run's place and width are its narrowest crossing's.
+        if (found.width_m < run.width_m) {
+          found.lines = std::move(run.lines);
+          run = std::move(found);
+        }
+      } else {
+        openings.push_back(std::move(found));
       }
-      AddLineSites(a, b, &sites);
+      in_run = true;
     }
   }
-  return sites;
+  return openings;
 }
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
                        const cv::Mat* free_spaces) {
   if (max_gap_m <= 0) return PointList();
-  return WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
-      .Sites(0, topology.edges_size());
+  return ClosingSites(
+      WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
+          .Openings(0, topology.edges_size()));
 }
 
-PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m,
-                           const cv::Mat* free_spaces) {
-  PointList sites;
-  if (estimate.doors_size() == 0) return sites;
+std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
+                                       const ObstacleLabels& obstacles, double resolution_m,
+                                       const cv::Mat* free_spaces) {
+  std::vector<Opening> openings;
+  if (estimate.doors_size() == 0) return openings;
   const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
   for (const proto::DetectedWidth& door : estimate.doors()) {
+    Opening& opening = openings.emplace_back();
     const Eigen::Vector2d p(door.position().x(), door.position().y());
+    opening.position = p;
+    opening.width_m = door.width_m();
+    opening.side_a_m = door.side_a_m(), opening.side_b_m = door.side_b_m();
     const double reach = 0.5 * door.width_m() / resolution_m + 2;
     Eigen::Vector2d a, b;
     if (!NearestObstacle(walls, p, reach, nullptr, &a)) continue;
     if (!NearestObstacle(walls, p, reach + 1, &a, &b)) continue;
+    opening.has_jambs = true;
+    opening.jamb_a = a, opening.jamb_b = b;
+    opening.lines = {{a, b}};
     if (!walls.IsStructure(walls.LabelAt(a)) || !walls.IsStructure(walls.LabelAt(b))) continue;
     const double span = (b - a).norm();
     if (span < 1) continue;
     const Eigen::Vector2d along = (b - a) / span;
     const int space = walls.SpaceAt(p);
-    if (!WallRunsOn(walls, a, -along, run_px, space) ||
-        !WallRunsOn(walls, b, along, run_px, space)) {
-      continue;
-    }
-    AddLineSites(a, b, &sites);
+    opening.closed =
+        WallRunsOn(walls, a, -along, run_px, space) && WallRunsOn(walls, b, along, run_px, space);
   }
-  return sites;
+  return openings;
+}
+
+PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
+                           const ObstacleLabels& obstacles, double resolution_m,
+                           const cv::Mat* free_spaces) {
+  return ClosingSites(NarrowingOpenings(estimate, obstacles, resolution_m, free_spaces));
 }
 
 }  // namespace areagraph

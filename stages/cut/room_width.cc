@@ -56,7 +56,9 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
   const double door = options.door_width_m();
   const double corridor = options.corridor_width_m();
   double width = options.room_width_m();
-  if (door > 0 && corridor > 0) width = door < corridor ? door + 0.1 : corridor - 0.1;
+  if (door > 0 && corridor > 0) {
+    width = door < corridor ? door + kPaperWidthMarginM : corridor - kPaperWidthMarginM;
+  }
   CheckFitsMap(width, frame);
   return width;
 }
@@ -68,15 +70,34 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
   proto::RoomWidthEstimate estimate;
   if (options.room_width_auto() && !strategy) {
-    estimate =
-        EstimateRoomWidth(topology, LongestPart(topology), frame.resolution_m(), fixed,
-                          options.room_width_above_doors(), options.room_width_door_margin_m());
+    estimate = EstimateRoomWidth(topology, LongestPart(topology), frame.resolution_m(), fixed,
+                                 options.room_width_above_doors(), kPaperWidthMarginM);
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);
     estimate.set_automatic(false);
   }
   return estimate;
+}
+
+void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedLines& closed,
+                             const proto::CutOptions& options, proto::RoomWidthEstimate* estimate) {
+  std::vector<double> open;  // widest first, as the estimate's doors
+  for (const Opening& opening : openings) {
+    if (opening.kind != proto::Opening::NARROWING || opening.closed) continue;
+    if (closed.Near(opening.position)) continue;
+    open.push_back(opening.width_m);
+  }
+  if (!options.close_wall_doors()) {
+    for (const proto::DetectedWidth& door : estimate->doors()) open.push_back(door.width_m());
+  }
+  const double door = WidestDoorM(open);
+  estimate->set_widest_open_door_m(door);
+  const double corridor = estimate->narrowest_corridor_m();
+  double width = WidthRule(door, corridor, options.room_width_m(), options.room_width_above_doors(),
+                           kPaperWidthMarginM);
+  if (corridor > 0) width = std::max(width, corridor + kPaperWidthMarginM);
+  estimate->set_room_width_m(std::min(estimate->room_width_m(), width));
 }
 
 }  // namespace areagraph

@@ -1,7 +1,11 @@
 #pragma once
 
+#include <vector>
+
 #include "proto/artifacts.pb.h"
 #include "proto/pipeline_options.pb.h"
+#include "stages/cut/closed_passages.h"
+#include "stages/cut/openings.h"
 
 namespace areagraph {
 
@@ -23,5 +27,17 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
 proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
                                          const proto::MapFrame& frame,
                                          const proto::TopologyGraph& topology);
+
+// Local door decisions (cut.room_width_open_doors): an automatic W need
+// only stop the doors that no opening closes. The estimate's doors are the
+// narrowing openings (widest first); a door that a rule closed, or that
+// lies on a `closed` line (a wall gap's), keeps the disk out whatever W is.
+// W becomes the rule's width from the doors left open (WidestDoorM of
+// them, or none), kept above the narrowest corridor (corridors stay
+// room-less) and never above the estimate's W; the widest open door is
+// recorded. A building whose double doors all have wall jambs then gets W
+// from its single doors.
+void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedLines& closed,
+                             const proto::CutOptions& options, proto::RoomWidthEstimate* estimate);
 
 }  // namespace areagraph

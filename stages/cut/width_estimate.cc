@@ -72,7 +72,8 @@ void FindDoors(const std::vector<WidthProfile>& profiles,
     const WidthProfile& p = profiles[e];
     const int n = static_cast<int>(p.width_m.size());
     const ReachExtremes near = ExtremesWithinReach(p.width_m, p.arc_m, kDoorReachM);
-    int run_start = -1;  // a run of equal narrowest samples (a door's depth)
+    int run_start = -1;                    // a run of equal narrowest samples (a door's depth)
+    std::vector<double> sides_a, sides_b;  // the widest beside each sample of the run
     for (int i = 0; i <= n; ++i) {
       bool door = false;
       if (i < n) {
@@ -88,6 +89,7 @@ void FindDoors(const std::vector<WidthProfile>& profiles,
                                                    kDoorReachM - (p.arc_m.back() - p.arc_m[i])));
         }
         door = narrowest && IsConstriction(width, left) && IsConstriction(width, right);
+        if (door) sides_a.push_back(left), sides_b.push_back(right);
       }
       if (door && run_start < 0) run_start = i;
       if (!door && run_start >= 0) {
@@ -96,8 +98,11 @@ void FindDoors(const std::vector<WidthProfile>& profiles,
         found.mutable_position()->set_x(p.points[middle].x());
         found.mutable_position()->set_y(p.points[middle].y());
         found.set_width_m(p.width_m[middle]);
+        found.set_side_a_m(sides_a[middle - run_start]);
+        found.set_side_b_m(sides_b[middle - run_start]);
         doors->push_back(found);
         run_start = -1;
+        sides_a.clear(), sides_b.clear();
       }
     }
   }
@@ -153,15 +158,6 @@ std::vector<proto::DetectedWidth> OnePerPlace(std::vector<proto::DetectedWidth> 
   return kept;
 }
 
-// The widest door that is not a lone outlier: the 90th percentile once
-// there are ten doors or more. (The widest width that recurs in a tenth of
-// the doors was tried: it fits maps with one standard door width, but
-// misses the wide openings of others; on the benchmark it did worse.)
-double WidestDoorM(const std::vector<proto::DetectedWidth>& doors_widest_first) {
-  if (doors_widest_first.empty()) return 0;
-  return doors_widest_first[doors_widest_first.size() / 10].width_m();
-}
-
 // The narrowest width that corridors run for at least kCorridorMinTotalM
 // (summed over the stretches at most that wide): one short gap between a
 // desk and a wall is no corridor.
@@ -209,21 +205,33 @@ proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
   estimate.set_automatic(true);
   for (const auto& door : doors) *estimate.add_doors() = door;
   for (const auto& corridor : corridors) *estimate.add_corridors() = corridor;
-  const double door = WidestDoorM(doors);
+  std::vector<double> widths;
+  for (const proto::DetectedWidth& door : doors) widths.push_back(door.width_m());
+  const double door = WidestDoorM(widths);
   const double corridor = NarrowestCorridorM(corridors);
   estimate.set_widest_door_m(door);
   estimate.set_narrowest_corridor_m(corridor);
-  double width = fallback_m;
-  // Widths within kSameWidthM count as equal, and then W stays above the
-  // door: a disk that passes doors merges rooms, which costs far more than
-  // a corridor cut in two.
-  if (door > 0 && (above_doors || corridor <= 0 || door < corridor + kSameWidthM)) {
-    width = door + door_margin_m;
-  } else if (corridor > 0) {
-    width = corridor - 0.1;
-  }
-  estimate.set_room_width_m(std::max(width, kMinRoomWidthM));
+  estimate.set_room_width_m(WidthRule(door, corridor, fallback_m, above_doors, door_margin_m));
   return estimate;
+}
+
+double WidestDoorM(const std::vector<double>& widths_widest_first) {
+  if (widths_widest_first.empty()) return 0;
+  return widths_widest_first[widths_widest_first.size() / 10];
+}
+
+double WidthRule(double door_m, double corridor_m, double fallback_m, bool above_doors,
+                 double door_margin_m) {
+  double width = fallback_m;
+  // Widths within the paper's margin count as equal, and then W stays above
+  // the door: a disk that passes doors merges rooms, which costs far more
+  // than a corridor cut in two.
+  if (door_m > 0 && (above_doors || corridor_m <= 0 || door_m < corridor_m + kPaperWidthMarginM)) {
+    width = door_m + door_margin_m;
+  } else if (corridor_m > 0) {
+    width = corridor_m - kPaperWidthMarginM;
+  }
+  return std::max(width, kMinRoomWidthM);
 }
 
 }  // namespace areagraph

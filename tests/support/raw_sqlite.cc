@@ -88,6 +88,20 @@ std::vector<std::string> HeadDigests(const std::string& path) {
                      " ORDER BY 1");
 }
 
+std::vector<std::string> StoreHeadDigests(const std::string& path) {
+  const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(path, StoreMode::kReadOnly);
+  std::vector<std::string> heads;
+  for (const MapRecord& map : store->ReadAllMaps()) {
+    for (const ArtifactRecord& artifact : store->ReadArtifactSummaries(map.name)) {
+      if (artifact.is_head) {
+        heads.push_back(map.name + " " + artifact.stage + " " + artifact.payload_digest);
+      }
+    }
+  }
+  std::sort(heads.begin(), heads.end());
+  return heads;
+}
+
 void RewriteAsSchema4(const std::string& path) {
   const std::vector<std::string> ids = QueryColumn(path, "SELECT id FROM artifacts");
   Connection db = OpenRaw(path);

@@ -43,6 +43,10 @@ std::vector<std::string> QueryColumn(const std::string& path, const std::string&
 // same results give the same list.
 std::vector<std::string> HeadDigests(const std::string& path);
 
+// The same list read through ArtifactStore rather than SQL: for a collection
+// index, whose rows leave most digests to the shard that holds the payload.
+std::vector<std::string> StoreHeadDigests(const std::string& path);
+
 // Turns a store of this build into one as schema 4 wrote it: raw payloads,
 // no payload_codec or payload_size column.
 void RewriteAsSchema4(const std::string& path);

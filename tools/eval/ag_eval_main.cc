@@ -36,7 +36,10 @@ int main(int argc, char** argv) {
       "  ag-eval --result R.png --gt GT.png\n"
       "  ag-eval --dataset --results DIR --gt DIR [--suffix S] [--gt-suffix S]\n"
       "Segmentations: 8/16-bit label PNGs (0 = none) or colour images (one segment per\n"
-      "chromatic colour; white, black and grey = none)."};
+      "chromatic colour; white, black and grey = none).\n"
+      "Kinds: when both images have a <stem>.kinds.tsv beside them (label<TAB>room|corridor|\n"
+      "dead_end; ag-export --format kinds, ag-make-benchmark), the share of the result's area\n"
+      "whose kind is that of the GT zone it overlaps most is reported too."};
   std::string result_path, results_dir, gt_path, suffix, gt_suffix, style_name = "auto";
   std::string variant_name = "standard", offset_text;
   bool dataset = false, json = false, maoris_grey = false, scale_result = false;

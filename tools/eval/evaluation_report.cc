@@ -3,6 +3,8 @@
 #include <google/protobuf/util/json_util.h>
 
 #include <cstdio>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "common/error.h"
@@ -24,18 +26,30 @@ std::string OffsetText(const MapEvaluation& map) {
 
 struct Summary {
   double mcc, precision, recall;
+  std::optional<double> kind_accuracy;
 };
 
-// Mean (or median) of each score over the maps.
+// Mean (or median) of each score over the maps (the kind accuracy over the
+// maps that have one).
 Summary Summarize(const DatasetEvaluation& dataset, bool median) {
-  std::vector<double> mcc, precision, recall;
+  std::vector<double> mcc, precision, recall, kinds;
   for (const MapEvaluation& map : dataset.maps) {
     mcc.push_back(map.mcc);
     precision.push_back(map.precision);
     recall.push_back(map.recall);
+    if (map.kind_accuracy) kinds.push_back(*map.kind_accuracy);
   }
-  if (median) return {Median(mcc), Median(precision), Median(recall)};
-  return {Mean(mcc), Mean(precision), Mean(recall)};
+  auto of = [&](const std::vector<double>& values) {
+    return median ? Median(values) : Mean(values);
+  };
+  Summary summary{of(mcc), of(precision), of(recall), std::nullopt};
+  if (!kinds.empty()) summary.kind_accuracy = of(kinds);
+  return summary;
+}
+
+// " 0.953 |" or " - |": a kind accuracy column.
+std::string KindCell(const std::optional<double>& accuracy) {
+  return " " + (accuracy ? Fixed3(*accuracy) : std::string("-")) + " |";
 }
 
 eval::MapScores MapMessage(const MapEvaluation& map) {
@@ -55,6 +69,7 @@ eval::MapScores MapMessage(const MapEvaluation& map) {
     scores.set_gt_offset_y(map.gt_offset.y);
   }
   if (map.result_scaled) scores.set_result_scaled(true);
+  if (map.kind_accuracy) scores.set_kind_accuracy(*map.kind_accuracy);
   return scores;
 }
 
@@ -62,6 +77,7 @@ void SetSummary(const Summary& summary, eval::SummaryScores* scores) {
   scores->set_mcc(summary.mcc);
   scores->set_precision(summary.precision);
   scores->set_recall(summary.recall);
+  if (summary.kind_accuracy) scores->set_kind_accuracy(*summary.kind_accuracy);
 }
 
 std::string ToJson(const google::protobuf::Message& message) {
@@ -84,23 +100,30 @@ std::string FormatMapText(const MapEvaluation& map) {
                      "\ngt style " + GroundTruthStyleName(map.gt_style) + "\n";
   if (map.gt_cropped) text += "gt offset " + OffsetText(map) + "\n";
   if (map.result_scaled) text += "result scaled to the gt's size\n";
+  if (map.kind_accuracy) text += "kind accuracy " + Fixed3(*map.kind_accuracy) + "\n";
   return text;
 }
 
 std::string FormatDatasetMarkdown(const DatasetEvaluation& dataset) {
-  std::string table =
-      "| map | MCC | precision | recall | segments found/GT |\n|---|---|---|---|---|\n";
+  const Summary mean = Summarize(dataset, false), median = Summarize(dataset, true);
+  // The kind column only where some map has kinds on both sides.
+  const bool kinds = mean.kind_accuracy.has_value();
+  std::string table = kinds ? "| map | MCC | precision | recall | segments found/GT | kind "
+                              "accuracy |\n|---|---|---|---|---|---|\n"
+                            : "| map | MCC | precision | recall | segments found/GT |\n"
+                              "|---|---|---|---|---|\n";
   for (const MapEvaluation& map : dataset.maps) {
     table += "| " + map.name + " | " + Fixed3(map.mcc) + " | " + Fixed3(map.precision) + " | " +
              Fixed3(map.recall) + " | " + std::to_string(map.result_segments) + "/" +
-             std::to_string(map.gt_segments) + " |\n";
+             std::to_string(map.gt_segments) + " |" + (kinds ? KindCell(map.kind_accuracy) : "") +
+             "\n";
   }
-  const Summary mean = Summarize(dataset, false), median = Summarize(dataset, true);
   const std::string count = std::to_string(dataset.maps.size()) + " maps";
   table += "| **mean** | **" + Fixed3(mean.mcc) + "** | " + Fixed3(mean.precision) + " | " +
-           Fixed3(mean.recall) + " | " + count + " |\n";
+           Fixed3(mean.recall) + " | " + count + " |" +
+           (kinds ? KindCell(mean.kind_accuracy) : "") + "\n";
   table += "| **median** | **" + Fixed3(median.mcc) + "** | " + Fixed3(median.precision) + " | " +
-           Fixed3(median.recall) + " | |\n";
+           Fixed3(median.recall) + " | |" + (kinds ? KindCell(median.kind_accuracy) : "") + "\n";
   return table;
 }
 

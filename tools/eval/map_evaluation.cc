@@ -8,6 +8,7 @@
 #include "tools/eval/ground_truth_alignment.h"
 #include "tools/eval/label_image.h"
 #include "tools/eval/precision_recall.h"
+#include "tools/eval/zone_kinds.h"
 #include "tools/eval/zone_overlaps.h"
 
 namespace areagraph {
@@ -23,7 +24,10 @@ bool SameShape(const cv::Size& a, const cv::Size& b) {
 
 MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_labels,
                                MccVariant variant) {
-  const ZoneOverlaps counts = CountZoneOverlaps(result_labels, gt_labels);
+  return ScoreZoneOverlaps(CountZoneOverlaps(result_labels, gt_labels), variant);
+}
+
+MapEvaluation ScoreZoneOverlaps(const ZoneOverlaps& counts, MccVariant variant) {
   const PerZoneMcc mcc = ComputePerZoneMcc(counts, variant);
   const PrecisionRecall precision_recall = ComputePrecisionRecall(counts);
   MapEvaluation evaluation;
@@ -69,7 +73,15 @@ MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_
                                : FindGroundTruthOffset(gt_labels, result_labels).offset;
     gt_labels = CropGroundTruth(gt_labels, result_labels.size(), offset);
   }
-  MapEvaluation evaluation = ScoreLabelImages(result_labels, gt_labels, options.mcc_variant);
+  const ZoneOverlaps counts = CountZoneOverlaps(result_labels, gt_labels);
+  MapEvaluation evaluation = ScoreZoneOverlaps(counts, options.mcc_variant);
+  const std::string result_kinds = KindsPathFor(result_path), gt_kinds = KindsPathFor(gt_path);
+  std::error_code error;
+  if (std::filesystem::is_regular_file(result_kinds, error) &&
+      std::filesystem::is_regular_file(gt_kinds, error)) {
+    evaluation.kind_accuracy =
+        KindAccuracy(counts, ReadZoneKinds(result_kinds), ReadZoneKinds(gt_kinds));
+  }
   evaluation.name = std::filesystem::path(result_path).stem().string();
   evaluation.result_path = result_path;
   evaluation.gt_path = gt_path;

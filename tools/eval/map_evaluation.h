@@ -8,6 +8,7 @@
 #include "tools/eval/ground_truth.h"
 #include "tools/eval/per_zone_mcc.h"
 #include "tools/eval/segmentation_reader.h"
+#include "tools/eval/zone_overlaps.h"
 
 namespace areagraph {
 
@@ -50,17 +51,23 @@ struct MapEvaluation {
   int gt_segments = 0;
   // Pixels inside a segment in both images (the MCC's N).
   int64_t scored_pixels = 0;
+  // KindAccuracy (zone_kinds.h), when both images have a kinds file.
+  std::optional<double> kind_accuracy;
 };
 
 // Scores two label images of the same size (CV_32S).
 MapEvaluation ScoreLabelImages(const cv::Mat& result_labels, const cv::Mat& gt_labels,
                                MccVariant variant);
 
+// The same from the two images' overlap counts.
+MapEvaluation ScoreZoneOverlaps(const ZoneOverlaps& counts, MccVariant variant);
+
 // The segments of a ground-truth file (CV_32S labels, 0 = none), read the way
 // the scoring reads them; `style` kAuto is replaced by the detected style.
 cv::Mat ReadGroundTruthLabels(const std::string& path, GroundTruthStyle* style);
 
-// Reads, labels, aligns and scores one segmentation file against one GT file.
+// Reads, labels, aligns and scores one segmentation file against one GT file,
+// and the kinds of their zones when both have a kinds file (KindsPathFor).
 // Throws InputError for unreadable files and sizes that cannot be aligned.
 MapEvaluation EvaluateMap(const std::string& result_path, const std::string& gt_path,
                           const EvaluationOptions& options);

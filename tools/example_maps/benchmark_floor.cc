@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "tools/example_maps/benchmark_furniture.h"
+#include "tools/example_maps/public_building_layout.h"
 
 namespace areagraph::floorplan {
 namespace {
@@ -21,9 +22,11 @@ RectM DoorKeepOut(const DoorM& door) {
 void Furnish(const FloorLayout& layout, double wall_m, PortableRandom& random, FloorPlan& plan) {
   std::vector<RectM> doors;
   for (const DoorM& door : layout.doors) doors.push_back(DoorKeepOut(door));
+  // Nothing is put on fixed furniture either.
+  doors.insert(doors.end(), layout.fixtures.begin(), layout.fixtures.end());
   for (const Zone& zone : layout.zones) {
     std::vector<RectM> items;
-    if (zone.kind == ZoneKind::kCorridor) {
+    if (IsCorridorKind(zone.kind)) {
       for (size_t p = 0; p < zone.parts.size(); ++p) {
         if (!random.Chance(0.5)) continue;
         std::vector<RectM> keep_out = doors;
@@ -47,7 +50,7 @@ void Furnish(const FloorLayout& layout, double wall_m, PortableRandom& random, F
 // whose far part was not scanned.
 void LeaveUnknown(const FloorLayout& layout, PortableRandom& random, FloorPlan& plan) {
   for (const Zone& zone : layout.zones) {
-    if (zone.kind == ZoneKind::kCorridor) continue;
+    if (IsCorridorKind(zone.kind)) continue;
     const RectM& room = zone.parts[0];
     if (random.Chance(0.05)) {
       plan.image()(InnerCells(plan, room)).setTo(kUnknownGrey);
@@ -111,19 +114,22 @@ void AddScanNoise(const FloorLayout& layout, PortableRandom& random, FloorPlan& 
   DrawNoiseDots(plan, random.Int(0, 60), static_cast<uint32_t>(random.Int(0, 1 << 30)));
 }
 
-}  // namespace
-
-std::string BenchmarkFloorName(uint32_t seed) { return "floor_" + std::to_string(seed); }
-
-BenchmarkFloor RandomBenchmarkFloor(uint32_t seed) {
-  PortableRandom random(seed);
-  const double resolution = std::round(random.Uniform(0.025, 0.1) * 1000) / 1000;
-  const double wall = random.Uniform(0.1, 0.3);
-  FloorLayout layout = RandomFloorLayout(random);
+// Draws `layout` (zones, lift shafts left unknown inside, doors, fixtures,
+// furniture), its ground truth, unknown rooms and scan noise.
+BenchmarkFloor DrawFloor(FloorLayout layout, double resolution, double wall,
+                         PortableRandom& random) {
   FloorPlan plan(layout.width_m, layout.height_m, resolution, wall);
   for (const Zone& zone : layout.zones) DrawRegion(plan, zone.parts);
-  for (const DoorM& door : layout.doors) DrawDoor(plan, door.x, door.y, door.width, door.wall);
-  Furnish(layout, plan.wall_thickness_px() * resolution, random, plan);
+  for (const RectM& shaft : layout.shafts) {
+    DrawRoom(plan, shaft);
+    plan.image()(InnerCells(plan, shaft)).setTo(kUnknownGrey);
+  }
+  const double wall_m = plan.wall_thickness_px() * resolution;
+  for (const DoorM& door : layout.doors) {
+    DrawDoor(plan, door.x, door.y, door.whole_side ? door.width - wall_m : door.width, door.wall);
+  }
+  for (const RectM& fixture : layout.fixtures) DrawFurniture(plan, fixture);
+  Furnish(layout, wall_m, random, plan);
 
   cv::Mat truth = cv::Mat::zeros(plan.image().size(), CV_16U);
   for (size_t k = 0; k < layout.zones.size(); ++k) {
@@ -135,6 +141,42 @@ BenchmarkFloor RandomBenchmarkFloor(uint32_t seed) {
   AddScanNoise(layout, random, plan);
   truth.setTo(0, plan.image() == kUnknownGrey);
   return {std::move(layout), std::move(plan), std::move(truth)};
+}
+
+}  // namespace
+
+std::string BenchmarkFloorName(uint32_t seed) { return "floor_" + std::to_string(seed); }
+
+BenchmarkFloor RandomBenchmarkFloor(uint32_t seed) {
+  PortableRandom random(seed);
+  const double resolution = std::round(random.Uniform(0.025, 0.1) * 1000) / 1000;
+  const double wall = random.Uniform(0.1, 0.3);
+  return DrawFloor(RandomFloorLayout(random), resolution, wall, random);
+}
+
+BenchmarkFloor RandomPublicBuildingFloor(uint32_t seed) {
+  PortableRandom random(seed);
+  const double resolution = std::round(random.Uniform(0.05, 0.1) * 1000) / 1000;
+  const double wall = random.Uniform(0.15, 0.3);
+  return DrawFloor(RandomPublicBuildingLayout(random), resolution, wall, random);
+}
+
+BenchmarkFloor MakeBenchmarkFloor(const BenchmarkPart& part, uint32_t seed) {
+  return part.domain == BenchmarkDomain::kPublic ? RandomPublicBuildingFloor(seed)
+                                                 : RandomBenchmarkFloor(seed);
+}
+
+std::string BenchmarkFloorName(const BenchmarkPart& part, uint32_t seed) {
+  return part.domain == BenchmarkDomain::kPublic ? "public_" + std::to_string(seed)
+                                                 : BenchmarkFloorName(seed);
+}
+
+std::string GroundTruthKindsTsv(const FloorLayout& layout) {
+  std::string tsv = "label\tkind\n";
+  for (size_t k = 0; k < layout.zones.size(); ++k) {
+    tsv += std::to_string(k + 1) + "\t" + GroundTruthKindName(layout.zones[k].kind) + "\n";
+  }
+  return tsv;
 }
 
 }  // namespace areagraph::floorplan

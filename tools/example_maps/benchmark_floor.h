@@ -27,12 +27,25 @@ struct BenchmarkFloor {
 // wall surfaces and noise dots. Depends only on the seed.
 BenchmarkFloor RandomBenchmarkFloor(uint32_t seed);
 
+// The floor of `seed` in the public-building domain: RandomPublicBuildingLayout
+// drawn at 0.05-0.1 m/px with walls 0.15-0.3 m thick, fixtures (seat rows,
+// pillars, stair walls), lift shafts left unknown inside, furnished, some
+// rooms unknown and scan noise as above. Depends only on the seed.
+BenchmarkFloor RandomPublicBuildingFloor(uint32_t seed);
+
+// Which generator a part's floors come from.
+enum class BenchmarkDomain {
+  kOffice,  // RandomBenchmarkFloor: small office floors
+  kPublic,  // RandomPublicBuildingFloor: large public buildings
+};
+
 // A part of the generated benchmark: the floors of seeds first_seed ..
 // first_seed + count - 1.
 struct BenchmarkPart {
   const char* name;
   uint32_t first_seed;
   int count;
+  BenchmarkDomain domain = BenchmarkDomain::kOffice;
 };
 
 // The split, decided once (2026-12-01) and never to be changed: constants are
@@ -45,7 +58,23 @@ inline constexpr BenchmarkPart kHeldOutPart{"held-out", 100001, 30};
 // held-out.
 inline constexpr BenchmarkPart kTuningExtraPart{"tuning-extra", 1001, 100};
 
+// Large public buildings (issue 39, 2026-12-04), split the same way and
+// never to be changed: tuning and held-out.
+inline constexpr BenchmarkPart kPublicTuningPart{"public-tuning", 2001, 20,
+                                                 BenchmarkDomain::kPublic};
+inline constexpr BenchmarkPart kPublicHeldOutPart{"public-held-out", 200001, 20,
+                                                  BenchmarkDomain::kPublic};
+
 // Map name of a seed's floor: "floor_<seed>".
 std::string BenchmarkFloorName(uint32_t seed);
+
+// The floor of `seed` from `part`'s domain, and its map name ("floor_<seed>"
+// or "public_<seed>").
+BenchmarkFloor MakeBenchmarkFloor(const BenchmarkPart& part, uint32_t seed);
+std::string BenchmarkFloorName(const BenchmarkPart& part, uint32_t seed);
+
+// The ground truth's kinds: a TSV with a header "label<TAB>kind" and one
+// line per zone, its label in `truth` and GroundTruthKindName of its kind.
+std::string GroundTruthKindsTsv(const FloorLayout& layout);
 
 }  // namespace areagraph::floorplan

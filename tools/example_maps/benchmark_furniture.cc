@@ -142,6 +142,10 @@ RectM InnerRect(const RectM& part, double wall_m) { return Inflated(part, -wall_
 
 Furnishing RandomFurnishing(ZoneKind kind, PortableRandom& random) {
   if (kind == ZoneKind::kOpenPlan) return Furnishing::kDeskRows;
+  // Seat rows and stair walls are the layout's fixtures.
+  if (kind == ZoneKind::kLectureHall || kind == ZoneKind::kStairs) return Furnishing::kEmpty;
+  if (kind == ZoneKind::kLobby) return Furnishing::kSeveralDesks;
+  if (kind == ZoneKind::kBay) kind = ZoneKind::kHall;
   const double p = random.Uniform(0, 1);
   if (kind == ZoneKind::kHall) {
     return p < 0.2 ? Furnishing::kEmpty : p < 0.7 ? Furnishing::kSeveralDesks : Furnishing::kMixed;

@@ -30,8 +30,9 @@ std::vector<RectM> FurnishRoom(const RectM& inner, Furnishing furnishing,
                                const std::vector<RectM>& keep_out, bool clutter,
                                PortableRandom& random);
 
-// A random furnishing for a zone of `kind` (open-plan zones get desk rows;
-// corridors get nothing here).
+// A random furnishing for a zone of `kind` (open-plan zones get desk rows,
+// lobbies free-standing desks, bays what halls get; corridors, lecture
+// halls and stairs get nothing here).
 Furnishing RandomFurnishing(ZoneKind kind, PortableRandom& random);
 
 // A few trash bins and cabinets against the walls of a corridor part at least

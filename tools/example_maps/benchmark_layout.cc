@@ -16,31 +16,9 @@ struct Arm {
   int zone = 0;
 };
 
-bool Overlaps(const RectM& a, const RectM& b) {
-  constexpr double kTouch = 0.05;  // shared walls are no overlap
-  return a.x + kTouch < b.x + b.width && b.x + kTouch < a.x + a.width &&
-         a.y + kTouch < b.y + b.height && b.y + kTouch < a.y + a.height;
-}
-
-class LayoutBuilder {
+class LayoutBuilder : public LayoutCanvas {
  public:
   explicit LayoutBuilder(PortableRandom& random) : random_(random) {}
-
-  FloorLayout& layout() { return layout_; }
-
-  int AddZone(ZoneKind kind, std::vector<RectM> parts) {
-    layout_.zones.push_back({kind, std::move(parts)});
-    return static_cast<int>(layout_.zones.size()) - 1;
-  }
-
-  bool Free(const RectM& rect) const {
-    for (const Zone& zone : layout_.zones) {
-      for (const RectM& part : zone.parts) {
-        if (Overlaps(rect, part)) return false;
-      }
-    }
-    return true;
-  }
 
   double DoorWidth() { return random_.Uniform(kMinDoorM, kMaxDoorM); }
 
@@ -122,7 +100,6 @@ class LayoutBuilder {
 
  private:
   PortableRandom& random_;
-  FloorLayout layout_;
 };
 
 void CorridorFloor(PortableRandom& random, LayoutBuilder& builder) {
@@ -179,9 +156,49 @@ void HallFloor(PortableRandom& random, LayoutBuilder& builder) {
   }
 }
 
+}  // namespace
+
+const char* GroundTruthKindName(ZoneKind kind) {
+  switch (kind) {
+    case ZoneKind::kCorridor:
+      return "corridor";
+    case ZoneKind::kDeadEnd:
+      return "dead_end";
+    default:
+      return "room";
+  }
+}
+
+bool IsCorridorKind(ZoneKind kind) {
+  return kind == ZoneKind::kCorridor || kind == ZoneKind::kDeadEnd;
+}
+
+int LayoutCanvas::AddZone(ZoneKind kind, std::vector<RectM> parts) {
+  layout_.zones.push_back({kind, std::move(parts)});
+  return static_cast<int>(layout_.zones.size()) - 1;
+}
+
+bool LayoutCanvas::Free(const RectM& rect) const {
+  for (const Zone& zone : layout_.zones) {
+    for (const RectM& part : zone.parts) {
+      if (RectsOverlap(rect, part)) return false;
+    }
+  }
+  for (const RectM& shaft : layout_.shafts) {
+    if (RectsOverlap(rect, shaft)) return false;
+  }
+  return true;
+}
+
+bool RectsOverlap(const RectM& a, const RectM& b) {
+  constexpr double kTouch = 0.05;  // shared walls are no overlap
+  return a.x + kTouch < b.x + b.width && b.x + kTouch < a.x + a.width &&
+         a.y + kTouch < b.y + b.height && b.y + kTouch < a.y + a.height;
+}
+
 // Moves everything so that the drawing starts 1 m from the plan's top-left
 // corner, and sets the plan's size.
-void Frame(FloorLayout* layout) {
+void FrameLayout(FloorLayout* layout) {
   constexpr double kMarginM = 1.0;
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
   for (const Zone& zone : layout->zones) {
@@ -195,11 +212,11 @@ void Frame(FloorLayout* layout) {
     for (RectM& p : zone.parts) p.x += dx, p.y += dy;
   }
   for (DoorM& door : layout->doors) door.x += dx, door.y += dy;
+  for (RectM& r : layout->fixtures) r.x += dx, r.y += dy;
+  for (RectM& r : layout->shafts) r.x += dx, r.y += dy;
   layout->width_m = x1 - x0 + 2 * kMarginM;
   layout->height_m = y1 - y0 + 2 * kMarginM;
 }
-
-}  // namespace
 
 FloorLayout RandomFloorLayout(PortableRandom& random) {
   LayoutBuilder builder(random);
@@ -209,7 +226,7 @@ FloorLayout RandomFloorLayout(PortableRandom& random) {
     CorridorFloor(random, builder);
   }
   FloorLayout layout = std::move(builder.layout());
-  Frame(&layout);
+  FrameLayout(&layout);
   return layout;
 }
 

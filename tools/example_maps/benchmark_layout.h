@@ -29,7 +29,24 @@ class PortableRandom {
 };
 
 // What a zone of the ground truth is; furniture depends on it.
-enum class ZoneKind { kCorridor, kRoom, kHall, kOpenPlan };
+enum class ZoneKind {
+  kCorridor,
+  kRoom,
+  kHall,
+  kOpenPlan,
+  // Public buildings (public_building_layout.h):
+  kLobby,        // the entrance hall, with pillars
+  kLectureHall,  // rows of seats with aisles
+  kStairs,       // a stair core: a room with the stair's middle wall
+  kBay,          // a room open to a hall or corridor along a whole side
+  kDeadEnd,      // a corridor behind a door that ends blind
+};
+
+// The kind a person gives the zone in the ground truth, with the names of
+// the Area Graph's kinds: "room", "corridor" or "dead_end".
+const char* GroundTruthKindName(ZoneKind kind);
+// Corridors and dead ends: furnished like a corridor.
+bool IsCorridorKind(ZoneKind kind);
 
 // One zone of the ground truth: a walled region made of overlapping
 // rectangles (an L or T corridor has several).
@@ -45,6 +62,10 @@ struct DoorM {
   double y = 0;
   double width = 0;
   WallDirection wall = WallDirection::kHorizontal;
+  // An opening along the whole shared side: `width` is the distance between
+  // the centre lines of the two walls that end there, and the drawing opens
+  // it up to their faces (width less one wall thickness).
+  bool whole_side = false;
 };
 
 // A floor in metres before it is drawn (x right, y down, all coordinates at
@@ -58,7 +79,32 @@ struct FloorLayout {
   double corridor_width_m = 0;
   double width_m = 0;
   double height_m = 0;
+  // Fixed furniture drawn as obstacles inside zones (seat rows, pillars,
+  // the middle wall of a stair), and closed shafts (lifts: walled boxes
+  // whose inside stays unknown, in no zone).
+  std::vector<RectM> fixtures;
+  std::vector<RectM> shafts;
 };
+
+// Whether two rectangles overlap by more than a shared wall line (5 cm).
+bool RectsOverlap(const RectM& a, const RectM& b);
+
+// A layout being built: zones (and shafts) that must not overlap.
+class LayoutCanvas {
+ public:
+  FloorLayout& layout() { return layout_; }
+  // Adds a zone; returns its index.
+  int AddZone(ZoneKind kind, std::vector<RectM> parts);
+  // Whether `rect` overlaps no zone and no shaft.
+  bool Free(const RectM& rect) const;
+
+ protected:
+  FloorLayout layout_;
+};
+
+// Moves everything so that the drawing starts 1 m from the plan's top-left
+// corner, and sets the plan's size.
+void FrameLayout(FloorLayout* layout);
 
 // Door, corridor and room sizes of the generated floors (metres).
 inline constexpr double kMinDoorM = 0.7;

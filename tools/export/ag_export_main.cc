@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "Writes the Area Graph of one map in another format.\n"
       "  labels     16-bit PNG the size of the map: 0 = no area, area id + 1 inside each area\n"
+      "  kinds      TSV of each label's kind (room, corridor, dead_end), for ag-eval\n"
       "  preview    colour PNG to look at: areas filled, passages red\n"
       "  geojson    FeatureCollection (ids area/<id>, passage/<id>): WGS 84 with --anchor-lat/\n"
       "             --anchor-lon, else local map metres (the file says which); QGIS, GDAL\n"
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
   app.add_option("--map", map_name, "name of the map in the store")->required();
   app.add_option("--format", format_name,
-                 "labels, preview, geojson, osmag, json, protojson or html")
+                 "labels, kinds, preview, geojson, osmag, json, protojson or html")
       ->required();
   app.add_option("--out", out_path, "file to write, or - for standard output")->required();
   app.add_option("--anchor-lat", anchor.lat_deg,

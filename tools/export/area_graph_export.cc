@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "stages/common/png_file.h"
 #include "tools/export/area_label_image.h"
+#include "tools/export/area_polygons.h"
 #include "tools/export/node_link_json.h"
 #include "tools/export/osmag_export.h"
 #include "tools/export/preview_image.h"
@@ -16,13 +17,22 @@ namespace areagraph {
 
 ExportFormat ParseExportFormat(const std::string& name) {
   if (name == "labels") return ExportFormat::kLabels;
+  if (name == "kinds") return ExportFormat::kKinds;
   if (name == "preview") return ExportFormat::kPreview;
   if (name == "geojson") return ExportFormat::kGeoJson;
   if (name == "osmag") return ExportFormat::kOsmAg;
   if (name == "json") return ExportFormat::kJson;
   if (name == "protojson") return ExportFormat::kProtoJson;
   throw OptionsError("unknown export format '" + name +
-                     "'; use labels, preview, geojson, osmag, json, protojson or html");
+                     "'; use labels, kinds, preview, geojson, osmag, json, protojson or html");
+}
+
+std::string AreaKindsTsv(const proto::AreaGraph& graph) {
+  std::string tsv = "label\tkind\n";
+  for (const proto::Area& area : graph.areas()) {
+    tsv += std::to_string(area.id() + 1) + "\t" + AreaKindName(area.kind()) + "\n";
+  }
+  return tsv;
 }
 
 std::string AreaGraphToJson(const proto::AreaGraph& graph) {
@@ -40,6 +50,8 @@ std::string ExportAreaGraph(const proto::AreaGraph& graph, const ExportSettings&
   switch (settings.format) {
     case ExportFormat::kLabels:
       return EncodePng(AreaLabelImage(graph), /*compression=*/1);
+    case ExportFormat::kKinds:
+      return AreaKindsTsv(graph);
     case ExportFormat::kPreview:
       return EncodePng(AreaGraphPreview(graph), /*compression=*/1);
     case ExportFormat::kGeoJson:

@@ -12,6 +12,9 @@ namespace areagraph {
 enum class ExportFormat {
   // 16-bit PNG label image (see area_label_image.h).
   kLabels,
+  // The kind of each label of kLabels: "label<TAB>kind" lines under that
+  // header (ag-eval reads it beside the label image).
+  kKinds,
   // Colour PNG for people (see preview_image.h).
   kPreview,
   // GeoJSON (see geojson_export.h).
@@ -24,7 +27,7 @@ enum class ExportFormat {
   kProtoJson,
 };
 
-// "labels", "preview", "geojson", "osmag", "json" or "protojson"; throws
+// "labels", "kinds", "preview", "geojson", "osmag", "json" or "protojson"; throws
 // OptionsError otherwise.
 ExportFormat ParseExportFormat(const std::string& name);
 
@@ -43,6 +46,9 @@ struct ExportSettings {
 
 // The bytes of the export file.
 std::string ExportAreaGraph(const proto::AreaGraph& graph, const ExportSettings& settings);
+
+// kKinds' text.
+std::string AreaKindsTsv(const proto::AreaGraph& graph);
 
 // protobuf's JSON printer (field names as in the .proto, indented).
 std::string AreaGraphToJson(const proto::AreaGraph& graph);

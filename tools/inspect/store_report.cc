@@ -60,9 +60,8 @@ void PrintMapList(ArtifactStore& store, std::ostream& out) {
   std::snprintf(line, sizeof(line), "%-32s %9s  %s\n", "map", "artifacts", "source");
   out << line;
   for (const MapRecord& map : maps) {
-    const size_t artifacts = store.ReadArtifactSummaries(map.name).size();
-    std::snprintf(line, sizeof(line), "%-32s %9zu  %s\n", map.name.c_str(), artifacts,
-                  map.source_path.c_str());
+    std::snprintf(line, sizeof(line), "%-32s %9lld  %s\n", map.name.c_str(),
+                  static_cast<long long>(store.CountArtifacts(map.name)), map.source_path.c_str());
     out << line;
   }
   PrintFailedMapsNote(store.ReadFailures(), out);

@@ -24,9 +24,14 @@ int main(int argc, char** argv) {
   std::string report_dir;
   app.add_option("--report", report_dir,
                  "then write DIR/index.html (a table of the maps) and DIR/maps/<map>.html (each "
-                 "map's viewer page, as ag-export --format html writes it)")
+                 "map's viewer page, as ag-export --format html writes it); with no MAP, only "
+                 "the report of every map in --store (also a collection index), nothing run")
       ->type_name("DIR");
   return RunCommand("ag-run", app, argc, argv, [&] {
+    if (flags.maps.empty() && !report_dir.empty() && !flags.print_options) {
+      WriteRunReport(flags, report_dir);
+      return 0;
+    }
     CheckRunFlags(app, flags);
     if (flags.print_options) {  // examples/options/default.pbtxt is this output
       std::cout << CanonicalText(LoadPipelineOptions(flags.stage));

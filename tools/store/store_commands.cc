@@ -9,37 +9,15 @@
 #include "common/text.h"
 #include "stages/pipeline/stage_table.h"
 #include "store/artifact_store.h"
+#include "store/collection_index.h"
 #include "store/store_maintenance.h"
 #include "tools/inspect/failure_report.h"
+#include "tools/store/collection_commands.h"
 #include "tools/store/new_store_file.h"
+#include "tools/store/store_text.h"
 
 namespace areagraph {
 namespace {
-
-std::string Plural(int64_t count, const std::string& noun) {
-  return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
-}
-
-std::string FormatBytes(int64_t bytes) {
-  std::string text = Plural(bytes, "byte");
-  if (bytes >= (1 << 20)) {
-    char mib[32];
-    std::snprintf(mib, sizeof(mib), " (%.1f MiB)", static_cast<double>(bytes) / (1 << 20));
-    text += mib;
-  }
-  return text;
-}
-
-// The store's size on disk: the file and its write-ahead log.
-int64_t StoreFileBytes(const std::string& path) {
-  std::error_code missing;
-  int64_t bytes = 0;
-  for (const std::string& file : {path, path + "-wal"}) {
-    const auto size = std::filesystem::file_size(file, missing);
-    if (!missing) bytes += static_cast<int64_t>(size);
-  }
-  return bytes;
-}
 
 // Refuses a store that does not exist yet, with the store's own message:
 // gc and verify must never create one.
@@ -84,8 +62,9 @@ void MergeInto(const std::string& output, const std::vector<std::string>& inputs
 
 }  // namespace
 
-int MergeStores(const std::string& output, const std::vector<std::string>& inputs,
+int MergeStores(const std::string& output, const std::vector<std::string>& named,
                 std::ostream& out) {
+  const std::vector<std::string> inputs = ExpandCollectionIndexes(named);
   for (const std::string& input : inputs) OpenArtifactStore(input, StoreMode::kReadOnly);
   if (NothingAt(output)) {
     CreateStoreFile(output,
@@ -106,42 +85,40 @@ int BackupStore(const std::string& store_path, const std::string& output, std::o
   return 0;
 }
 
-int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream& out) {
+int CollectStoreGarbage(const std::string& store_path, bool keep_final, bool vacuum,
+                        std::ostream& out) {
   CheckStoreExists(store_path);
-  MaintenanceCounts removed;
-  {
-    const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path);
-    removed = store->CollectGarbage();
+  if (IsCollectionIndex(store_path)) {
+    return CollectCollectionGarbage(
+        store_path, keep_final ? CollectionScope::kFinal : CollectionScope::kAll, vacuum, out);
   }
-  if (removed.artifacts == 0 && removed.maps == 0) {
-    out << "nothing to remove: every artifact is reachable from a head\n";
+  if (keep_final) {
+    KeepFinalArtifacts(store_path, out);
   } else {
-    out << "removed " << Plural(removed.artifacts, "artifact") << " ("
-        << FormatBytes(removed.payload_bytes) << " of payload) and "
-        << Plural(removed.maps, "empty map") << "\n";
+    out << RemovedText(OpenArtifactStore(store_path)->CollectGarbage()) << "\n";
   }
-  if (vacuum) {
-    const int64_t before = StoreFileBytes(store_path);
-    VacuumArtifactStore(store_path);
-    out << "vacuumed " << store_path << ": " << FormatBytes(before) << " -> "
-        << FormatBytes(StoreFileBytes(store_path)) << " on disk\n";
-  }
+  if (vacuum) VacuumAndReport(store_path, store_path, out);
   return 0;
 }
 
-int VerifyStore(const std::string& store_path, bool progress, bool quick, std::ostream& out) {
+int VerifyStore(const std::string& store_path, bool progress, bool quick, bool shallow,
+                std::ostream& out) {
   const std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path, StoreMode::kReadOnly);
+  const bool collection = IsCollectionIndex(store_path);
+  if (shallow && !collection) throw OptionsError("--shallow goes with a collection index");
   int64_t checked = 0;
   std::vector<VerifyProblem> problems;
   {
     ProgressLine line;
-    problems = store->Verify(
-        FileInputStageNames(),
-        [&](int64_t done, int64_t total) {
-          checked = done;
-          if (progress) line.Update(done, total);
-        },
-        quick ? StructureCheck::kQuick : StructureCheck::kFull);
+    const auto count = [&](int64_t done, int64_t total) {
+      checked = done;
+      if (progress) line.Update(done, total);
+    };
+    const StructureCheck structure = quick ? StructureCheck::kQuick : StructureCheck::kFull;
+    problems = collection ? VerifyCollectionIndex(
+                                store_path, FileInputStageNames(), count, structure,
+                                shallow ? ShardCheck::kIndexedRowsOnly : ShardCheck::kFull)
+                          : store->Verify(FileInputStageNames(), count, structure);
   }
   for (const VerifyProblem& problem : problems) {
     out << OrDash(problem.map_name) << " " << OrDash(problem.stage) << " "

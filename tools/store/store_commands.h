@@ -23,15 +23,20 @@ int MergeStores(const std::string& output, const std::vector<std::string>& input
 // file is the whole store. Refuses an `output` that exists.
 int BackupStore(const std::string& store_path, const std::string& output, std::ostream& out);
 
-// Drops the artifacts no head reaches and prints what was freed; `vacuum`
-// then gives the space back to the file system and prints the file sizes.
-int CollectStoreGarbage(const std::string& store_path, bool vacuum, std::ostream& out);
+// Drops the artifacts no head reaches (with `keep_final`, every artifact but
+// the Area Graph heads) and prints what was freed; `vacuum` then gives the
+// space back to the file system and prints the file sizes. On a collection
+// index: the same in each shard store, then the index written again.
+int CollectStoreGarbage(const std::string& store_path, bool keep_final, bool vacuum,
+                        std::ostream& out);
 
 // Checks SQLite's structures (quick_check with `quick`, else
 // integrity_check) and every artifact; prints one line per problem and a
 // summary. Returns 1 when there are problems. `progress` shows a progress
-// line on stderr.
-int VerifyStore(const std::string& store_path, bool progress, bool quick, std::ostream& out);
+// line on stderr. A collection index is checked with its shards; `shallow`
+// (an index only) reads no shard payload.
+int VerifyStore(const std::string& store_path, bool progress, bool quick, bool shallow,
+                std::ostream& out);
 
 // The failures recorded by runners, as a table or JSON.
 int ListStoreFailures(const std::string& store_path, bool json, std::ostream& out);

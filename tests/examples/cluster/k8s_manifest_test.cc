@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <filesystem>
+#include <regex>
 
 #include "tests/examples/cluster/kubernetes_schema.h"
 #include "tests/support/raw_sqlite.h"
@@ -56,7 +57,7 @@ CommandResult RunContainer(const YAML::Node& container, const std::string& folde
 }
 
 TEST(KubernetesManifestTest, FieldsAreThoseOfTheKubernetesObjects) {
-  for (const char* name : {"k8s-indexed-job.yaml", "k8s-merge-job.yaml"}) {
+  for (const char* name : {"k8s-indexed-job.yaml", "k8s-index-job.yaml", "k8s-merge-job.yaml"}) {
     const std::vector<std::string> problems = CheckKubernetesJob(Manifest(name));
     EXPECT_TRUE(problems.empty()) << name << ": " << ::testing::PrintToString(problems);
   }
@@ -96,7 +97,6 @@ TEST(KubernetesManifestTest, SchemaCheckFindsTheUsualMistakes) {
 
 TEST(KubernetesManifestTest, ShardCountAndVolumeAgreeBetweenTheJobs) {
   const YAML::Node shards = Manifest("k8s-indexed-job.yaml");
-  const YAML::Node merge = Manifest("k8s-merge-job.yaml");
   EXPECT_EQ(shards["spec"]["completionMode"].as<std::string>(), "Indexed");
   // Each completion index is one shard, so SHARDS must equal completions.
   EXPECT_EQ(EnvValue(Container(shards), "SHARDS"), shards["spec"]["completions"].as<std::string>());
@@ -104,12 +104,16 @@ TEST(KubernetesManifestTest, ShardCountAndVolumeAgreeBetweenTheJobs) {
     return job["spec"]["template"]["spec"]["volumes"][0]["persistentVolumeClaim"]["claimName"]
         .as<std::string>();
   };
-  EXPECT_EQ(claim(shards), claim(merge));
-  EXPECT_EQ(Container(shards)["volumeMounts"][0]["mountPath"].as<std::string>(),
-            Container(merge)["volumeMounts"][0]["mountPath"].as<std::string>());
+  for (const char* name : {"k8s-index-job.yaml", "k8s-merge-job.yaml"}) {
+    const YAML::Node step = Manifest(name);
+    EXPECT_EQ(claim(shards), claim(step)) << name;
+    EXPECT_EQ(Container(shards)["volumeMounts"][0]["mountPath"].as<std::string>(),
+              Container(step)["volumeMounts"][0]["mountPath"].as<std::string>())
+        << name;
+  }
 }
 
-TEST(KubernetesManifestTest, ContainerCommandsShardAndMergeLikeOneRun) {
+TEST(KubernetesManifestTest, ContainerCommandsShardAndIndexOrMergeLikeOneRun) {
   TempDir dir;
   const std::string data = dir.File("data");
   std::filesystem::create_directories(data + "/maps");
@@ -124,17 +128,35 @@ TEST(KubernetesManifestTest, ContainerCommandsShardAndMergeLikeOneRun) {
         shards, data,
         {"JOB_COMPLETION_INDEX=" + std::to_string(index), "SHARDS=" + EnvValue(shards, "SHARDS")});
     ASSERT_EQ(pod.exit_code, 0) << "index " << index << ": " << pod.err;
+    const std::string shard = data + "/stores/shard-" + std::to_string(index) + ".db";
+    EXPECT_NE(pod.out.find("checked " + std::to_string(HeadDigests(shard).size()) +
+                           " artifacts: no problems"),
+              std::string::npos)
+        << "each pod verifies its shard: " << pod.out;
   }
-  const CommandResult merge = RunContainer(Container(Manifest("k8s-merge-job.yaml")), data, {});
-  ASSERT_EQ(merge.exit_code, 0) << merge.err;
-  EXPECT_NE(
-      merge.out.find("checked " + std::to_string(4 * kStagesPerMap) + " artifacts: no problems"),
-      std::string::npos)
-      << merge.out;
-
   ASSERT_EQ(RunTool("ag-run", {"--store", dir.File("whole.db"), data + "/maps"}).exit_code, 0);
   EXPECT_EQ(HeadDigests(dir.File("whole.db")).size(), static_cast<size_t>(4 * kStagesPerMap));
-  EXPECT_EQ(HeadDigests(data + "/stores/collection.db"), HeadDigests(dir.File("whole.db")));
+  const std::string checked =
+      "checked " + std::to_string(4 * kStagesPerMap) + " artifacts: no problems";
+
+  // The merge, on a copy of the volume: both write stores/collection.db.
+  const std::string copy = dir.File("copy");
+  std::filesystem::copy(data, copy, std::filesystem::copy_options::recursive);
+  const CommandResult merge = RunContainer(Container(Manifest("k8s-merge-job.yaml")), copy, {});
+  ASSERT_EQ(merge.exit_code, 0) << merge.err;
+  EXPECT_NE(merge.out.find(checked), std::string::npos) << merge.out;
+  const std::regex timed(R"(\ncollection: \d+\.\d\d s\n)");
+  EXPECT_TRUE(std::regex_search(merge.out, timed)) << merge.out;
+  EXPECT_EQ(HeadDigests(copy + "/stores/collection.db"), HeadDigests(dir.File("whole.db")));
+
+  const CommandResult index = RunContainer(Container(Manifest("k8s-index-job.yaml")), data, {});
+  ASSERT_EQ(index.exit_code, 0) << index.err;
+  EXPECT_TRUE(std::regex_search(index.out, std::regex(R"(indexed \d+ shard stores \(4 maps, )")))
+      << index.out;
+  EXPECT_EQ(RunTool("ag-store", {"verify", "--store", data + "/stores/collection.db"}).out,
+            checked + "\n");
+  EXPECT_TRUE(std::regex_search(index.out, timed)) << index.out;
+  EXPECT_EQ(StoreHeadDigests(data + "/stores/collection.db"), HeadDigests(dir.File("whole.db")));
 }
 
 }  // namespace

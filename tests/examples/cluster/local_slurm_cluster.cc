@@ -100,9 +100,9 @@ SubmittedCollection ParseSubmitted(const std::string& output) {
     if (!line.empty()) last = line;
   }
   std::istringstream words(last);
-  std::string shards_word, merge_word;
-  if (words >> shards_word >> jobs.shards >> merge_word >> jobs.merge && shards_word == "shards" &&
-      merge_word == "merge") {
+  std::string shards_word;
+  if (words >> shards_word >> jobs.shards >> jobs.step >> jobs.collection &&
+      shards_word == "shards" && (jobs.step == "index" || jobs.step == "merge")) {
     return jobs;
   }
   return {};

@@ -51,11 +51,13 @@ class LocalSlurmCluster {
   std::string problem_;
 };
 
-// Array job and merge job ids from the last line of slurm-submit.sh
-// ("shards <id> merge <id>"); empty strings when the line is not there.
+// Array job and collection job ids from the last line of slurm-submit.sh
+// ("shards <id> index <id>", or "merge" for the merge step); empty strings
+// when the line is not there.
 struct SubmittedCollection {
   std::string shards;
-  std::string merge;
+  std::string step;        // "index" or "merge"
+  std::string collection;  // the job of that step
 };
 SubmittedCollection ParseSubmitted(const std::string& output);
 

@@ -93,6 +93,16 @@ PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = tr
                       max_gap_m, short_tips, free_spaces ? &spaces : nullptr);
 }
 
+// WallGapFinder's openings of a plan (short tips on, free spaces off).
+std::vector<Opening> GapOpenings(const FloorPlan& plan, double max_gap_m) {
+  const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
+  const AreaStages stages = RunAreaStages(map);
+  const int width = map.frame().width_px(), height = map.frame().height_px();
+  const ObstacleLabels obstacles = LabelObstacles(map.cells(), width, height);
+  return WallGapFinder(stages.topology, obstacles, kResolutionM, max_gap_m, true, nullptr)
+      .Openings(0, stages.topology.edges_size());
+}
+
 // A 6 x 4 m room whose wall at x = 3 m runs up from the bottom wall to
 // y = 2.2 m (m from the top), leaving a 1.7 m gap to the top wall.
 FloorPlan PartialWall() {
@@ -181,6 +191,21 @@ TEST(DoorSitesTest, DeskOrSpeckInTheWallsLineIsNoJamb) {
   // 0.3 m speck is shorter than kMinShortTipM: nothing is closed.
   EXPECT_TRUE(GapSites(WallWithTwoDoors(1.0, 0.9), 3.5).empty());
   EXPECT_TRUE(GapSites(WallWithTwoDoors(0.3), 3.5).empty());
+}
+
+TEST(DoorSitesTest, AWallGapIsOneOpeningWithItsJambsAndWidth) {
+  const std::vector<Opening> openings = GapOpenings(PartialWall(), 2.5);
+  ASSERT_EQ(openings.size(), 1u);
+  const Opening& gap = openings[0];
+  EXPECT_EQ(gap.kind, proto::Opening::WALL_GAP);
+  EXPECT_TRUE(gap.closed);
+  // From the top wall's face (0.575 m) to the stub's tip (2.2 m).
+  EXPECT_NEAR(gap.width_m, 1.6, 0.1);
+  ASSERT_TRUE(gap.has_jambs);
+  EXPECT_NEAR(gap.position.x() * kResolutionM, 3.0, 0.1);
+  EXPECT_GE(gap.lines.size(), 1u);
+  // One side is the room's 3 m wide halves, the other as wide.
+  EXPECT_GT(std::max(gap.side_a_m, gap.side_b_m), gap.width_m + 0.25);
 }
 
 TEST(DoorSitesTest, NoDoorsNoSites) {

@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "common/error.h"
+#include "stages/cut/width_estimate.h"
 #include "tests/support/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
@@ -171,7 +172,7 @@ TEST(ChooseRoomWidthTest, AutomaticFollowsTheDoorsAndCorridorsFound) {
   EXPECT_NEAR(door.doors(0).position().x(), 60, 1e-9);
   EXPECT_NEAR(door.widest_door_m(), 0.85, 1e-9);
   EXPECT_NEAR(door.narrowest_corridor_m(), 1.95, 1e-9);
-  EXPECT_NEAR(door.room_width_m(), 0.85 + options.room_width_door_margin_m(), 1e-9);
+  EXPECT_NEAR(door.room_width_m(), 0.85 + kPaperWidthMarginM, 1e-9);
   // Without doors: corridor - 0.1 m.
   const proto::RoomWidthEstimate corridor = ChooseRoomWidth(options, kBigMap, kCorridor);
   EXPECT_TRUE(corridor.automatic());
@@ -193,7 +194,7 @@ TEST(ChooseRoomWidthTest, DoorWiderThanTheCorridorFollowsRoomWidthAboveDoors) {
   EXPECT_NEAR(above.doors(0).position().x(), 45, 1e-9);
   EXPECT_NEAR(above.widest_door_m(), 1.45, 1e-9);
   EXPECT_NEAR(above.narrowest_corridor_m(), 1.15, 1e-9);
-  EXPECT_NEAR(above.room_width_m(), 1.45 + options.room_width_door_margin_m(), 1e-9);
+  EXPECT_NEAR(above.room_width_m(), 1.45 + kPaperWidthMarginM, 1e-9);
   options.set_room_width_above_doors(false);  // the paper's rule
   EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, graph).room_width_m(), 1.05, 1e-9);
 }
@@ -234,14 +235,66 @@ TEST(ChooseRoomWidthTest, DrawnMapGetsItsDoorWidthPlusATenth) {
       ChooseRoomWidth(proto::CutOptions(), map.frame(), stages.topology);
   EXPECT_TRUE(chosen.automatic());
   EXPECT_EQ(chosen.doors_size(), 3);
-  EXPECT_NEAR(chosen.room_width_m(), 0.9 + proto::CutOptions().room_width_door_margin_m(), 0.1);
-  EXPECT_DOUBLE_EQ(chosen.room_width_m(),
-                   chosen.widest_door_m() + proto::CutOptions().room_width_door_margin_m());
+  EXPECT_NEAR(chosen.room_width_m(), 0.9 + kPaperWidthMarginM, 0.1);
+  EXPECT_DOUBLE_EQ(chosen.room_width_m(), chosen.widest_door_m() + kPaperWidthMarginM);
   // What ag-cut stored is this choice.
   EXPECT_DOUBLE_EQ(stages.cut.room_width().room_width_m(), chosen.room_width_m());
   // The paper's strategy ignores the map.
   EXPECT_NEAR(ChooseRoomWidth(Strategy(0.9, 1.6), map.frame(), stages.topology).room_width_m(), 1.0,
               1e-12);
+}
+
+}  // namespace
+}  // namespace areagraph::testing
+
+namespace areagraph::testing {
+namespace {
+
+// An automatic estimate with doors of 1.8, 1.8, 0.9, 0.9 and 0.9 m (widest
+// first, W = 1.9 m) and a 1.2 m corridor, and the narrowing openings of
+// those doors, each closed or not.
+struct DoorsAround {
+  proto::RoomWidthEstimate estimate;
+  std::vector<Opening> openings;
+  DoorsAround(const std::vector<bool>& closed) {
+    estimate.set_automatic(true);
+    estimate.set_room_width_m(1.9);
+    estimate.set_narrowest_corridor_m(1.2);
+    const double widths[] = {1.8, 1.8, 0.9, 0.9, 0.9};
+    for (int k = 0; k < 5; ++k) {
+      estimate.add_doors()->set_width_m(widths[k]);
+      Opening& door = openings.emplace_back();
+      door.position = Eigen::Vector2d(100.0 * k, 0);
+      door.width_m = widths[k];
+      door.closed = closed[k];
+    }
+  }
+};
+
+TEST(KeepWidthAboveOpenDoorsTest, ClosedDoubleDoorsLeaveWAboveTheSingleDoors) {
+  proto::CutOptions options;
+  options.set_room_width_open_doors(true);
+  const ClosedLines none(PointList(), 0.05);
+  DoorsAround doors({true, true, false, false, false});
+  KeepWidthAboveOpenDoors(doors.openings, none, options, &doors.estimate);
+  EXPECT_DOUBLE_EQ(doors.estimate.widest_open_door_m(), 0.9);
+  // 0.9 + 0.1 is below the corridor: W stays above the corridor (1.3 m).
+  EXPECT_NEAR(doors.estimate.room_width_m(), 1.3, 1e-9);
+  // One double door open: W stays above it, as before.
+  DoorsAround one_open({false, true, false, false, false});
+  KeepWidthAboveOpenDoors(one_open.openings, none, options, &one_open.estimate);
+  EXPECT_NEAR(one_open.estimate.room_width_m(), 1.9, 1e-9);
+}
+
+TEST(KeepWidthAboveOpenDoorsTest, ADoorOnAClosedLineIsClosed) {
+  proto::CutOptions options;
+  const PointList line = {{100, -1}, {100, 0}, {100, 1}};  // across the second door
+  DoorsAround doors({true, false, false, false, false});
+  KeepWidthAboveOpenDoors(doors.openings, ClosedLines(line, 0.05), options, &doors.estimate);
+  EXPECT_DOUBLE_EQ(doors.estimate.widest_open_door_m(), 0.9);
+  DoorsAround open({true, false, false, false, false});
+  KeepWidthAboveOpenDoors(open.openings, ClosedLines(PointList(), 0.05), options, &open.estimate);
+  EXPECT_DOUBLE_EQ(open.estimate.widest_open_door_m(), 1.8);
 }
 
 }  // namespace

@@ -125,7 +125,7 @@ TEST(WidthEstimateTest, CutGraphStoresTheEstimateAndUsesIt) {
   const AreaStages stages = RunAreaStages(map, options);
   const proto::RoomWidthEstimate& stored = stages.cut.room_width();
   EXPECT_TRUE(stored.automatic());
-  EXPECT_NEAR(stored.room_width_m(), 0.9 + options.cut().room_width_door_margin_m(), 0.1);
+  EXPECT_NEAR(stored.room_width_m(), 0.9 + kPaperWidthMarginM, 0.1);
   EXPECT_EQ(stored.doors_size(), 3);
   // Three rooms and a corridor, kept apart at the doors.
   EXPECT_EQ(stages.areas.areas_size(), 4);

@@ -77,6 +77,34 @@ TEST(AgEvalCli, DatasetPrintsATableWithMeanAndMedian) {
   EXPECT_EQ(CountLines(run.out), 6);
 }
 
+// Maps whose result and GT both have kinds get a kind accuracy column; its
+// mean is over those maps only.
+TEST(AgEvalCli, DatasetWithKindsAddsAKindColumn) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.File("results"));
+  std::filesystem::create_directories(dir.File("gt"));
+  for (const char* name : {"a", "b", "c"}) {
+    cv::imwrite(dir.File(std::string("results/") + name + ".png"), LabelPng(20));
+    cv::imwrite(dir.File(std::string("gt/") + name + ".png"), LabelPng(20));
+    testing::WriteFile(dir.File(std::string("gt/") + name + ".kinds.tsv"),
+                       "label\tkind\n1\troom\n2\tcorridor\n");
+  }
+  testing::WriteFile(dir.File("results/a.kinds.tsv"), "label\tkind\n1\troom\n2\tcorridor\n");
+  testing::WriteFile(dir.File("results/b.kinds.tsv"), "label\tkind\n1\troom\n2\troom\n");
+  const auto run =
+      RunTool("ag-eval", {"--dataset", "--results", dir.File("results"), "--gt", dir.File("gt")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("| kind accuracy |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| a | 1.000 | 1.000 | 1.000 | 2/2 | 1.000 |"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("| b | 1.000 | 1.000 | 1.000 | 2/2 | 0.500 |"), std::string::npos)
+      << run.out;
+  EXPECT_NE(run.out.find("| c | 1.000 | 1.000 | 1.000 | 2/2 | - |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| **mean** | **1.000** | 1.000 | 1.000 | 3 maps | 0.750 |"),
+            std::string::npos)
+      << run.out;
+}
+
 TEST(AgEvalCli, MissingFileIsOneLineAndNonZero) {
   TempDir dir;
   cv::imwrite(dir.File("gt.png"), LabelPng(20));

@@ -64,6 +64,13 @@ TEST_F(AgExportCli, LabelImageHasTheMapSizeAndOneLabelPerArea) {
   EXPECT_EQ(cv::countNonZero(labels == 0), 800 - 196);
 }
 
+// The kinds file names each label of the label image (area id + 1).
+TEST_F(AgExportCli, KindsNameEachLabel) {
+  const auto run = Export("kinds", dir_.File("labels.kinds.tsv"));
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(ReadFile(dir_.File("labels.kinds.tsv")), "label\tkind\n1\troom\n2\tcorridor\n");
+}
+
 double Number(const Value& value) { return value.number_value(); }
 
 // The JSON file at `path` as a Struct; a failure when it does not parse.
