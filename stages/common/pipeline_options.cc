@@ -109,30 +109,34 @@ std::string NumberText(double value) {
   return text.str();
 }
 
-// Throws OptionsError when a set floating-point field of `stage_options` is
-// not finite or lies outside the range of its unit, or an integer is negative.
-void CheckNumbersOfStage(const std::string& stage_name, const Message& stage_options) {
-  const Descriptor* descriptor = stage_options.GetDescriptor();
-  const Reflection* reflection = stage_options.GetReflection();
+// Throws OptionsError when a set floating-point field of `options` (a
+// stage's options, or a message within them, named `prefix`) is not finite
+// or lies outside the range of its unit, or an integer is negative.
+void CheckNumbersOfStage(const std::string& prefix, const Message& options) {
+  const Descriptor* descriptor = options.GetDescriptor();
+  const Reflection* reflection = options.GetReflection();
   for (int i = 0; i < descriptor->field_count(); ++i) {
     const FieldDescriptor* field = descriptor->field(i);
-    if (!reflection->HasField(stage_options, field)) continue;
+    if (field->is_repeated() || !reflection->HasField(options, field)) continue;
     double value = 0;
     switch (field->cpp_type()) {
+      case FieldDescriptor::CPPTYPE_MESSAGE:
+        CheckNumbersOfStage(prefix + "." + field->name(), reflection->GetMessage(options, field));
+        continue;
       case FieldDescriptor::CPPTYPE_DOUBLE:
-        value = reflection->GetDouble(stage_options, field);
+        value = reflection->GetDouble(options, field);
         break;
       case FieldDescriptor::CPPTYPE_FLOAT:
-        value = reflection->GetFloat(stage_options, field);
+        value = reflection->GetFloat(options, field);
         break;
       case FieldDescriptor::CPPTYPE_INT32:
       case FieldDescriptor::CPPTYPE_INT64: {
         // Counts, grey values and limits: never negative; the stages check the rest.
         const int64_t count = field->cpp_type() == FieldDescriptor::CPPTYPE_INT32
-                                  ? reflection->GetInt32(stage_options, field)
-                                  : reflection->GetInt64(stage_options, field);
+                                  ? reflection->GetInt32(options, field)
+                                  : reflection->GetInt64(options, field);
         if (count >= 0) continue;
-        throw OptionsError("option '" + stage_name + "." + field->name() +
+        throw OptionsError("option '" + prefix + "." + field->name() +
                            "' must not be negative, got " + std::to_string(count));
       }
       default:
@@ -140,9 +144,22 @@ void CheckNumbersOfStage(const std::string& stage_name, const Message& stage_opt
     }
     const NumberRange range = RangeOf(*field);
     if (value >= 0 && value <= range.max) continue;  // NaN fails both
-    throw OptionsError("option '" + stage_name + "." + field->name() + "' must be a number" +
+    throw OptionsError("option '" + prefix + "." + field->name() + "' must be a number" +
                        (*range.unit != '\0' ? std::string(" of ") + range.unit : "") + " in [0, " +
                        NumberText(range.max) + "], got " + NumberText(value));
+  }
+}
+
+// Every key within `options` (a stage's options or a message within them),
+// each "prefix.field", a message's fields as "prefix.message.field".
+void AddKeys(const Descriptor* options, const std::string& prefix, std::vector<std::string>* keys) {
+  for (int j = 0; j < options->field_count(); ++j) {
+    const FieldDescriptor* field = options->field(j);
+    if (field->cpp_type() == FieldDescriptor::CPPTYPE_MESSAGE && !field->is_repeated()) {
+      AddKeys(field->message_type(), prefix + "." + field->name(), keys);
+    } else {
+      keys->push_back(prefix + "." + field->name());
+    }
   }
 }
 
@@ -194,10 +211,7 @@ std::vector<std::string> ValidOptionKeys() {
   const Descriptor* pipeline = proto::PipelineOptions::descriptor();
   for (int i = 0; i < pipeline->field_count(); ++i) {
     const FieldDescriptor* stage = pipeline->field(i);
-    const Descriptor* stage_options = stage->message_type();
-    for (int j = 0; j < stage_options->field_count(); ++j) {
-      keys.push_back(stage->name() + "." + stage_options->field(j)->name());
-    }
+    AddKeys(stage->message_type(), stage->name(), &keys);
   }
   return keys;
 }
@@ -210,44 +224,79 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
                        "'; valid keys: " + JoinKeys(ValidOptionKeys()));
   }
   const std::string stage_name = assignment.substr(0, dot);
-  const std::string field_name = assignment.substr(dot + 1, equals - dot - 1);
+  const std::string key = assignment.substr(0, equals);
   const std::string value = assignment.substr(equals + 1);
 
+  // The stage's options, then each message named on the way to the field.
   const FieldDescriptor* stage = proto::PipelineOptions::descriptor()->FindFieldByName(stage_name);
-  const FieldDescriptor* field =
-      stage == nullptr ? nullptr : stage->message_type()->FindFieldByName(field_name);
-  if (field == nullptr) {
-    throw OptionsError("unknown option '" + stage_name + "." + field_name +
-                       "'; valid keys: " + JoinKeys(ValidOptionKeys()));
+  Message* owner = stage == nullptr ? nullptr : StageMessage(options, stage_name);
+  const FieldDescriptor* field = nullptr;
+  std::string field_name;
+  size_t at = dot + 1;
+  while (owner != nullptr) {
+    const size_t next = key.find('.', at);
+    field_name = key.substr(at, next == std::string::npos ? std::string::npos : next - at);
+    field = owner->GetDescriptor()->FindFieldByName(field_name);
+    if (field == nullptr || next == std::string::npos) break;
+    if (field->cpp_type() != FieldDescriptor::CPPTYPE_MESSAGE || field->is_repeated()) {
+      field = nullptr;
+      break;
+    }
+    owner = owner->GetReflection()->MutableMessage(owner, field);
+    at = next + 1;
   }
-  Message* stage_options = options->GetReflection()->MutableMessage(options, stage);
+  if (field == nullptr || field->cpp_type() == FieldDescriptor::CPPTYPE_MESSAGE) {
+    throw OptionsError("unknown option '" + key + "'; valid keys: " + JoinKeys(ValidOptionKeys()));
+  }
   const AutoOption* auto_option = nullptr;
   for (const AutoOption& option : kAutoOptions) {
-    if (stage_name == option.stage && field_name == option.number_field) auto_option = &option;
+    if (key == std::string(option.stage) + "." + option.number_field) auto_option = &option;
   }
   if (auto_option != nullptr && value == "auto") {
-    SetAuto(stage_options, *auto_option, true);
+    SetAuto(owner, *auto_option, true);
+    return;
+  }
+  if (field->is_repeated()) {
+    // A list: comma-separated values replace it; an empty value clears it.
+    owner->GetReflection()->ClearField(owner, field);
+    std::stringstream items(value);
+    std::string item;
+    while (std::getline(items, item, ',')) {
+      google::protobuf::TextFormat::Parser parser;
+      ErrorCollector errors;
+      parser.RecordErrorsTo(&errors);
+      if (!parser.ParseFieldValueFromString(item, field, owner)) {
+        std::string expected = field->type_name();
+        if (const google::protobuf::EnumDescriptor* names = field->enum_type()) {
+          expected.clear();
+          for (int i = 0; i < names->value_count(); ++i) {
+            expected += (i == 0 ? "" : ", ") + names->value(i)->name();
+          }
+        }
+        throw OptionsError("option '" + key + "' expects a comma-separated list of " + expected +
+                           ", got '" + item + "'");
+      }
+    }
     return;
   }
   if (field->cpp_type() == FieldDescriptor::CPPTYPE_BOOL) {
     const std::optional<bool> flag = ParseBool(value);
     if (!flag) {
-      throw OptionsError("option '" + stage_name + "." + field_name +
-                         "' expects true or false (or 1 or 0), got '" + value + "'");
+      throw OptionsError("option '" + key + "' expects true or false (or 1 or 0), got '" + value +
+                         "'");
     }
-    stage_options->GetReflection()->SetBool(stage_options, field, *flag);
+    owner->GetReflection()->SetBool(owner, field, *flag);
     return;
   }
   google::protobuf::TextFormat::Parser parser;
   ErrorCollector errors;  // keeps protobuf from logging its own line to stderr
   parser.RecordErrorsTo(&errors);
-  if (!parser.ParseFieldValueFromString(value, field, stage_options)) {
-    throw OptionsError("option '" + stage_name + "." + field_name + "' expects a " +
-                       field->type_name() + (auto_option != nullptr ? " or auto" : "") + ", got '" +
-                       value + "'");
+  if (!parser.ParseFieldValueFromString(value, field, owner)) {
+    throw OptionsError("option '" + key + "' expects a " + field->type_name() +
+                       (auto_option != nullptr ? " or auto" : "") + ", got '" + value + "'");
   }
-  CheckNumbersOfStage(stage_name, *stage_options);
-  if (auto_option != nullptr) SetAuto(stage_options, *auto_option, false);
+  CheckNumbersOfStage(stage_name, *StageMessage(options, stage_name));
+  if (auto_option != nullptr) SetAuto(owner, *auto_option, false);
 }
 
 void FillDefaults(Message* message) {

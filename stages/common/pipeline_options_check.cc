@@ -104,20 +104,18 @@ void CheckCutOptions(const proto::CutOptions& options) {
 
 void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_area_m2(), "merge.min_area_m2", "square metres");
-  RequireNotNegative(options.fill_furniture_outlines_m(), "merge.fill_furniture_outlines_m",
-                     "metres");
   RequireNotNegative(options.grow_min_gap_m(), "merge.grow_min_gap_m", "metres");
   RequireNotNegative(options.outline_tolerance_m(), "merge.outline_tolerance_m", "metres");
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
-  RequireNotNegative(options.fold_corridor_pieces_below_m2(), "merge.fold_corridor_pieces_below_m2",
+  RequireNotNegative(options.corridor_pieces().below_m2(), "merge.corridor_pieces.below_m2",
                      "square metres");
-  RequireNotNegative(options.join_porous_borders_gap_m(), "merge.join_porous_borders_gap_m",
+  RequireNotNegative(options.porous_borders().max_gap_m(), "merge.porous_borders.max_gap_m",
                      "metres");
-  RequireNotNegative(options.corridor_stems_max_width_m(), "merge.corridor_stems_max_width_m",
-                     "metres");
-  const double elongation = options.furniture_max_elongation();
+  RequireNotNegative(options.small_closed_rooms().pocket_jamb_m(),
+                     "merge.small_closed_rooms.pocket_jamb_m", "metres");
+  const double elongation = options.furniture_gaps().max_elongation();
   Require(elongation == 0 || (std::isfinite(elongation) && elongation >= 1),
-          "merge.furniture_max_elongation must be 0 (any shape) or at least 1, got " +
+          "merge.furniture_gaps.max_elongation must be 0 (any shape) or at least 1, got " +
               FormatNumber(elongation));
 }
 

@@ -30,7 +30,7 @@ std::string EncodePng(const cv::Mat& image, int compression) {
 }
 
 void WritePngFile(const std::string& target, const cv::Mat& image) {
-  // zlib's fastest level: with the "up" filter, ag-render's pictures of lab_a
+  // zlib's fastest level: with the "up" filter, ag-render's pictures of a scan
   // come out 10-15 % larger than at level 6 (the import's twice, 45 kB) for
   // half the encoding work, which was most of a render.
   WriteOutputFile(target, EncodePng(image, 1));

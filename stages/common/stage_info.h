@@ -20,14 +20,14 @@ struct StageInfo {
 inline constexpr StageInfo kImportStage{"import", 1};
 // clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
 // clean 4: furniture removal keeps pieces of wall standing between two doors
-// (clean.keep_wall_pieces; areagraph/ lab_d_scan_furnitures and bormann/ lab_d_scan).
+// (clean.keep_wall_pieces; scans whose short wall pieces looked like furniture).
 inline constexpr StageInfo kCleanStage{"clean", 4};
 // voronoi 2: edges in face order.
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
 // prune 2: every part of the map above prune.min_component_m2 is kept, not only the biggest.
 // prune 3: long graphs beside a longer one in their part are kept too (prune.keep_groups_above_m;
-// a room behind a gap the graph does not pass got no area, areagraph/ lab_b).
+// a room behind a gap the graph does not pass got no area).
 // prune 4: edge polygons, boundaries and part outlines as packed rings (TopologyGraph format 2),
 // a third of the memory of Point2 messages; same numbers.
 inline constexpr StageInfo kPruneStage{"prune", 4};
@@ -39,14 +39,13 @@ inline constexpr StageInfo kPruneStage{"prune", 4};
 // cut 7: passages on doors and wall gaps closed on purpose are marked (closed_by_cut).
 // cut 8: island_end_on_face on (face's middle only); wall gaps up to 3.5 m, short wall tips.
 // cut 9: a tip shorter than W behind a door or wall gap the cut closed keeps its own room
-// (cut.keep_closed_room_tips; areagraph/ lab_d_scan_furnitures, freiburg_building101). Also in
-// cut 9: a room's edge running on into a narrow tail (a corridor wider than W but at most half as
-// wide as the room) is cut where the tail begins (cut.cut_narrow_tails; areagraph/
-// Freiburg101_scan's side corridors).
+// (cut.keep_closed_room_tips; closets behind doors). Also in cut 9: a room's edge running on into a
+// narrow tail (a corridor wider than W but at most half as wide as the room) is cut where the tail
+// begins (cut.cut_narrow_tails; side corridors running on from a hall).
 // cut 10: a block continued end-on at one end is a wall piece only when its other end faces an
-// obstacle within a door's width (cut.island_wall_piece_both_ends; bormann/ lab_ipa furnished).
+// obstacle within a door's width (cut.island_wall_piece_both_ends; rows of furniture).
 // cut 11: past a jamb, free cells the door's free space cannot reach count as wall (outside drawn
-// free, hollow blocks; cut.jamb_wall_behind_line; areagraph/ lab_ipa_furnitures).
+// free, hollow blocks; cut.jamb_wall_behind_line).
 // cut 12: edge polygons and room shapes as packed rings (CutGraph format 2, as prune 4).
 // cut 13: the openings (narrowings, wall gaps, mouths) and their decisions kept in the CutGraph.
 inline constexpr StageInfo kCutStage{"cut", 13};
@@ -61,7 +60,7 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // merge 10: desks drawn as closed outlines are islands (merge.fill_furniture_outlines_m).
 // merge 11: bins and cabinets against thin walls are islands (merge.wall_furniture_islands), and
 // corridor-shaped rooms join at such gaps whatever their size, also at closed cuts
-// (merge.join_corridor_clutter; bormann/ office_h furnished).
+// (merge.join_corridor_clutter; bins against corridor walls).
 // Also in merge 11: small rooms opening widely into a corridor and another area
 // are corridor pieces and fold into it (merge.fold_corridor_pieces_below_m2).
 // merge 12: two areas meeting at three or more vertices, one of them a gap too narrow for a door,
@@ -70,24 +69,25 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // meet straight on without a narrowing (merge.join_split_corridors; generated floors against a
 // fixed W = 1.25 m).
 // merge 13: furniture islands are at most 5 times as long as wide (a thick piece of wall between
-// two doors is no desk: areagraph/ lab_d; merge.furniture_max_elongation). Also in merge 13:
+// two doors is no desk; merge.furniture_max_elongation). Also in merge 13:
 // corridor pieces join at a narrowing with a flat wall on one side
 // (merge.join_one_sided_narrowings), count as long and narrow as a chain
 // (merge.join_split_corridor_chains), and dead-end branches that do not narrow at their mouth join
-// their corridor (merge.join_corridor_stems); generated tuning floors lost to a fixed W = 1.25 m
-// (floor_18, floor_6, floor_19).
+// their corridor (merge.join_corridor_stems); generated tuning floors lost to a fixed W = 1.25 m.
 // merge 14: a small room behind a closed door, one area with walls seen, is not folded away
 // (merge.keep_small_closed_rooms, with cut 9).
 // Also in merge 14: corridor stem joining joins stems only into corridors at most 4 m wide
 // (merge.corridor_stems_max_width_m), so a hall does not take back the tails cut 9 cut off.
 // merge 15: a small closed room whose jambs are both thick obstacles (a pocket between cabinets) is
 // folded after all (merge.closed_room_pocket_jamb_m).
-inline constexpr StageInfo kMergeStage{"merge", 15};
+// merge 16: one shape model and one definition of a corridor for every pass and the areas' kinds,
+// the passes in one table (merge.skip_passes), corridor clutter joining removed.
+inline constexpr StageInfo kMergeStage{"merge", 16};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.
 // match 5: joins also cut where the id moved to a leftover, without a passage, along pinched
-// outlines, and with a 0.5 m least opening (lab_e's noise-only losses).
+// outlines, and with a 0.5 m least opening (ids lost to scan noise alone).
 inline constexpr StageInfo kMatchStage{"match", 5};
 
 // Whether two StageInfos name the same stage.

@@ -50,7 +50,7 @@ size_t NearestPiece(const std::vector<proto::GraphEdge>& pieces, const proto::Ri
     for (const proto::Point2& p : pieces[k].path()) {
       for (const Eigen::Vector2d& q : ring_points) {
         const double dx = p.x() - q.x(), dy = p.y() - q.y();
-        // Most pairs end here, without the hypot (20 M instructions on lab_e).
+        // Most pairs end here, without the hypot (20 M instructions on a cluttered scan).
         if (dx * dx + dy * dy > bound) continue;
         const double d = std::hypot(dx, dy);
         if (d < best) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stages/geometry/corridor_shape.h"
+
 namespace areagraph {
 namespace {
 
@@ -47,7 +49,9 @@ int TailStart(const std::vector<Sample>& samples, const NarrowTailParams& params
   // The free space goes on past the dead end by about its clearance.
   const double length =
       std::abs(samples[n - 1].arc - samples[start].arc) + samples[n - 1].clearance;
-  if (length < params.elongation * 2 * typical) return -1;
+  // Long like a corridor; the tail keeps within width_tolerance of its
+  // typical width, which stands for its widest.
+  if (Elongation(2 * typical, length * 2 * typical) < kCorridorElongation) return -1;
   return start;
 }
 

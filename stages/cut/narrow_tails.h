@@ -16,14 +16,13 @@ struct NarrowTailParams {
   // The tail begins where the clearance first comes within this factor of
   // the tail's median clearance (scan noise on its walls).
   double width_tolerance = 1.15;
-  // Corridor-like: the tail is at least this many times as long as wide
-  // (merge's kMinCorridorElongation, 4 squares of the width).
-  double elongation = 4;
 };
 
 // Where a room's piece of an edge runs on into a dead end through a narrow
 // tail (a corridor narrower than the room but wider than W, so the room
-// disk fills it too), the piece is cut where the tail begins and the tail
+// disk fills it too; long like a corridor: kCorridorElongation squares of
+// its width, stages/geometry/corridor_shape.h), the piece is cut
+// where the tail begins and the tail
 // becomes a room-less piece: its own area, as a corridor narrower than W
 // would be. `pieces` is PlanEdgeCuts' plan of `track`; only pieces at a
 // dead end are looked at. The paper has no such cut.

@@ -94,7 +94,7 @@ std::vector<uint16_t> ColumnDistances(const cv::Mat& mask) {
   const int rows = mask.rows, cols = mask.cols;
   if (mask.empty() || !FitsIntegers(mask)) return {};
   // The row's width alone breaks the guard below (masks over 4097 cells
-  // wide): no need to fill the buffer first (lab_a tiled 8 x 8 did, 47 MB,
+  // wide): no need to fill the buffer first (a 50-megapixel map did, 47 MB,
   // for every whole-map transform of clean, cut and merge).
   if (TooWideForIntegers(cols)) return {};
   const int64_t widest = int64_t(cols - 1) * (cols - 1);
@@ -224,7 +224,7 @@ void ForEachNonZeroCell(const uint8_t* mask, const int32_t* f, int cols, LowerEn
 // (f[q] + q^2 - f[p] - p^2) times float(0.5 / (q - p)), each step rounded to
 // single precision in that order, and the square root of (q - p)^2 + f[p].
 // Ours for speed on large masks: OpenCV walks each column down the whole mask
-// (a cache miss per cell once a column outgrows the cache: lab_a tiled 8 x 8
+// (a cache miss per cell once a column outgrows the cache: a 50-megapixel map
 // spent 2 s of merge's 8 there); here the columns go row by row, and the
 // rows, each on its own once the column distances are known, in parallel
 // ranges. Tests hold it to OpenCV bit for bit, masks over 4096 wide included.
@@ -405,7 +405,7 @@ cv::Mat SinglePrecisionDistances(const cv::Mat& mask) {
 }
 
 // A buffer of one uint16_t a cell of `mask`, not zeroed: ColumnPass writes
-// every cell, and zeroing first (47 MB at lab_a 8 x 8, on one thread) only
+// every cell, and zeroing first (47 MB at 50 megapixels, on one thread) only
 // faulted the pages in.
 std::unique_ptr<uint16_t[]> UnsetCells(const cv::Mat& mask) {
   return std::unique_ptr<uint16_t[]>(new uint16_t[size_t(mask.rows) * mask.cols]);

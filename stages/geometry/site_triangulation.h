@@ -38,7 +38,7 @@ size_t SiteTriangulationBytes(const SiteTriangulation& triangulation);
 // Keeps `triangulation` of `sites` (inserted in this order) for a later
 // TakeSiteTriangulation in this process, replacing any kept before. Kept at
 // every size: prune would build the same one (about 176 bytes a site, 170 MB
-// on lab_a tiled 8 x 8), and holding it from voronoi's end to prune's start
+// on a 50-megapixel map), and holding it from voronoi's end to prune's start
 // stays under cut's and merge's peak memory there (512 MB against 561 MB),
 // while triangulating again cost
 // prune a tenth of its time.

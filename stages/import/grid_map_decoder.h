@@ -17,7 +17,7 @@ using GreyToCell = std::array<proto::CellState, 256>;
 
 // The rule for maps without a YAML (Bormann's convention, widened):
 //   grey >= free_min_grey     -> free      (default 250: white 255, and 254 as
-//                                           in the Freiburg maps)
+//                                           in some published scans)
 //   grey <= occupied_max_grey -> occupied  (default 100: walls are 0 or
 //                                           anti-aliased dark grey)
 //   anything in between       -> unknown   (unknown/outside 103..230 and

@@ -8,7 +8,7 @@
 namespace areagraph {
 
 // A new area counts as a piece split off a previous area when at least this
-// share of its cells lay in that one area. Chosen on freiburg_building79's
+// share of its cells lay in that one area. Chosen on a real map's
 // simulated exploration (tools/bench-live.sh) with the constructed growing
 // maps of tests/stages/match; see docs/performance.md, "Match's constants".
 inline constexpr double kFragmentInsideShare = 0.8;

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <memory>
 
 #include "common/error.h"
 #include "stages/common/pipeline_options_check.h"
@@ -12,20 +11,12 @@
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/polygon_raster.h"
-#include "stages/geometry/pool_tasks.h"
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/area_graph_geometry.h"
-#include "stages/merge/bay_folding.h"
-#include "stages/merge/closed_rooms.h"
-#include "stages/merge/corridor_joining.h"
-#include "stages/merge/corridor_labels.h"
-#include "stages/merge/corridor_piece_folding.h"
-#include "stages/merge/corridor_stem_joining.h"
-#include "stages/merge/furniture_gap_joining.h"
-#include "stages/merge/porous_border_joining.h"
-#include "stages/merge/room_joining.h"
+#include "stages/merge/area_kinds.h"
+#include "stages/merge/merge_passes.h"
 #include "stages/merge/small_area_folding.h"
-#include "stages/merge/split_corridor_joining.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
@@ -116,49 +107,13 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);
-  if (options.join_corridor_pieces()) JoinCorridorPieces(graph, &plan);
-  if (options.join_rooms_without_doors()) {
-    JoinRoomsWithoutDoors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan);
-  }
-  if (options.join_furniture_gaps()) {
-    // Islands are looked for only at the openings' jambs.
-    const IslandsAt islands_at = [&](const std::vector<cv::Point>& cells) {
-      return FurnitureIslandsAt(map, options.fill_furniture_outlines_m(),
-                                options.wall_furniture_islands(),
-                                options.furniture_max_elongation(), cells);
-    };
-    JoinAreasAtFurnitureGaps(graph, islands_at, grid.resolution_m(), options.keep_closed_doors(),
-                             options.join_corridor_clutter(), &plan);
-  }
-  if (options.fold_open_bays()) FoldOpenBays(graph, &plan);
-  if (options.fold_corridor_pieces_below_m2() > 0) {
-    FoldCorridorPieces(graph, grid.resolution_m(), options.fold_corridor_pieces_below_m2(),
-                       options.keep_closed_doors(), &plan);
-  }
-  if (options.join_porous_borders_gap_m() > 0) {
-    JoinAtPorousBorders(graph, grid.resolution_m(),
-                        options.join_porous_borders_gap_m() / grid.resolution_m(),
-                        options.keep_closed_doors(), &plan);
-  }
-  if (options.join_split_corridors()) {
-    SplitCorridorParams params;
-    params.chains = options.join_split_corridor_chains();
-    JoinSplitCorridors(graph, grid.resolution_m(), options.keep_closed_doors(), &plan, params,
-                       options.join_one_sided_narrowings() ? &grid : nullptr);
-  }
-  if (options.join_corridor_stems()) {
-    CorridorStemParams params;
-    params.max_corridor_width_m = options.corridor_stems_max_width_m();
-    JoinCorridorStems(graph, grid.resolution_m(), options.keep_closed_doors(), &plan, params);
-  }
+  const MergeInput input{graph, map, grid, options,
+                         ClosedVertices(graph, options.keep_closed_doors())};
+  RunJoinPasses(input, &plan);
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
       std::max<int64_t>(1, static_cast<int64_t>(std::ceil(options.min_area_m2() / cell_m2)));
-  FoldSmallAreas(graph, min_cells, &plan, &raster,
-                 options.keep_small_closed_rooms()
-                     ? SmallClosedRooms(graph, plan, raster, grid, min_cells,
-                                        options.closed_room_pocket_jamb_m())
-                     : std::vector<bool>());
+  FoldSmallAreas(graph, min_cells, &plan, &raster, KeptSmallAreas(input, plan, raster, min_cells));
   if (std::all_of(raster.cell_count.begin(), raster.cell_count.end(),
                   [](int64_t n) { return n == 0; })) {
     throw InputError("no Area Graph: no free cell lies inside the map's boundary");
@@ -167,28 +122,12 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   proto::AreaGraph out;
   out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  // The rooms' shapes (LabelCorridorsByShape) are measured by a pool thread
-  // while this one traces the borders, which read only the labels: this
-  // thread takes the rooms left when it is done with the labels, and the
-  // kinds are set before AddAreasAndPassages reads them (after labels_done).
-  // Without a caller for the raster, its labels (4 bytes a cell) go then,
-  // before the borders are simplified.
-  std::unique_ptr<CorridorShapeWork> shapes;
-  if (options.label_corridors_by_shape()) {
-    shapes = std::make_unique<CorridorShapeWork>(raster, grid.resolution_m(), plan);
-  }
-  const auto labels_done = [&] {
-    if (shapes != nullptr) {
-      shapes->Finish();
-      shapes->Apply(&plan);
-    }
+  SetAreaKinds(graph, raster, grid.resolution_m(), &plan);
+  // Without a caller for the raster, its labels (4 bytes a cell) go once
+  // the borders are traced, before they are simplified.
+  AddAreasAndPassages(graph, plan, raster, options, &out, [&] {
     if (raster_out == nullptr) raster.labels.release();
-  };
-  RunTasks({[&] { AddAreasAndPassages(graph, plan, raster, options, &out, labels_done); },
-            [&] {
-              if (shapes != nullptr) shapes->Measure();
-            }},
-           /*on_caller=*/1);
+  });
   out.set_components(CountComponents(out));
   out.set_dropped_parts(graph.dropped_parts());
   out.set_dropped_area_m2(graph.dropped_area_m2());

@@ -26,12 +26,12 @@ double NarrowestNearEnd(const proto::GraphEdge& edge, bool at_target, double rea
 
 }  // namespace
 
-void FoldOpenBays(const proto::CutGraph& graph, AreaPlan* plan) {
+void FoldOpenBays(const proto::CutGraph& graph, const PlanModel& model, AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
   std::vector<double> typical(area_count);
   std::vector<double> length(area_count, 0);
   for (int k = 0; k < area_count; ++k) {
-    typical[k] = MedianWidthPx(graph, plan->areas[k]);
+    typical[k] = model.shapes[k].typical_px;
     for (int e : plan->areas[k].edges) length[k] += graph.edges(e).length_px();
   }
   // Per vertex: area -> the narrowest width near the vertex along its edges.
@@ -62,7 +62,7 @@ void FoldOpenBays(const proto::CutGraph& graph, AreaPlan* plan) {
       const auto own = at.find(k);
       for (const auto& [other, width] : at) {
         const double mouth = std::min(own->second, width);
-        if (plan->areas[other].kind != proto::AREA_ROOM || mouth < kOpenMouthShare * typical[k] ||
+        if (plan->areas[other].kind != proto::AREA_ROOM || mouth < kOpenShare * typical[k] ||
             mouth <= widest) {
           continue;
         }

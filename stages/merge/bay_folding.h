@@ -2,15 +2,15 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/plan_model.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 
 // A room-less area opens into a room without a constriction when the
 // narrowest free width near the vertex where they meet, on both sides, is at
-// least this share of the area's median free width.
-inline constexpr double kOpenMouthShare = 0.9;
-// How far from that vertex the narrowest width is looked for, in multiples of
-// the area's median free width.
+// least kOpenShare of the area's typical free width; this far from that
+// vertex, in multiples of that width.
 inline constexpr double kMouthReachWidths = 2.0;
 // A bay is at most this many times as long (its graph edges) as it is wide;
 // longer room-less areas are corridors, which stay apart even where they
@@ -22,6 +22,6 @@ inline constexpr double kMaxBayLengthWidths = 3.0;
 // between a row of tables and the wall, is part of the room, while a
 // corridor meets a room through a door narrower than itself or is long.
 // Of several such rooms the one with the widest opening wins.
-void FoldOpenBays(const proto::CutGraph& graph, AreaPlan* plan);
+void FoldOpenBays(const proto::CutGraph& graph, const PlanModel& model, AreaPlan* plan);
 
 }  // namespace areagraph

@@ -71,7 +71,8 @@ double JambThicknessM(const CellGrid& grid, const Eigen::Vector2d& from,
 
 std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan& plan,
                                    const AreaRaster& raster, const CellGrid& grid,
-                                   int64_t min_cells, double pocket_jamb_m) {
+                                   const std::vector<bool>& closed, int64_t min_cells,
+                                   double pocket_jamb_m) {
   const int area_count = static_cast<int>(plan.areas.size());
   std::vector<bool> kept(area_count, false);
   const std::vector<std::set<int>> areas_at = AreasAtVertices(graph, plan);
@@ -86,7 +87,6 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
       others_at_shared[k] = static_cast<int>(areas_at[v].size()) - 1;
     }
   }
-  const std::vector<bool> closed = ClosedVertices(graph, /*keep_closed_doors=*/true);
   const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, plan);
   const std::vector<cv::Rect>& boxes = raster.boxes;
   for (int k = 0; k < area_count; ++k) {
@@ -98,7 +98,7 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
     if (!closed[v]) continue;
     const auto own = openings[v].find(k);
     if (own == openings[v].end()) continue;
-    if (own->second.width_px >= kClosedRoomOpeningShare * WidestInnerWidthPx(raster, k, boxes[k])) {
+    if (own->second.width_px >= kOpenShare * WidestInnerWidthPx(raster, k, boxes[k])) {
       continue;
     }
     if (pocket_jamb_m > 0 &&

@@ -10,9 +10,6 @@
 
 namespace areagraph {
 
-// An opening narrower than this share of the area's widest inner width is a
-// door (the same share as corridor piece folding's wide opening).
-inline constexpr double kClosedRoomOpeningShare = 0.9;
 // At most this share of the faces between the area's cells and non-free
 // cells may face unknown cells: a room's walls were seen; a piece that
 // borders unknown space is a scan's frontier or gap, not a room.
@@ -23,11 +20,12 @@ inline constexpr double kJambDepthM = 0.25;
 inline constexpr double kJambMaxRunM = 1.5;
 
 // Per area of `plan`: whether it is a small closed room that
-// merge.keep_small_closed_rooms keeps out of FoldSmallAreas although it has
-// fewer than `min_cells` cells (and some). All must hold:
+// FoldSmallAreas keeps although it has fewer than `min_cells` cells (and
+// some). All must hold:
 // - it meets the other areas at one graph vertex only, and one area there;
-// - ag-cut closed that passage on purpose (PassagePoint.closed_by_cut);
-// - its opening there is narrower than kClosedRoomOpeningShare of its widest
+// - that vertex is `closed` (ag-cut closed that passage on purpose,
+//   ClosedVertices);
+// - its opening there is narrower than kOpenShare (a door) of its widest
 //   inner width (twice the largest distance from its cells to a cell
 //   outside it);
 // - at most kClosedRoomMaxUnknownShare of its faces towards non-free cells
@@ -39,6 +37,7 @@ inline constexpr double kJambMaxRunM = 1.5;
 //   their faces.
 std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan& plan,
                                    const AreaRaster& raster, const CellGrid& grid,
-                                   int64_t min_cells, double pocket_jamb_m);
+                                   const std::vector<bool>& closed, int64_t min_cells,
+                                   double pocket_jamb_m);
 
 }  // namespace areagraph

@@ -31,7 +31,7 @@ int64_t SquaredReach(float reach) {
 cv::Mat WholeMapCores(const CellGrid& grid, const cv::Mat& domain, float reach) {
   // The sizes in locals: a byte stored through a row could alias the Mat's
   // own fields, so a loop bound read from them is reloaded every cell and
-  // the loop stays scalar (lab_a tiled 8 x 8: 400 M instructions).
+  // the loop stays scalar (a 50-megapixel map: 400 M instructions).
   const int rows = domain.rows, cols = domain.cols;
   cv::Mat cells(rows, cols, CV_8U);
   for (int r = 0; r < rows; ++r) {

@@ -4,19 +4,15 @@
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/merge/room_joining.h"
-#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 
-void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, double max_m2,
-                        bool keep_closed_doors, AreaPlan* plan) {
+void FoldCorridorPieces(const proto::CutGraph& graph, const PlanModel& model,
+                        const std::vector<bool>& closed, double max_m2, AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
-  const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
-  std::vector<double> typical(area_count);
-  for (int k = 0; k < area_count; ++k) typical[k] = MedianWidthPx(graph, plan->areas[k]);
-  const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
+  const double max_px = max_m2 / (model.resolution_m * model.resolution_m);
+  const std::vector<AreaShape>& shapes = model.shapes;
+  const std::vector<std::map<int, VertexOpening>>& openings = model.openings;
   // Each small room's widest qualifying opening, and the area behind it.
   std::vector<int> into(area_count, -1);
   std::vector<double> widest(area_count, 0);
@@ -25,17 +21,15 @@ void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, doubl
     if (closed[vertex]) continue;
     const std::map<int, VertexOpening>& at = openings[vertex];
     for (const auto& [k, own] : at) {
-      if (plan->areas[k].kind != proto::AREA_ROOM || size_m2[k] >= max_m2 || typical[k] <= 0) {
+      if (plan->areas[k].kind != proto::AREA_ROOM || shapes[k].area_px >= max_px ||
+          shapes[k].typical_px <= 0) {
         continue;
       }
       for (const auto& [other, theirs] : at) {
         if (other == k) continue;
-        const double other_width_m = typical[other] * resolution_m;
-        const bool corridor = plan->areas[other].kind != proto::AREA_ROOM ||
-                              size_m2[other] >= kCorridorElongation * other_width_m * other_width_m;
-        if (!corridor) continue;
+        if (plan->areas[other].kind == proto::AREA_ROOM && !shapes[other].corridor) continue;
         const double opening = std::min(own.width_px, theirs.width_px);
-        if (opening < kPieceOpeningShare * typical[k]) continue;
+        if (opening < kOpenShare * shapes[k].typical_px) continue;
         ++wide_openings[k];
         if (opening <= widest[k]) continue;
         widest[k] = opening;
@@ -57,7 +51,7 @@ void FoldCorridorPieces(const proto::CutGraph& graph, double resolution_m, doubl
     for (int k = 0; k < area_count; ++k) {
       if (pass == 0 && folded[k]) continue;
       auto [it, added] = lead.emplace(groups.Find(k), k);
-      if (!added && pass == 0 && size_m2[k] > size_m2[it->second]) it->second = k;
+      if (!added && pass == 0 && shapes[k].area_px > shapes[it->second].area_px) it->second = k;
     }
   }
   MergeGroupsLedBy(groups, lead, plan);

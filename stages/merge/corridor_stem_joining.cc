@@ -5,23 +5,18 @@
 #include <map>
 #include <vector>
 
+#include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/merge/area_moments.h"
-#include "stages/merge/room_joining.h"
-#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 
-void JoinCorridorStems(const proto::CutGraph& graph, double resolution_m, bool keep_closed_doors,
-                       AreaPlan* plan, const CorridorStemParams& params) {
-  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
-  const double cell_m2 = resolution_m * resolution_m;
+void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
+                       const std::vector<bool>& closed, AreaPlan* plan,
+                       const CorridorStemParams& params) {
+  const double resolution_m = model.resolution_m;
   const int area_count = static_cast<int>(plan->areas.size());
-  const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
-  std::vector<double> width(area_count);
-  for (int k = 0; k < area_count; ++k) width[k] = MedianWidthPx(graph, plan->areas[k]);
-  const std::vector<AreaMoments> moments = MomentsOfAreas(graph, *plan);
-  const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
+  const std::vector<AreaShape>& shapes = model.shapes;
+  const std::vector<std::map<int, VertexOpening>>& openings = model.openings;
   // Per area: the one area it meets at open vertices (-1: none, -2: more
   // than one) and its narrowest opening there.
   std::vector<int> neighbour(area_count, -1);
@@ -45,19 +40,16 @@ void JoinCorridorStems(const proto::CutGraph& graph, double resolution_m, bool k
     const AreaPlan::Area& area = plan->areas[stem];
     const int corridor = neighbour[stem];
     if (area.kind != proto::AREA_DEAD_END || area.room_id >= 0 || corridor < 0) continue;
-    const double w = width[stem];
+    const double w = shapes[stem].typical_px;
     if (w < params.min_width_m / resolution_m) continue;
     if (mouth[stem] < params.opening_share * w) continue;
-    if (size_m2[stem] / cell_m2 < params.elongation * w * w) continue;
-    if (moments[stem].a <= 0 || moments[stem].Axis().second < params.axis_ratio) continue;
+    if (!shapes[stem].corridor || shapes[stem].Straightness() < params.axis_ratio) continue;
     const AreaPlan::Area& into = plan->areas[corridor];
+    const double corridor_width = shapes[corridor].typical_px;
     const bool corridor_shaped =
-        into.room_id < 0 ? into.kind == proto::AREA_CORRIDOR : CorridorLike(graph, into);
-    if (!corridor_shaped || w > params.max_width_share * width[corridor]) continue;
-    if (params.max_corridor_width_m > 0 &&
-        width[corridor] > params.max_corridor_width_m / resolution_m) {
-      continue;
-    }
+        into.room_id < 0 ? into.kind == proto::AREA_CORRIDOR : shapes[corridor].corridor;
+    if (!corridor_shaped || w > params.max_width_share * corridor_width) continue;
+    if (corridor_width * resolution_m > kMaxCorridorWidthM) continue;
     groups.Union(stem, corridor);
     joined.push_back(corridor);
   }

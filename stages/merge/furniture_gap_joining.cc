@@ -10,8 +10,6 @@
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/ring_simplicity.h"
-#include "stages/merge/room_joining.h"
-#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
@@ -40,20 +38,16 @@ struct IslandValues {
 };
 
 // Whether the cell under a site, or one of its 8 neighbours, belongs to an
-// island: 1 when one stands free, 2 when one stands only against a wall, 0
-// otherwise.
-int OnIsland(const IslandValues& islands, const Eigen::Vector2d& site) {
-  int found = 0;
+// island.
+bool OnIsland(const IslandValues& islands, const Eigen::Vector2d& site) {
   const int col = static_cast<int>(std::floor(site.x()));
   const int row = static_cast<int>(std::floor(site.y()));
   for (int dr = -1; dr <= 1; ++dr) {
     for (int dc = -1; dc <= 1; ++dc) {
-      const int value = islands.At(cv::Point(col + dc, row + dr));
-      if (value == 1) return 1;
-      if (value != 0) found = value;
+      if (islands.At(cv::Point(col + dc, row + dr)) != 0) return true;
     }
   }
-  return found;
+  return false;
 }
 
 // Folds every group of `groups` into its lowest area; a group with a room
@@ -77,8 +71,8 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
 
 }  // namespace
 
-void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
-                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& model,
+                              const std::vector<bool>& closed, const cv::Mat& islands,
                               AreaPlan* plan) {
   const cv::Rect inside(0, 0, islands.cols, islands.rows);
   const IslandsAt from_raster = [&](const std::vector<cv::Point>& cells) {
@@ -88,43 +82,29 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islan
     }
     return values;
   };
-  JoinAreasAtFurnitureGaps(graph, from_raster, resolution_m, keep_closed_doors, corridor_clutter,
-                           plan);
+  JoinAreasAtFurnitureGaps(graph, model, closed, from_raster, plan);
 }
 
-void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const IslandsAt& islands_at,
-                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& model,
+                              const std::vector<bool>& closed, const IslandsAt& islands_at,
                               AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
-  const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
+  const double max_piece_px = kMaxFurnitureGapPieceM2 / (model.resolution_m * model.resolution_m);
   // Pairs of areas that meet at a vertex where the opening (the narrower of
   // their two sides) has an island for a jamb, and room-less areas that have
   // any other opening.
   std::vector<std::pair<int, int>> gaps;
-  // Corridor-shaped rooms (CorridorLike) join at a gap whatever their size:
-  // a bin or a cabinet in a corridor does not end it.
-  std::vector<bool> corridor_like(area_count, false);
-  if (corridor_clutter) {
-    for (int k = 0; k < area_count; ++k) {
-      corridor_like[k] =
-          plan->areas[k].kind == proto::AREA_ROOM && CorridorLike(graph, plan->areas[k]);
-    }
-  }
   std::vector<bool> enclosed(area_count, true);
-  const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
-  // Calls `each(vertex, a, b, narrower)` for every pair of areas at a vertex
-  // whose opening's jambs matter.
+  const std::vector<std::map<int, VertexOpening>>& openings = model.openings;
+  // Calls `each(a, b, narrower)` for every pair of areas at a vertex that is
+  // not closed.
   auto for_each_pair = [&](auto each) {
     for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
+      if (closed[vertex]) continue;
       const std::map<int, VertexOpening>& at = openings[vertex];
       for (auto a = at.begin(); a != at.end(); ++a) {
         for (auto b = std::next(a); b != at.end(); ++b) {
-          const bool corridors = corridor_like[a->first] && corridor_like[b->first];
-          // ag-cut closes a narrowing between two wider spaces whose sides are
-          // structure; a bin against a corridor's wall makes one.
-          if (closed[vertex] && !corridors) continue;
-          each(vertex, a->first, b->first, corridors,
+          each(a->first, b->first,
                a->second.width_px <= b->second.width_px ? a->second : b->second);
         }
       }
@@ -132,24 +112,19 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const IslandsAt& isl
   };
   // The island values of every jamb's cells, asked at once.
   IslandValues islands;
-  for_each_pair([&](int, int, int, bool, const VertexOpening& narrower) {
+  for_each_pair([&](int, int, const VertexOpening& narrower) {
     AddCellsAround(narrower.left, &islands.cells);
     AddCellsAround(narrower.right, &islands.cells);
   });
   std::sort(islands.cells.begin(), islands.cells.end(), RowMajor);
   islands.cells.erase(std::unique(islands.cells.begin(), islands.cells.end()), islands.cells.end());
   islands.values = islands_at(islands.cells);
-  for_each_pair([&](int vertex, int a, int b, bool corridors, const VertexOpening& narrower) {
-    const int left = OnIsland(islands, narrower.left);
-    const int right = OnIsland(islands, narrower.right);
-    const bool small = std::min(size_m2[a], size_m2[b]) <= kMaxFurnitureGapPieceM2;
-    if ((left == 1 || right == 1) && !closed[vertex]) {
-      if (small) gaps.emplace_back(a, b);
-    } else if ((left == 2 || right == 2) && corridors) {
-      // A bin or a cabinet against a corridor's wall, whatever the
-      // corridor's size and also where ag-cut closed the narrowing.
-      gaps.emplace_back(a, b);
-    } else if (!closed[vertex]) {
+  for_each_pair([&](int a, int b, const VertexOpening& narrower) {
+    if (OnIsland(islands, narrower.left) || OnIsland(islands, narrower.right)) {
+      if (std::min(model.shapes[a].area_px, model.shapes[b].area_px) <= max_piece_px) {
+        gaps.emplace_back(a, b);
+      }
+    } else {
       enclosed[a] = enclosed[b] = false;
     }
   });

@@ -8,6 +8,7 @@
 #include "proto/artifacts.pb.h"
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/furniture_islands.h"
+#include "stages/merge/plan_model.h"
 
 namespace areagraph {
 
@@ -25,25 +26,19 @@ inline constexpr double kMaxFurnitureGapPieceM2 = 20.0;
 // it stays a corridor; room-less areas are joined with each other at gaps
 // (clutter in a corridor) unless one of them is part of a room by then. The
 // smaller of the two areas must be at most kMaxFurnitureGapPieceM2. A joined
-// area is a room when one of its parts was. With `keep_closed_doors`, no
-// areas join at a cut ag-cut made on a door or wall gap it closed
-// (PassagePoint.closed_by_cut): a desk beside such a door is no jamb. With
-// `corridor_clutter` (merge.join_corridor_clutter), two rooms that are both
-// shaped like corridors (CorridorLike, stages/merge/room_joining.h) join
-// where the opening's jamb stands against a wall (2 in `islands`; elsewhere
-// only free-standing islands count) whatever their size, also at a closed
-// cut (ag-cut closes a narrowing between two wider spaces whose sides are
-// structure, which a bin against a wall makes): a bin in a corridor does
-// not divide it.
+// area is a room when one of its parts was. No areas join at a `closed`
+// vertex (a cut ag-cut made on a door or wall gap it closed,
+// ClosedVertices): a desk beside such a door is no jamb.
 //
-// `islands_at` gives the islands' values (FurnitureIslandCells's) at the
-// cells asked, all at once; the overload below reads them from a raster.
+// `islands_at` gives the islands' values (FurnitureIslandCells's, non-zero
+// on an island) at the cells asked, all at once; the overload below reads
+// them from a raster.
 using IslandsAt = std::function<std::vector<uint8_t>(const std::vector<cv::Point>& cells)>;
-void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const IslandsAt& islands_at,
-                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& model,
+                              const std::vector<bool>& closed, const IslandsAt& islands_at,
                               AreaPlan* plan);
-void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const cv::Mat& islands,
-                              double resolution_m, bool keep_closed_doors, bool corridor_clutter,
+void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& model,
+                              const std::vector<bool>& closed, const cv::Mat& islands,
                               AreaPlan* plan);
 
 }  // namespace areagraph

@@ -10,7 +10,6 @@
 #include "stages/geometry/distance_transform.h"
 #include "stages/geometry/enclosed_pockets.h"
 #include "stages/geometry/wall_thickness.h"
-#include "stages/merge/region_depth.h"
 
 namespace areagraph {
 namespace {
@@ -33,9 +32,13 @@ class CellFlags {
   std::unique_ptr<uint8_t, decltype(&std::free)> flags_;
 };
 
-// An 8-connected region of a mask's non-zero cells that may be an island:
-// it touches no border and its box is at most the island length.
-using Region = CellRegion;
+// An 8-connected region of a mask's non-zero cells that may be an island
+// (it touches no border and its box is at most the island length): its
+// cells in row-major order and their bounding box.
+struct Region {
+  std::vector<cv::Point> cells;
+  cv::Rect box;
+};
 
 // Walks the region of `mask` that holds `start` (non-zero, not walked yet)
 // and marks its cells kWalked. Stops, with false, once the region touches
@@ -137,7 +140,7 @@ void MarkIslands(const cv::Mat& mask, const std::vector<cv::Point>& cells, doubl
 }  // namespace
 
 std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fill_pockets_m,
-                                        bool against_walls, double max_elongation,
+                                        double max_elongation,
                                         const std::vector<cv::Point>& cells) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const double resolution_m = map.frame().resolution_m();
@@ -174,36 +177,11 @@ std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fil
       if (inside.contains(cells[i]) && (flags.at(cells[i]) & kIsland)) values[i] = 1;
     }
   }
-  if (!against_walls) return values;
-  // Only what is at least as thick as an island is left of the obstacles:
-  // walls thinner than that go, and what stood against them is on its own.
-  const int diameter = static_cast<int>(std::ceil(min_thickness_px));
-  const cv::Mat disk = cv::getStructuringElement(cv::MORPH_ELLIPSE, cv::Size(diameter, diameter));
-  cv::Mat thick;
-  cv::morphologyEx(obstacle, thick, cv::MORPH_OPEN, disk);
-  obstacle.release();
-  // Cells on a free-standing island stay 1.
-  std::vector<cv::Point> rest;
-  for (size_t i = 0; i < cells.size(); ++i) {
-    if (values[i] == 0) rest.push_back(cells[i]);
-  }
-  CellFlags flags(thick.size());
-  MarkIslands(
-      thick, rest, min_thickness_px, max_px, max_elongation,
-      [&](const std::vector<Region>& regions) {
-        return DeepestOfRegions(thick, regions, min_thickness_px);
-      },
-      flags);
-  for (size_t i = 0; i < cells.size(); ++i) {
-    if (values[i] == 0 && inside.contains(cells[i]) && (flags.at(cells[i]) & kIsland)) {
-      values[i] = 2;
-    }
-  }
   return values;
 }
 
 cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
-                             bool against_walls, double max_elongation) {
+                             double max_elongation) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   std::vector<cv::Point> cells;
   cells.reserve(static_cast<size_t>(width) * height);
@@ -211,7 +189,7 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m
     for (int c = 0; c < width; ++c) cells.emplace_back(c, r);
   }
   const std::vector<uint8_t> values =
-      FurnitureIslandsAt(map, fill_pockets_m, against_walls, max_elongation, cells);
+      FurnitureIslandsAt(map, fill_pockets_m, max_elongation, cells);
   return cv::Mat(height, width, CV_8U, const_cast<uint8_t*>(values.data())).clone();
 }
 

@@ -25,27 +25,21 @@ inline constexpr double kMinFurnitureSolidity = 0.75;
 // Which obstacle cells belong to an island, as CV_8U the map's size (1 on
 // island cells). Cells that cleaning removed count as obstacles, so that a
 // wall it broke stays one region. Free pockets enclosed by obstacles and at
-// most `fill_pockets_m` long (merge.fill_furniture_outlines_m) count as
+// most `fill_pockets_m` long (merge passes kMaxFurnitureIslandM: a desk drawn
+// as an outline is no longer than an island) count as
 // obstacles too, so that a desk drawn as a closed outline is one solid
-// island; 0 leaves them free.
-// Free-standing islands are 1. With `against_walls`
-// (merge.wall_furniture_islands), what stands against a thin wall is marked
-// 2: the same tests on what is left of the obstacles once everything thinner
-// than an island is taken away (a morphological opening with a disk as wide
-// as the least island thickness), so that a bin or a cabinet touching a
-// corridor's wall is no door's jamb. Islands are at most `max_elongation`
-// (merge.furniture_max_elongation) times as long as their smallest enclosing
-// rectangle is wide, 0 for any shape: a thick piece of wall between two
-// doors is no desk.
+// island; 0 leaves them free. Islands are at most `max_elongation` times as
+// long as their smallest enclosing rectangle is wide, 0 for any shape: a
+// thick piece of wall between two doors is no desk (both:
+// merge.furniture_gaps).
 cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
-                             bool against_walls, double max_elongation);
+                             double max_elongation);
 
 // FurnitureIslandCells's values at `cells` only (0 for a cell outside the
 // map). Only the regions that hold one of them are walked, each only as far
 // as it can still be an island (a wall stops at the island's length): merge
 // asks about the jambs of its openings, a few thousand cells of millions.
 std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fill_pockets_m,
-                                        bool against_walls, double max_elongation,
-                                        const std::vector<cv::Point>& cells);
+                                        double max_elongation, const std::vector<cv::Point>& cells);
 
 }  // namespace areagraph

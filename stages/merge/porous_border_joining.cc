@@ -7,15 +7,13 @@
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 
-void JoinAtPorousBorders(const proto::CutGraph& graph, double resolution_m, double narrow_gap_px,
-                         bool keep_closed_doors, AreaPlan* plan) {
+void JoinAtPorousBorders(const proto::CutGraph& graph, const PlanModel& model,
+                         const std::vector<bool>& closed, double narrow_gap_px, AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
-  const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
+  const std::vector<std::map<int, VertexOpening>>& openings = model.openings;
   struct Border {
     int vertices = 0;
     double narrowest_px = std::numeric_limits<double>::infinity();
@@ -40,11 +38,10 @@ void JoinAtPorousBorders(const proto::CutGraph& graph, double resolution_m, doub
     joined |= groups.Union(pair.first, pair.second);
   }
   if (!joined) return;
-  const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
   std::map<int, int> lead;
   for (int k = 0; k < area_count; ++k) {
     auto [it, added] = lead.emplace(groups.Find(k), k);
-    if (!added && size_m2[k] > size_m2[it->second]) it->second = k;
+    if (!added && model.shapes[k].area_px > model.shapes[it->second].area_px) it->second = k;
   }
   MergeGroupsLedBy(groups, lead, plan);
 }

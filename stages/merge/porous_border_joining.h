@@ -1,7 +1,10 @@
 #pragma once
 
+#include <vector>
+
 #include "proto/artifacts.pb.h"
 #include "stages/merge/area_assignment.h"
+#include "stages/merge/plan_model.h"
 
 namespace areagraph {
 
@@ -13,10 +16,10 @@ inline constexpr int kPorousMinOpenings = 3;
 // least one of them an opening narrower than `narrow_gap_px` (one nobody
 // walks through, so no door). Clutter standing in one room (shelves, desks,
 // scanned chair legs) leaves such a border of many openings and the room
-// disk stops at it; a wall with doors does not. Vertices where ag-cut closed
-// a door or wall gap on purpose (`keep_closed_doors`) do not count. A joined
-// group takes the kind of its biggest area.
-void JoinAtPorousBorders(const proto::CutGraph& graph, double resolution_m, double narrow_gap_px,
-                         bool keep_closed_doors, AreaPlan* plan);
+// disk stops at it; a wall with doors does not. `closed` vertices (where
+// ag-cut closed a door or wall gap on purpose, ClosedVertices) do not count.
+// A joined group takes the kind of its biggest area.
+void JoinAtPorousBorders(const proto::CutGraph& graph, const PlanModel& model,
+                         const std::vector<bool>& closed, double narrow_gap_px, AreaPlan* plan);
 
 }  // namespace areagraph

@@ -2,14 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <map>
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
-#include "stages/geometry/ring_area.h"
-#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 namespace {
@@ -72,17 +69,9 @@ double WidestWithin(const proto::CutGraph& graph, const AreaPlan& plan,
 
 }  // namespace
 
-bool CorridorLike(const proto::CutGraph& graph, const AreaPlan::Area& area) {
-  if (area.room_id < 0 || area.room_id >= graph.room_shapes_size()) return false;
-  const double width = MedianWidthPx(graph, area);
-  const double shape = 0.5 * std::abs(TwiceSignedArea(graph.room_shapes(area.room_id).outer()));
-  return width > 0 && shape >= kCorridorElongation * width * width;
-}
-
-void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
-                           bool keep_closed_doors, AreaPlan* plan) {
-  const double reach_px = kSideReachM / resolution_m;
-  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
+void JoinRoomsWithoutDoors(const proto::CutGraph& graph, const PlanModel& model,
+                           const std::vector<bool>& closed, AreaPlan* plan) {
+  const double reach_px = kSideReachM / model.resolution_m;
   std::vector<std::vector<int>> edges_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {
     edges_at[graph.edges(e).source()].push_back(e);
@@ -109,13 +98,6 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
     }
   }
   const int area_count = static_cast<int>(plan->areas.size());
-  // CorridorLike per area, found on first use (-1: not yet): it reads all
-  // the area's clearances, and the plan does not change in this loop.
-  std::vector<int8_t> corridor_like(area_count, -1);
-  auto is_corridor_like = [&](int k) {
-    if (corridor_like[k] < 0) corridor_like[k] = CorridorLike(graph, plan->areas[k]) ? 1 : 0;
-    return corridor_like[k] == 1;
-  };
   DisjointSets rooms(area_count);
   for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
     const std::map<int, Side>& at = sides[vertex];
@@ -123,10 +105,10 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, double resolution_m,
       for (auto b = std::next(a); b != at.end(); ++b) {
         const double opening = std::min(a->second.opening_px, b->second.opening_px);
         const double narrower_side = std::min(a->second.widest_px, b->second.widest_px);
-        if (closed[vertex] && !(is_corridor_like(a->first) && is_corridor_like(b->first))) {
+        if (closed[vertex] && !(model.Corridor(a->first) && model.Corridor(b->first))) {
           continue;
         }
-        if (opening > kDoorWidthShare * narrower_side) rooms.Union(a->first, b->first);
+        if (opening > kOpenShare * narrower_side) rooms.Union(a->first, b->first);
       }
     }
   }

@@ -18,7 +18,7 @@ namespace areagraph {
 // once at the end: a fold costs its area's bounding box, not the whole map
 // (thousands of folds on a cluttered 2000 x 2000 map took minutes).
 // Areas marked in `kept` (by index; may be empty) are never folded away,
-// though others may fold into them (merge.keep_small_closed_rooms).
+// though others may fold into them (KeptSmallAreas).
 void FoldSmallAreas(const proto::CutGraph& graph, int64_t min_cells, AreaPlan* plan,
                     AreaRaster* raster, const std::vector<bool>& kept = {});
 

@@ -5,30 +5,28 @@
 #include <map>
 #include <vector>
 
+#include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
-#include "stages/merge/area_moments.h"
-#include "stages/merge/corridor_labels.h"
 #include "stages/merge/one_sided_narrowing.h"
-#include "stages/merge/vertex_openings.h"
+#include "stages/merge/plan_model.h"
 
 namespace areagraph {
-void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool keep_closed_doors,
-                        AreaPlan* plan, const SplitCorridorParams& params, const CellGrid* grid) {
-  const std::vector<bool> closed = ClosedVertices(graph, keep_closed_doors);
-  const double max_width_px = kMaxCorridorWidthM / resolution_m;
-  const double cell_m2 = resolution_m * resolution_m;
+void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
+                        const std::vector<bool>& closed, AreaPlan* plan,
+                        const SplitCorridorParams& params, const CellGrid* grid) {
   const double straight_cos = std::cos(params.straight_deg * M_PI / 180);
   const double axis_cos = std::cos(params.axis_deg * M_PI / 180);
   for (int pass = 0; pass < 8; ++pass) {
     const int area_count = static_cast<int>(plan->areas.size());
-    const std::vector<double> size_m2 = AreaSizesM2(graph, *plan, resolution_m);
-    std::vector<double> width(area_count);
-    for (int k = 0; k < area_count; ++k) width[k] = MedianWidthPx(graph, plan->areas[k]);
-    const std::vector<std::map<int, VertexOpening>> openings = OpeningsAtVertices(graph, *plan);
-    const std::vector<AreaMoments> moments = MomentsOfAreas(graph, *plan);
-    // Pairs that pass every test; `long_enough`: the pair alone covers the
-    // elongation's squares.
+    const PlanModel model = MeasurePlan(graph, *plan, resolution_m);
+    const std::vector<AreaShape>& shapes = model.shapes;
+    // The two (or a chain of) areas as one: shaped like a corridor?
+    const auto corridor = [&](double typical, double widest, double area_px) {
+      return IsCorridorShaped(typical, widest, area_px, resolution_m);
+    };
+    // Pairs that pass every test; `long_enough`: the pair alone is shaped
+    // like a corridor.
     struct Pair {
       int i, j;
       bool long_enough;
@@ -36,13 +34,13 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
     std::vector<Pair> pairs;
     for (int vertex = 0; vertex < graph.vertices_size(); ++vertex) {
       if (closed[vertex]) continue;
-      const std::map<int, VertexOpening>& at = openings[vertex];
+      const std::map<int, VertexOpening>& at = model.openings[vertex];
       for (auto a = at.begin(); a != at.end(); ++a) {
         for (auto b = std::next(a); b != at.end(); ++b) {
           const int i = a->first, j = b->first;
-          const double narrow = std::min(width[i], width[j]);
-          const double wide = std::max(width[i], width[j]);
-          if (narrow <= 0 || wide > max_width_px || wide > params.width_ratio * narrow) continue;
+          const double narrow = std::min(shapes[i].typical_px, shapes[j].typical_px);
+          const double wide = std::max(shapes[i].typical_px, shapes[j].typical_px);
+          if (narrow <= 0 || wide > params.width_ratio * narrow) continue;
           if (narrow < params.min_width_m / resolution_m) continue;
           const VertexOpening& narrowest =
               a->second.width_px <= b->second.width_px ? a->second : b->second;
@@ -53,18 +51,21 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
               continue;
             }
           }
-          const double union_px = (size_m2[i] + size_m2[j]) / cell_m2;
-          const bool long_enough = union_px >= params.elongation * wide * wide;
+          const bool long_enough =
+              corridor(wide, std::max(shapes[i].widest_px, shapes[j].widest_px),
+                       shapes[i].area_px + shapes[j].area_px);
           if (!long_enough && !params.chains) continue;
-          if (moments[i].a <= 0 || moments[j].a <= 0) continue;
+          const AreaMoments& mi = shapes[i].moments;
+          const AreaMoments& mj = shapes[j].moments;
+          if (mi.a <= 0 || mj.a <= 0) continue;
           const Eigen::Vector2d vertex_at = FromProtoPoint(graph.vertices(vertex).position());
-          const Eigen::Vector2d ci = moments[i].Centroid(), cj = moments[j].Centroid();
+          const Eigen::Vector2d ci = mi.Centroid(), cj = mj.Centroid();
           const double across = (ci - vertex_at).normalized().dot((cj - vertex_at).normalized());
           if (across > straight_cos) continue;
           bool aligned = true;
           const Eigen::Vector2d line = (cj - ci).normalized();
-          for (const int k : {i, j}) {
-            const auto [axis, ratio] = moments[k].Axis();
+          for (const AreaMoments* m : {&mi, &mj}) {
+            const auto [axis, ratio] = m->Axis();
             if (ratio >= params.axis_ratio && std::abs(axis.dot(line)) < axis_cos) aligned = false;
           }
           if (!aligned) continue;
@@ -73,20 +74,22 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool 
       }
     }
     // With `chains`, a pair too short alone joins when the chain of pairs it
-    // belongs to covers the elongation's squares of the chain's widest piece.
+    // belongs to is shaped like a corridor.
     std::vector<bool> chain_long(area_count, false);
     DisjointSets chains(area_count);
     if (params.chains) {
       for (const Pair& pair : pairs) chains.Union(pair.i, pair.j);
-      std::vector<double> chain_px(area_count, 0), chain_wide(area_count, 0);
+      std::vector<double> chain_px(area_count, 0), chain_typical(area_count, 0),
+          chain_widest(area_count, 0);
       for (int k = 0; k < area_count; ++k) {
         const int root = chains.Find(k);
-        chain_px[root] += size_m2[k] / cell_m2;
-        chain_wide[root] = std::max(chain_wide[root], width[k]);
+        chain_px[root] += shapes[k].area_px;
+        chain_typical[root] = std::max(chain_typical[root], shapes[k].typical_px);
+        chain_widest[root] = std::max(chain_widest[root], shapes[k].widest_px);
       }
       for (int k = 0; k < area_count; ++k) {
         const int root = chains.Find(k);
-        chain_long[k] = chain_px[root] >= params.elongation * chain_wide[root] * chain_wide[root];
+        chain_long[k] = corridor(chain_typical[root], chain_widest[root], chain_px[root]);
       }
     }
     DisjointSets groups(area_count);

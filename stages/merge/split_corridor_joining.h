@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include "proto/artifacts.pb.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/merge/area_assignment.h"
@@ -17,10 +19,6 @@ struct SplitCorridorParams {
   // One corridor is about as wide everywhere: the wider piece's median free
   // width is at most this many times the narrower's.
   double width_ratio = 1.3;
-  // The two pieces together cover at least this many squares of the wider
-  // one's median free width: long and narrow, like a corridor
-  // (room_joining.h's kCorridorElongation).
-  double elongation = 6;
   // The two pieces lie on either side of the vertex: seen from the vertex,
   // their centroids are at least this many degrees apart (a corridor goes
   // on; a room across from a side corridor's end is off to the side).
@@ -28,39 +26,40 @@ struct SplitCorridorParams {
   // A piece that is elongated (its major axis' variance at least
   // axis_ratio times its minor axis') runs along the line between the two
   // centroids, within this many degrees: a room opening off a corridor
-  // piece's side lies across that piece (areagraph/ lab_c, ratio 2: 0.4
-  // less on floor_1052, NLB and freiburg_building79 than 3).
+  // piece's side lies across that piece (a ratio of 2 took such rooms for
+  // corridor pieces).
   double axis_deg = 30;
   double axis_ratio = 3;
   // Both pieces are at least this wide (median free width, metres): rows of
   // cluttered cubicles 0.9 m wide with a gap in their partition are no
-  // corridor (areagraph/ lab_a 0.721 -> 0.673 without it).
+  // corridor.
   double min_width_m = 1.0;
-  // With a grid given (merge.join_one_sided_narrowings): an opening
+  // With a grid given: an opening
   // narrower than opening_share joins anyway when it is one-sided (a flat
   // wall on one side, stages/merge/one_sided_narrowing.h) and at least this
   // share of the wider piece's median free width.
   double one_sided_opening_share = 0.5;
-  // merge.join_split_corridor_chains: a pair shorter than `elongation`
-  // squares joins when the chain of pairs that pass the other tests covers
-  // `elongation` squares of its widest piece's median free width.
-  bool chains = false;
+  // A pair not shaped like a corridor together joins when the chain of
+  // pairs that pass the other tests is: a corridor that W split into three
+  // or four short pieces is long only as a whole.
+  bool chains = true;
 };
 
 // Joins pairs of areas (rooms or room-less pieces) that meet at a graph
-// vertex which ag-cut did not close as a door or wall gap (with
-// `keep_closed_doors`), where the two are pieces of one corridor by the
-// constants above, repeatedly until no pair joins (a corridor split into
-// three or four pieces). With an automatic W near or above a corridor's
+// vertex that is not `closed` (ClosedVertices), where the two are pieces of
+// one corridor by the constants above and together are shaped like a
+// corridor (IsCorridorShaped of the two as one: the wider typical and widest
+// width, the sum of their sizes), repeatedly until no pair joins (a corridor
+// split into three or four pieces). With an automatic W near or above a corridor's
 // width the room disk stops at every slight narrowing and the corridor
 // falls into room-shaped pieces; room-less pieces stay apart where a side
 // corridor or a doorway's stub forks off (JoinCorridorPieces joins only two
-// uniform pieces). A joined area keeps the kind and room of its first piece;
-// LabelCorridorsByShape relabels it afterwards.
+// uniform pieces). A joined area keeps the kind and room of its first piece.
 // `grid`, when given, lets one-sided narrowings join (see
-// one_sided_opening_share).
-void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, bool keep_closed_doors,
-                        AreaPlan* plan, const SplitCorridorParams& params = {},
-                        const CellGrid* grid = nullptr);
+// one_sided_opening_share). The plan changes while the pass runs: each round
+// measures it again (MeasurePlan).
+void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
+                        const std::vector<bool>& closed, AreaPlan* plan,
+                        const SplitCorridorParams& params = {}, const CellGrid* grid = nullptr);
 
 }  // namespace areagraph

@@ -9,6 +9,12 @@
 
 namespace areagraph {
 
+// An opening at least this share of the free width beside it is no door:
+// the space goes on through it, where a door is narrower than the room it
+// opens into. Every pass that tells a door from an open side asks this
+// (room joining, bay and corridor-piece folding, small closed rooms).
+inline constexpr double kOpenShare = 0.9;
+
 // An area's narrowest opening at a graph vertex: the two sites beside its
 // edge ends there (the jambs) and their distance.
 struct VertexOpening {

@@ -62,7 +62,7 @@ std::string Metres(double value) { return FormatNumber(value) + " m"; }
 }
 
 // Throws when a Voronoi edge names a vertex or site that does not exist. The
-// test inline, the message out of line: four calls per edge (520 000 on lab_e).
+// test inline, the message out of line: four calls per edge (520 000 on a cluttered scan).
 inline void CheckIndex(int index, int size, const char* element, int edge) {
   if (index < 0 || index >= size) ThrowBadIndex(index, size, element, edge);
 }

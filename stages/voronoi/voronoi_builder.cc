@@ -25,7 +25,7 @@ constexpr int kAhead = 16;
 // random reads asked for ahead, these replace following the faces' pointers
 // in every pass: CGAL's faces (72 bytes each, in slots that insertion
 // reused, so neighbours lie anywhere) and vertices miss the caches on a big
-// map (lab_a tiled 8 x 8).
+// map (tens of millions of cells).
 struct FaceArrays {
   std::vector<int> site;
   std::vector<int> neighbor;

@@ -51,16 +51,16 @@ class SegmentTest(TempDirTest):
         self.assertEqual(len(graph.passages), len(expected["links"]))
 
     def test_overrides_act_as_ag_run_set(self):
-        expected = exported_json(self.ag_run("cut.room_width_m=2.5", "merge.fold_open_bays=false"),
+        expected = exported_json(self.ag_run("cut.room_width_m=2.5", "merge.keep_closed_doors=false"),
                                  "office_small")
         default = exported_json(self.ag_run(), "office_small")
         self.assertNotEqual(expected["nodes"], default["nodes"], "the options change nothing")
         for graph in (
-                areagraph.segment(OFFICE, cut__room_width_m=2.5, merge__fold_open_bays=False),
+                areagraph.segment(OFFICE, cut__room_width_m=2.5, merge__keep_closed_doors=False),
                 areagraph.segment(OFFICE, **{"cut.room_width_m": "2.5",
-                                             "merge.fold_open_bays": "false"}),
+                                             "merge.keep_closed_doors": "false"}),
                 areagraph.segment(OFFICE, options={"cut.room_width_m": 2.5,
-                                                   "merge.fold_open_bays": False})):
+                                                   "merge.keep_closed_doors": False})):
             self.assertEqual(json.loads(graph._handle.node_link_json())["nodes"],
                              expected["nodes"])
 

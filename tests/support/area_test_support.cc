@@ -359,8 +359,8 @@ proto::PipelineOptions PaperMazeOptions() {
   // uniform pieces nor pieces the room disk split: a maze's passages are as
   // wide as its cells' openings and run straight on).
   options.mutable_merge()->set_min_area_m2(0);
-  options.mutable_merge()->set_join_corridor_pieces(false);
-  options.mutable_merge()->set_join_split_corridors(false);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_CORRIDOR_PIECES);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_SPLIT_CORRIDORS);
   return options;
 }
 

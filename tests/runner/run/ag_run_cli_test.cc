@@ -305,7 +305,7 @@ TEST(AgRunInputTest, EmptyCollectionsAreErrorsAndNothingIsCreated) {
 TEST(AgRunInputTest, ByteOrderMarkAndCapitalBooleansAreRead) {
   TempDir dir;
   WriteRandomMaps(dir.path(), 1, /*first_seed=*/5);
-  WriteFile(dir.File("maps.csv"), "\xEF\xBB\xBFpath,merge.fold_open_bays\nmap_5.png,FALSE\n");
+  WriteFile(dir.File("maps.csv"), "\xEF\xBB\xBFpath,merge.keep_closed_doors\nmap_5.png,FALSE\n");
   CommandResult run;
   const proto::RunSummary summary = RunJson(
       {"--store", dir.File("s.db"), "--set", "voronoi.keep_rays=TRUE", dir.File("maps.csv")}, &run);
@@ -330,7 +330,7 @@ TEST(AgRunInputTest, PrintOptionsPrintsEveryDefaultAndTheSets) {
   const CommandResult run = RunTool("ag-run", {"--print-options", "--set", "cut.room_width_m=1.1"});
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("room_width_m: 1.1\n"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("closed_room_pocket_jamb_m: 0.6\n"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("pocket_jamb_m: 0.6\n"), std::string::npos) << run.out;
   const CommandResult with_map = RunTool("ag-run", {"--print-options", dir.File("map.png")});
   EXPECT_EQ(with_map.exit_code, 2);
   EXPECT_EQ(with_map.err, "ag-run: --print-options takes no MAP\n");
@@ -358,10 +358,10 @@ TEST(AgRunPartsTest, TilesOfAMapAreComponentsAndTheSummarySaysSo) {
   // 4 x 28): the tiles' Topology Graphs already differ slightly, and an
   // office of about merge.min_area_m2 folds in one tile only (docs/quality.md,
   // "Known weak spots"), so this test of components and summaries runs without it.
-  // The same holds for merge.fold_corridor_pieces_below_m2: its small corridor "rooms" come out
+  // The same holds for merge's FOLD_CORRIDOR_PIECES: its small corridor "rooms" come out
   // of those slightly different graphs (110 areas against 4 x 29 with it on).
   const std::vector<std::string> options = {"--set", "cut.close_wall_gaps_max_m=0", "--set",
-                                            "merge.fold_corridor_pieces_below_m2=0"};
+                                            "merge.skip_passes=FOLD_CORRIDOR_PIECES"};
   auto with_options = [&](std::vector<std::string> args) {
     args.insert(args.begin(), options.begin(), options.end());
     return args;

@@ -209,8 +209,8 @@ TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
   }
   for (const char* no : {"false", "FALSE", "fAlSe", "0"}) {
     proto::PipelineOptions options;
-    ApplyOverride(std::string("merge.fold_open_bays=") + no, &options);
-    EXPECT_FALSE(options.merge().fold_open_bays()) << no;
+    ApplyOverride(std::string("merge.keep_closed_doors=") + no, &options);
+    EXPECT_FALSE(options.merge().keep_closed_doors()) << no;
   }
   for (const char* unclear : {"t", "f", "yes", "2", "", "true "}) {
     proto::PipelineOptions options;

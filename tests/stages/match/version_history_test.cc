@@ -61,7 +61,7 @@ TEST_F(VersionHistoryTest, OtherOptionsMakeANewVersionThatKeepsTheIds) {
   ASSERT_EQ(std::set<int>(ids.begin(), ids.end()).size(), 3u);
 
   proto::PipelineOptions other = defaults;
-  other.mutable_merge()->set_fold_open_bays(false);
+  other.mutable_merge()->add_skip_passes(proto::MergeOptions::FOLD_OPEN_BAYS);
   other.mutable_cut()->set_room_width_auto(false);
   RunPlan(*store_, "m", Plan(), other);
   std::string second_key;

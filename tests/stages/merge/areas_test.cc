@@ -127,26 +127,22 @@ TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
 TEST(AreaStagesTest, NarrowerRoomWidthStrategyMakesTheCorridorARoom) {
   // Door 0.9 < corridor 1.6: W = 1.0 m. The corridor still holds the disk,
   // so the result matches the fixed W of 1.25 m: four room shapes. Its
-  // length makes the corridor's area a corridor again
-  // (merge.label_corridors_by_shape); without that all four are rooms.
+  // length makes the corridor's area a corridor again (SetAreaKinds).
   const FloorPlan plan = CorridorWithThreeRooms();
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
   options.mutable_cut()->set_door_width_m(0.9);
   options.mutable_cut()->set_corridor_width_m(1.6);
-  for (const bool by_shape : {true, false}) {
-    options.mutable_merge()->set_label_corridors_by_shape(by_shape);
-    const AreaStages stages = RunAreaStages(map, options);
-    ExpectAreaGraphInvariants(stages, map);
-    EXPECT_EQ(stages.areas.areas_size(), 4);
-    EXPECT_EQ(stages.areas.passages_size(), 3);
-    int rooms = 0;
-    for (const proto::Area& area : stages.areas.areas()) rooms += area.kind() == proto::AREA_ROOM;
-    EXPECT_EQ(rooms, by_shape ? 3 : 4);
-  }
+  const AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map);
+  EXPECT_EQ(stages.areas.areas_size(), 4);
+  EXPECT_EQ(stages.areas.passages_size(), 3);
+  int rooms = 0;
+  for (const proto::Area& area : stages.areas.areas()) rooms += area.kind() == proto::AREA_ROOM;
+  EXPECT_EQ(rooms, 3);
 }
 
-// With merge.keep_small_closed_rooms the rooms stay: each is one area behind
+// With KEEP_SMALL_CLOSED_ROOMS the rooms stay: each is one area behind
 // a door the cut closed, narrower than the room, with its walls seen.
 TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
   const FloorPlan plan = CorridorWithThreeRooms();
@@ -156,7 +152,9 @@ TEST(AreaStagesTest, MinimumAreaFoldsSmallAreasIntoNeighbours) {
     proto::PipelineOptions options;
     // The rooms hold about 10.5 m2 each, the corridor about 15.5 m2.
     options.mutable_merge()->set_min_area_m2(12);
-    options.mutable_merge()->set_keep_small_closed_rooms(keep_closed);
+    if (!keep_closed) {
+      options.mutable_merge()->add_skip_passes(proto::MergeOptions::KEEP_SMALL_CLOSED_ROOMS);
+    }
     const AreaStages stages = RunAreaStages(map, options);
     ExpectAreaGraphInvariants(stages, map);
     EXPECT_EQ(stages.areas.areas_size(), keep_closed ? 4 : 1);
@@ -323,7 +321,7 @@ TEST(AreaStagesTest, TinyAreasFoldIntoTheirRoomByDefault) {
   proto::PipelineOptions paper;
   paper.mutable_merge()->set_min_area_m2(0);
   // The 0.8 m door is about as wide as the niche: a bay, folded by default.
-  paper.mutable_merge()->set_fold_open_bays(false);
+  paper.mutable_merge()->add_skip_passes(proto::MergeOptions::FOLD_OPEN_BAYS);
   const AreaStages kept = RunAreaStages(map, paper);
   ExpectAreaGraphInvariants(kept, map);
   EXPECT_EQ(kept.areas.areas_size(), 2);

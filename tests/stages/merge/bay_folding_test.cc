@@ -1,4 +1,4 @@
-// merge.fold_open_bays: a bay that opens into a room over its whole width
+// merge's FOLD_OPEN_BAYS: a bay that opens into a room over its whole width
 // becomes part of the room; a closet behind a door stays an area of its own.
 #include <gtest/gtest.h>
 
@@ -20,7 +20,9 @@ proto::PipelineOptions BayOptions(bool fold_open_bays) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_auto(false);
   options.mutable_merge()->set_min_area_m2(0);
-  options.mutable_merge()->set_fold_open_bays(fold_open_bays);
+  if (!fold_open_bays) {
+    options.mutable_merge()->add_skip_passes(proto::MergeOptions::FOLD_OPEN_BAYS);
+  }
   return options;
 }
 

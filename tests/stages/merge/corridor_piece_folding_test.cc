@@ -1,4 +1,4 @@
-// merge.fold_corridor_pieces_below_m2 on hand-made cut graphs: a small room
+// merge's FOLD_CORRIDOR_PIECES on hand-made cut graphs: a small room
 // between two corridor pieces that it opens into over its whole width folds
 // into the corridor; one behind a door, a big one, or one across a cut that
 // ag-cut closed stays a room.
@@ -47,22 +47,24 @@ void AddBoxEdge(proto::CutGraph* graph, int source, int target, int room_id, dou
 
 // Corridor (0) - small room (1) - corridor (2) along a line: the room is a
 // `room_length` px long stretch of the corridor, 40 px (2 m) wide, whose
-// openings at its two ends are `opening_left` / `opening_right` px wide.
+// openings at its two ends are `opening_left` / `opening_right` px wide; the
+// pieces on either side are `side_length` px long.
 struct Line {
   proto::CutGraph graph;
   AreaPlan plan;
 };
 Line CorridorWithRoom(double room_length, double opening_left, double opening_right,
-                      bool closed_left = false) {
+                      bool closed_left = false, double side_length = 200) {
   Line line;
   proto::CutGraph& graph = line.graph;
   const int end_a = AddVertex(&graph, VERTEX_DEAD_END);
   const int left = AddVertex(&graph, VERTEX_PASSAGE);
   const int right = AddVertex(&graph, VERTEX_PASSAGE);
   const int end_b = AddVertex(&graph, VERTEX_DEAD_END);
-  AddBoxEdge(&graph, end_a, left, -1, 0, 200, 20, 40, opening_left);
-  AddBoxEdge(&graph, left, right, 7, 200, 200 + room_length, 20, opening_left, opening_right);
-  AddBoxEdge(&graph, right, end_b, -1, 200 + room_length, 400 + room_length, 20, opening_right, 40);
+  const double x1 = side_length, x2 = side_length + room_length;
+  AddBoxEdge(&graph, end_a, left, -1, 0, x1, 20, 40, opening_left);
+  AddBoxEdge(&graph, left, right, 7, x1, x2, 20, opening_left, opening_right);
+  AddBoxEdge(&graph, right, end_b, -1, x2, x2 + side_length, 20, opening_right, 40);
   if (closed_left) {
     proto::PassagePoint* passage = graph.add_passage_points();
     passage->set_vertex(left);
@@ -76,7 +78,8 @@ Line CorridorWithRoom(double room_length, double opening_left, double opening_ri
 TEST(CorridorPieceFoldingTest, SmallRoomOpenAtBothEndsFoldsIntoTheCorridor) {
   // 60 x 40 px = 3 x 2 m, openings as wide as the room (40 px).
   Line line = CorridorWithRoom(60, 40, 40);
-  FoldCorridorPieces(line.graph, kResolutionM, kMaxM2, true, &line.plan);
+  FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
+                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
   ExpectPlan(line.plan, {{AREA_DEAD_END, -1, {0, 1}}, {AREA_DEAD_END, -1, {2}}}, {0, 0, 1});
 }
 
@@ -85,7 +88,8 @@ TEST(CorridorPieceFoldingTest, RoomBehindADoorStays) {
   // opening only.
   Line line = CorridorWithRoom(60, 40, 18);
   const AreaPlan before = line.plan;
-  FoldCorridorPieces(line.graph, kResolutionM, kMaxM2, true, &line.plan);
+  FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
+                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
   ExpectPlan(line.plan, {{AREA_DEAD_END, -1, {0}}, {AREA_ROOM, 7, {1}}, {AREA_DEAD_END, -1, {2}}},
              before.area_of_edge);
 }
@@ -93,29 +97,34 @@ TEST(CorridorPieceFoldingTest, RoomBehindADoorStays) {
 TEST(CorridorPieceFoldingTest, RoomAboveTheLimitStays) {
   // 300 x 40 px = 15 x 2 m = 30 m2, over 20 m2; folds under a 40 m2 limit.
   Line line = CorridorWithRoom(300, 40, 40);
-  FoldCorridorPieces(line.graph, kResolutionM, kMaxM2, true, &line.plan);
+  FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
+                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
   EXPECT_EQ(line.plan.areas.size(), 3u);
-  FoldCorridorPieces(line.graph, kResolutionM, 40, true, &line.plan);
+  FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
+                     ClosedVertices(line.graph, true), 40, &line.plan);
   EXPECT_EQ(line.plan.areas.size(), 2u);
 }
 
 TEST(CorridorPieceFoldingTest, ClosedCutCountsAsADoorWithKeepClosedDoors) {
   Line kept = CorridorWithRoom(60, 40, 40, /*closed_left=*/true);
-  FoldCorridorPieces(kept.graph, kResolutionM, kMaxM2, true, &kept.plan);
+  FoldCorridorPieces(kept.graph, MeasurePlan(kept.graph, kept.plan, kResolutionM),
+                     ClosedVertices(kept.graph, true), kMaxM2, &kept.plan);
   EXPECT_EQ(kept.plan.areas.size(), 3u);
   Line folded = CorridorWithRoom(60, 40, 40, /*closed_left=*/true);
-  FoldCorridorPieces(folded.graph, kResolutionM, kMaxM2, false, &folded.plan);
+  FoldCorridorPieces(folded.graph, MeasurePlan(folded.graph, folded.plan, kResolutionM),
+                     ClosedVertices(folded.graph, false), kMaxM2, &folded.plan);
   EXPECT_EQ(folded.plan.areas.size(), 2u);
 }
 
 TEST(CorridorPieceFoldingTest, SmallRoomBetweenTwoRoomsStays) {
-  // The same line with rooms on both sides (a suite of small rooms opening
-  // into each other): no corridor to fold into.
-  Line line = CorridorWithRoom(60, 40, 40);
+  // The same line with rooms 5 x 2 m on both sides (a suite of small rooms
+  // opening into each other): no corridor to fold into.
+  Line line = CorridorWithRoom(60, 40, 40, /*closed_left=*/false, /*side_length=*/100);
   line.graph.mutable_edges(0)->set_room_id(5);
   line.graph.mutable_edges(2)->set_room_id(6);
   line.plan.areas = {{AREA_ROOM, 5, {0}}, {AREA_ROOM, 7, {1}}, {AREA_ROOM, 6, {2}}};
-  FoldCorridorPieces(line.graph, kResolutionM, kMaxM2, true, &line.plan);
+  FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
+                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
   EXPECT_EQ(line.plan.areas.size(), 3u);
 }
 

@@ -1,4 +1,4 @@
-// merge.join_porous_borders_gap_m on hand-made cut graphs: two rooms that
+// merge's JOIN_POROUS_BORDERS on hand-made cut graphs: two rooms that
 // meet at three graph vertices, one of them a gap too narrow to walk
 // through, are one room (clutter standing in it); two doors, three wide
 // openings, or a narrow gap that ag-cut closed as a door leave them apart.
@@ -59,30 +59,35 @@ TwoRooms RoomsMeetingAt(const std::vector<double>& openings_px,
 TEST(PorousBorderJoiningTest, ThreeOpeningsOneTooNarrowForADoorJoin) {
   // 0.4 m between two shelves, and two 1 m gaps.
   TwoRooms rooms = RoomsMeetingAt({8, 20, 20});
-  JoinAtPorousBorders(rooms.graph, kResolutionM, kNarrowGapPx, true, &rooms.plan);
+  JoinAtPorousBorders(rooms.graph, MeasurePlan(rooms.graph, rooms.plan, kResolutionM),
+                      ClosedVertices(rooms.graph, true), kNarrowGapPx, &rooms.plan);
   ExpectPlan(rooms.plan, {{AREA_ROOM, 1, {0, 1, 2, 3, 4, 5}}}, {0, 0, 0, 0, 0, 0});
 }
 
 TEST(PorousBorderJoiningTest, TwoOpeningsStayApart) {
   // A wall with a door and a narrow gap: no more than a wall with two doors.
   TwoRooms rooms = RoomsMeetingAt({8, 8});
-  JoinAtPorousBorders(rooms.graph, kResolutionM, kNarrowGapPx, true, &rooms.plan);
+  JoinAtPorousBorders(rooms.graph, MeasurePlan(rooms.graph, rooms.plan, kResolutionM),
+                      ClosedVertices(rooms.graph, true), kNarrowGapPx, &rooms.plan);
   EXPECT_EQ(rooms.plan.areas.size(), 2u);
 }
 
 TEST(PorousBorderJoiningTest, ThreeDoorWideOpeningsStayApart) {
-  // A big room with three doors into its neighbour (bormann/ office_a).
+  // A big room with three doors into its neighbour (a meeting room opening wide into an office).
   TwoRooms rooms = RoomsMeetingAt({20, 20, 21});
-  JoinAtPorousBorders(rooms.graph, kResolutionM, kNarrowGapPx, true, &rooms.plan);
+  JoinAtPorousBorders(rooms.graph, MeasurePlan(rooms.graph, rooms.plan, kResolutionM),
+                      ClosedVertices(rooms.graph, true), kNarrowGapPx, &rooms.plan);
   EXPECT_EQ(rooms.plan.areas.size(), 2u);
 }
 
 TEST(PorousBorderJoiningTest, ClosedCutDoesNotCountWithKeepClosedDoors) {
   TwoRooms kept = RoomsMeetingAt({8, 20, 20}, {false, true, false});
-  JoinAtPorousBorders(kept.graph, kResolutionM, kNarrowGapPx, true, &kept.plan);
+  JoinAtPorousBorders(kept.graph, MeasurePlan(kept.graph, kept.plan, kResolutionM),
+                      ClosedVertices(kept.graph, true), kNarrowGapPx, &kept.plan);
   EXPECT_EQ(kept.plan.areas.size(), 2u);
   TwoRooms joined = RoomsMeetingAt({8, 20, 20}, {false, true, false});
-  JoinAtPorousBorders(joined.graph, kResolutionM, kNarrowGapPx, false, &joined.plan);
+  JoinAtPorousBorders(joined.graph, MeasurePlan(joined.graph, joined.plan, kResolutionM),
+                      ClosedVertices(joined.graph, false), kNarrowGapPx, &joined.plan);
   EXPECT_EQ(joined.plan.areas.size(), 1u);
 }
 

@@ -1,9 +1,8 @@
-// Merge 13's corridor rules through the whole pipeline, each on a drawn
+// Merge's corridor rules through the whole pipeline, each on a drawn
 // corridor that a fixed W splits: a narrowing with a flat wall on one side
-// (merge.join_one_sided_narrowings), a corridor that W cuts into three short
-// pieces (merge.join_split_corridor_chains), and a dead-end branch narrower
-// than W (merge.join_corridor_stems). Each joins with its rule on and stays
-// apart with it off; doors stay doors.
+// and a corridor that W cuts into three short pieces (JOIN_SPLIT_CORRIDORS),
+// and a dead-end branch narrower than W (JOIN_CORRIDOR_STEMS, which keeps it
+// apart when skipped). Doors stay doors.
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
@@ -55,16 +54,6 @@ floorplan::FloorPlan CabinetCorridor() {
   return plan;
 }
 
-TEST(OneSidedNarrowingTest, WithoutTheRuleTheCabinetSplitsTheCorridor) {
-  proto::PipelineOptions options = FixedW(1.7);
-  options.mutable_merge()->set_join_one_sided_narrowings(false);
-  const proto::AreaGraph areas = Areas(CabinetCorridor(), options);
-  const int left = AreaAt(areas, 4, kCorridorMiddleY), right = AreaAt(areas, 17, kCorridorMiddleY);
-  ASSERT_NE(left, -1);
-  ASSERT_NE(right, -1);
-  EXPECT_NE(left, right);
-}
-
 TEST(OneSidedNarrowingTest, ACabinetAgainstOneWallDoesNotSplitTheCorridor) {
   const proto::AreaGraph areas = Areas(CabinetCorridor(), FixedW(1.7));
   const int left = AreaAt(areas, 4, kCorridorMiddleY), right = AreaAt(areas, 17, kCorridorMiddleY);
@@ -104,17 +93,6 @@ floorplan::FloorPlan ThreePieceCorridor() {
   return plan;
 }
 
-TEST(SplitCorridorChainTest, WithoutChainsThePiecesAreTooShortToJoin) {
-  proto::PipelineOptions options = FixedW(1.9);
-  options.mutable_merge()->set_join_split_corridor_chains(false);
-  const proto::AreaGraph areas = Areas(ThreePieceCorridor(), options);
-  const int left = AreaAt(areas, 2.5, kCorridorMiddleY);
-  const int right = AreaAt(areas, 12, kCorridorMiddleY);
-  ASSERT_NE(left, -1);
-  ASSERT_NE(right, -1);
-  EXPECT_NE(left, right);
-}
-
 TEST(SplitCorridorChainTest, ThreeShortPiecesOfOneCorridorJoin) {
   const proto::AreaGraph areas = Areas(ThreePieceCorridor(), FixedW(1.9));
   const int left = AreaAt(areas, 2.5, kCorridorMiddleY);
@@ -127,15 +105,15 @@ TEST(SplitCorridorChainTest, ThreeShortPiecesOfOneCorridorJoin) {
 }
 
 // A corridor 20 m long with a dead-end branch 1.05 m wide (1.2 m between
-// wall centres) and 5 m long down from its middle, open across its whole width, and a closet 1.2 m
+// wall centres) and 6 m long down from its middle, open across its whole width, and a closet 1.2 m
 // wide and 4.5 m deep behind a 0.7 m door further along. W = 1.5 m: the branch and the closet get
 // no room.
 floorplan::FloorPlan CorridorWithStem() {
-  floorplan::FloorPlan plan(21, 12.5);
+  floorplan::FloorPlan plan(21, 13.5);
   floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
   DrawOffices(plan, 20, 5);
   const double below = kCorridorY + kCorridorHeight;
-  floorplan::DrawRoom(plan, {6.4, below, 1.2, 5});
+  floorplan::DrawRoom(plan, {6.4, below, 1.2, 6});
   floorplan::DrawDoor(plan, 7, below, 1.05, WallDirection::kHorizontal);  // no narrowing
   floorplan::DrawRoom(plan, {15, below, 1.2, 4.5});
   floorplan::DrawDoor(plan, 15.6, below, 0.7, WallDirection::kHorizontal);
@@ -146,7 +124,7 @@ constexpr double kStemX = 7.0, kStemY = 9.5, kClosetX = 15.6, kClosetY = 9.0;
 
 TEST(CorridorStemTest, WithoutTheRuleTheBranchStaysApart) {
   proto::PipelineOptions options = FixedW(1.5);
-  options.mutable_merge()->set_join_corridor_stems(false);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_CORRIDOR_STEMS);
   const proto::AreaGraph areas = Areas(CorridorWithStem(), options);
   const int corridor = AreaAt(areas, 3, kCorridorMiddleY), stem = AreaAt(areas, kStemX, kStemY);
   ASSERT_NE(corridor, -1);

@@ -1,7 +1,7 @@
-// merge.join_furniture_gaps through the whole pipeline: a cabinet standing
+// merge's JOIN_FURNITURE_GAPS through the whole pipeline: a cabinet standing
 // free across a room, too close to the walls for the room disk to pass, no
 // longer splits the room; a piece of wall between two doors still does. With
-// merge.fill_furniture_outlines_m, neither does a cabinet drawn as a closed
+// its filled outline, neither does a cabinet drawn as a closed
 // outline (lab_d's desks).
 #include <gtest/gtest.h>
 
@@ -82,7 +82,7 @@ TEST(FurnitureGapsTest, CabinetAcrossARoomDoesNotSplitIt) {
 
 TEST(FurnitureGapsTest, WithoutTheRuleTheCabinetSplitsTheRoom) {
   proto::PipelineOptions options;
-  options.mutable_merge()->set_join_furniture_gaps(false);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_FURNITURE_GAPS);
   const Sides sides = AreasOf(RoomWithDivider(kCabinet), options);
   ExpectRoomSplit(sides);
 }
@@ -100,13 +100,6 @@ TEST(FurnitureGapsTest, CabinetDrawnAsOutlineDoesNotSplitTheRoom) {
   ASSERT_EQ(plan.image().at<uint8_t>(cabinet.y + 10, cabinet.x), floorplan::kWallGrey);
   const Sides sides = AreasOf(plan, {});
   ExpectOneRoomBesideTheCorridor(sides);
-}
-
-TEST(FurnitureGapsTest, WithoutFillingTheOutlineSplitsTheRoom) {
-  proto::PipelineOptions options;
-  options.mutable_merge()->set_fill_furniture_outlines_m(0);
-  const Sides sides = AreasOf(RoomWithOutlinedCabinet(), options);
-  ExpectRoomSplit(sides);
 }
 
 }  // namespace

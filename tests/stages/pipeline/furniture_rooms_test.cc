@@ -121,8 +121,8 @@ TEST(FurnitureRoomTest, WithoutIslandsAndRoomJoiningSomeRoomsSplit) {
   // split some of the rooms.
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_island_max_m(0);
-  options.mutable_merge()->set_join_rooms_without_doors(false);
-  options.mutable_merge()->set_join_furniture_gaps(false);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_ROOMS_WITHOUT_DOORS);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_FURNITURE_GAPS);
   int split = 0;
   for (const Case& c : Cases()) {
     const floorplan::FloorPlan plan = FurnishedRoom(c.furnishing, c.seed);

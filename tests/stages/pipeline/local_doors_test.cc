@@ -101,7 +101,7 @@ TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
 }
 
 TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
-  // merge.join_rooms_without_doors joins two rooms whose opening is nearly
+  // merge's JOIN_ROOMS_WITHOUT_DOORS joins two rooms whose opening is nearly
   // as wide as the space beside it, and this door is wider than the
   // corridor; the cut marks it closed (merge.keep_closed_doors).
   proto::PipelineOptions options;
@@ -113,20 +113,12 @@ TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
 
 TEST(LocalDoorsTest, CorridorWiderThanWIsLabelledACorridor) {
   // The room disk (W about 1 m) fits in the 1.85 m corridor, but the
-  // corridor is ten times as long as it is wide: merge.label_corridors_by_shape.
+  // corridor is ten times as long as it is wide (SetAreaKinds).
   const WideDoorAreas found = RunOffices(kWideDoorPlan, {});
   ASSERT_NE(found.office, -1);
   ASSERT_NE(found.corridor, -1);
   EXPECT_EQ(found.corridor_kind, proto::AREA_CORRIDOR);
   EXPECT_EQ(found.office_kind, proto::AREA_ROOM);
-}
-
-TEST(LocalDoorsTest, WithoutTheShapeCueTheWideCorridorIsARoom) {
-  proto::PipelineOptions options;
-  options.mutable_merge()->set_label_corridors_by_shape(false);
-  const WideDoorAreas found = RunOffices(kWideDoorPlan, options);
-  ASSERT_NE(found.corridor, -1);
-  EXPECT_EQ(found.corridor_kind, proto::AREA_ROOM);
 }
 
 }  // namespace

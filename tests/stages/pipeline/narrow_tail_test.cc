@@ -1,5 +1,5 @@
-// A hall with a narrow tail (cut.cut_narrow_tails, merge 14's
-// merge.corridor_stems_max_width_m): a corridor 1.45 m wide and 7 m long
+// A hall with a narrow tail (cut.cut_narrow_tails, and merge's
+// JOIN_CORRIDOR_STEMS joins stems only into corridors): a corridor 1.45 m wide and 7 m long
 // running on from the side of a hall 6 m wide, open across its whole width,
 // like the side corridors of areagraph/ Freiburg101_scan. W (about 1 m, from
 // the office's door) is narrower than the tail, so the room disk fills hall
@@ -51,15 +51,6 @@ TEST(NarrowTailTest, TheTailIsItsOwnArea) {
 TEST(NarrowTailTest, WithoutTheCutTheTailIsPartOfTheHall) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_cut_narrow_tails(false);
-  const proto::AreaGraph areas = Areas(options);
-  const int hall = AreaAt(areas, kHallX, kHallY);
-  ASSERT_NE(hall, -1);
-  EXPECT_EQ(AreaAt(areas, kTailX, kTailY), hall);
-}
-
-TEST(NarrowTailTest, WithoutTheWidthLimitTheHallTakesItsTailBackAsAStem) {
-  proto::PipelineOptions options;
-  options.mutable_merge()->set_corridor_stems_max_width_m(0);
   const proto::AreaGraph areas = Areas(options);
   const int hall = AreaAt(areas, kHallX, kHallY);
   ASSERT_NE(hall, -1);

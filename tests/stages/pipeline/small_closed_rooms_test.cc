@@ -3,7 +3,7 @@
 // the cut closes the door, but the closet's piece of the edge is shorter
 // than W, so the cut joined it to the room's piece (cut.keep_closed_room_tips
 // keeps it), and ag-merge folded the closet, smaller than merge.min_area_m2,
-// into the room (merge.keep_small_closed_rooms keeps it).
+// into the room (merge's KEEP_SMALL_CLOSED_ROOMS keeps it).
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
@@ -65,7 +65,7 @@ TEST(SmallClosedRoomsTest, AClosetBehindAClosedDoorIsAnAreaOfItsOwn) {
 
 TEST(SmallClosedRoomsTest, WithoutKeepSmallClosedRoomsTheClosetFolds) {
   proto::PipelineOptions options;
-  options.mutable_merge()->set_keep_small_closed_rooms(false);
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::KEEP_SMALL_CLOSED_ROOMS);
   const Result result = RunOn(RoomAndCloset(), options);
   ASSERT_NE(result.room, -1);
   EXPECT_EQ(result.room, result.closet);
@@ -87,7 +87,7 @@ TEST(SmallClosedRoomsTest, AClosetBesideUnknownSpaceFolds) {
   EXPECT_EQ(result.room, result.closet);
 }
 
-// merge.closed_room_pocket_jamb_m: the pocket's "door" runs between two
+// merge.small_closed_rooms.pocket_jamb_m: the pocket's "door" runs between two
 // cabinet corners, thick obstacles beyond both jambs, so the pocket stays in
 // its room (the closet above, whose door lies in a wall, stays a room).
 TEST(SmallClosedRoomsTest, APocketBetweenCabinetsStaysInTheRoom) {
@@ -98,7 +98,7 @@ TEST(SmallClosedRoomsTest, APocketBetweenCabinetsStaysInTheRoom) {
 
 TEST(SmallClosedRoomsTest, WithoutThePocketTestThePocketIsAnArea) {
   proto::PipelineOptions options;
-  options.mutable_merge()->set_closed_room_pocket_jamb_m(0);
+  options.mutable_merge()->mutable_small_closed_rooms()->set_pocket_jamb_m(0);
   const auto [pocket, room] = PocketAndRoomOfFloor16(options);
   ASSERT_NE(room, -1);
   ASSERT_NE(pocket, -1);

@@ -1,4 +1,4 @@
-// merge.join_split_corridors through the whole pipeline: a corridor 2.05 m
+// merge's JOIN_SPLIT_CORRIDORS through the whole pipeline: a corridor 2.05 m
 // wide narrows to 1.7 m between two short wall stubs, W is 1.9 m (as an
 // automatic W near the corridor's width comes out), the room disk cannot pass
 // the narrowing and the corridor falls into two room-shaped pieces; they are
@@ -24,7 +24,9 @@ proto::PipelineOptions FixedW(bool join_split_corridors) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_auto(false);
   options.mutable_cut()->set_room_width_m(1.9);
-  options.mutable_merge()->set_join_split_corridors(join_split_corridors);
+  if (!join_split_corridors) {
+    options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_SPLIT_CORRIDORS);
+  }
   return options;
 }
 

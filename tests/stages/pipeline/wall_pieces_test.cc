@@ -2,7 +2,7 @@
 // of wall between the doors stands free. clean.keep_wall_pieces: a thin piece
 // (1.6 x 0.15 m) has a desk's perimeter, and furniture removal took it out,
 // so the strip and the room became one (areagraph/ lab_d_scan_furnitures).
-// merge.furniture_max_elongation: a thick piece (2.4 x 0.4 m) stays and
+// merge.furniture_gaps.max_elongation: a thick piece (2.4 x 0.4 m) stays and
 // divides them too (with any shape allowed ag-merge took such a piece for a
 // desk and joined the two at its doors on areagraph/ lab_d; that the limit
 // refuses it is tested in tests/stages/merge/corridor_labels_test.cc).

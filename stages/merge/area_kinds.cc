@@ -1,0 +1,31 @@
+#include "stages/merge/area_kinds.h"
+
+#include <set>
+
+#include "stages/merge/area_shapes.h"
+
+namespace areagraph {
+
+void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double resolution_m,
+                  AreaPlan* plan) {
+  const int area_count = static_cast<int>(plan->areas.size());
+  std::vector<int> exits(area_count, 0);
+  for (const std::set<int>& at : AreasAtVertices(graph, *plan)) {
+    if (at.size() < 2) continue;
+    for (const int area : at) ++exits[area];
+  }
+  for (int k = 0; k < area_count; ++k) {
+    AreaPlan::Area& area = plan->areas[k];
+    const bool roomless = area.room_id < 0;
+    const bool through = exits[k] >= 2;
+    if (through && (roomless || RasterShape(raster, k, resolution_m).corridor)) {
+      area.kind = proto::AREA_CORRIDOR;
+    } else if (roomless) {
+      area.kind = proto::AREA_DEAD_END;
+    } else {
+      area.kind = proto::AREA_ROOM;
+    }
+  }
+}
+
+}  // namespace areagraph
