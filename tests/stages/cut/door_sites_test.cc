@@ -1,7 +1,7 @@
 // DoorClosingSites on drawn plans: a door in a wall is closed, a gap between
 // a wall and a free-standing desk or shelf is not. WallGapSites: a gap beside
 // a thin wall end is closed, also when that end is a short piece of wall
-// between two doors (cut.close_wall_gaps_short_tips), not beside a cabinet.
+// between two doors, not beside a cabinet.
 #include "stages/cut/door_sites.h"
 
 #include <gtest/gtest.h>
@@ -81,8 +81,7 @@ TEST(DoorSitesTest, GapBetweenAWallEndAndAShelfInLineWithItIsNoDoor) {
 }
 
 // WallGapSites on the pruned Topology Graph of a plan; with `free_spaces`,
-// free cells the gap cannot reach count as non-free past a jamb
-// (cut.jamb_wall_behind_line).
+// free cells the gap cannot reach count as non-free past a jamb.
 PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = true,
                    bool free_spaces = false) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);

@@ -1,7 +1,7 @@
 // StructureSites on drawn plans: a free-standing block is an island (its
 // sites are dropped for the room disk); a block that a wall stub continues
 // end-on is a piece of a dividing row and keeps its sites, also when the stub
-// is just beside the block's centre line (cut.island_end_on_face), but not
+// is just beside the block's centre line, but not
 // when only the edge of its face lines up with the stub (a desk beside a door
 // jamb or a cabinet: cut.island_end_on_face_share).
 #include "stages/cut/structure_sites.h"
@@ -45,7 +45,7 @@ int SitesOnBlock(const FloorPlan& plan, double end_on_face_share, bool both_ends
   return on_block;
 }
 
-// The face shares tried: centre line only (island_end_on_face off), the
+// The face shares tried: centre line only (a share of 0), the
 // default middle quarter, and the whole face (cut 7's option).
 constexpr double kCentreLine = 0, kMiddleQuarter = 0.25, kWholeFace = 1;
 
