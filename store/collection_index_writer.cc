@@ -5,8 +5,6 @@
 
 #include <sqlite3.h>
 
-#include <cctype>
-#include <cstdio>
 #include <filesystem>
 #include <set>
 
@@ -25,22 +23,6 @@ namespace fs = std::filesystem;
 // The oldest store schema an index reads: 5 added the payload sizes that
 // summaries report without reading payloads.
 constexpr int kOldestShardSchema = 5;
-
-// A URI that opens `path` read-only (this SQLite build interprets URIs):
-// indexing never changes a shard.
-std::string ReadOnlyShardUri(const std::string& path) {
-  std::string uri = "file:";
-  for (const unsigned char c : path) {
-    if (std::isalnum(c) || c == '/' || c == '.' || c == '_' || c == '-' || c == '~') {
-      uri += static_cast<char>(c);
-    } else {
-      char escaped[4];
-      std::snprintf(escaped, sizeof(escaped), "%%%02X", c);
-      uri += escaped;
-    }
-  }
-  return uri + "?mode=ro";
-}
 
 // The stages as a JSON array for json_each; stage names are plain words, but
 // quotes and backslashes are escaped all the same.
@@ -142,7 +124,8 @@ class IndexWriter {
       SqliteStatement attach(db_, path_, collection_sql::kAttachShard,
                              "attaching shard '" + shard + "'");
       StatementUse use(attach);
-      attach.BindText(1, ReadOnlyShardUri(shard));
+      // Read-only: indexing never changes a shard.
+      attach.BindText(1, StoreUri(shard, ReadAccess::kReadOnly));
       attach.Step();
     }
     struct Detach {
