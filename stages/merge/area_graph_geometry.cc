@@ -48,8 +48,8 @@ void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
   const double resolution_m = transform.resolution_m();
   const PlanarPartition partition = BuildPlanarPartition(raster.labels, area_count);
   // Read before the simplification lets the labels go.
-  const std::vector<bool> passable = PassableChains(
-      partition, raster.labels, options.open_border_clearance_m() / resolution_m);
+  const std::vector<bool> passable =
+      PassableChains(partition, raster.labels, options.open_border_clearance_m() / resolution_m);
   const PartitionOutlines outlines =
       SimplifiedOutlines(partition, raster.labels, options.outline_tolerance_m() / resolution_m,
                          options.min_hole_m2() / (resolution_m * resolution_m), labels_done);
