@@ -82,7 +82,9 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // folded after all (merge.closed_room_pocket_jamb_m).
 // merge 16: one shape model and one definition of a corridor for every pass and the areas' kinds,
 // the passes in one table (merge.skip_passes), corridor clutter joining removed.
-inline constexpr StageInfo kMergeStage{"merge", 16};
+// merge 17: every border between two areas that a body fits across is a passage, also without a
+// graph vertex there (merge.open_border_clearance_m); labels unchanged.
+inline constexpr StageInfo kMergeStage{"merge", 17};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

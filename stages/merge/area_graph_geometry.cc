@@ -4,6 +4,7 @@
 
 #include "stages/common/map_frame.h"
 #include "stages/merge/area_outlines.h"
+#include "stages/merge/open_borders.h"
 #include "stages/merge/passage_borders.h"
 #include "stages/merge/passage_finder.h"
 #include "stages/merge/planar_partition.h"
@@ -46,6 +47,9 @@ void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
   const MapTransform transform(out->frame());
   const double resolution_m = transform.resolution_m();
   const PlanarPartition partition = BuildPlanarPartition(raster.labels, area_count);
+  // Read before the simplification lets the labels go.
+  const std::vector<bool> passable =
+      PassableChains(partition, raster.labels, options.open_border_clearance_m() / resolution_m);
   const PartitionOutlines outlines =
       SimplifiedOutlines(partition, raster.labels, options.outline_tolerance_m() / resolution_m,
                          options.min_hole_m2() / (resolution_m * resolution_m), labels_done);
@@ -76,8 +80,11 @@ void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
   for (int e = 0; e < graph.edges_size(); ++e) {
     final_area_of_edge[e] = area_id[plan.area_of_edge[e]];
   }
-  const std::vector<PassageOnBorder> placed =
+  std::vector<PassageOnBorder> placed =
       PlacePassagesOnBorders(FindPassages(graph, final_area_of_edge), partition, label_of_area);
+  const std::vector<PassageOnBorder> open =
+      OpenBorderPassages(partition, passable, outlines.chains, label_of_area, placed);
+  placed.insert(placed.end(), open.begin(), open.end());
   for (const PassageOnBorder& on_border : placed) {
     const PassagePlan& plan_passage = on_border.passage;
     proto::Passage* passage = out->add_passages();
