@@ -66,6 +66,24 @@ std::string RewriteAutoWords(std::string text) {
   return text;
 }
 
+// The text parser skips reserved field names without a word, so a file
+// written for an older build would lose its switches silently: a removed
+// option in `text` (comments stripped) throws OptionsError naming it.
+void RefuseRemovedOptions(const std::string& text, const std::string& path) {
+  const std::string code = std::regex_replace(text, std::regex("#[^\\n]*"), "");
+  const Descriptor* pipeline = proto::PipelineOptions::descriptor();
+  for (int i = 0; i < pipeline->field_count(); ++i) {
+    const FieldDescriptor* stage = pipeline->field(i);
+    const Descriptor* options = stage->message_type();
+    for (int k = 0; k < options->reserved_name_count(); ++k) {
+      const std::string& name = options->reserved_name(k);
+      if (!std::regex_search(code, std::regex("\\b" + name + "\\s*[:{]"))) continue;
+      throw OptionsError("options file '" + path + "': option '" + stage->name() + "." + name +
+                         "' was removed (proto/pipeline_options.proto says what replaced it)");
+    }
+  }
+}
+
 // The values a numeric option may take, from the unit its name ends in.
 struct NumberRange {
   double max;
@@ -177,6 +195,7 @@ proto::PipelineOptions ReadOptionsFile(const std::string& path) {
   if (!parser.ParseFromString(RewriteAutoWords(text), &options)) {
     throw OptionsError("options file '" + path + "', " + errors.first_error);
   }
+  RefuseRemovedOptions(text, path);
   try {
     CheckOptionNumbers(options);
   } catch (const OptionsError& error) {

@@ -117,8 +117,8 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
            /*on_caller=*/2);
   // The estimate's scratch is gone; the rasters below come from new mappings.
   if (between_steps) between_steps();
-  in.sites = StructureSitesFrom(site_cells, island_depth, width, resolution_m,
-                                island_max_m, options.islands().end_on_face_share(),
+  in.sites = StructureSitesFrom(site_cells, island_depth, width, resolution_m, island_max_m,
+                                options.islands().end_on_face_share(),
                                 RunsCutPass(options, proto::CutOptions::WALL_PIECES_NEED_BOTH_ENDS),
                                 obstacles);
   island_depth = IslandDepth();
@@ -131,8 +131,7 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   // The door sites beside the gap sites' edge ranges.
   std::unique_ptr<WallGapFinder> gap_finder;
   if (finds_gaps) {
-    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m,
-                                                 gap_max_m,
+    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m, gap_max_m,
                                                  /*short_tips=*/true, spaces);
   }
   const size_t edge_count = static_cast<size_t>(topology.edges_size());
@@ -145,9 +144,7 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
           in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, spaces);
         }
       },
-      [&] {
-        mouths = MouthOpenings(obstacles, resolution_m, mouth_max_m, spaces);
-      }};
+      [&] { mouths = MouthOpenings(obstacles, resolution_m, mouth_max_m, spaces); }};
   for (int range = 0; range < gap_ranges; ++range) {
     tasks.push_back([&, range] {
       gaps[range] = gap_finder->Openings(
@@ -253,7 +250,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
     std::vector<EdgePiece>& plan = plans[edge_index];
     plan = PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
-    if (RunsCutPass(options, proto::CutOptions::CUT_NARROW_TAILS)) CutNarrowTails(track, source_dead, target_dead, &plan);
+    if (RunsCutPass(options, proto::CutOptions::CUT_NARROW_TAILS))
+      CutNarrowTails(track, source_dead, target_dead, &plan);
     for (const EdgePiece& piece : plan) {
       if (piece.room >= 0) room_ids.emplace(piece.room, static_cast<int>(room_ids.size()));
     }

@@ -96,9 +96,9 @@ void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedL
   const double door = WidestDoorM(open);
   estimate->set_widest_open_door_m(door);
   const double corridor = estimate->narrowest_corridor_m();
-  double width = WidthRule(door, corridor, kPaperRoomWidthM,
-                           RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS),
-                           kPaperWidthMarginM);
+  double width =
+      WidthRule(door, corridor, kPaperRoomWidthM,
+                RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS), kPaperWidthMarginM);
   if (corridor > 0) width = std::max(width, corridor + kPaperWidthMarginM);
   estimate->set_room_width_m(std::min(estimate->room_width_m(), width));
 }

@@ -74,8 +74,8 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
         MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
     if (!fold) return ids;
     if (options.fold_fragments_below_m2() > 0) {
-      const std::vector<AreaFold> folds = FindNoiseFragments(current, previous, ids, after, overlaps,
-                                                             options.fold_fragments_below_m2());
+      const std::vector<AreaFold> folds = FindNoiseFragments(
+          current, previous, ids, after, overlaps, options.fold_fragments_below_m2());
       int folded = 0;
       if (!folds.empty()) current = FoldAreas(current, folds, &folded);
       if (folded > 0) continue;

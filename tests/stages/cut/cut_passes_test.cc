@@ -1,7 +1,8 @@
 // Cut's pass table (stages/cut/cut_passes.h): every pass once, in the order
 // paper.pbtxt skips them, with a reason, and a case on a constructed map that
-// each pass fixes (it fails with the pass skipped); the passes without a test
-// file of their own (CLOSE_MOUTHS) are tested here.
+// each pass fixes (it fails with the pass skipped); FREE_STANDING_ISLANDS and
+// CLOSE_MOUTHS, whose whole-pipeline effect merge's passes also reach, are
+// tested here on the Cut Graph.
 #include "stages/cut/cut_passes.h"
 
 #include <gtest/gtest.h>
@@ -26,20 +27,22 @@ const std::map<Pass, const char*>& CaseOfEachPass() {
       {proto::CutOptions::WIDTH_ABOVE_DOORS,
        "room_width_test.cc ChooseRoomWidthTest.DoorWiderThanTheCorridorFollowsRoomWidthAboveDoors"},
       {proto::CutOptions::FREE_STANDING_ISLANDS,
-       "pipeline/furniture_rooms_test.cc FurnitureRoomsTest.*"},
+       "this file, FreeStandingIslandsTest.TheBlockDoesNotStopTheRoomDisk"},
       {proto::CutOptions::WALL_PIECES_NEED_BOTH_ENDS,
-       "pipeline/partition_cabinet_test.cc PartitionCabinetTest.*"},
+       "pipeline/partition_cabinet_test.cc PartitionCabinetTest.TheRoomIsOneRoomAndOneArea"},
       {proto::CutOptions::CLOSE_WALL_DOORS,
        "pipeline/local_doors_test.cc "
-       "LocalDoorsTest.WithoutClosingWallDoorsTheOfficeLeaksIntoTheCorridor"},
+       "LocalDoorsTest.ClosingWallDoorsDividesOfficeFromCorridor"},
       {proto::CutOptions::CLOSE_WALL_GAPS,
        "pipeline/local_doors_test.cc "
-       "LocalDoorsTest.WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen"},
+       "LocalDoorsTest.DoorWiderThanItsCorridorDividesOfficeFromCorridor"},
       {proto::CutOptions::CLOSE_MOUTHS,
        "this file, CloseMouthsTest.TheRoomDiskStopsAtTheBaysMouth"},
       {proto::CutOptions::KEEP_CLOSED_ROOM_TIPS,
-       "pipeline/small_closed_rooms_test.cc SmallClosedRoomsTest.*"},
-      {proto::CutOptions::CUT_NARROW_TAILS, "pipeline/narrow_tail_test.cc NarrowTailTest.*"},
+       "pipeline/small_closed_rooms_test.cc "
+       "SmallClosedRoomsTest.AClosetBehindAClosedDoorIsAnAreaOfItsOwn"},
+      {proto::CutOptions::CUT_NARROW_TAILS,
+       "pipeline/narrow_tail_test.cc NarrowTailTest.TheTailIsItsOwnArea"},
   };
   return cases;
 }
@@ -94,6 +97,33 @@ TEST(CutPassTableTest, OptionsOfAPassAreItsOwnMessage) {
       EXPECT_EQ(message, &options.wall_gaps());
     }
   }
+}
+
+// A 6 x 6 m room with a 3.5 x 1.2 m block (a row of desks) in its middle:
+// 1.25 m beside each end of it, 2.4 m above and below.
+floorplan::FloorPlan RoomWithABlock() {
+  floorplan::FloorPlan plan(7, 7);
+  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 6});
+  floorplan::DrawFurniture(plan, {1.75, 2.9, 3.5, 1.2});
+  return plan;
+}
+
+// The room's Cut Graph with W = 2 m, wider than the gaps beside the block.
+proto::CutGraph CutOfRoomWithABlock(bool skip_islands) {
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_room_width_m(2.0);
+  if (skip_islands)
+    options.mutable_cut()->add_skip_passes(proto::CutOptions::FREE_STANDING_ISLANDS);
+  return RunAreaStages(CleanedMapFromImage(RoomWithABlock().image()), options).cut;
+}
+
+TEST(FreeStandingIslandsTest, TheBlockDoesNotStopTheRoomDisk) {
+  EXPECT_EQ(CutOfRoomWithABlock(false).room_shapes_size(), 1);
+}
+
+TEST(FreeStandingIslandsTest, WithoutThePassTheBlockSplitsTheRoom) {
+  // The disk fits above and below the block but not past its ends.
+  EXPECT_EQ(CutOfRoomWithABlock(true).room_shapes_size(), 2);
 }
 
 // A 2 m corridor with a 6 x 4 m bay above it, open along the bay's whole

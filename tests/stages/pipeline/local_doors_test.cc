@@ -85,9 +85,22 @@ TEST(LocalDoorsTest, WithOneGlobalWTheOfficeLeaksIntoTheCorridor) {
   EXPECT_EQ(found.office, found.corridor);
 }
 
-TEST(LocalDoorsTest, WithoutClosingWallDoorsTheOfficeLeaksIntoTheCorridor) {
-  // Wall gaps still closed: the wide door's jambs are no thin wall's end.
+// The drawn walls are thin, so the wall gap rule closes the wide door too;
+// with wall gaps only up to 1 m closed, CLOSE_WALL_DOORS alone divides.
+proto::PipelineOptions NarrowWallGaps() {
   proto::PipelineOptions options;
+  options.mutable_cut()->mutable_wall_gaps()->set_max_width_m(1.0);
+  return options;
+}
+
+TEST(LocalDoorsTest, ClosingWallDoorsDividesOfficeFromCorridor) {
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, NarrowWallGaps());
+  ASSERT_NE(found.office, -1);
+  EXPECT_NE(found.office, found.corridor);
+}
+
+TEST(LocalDoorsTest, WithoutClosingWallDoorsTheOfficeLeaksIntoTheCorridor) {
+  proto::PipelineOptions options = NarrowWallGaps();
   options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_DOORS);
   const WideDoorAreas found = RunOffices(kWideDoorPlan, options);
   EXPECT_EQ(found.office, found.corridor);
