@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Ablation of merge's passes: every set runs with the defaults, then once per
-# pass of merge's pass table with that pass skipped (merge.skip_passes), and
-# one Markdown table prints each set's mean MCC (ag-eval, MAORIS' variant)
-# with the defaults and each pass's effect (its set's mean without the pass
-# minus the defaults'). A pass that moves no set by 0.005 has to earn its
-# place on a constructed case. The passes are the ones that
-# examples/options/paper.pbtxt skips, all of them (merge_passes_test holds
-# that list to the table). The sets as tools/bench-quality.sh runs them:
-# areagraph/ (16 maps), RobotMap (20), bormann/ plain and furnished (20
-# each), and the generated tuning and held-out floors (30 each). One store a
-# set is kept across the runs, so a pass costs merge and match only.
+# Ablation of the passes beyond the paper (clean's, cut's, merge's and
+# match's pass tables): every set runs with the defaults, then once per pass
+# with that pass skipped (STAGE.skip_passes), and one Markdown table prints
+# each set's mean MCC (ag-eval, MAORIS' variant) with the defaults and each
+# pass's effect (its set's mean without the pass minus the defaults'). A pass
+# that moves no set by 0.005 has to earn its place on a constructed case. The
+# passes are the ones that examples/options/paper.pbtxt skips, all of them
+# (cut_passes_test and merge_passes_test hold those lists to the tables).
+# Match's passes change only how ids survive from one version of a map to the
+# next, so a single run of a set shows none of their effect (0.000). The sets
+# as tools/bench-quality.sh runs them: areagraph/ (16 maps), RobotMap (20),
+# bormann/ plain and furnished (20 each), and the generated tuning and
+# held-out floors (30 each). One store a set is kept across the runs, so a
+# pass costs its stage and the ones after it only.
 #
 #   tools/bench-ablation.sh [--data DIR] [--out DIR] [--build DIR] [--sets LIST]
 #                           [--passes LIST] [--jobs N]
@@ -17,9 +20,10 @@
 #
 # --sets: comma-separated subset of areagraph,robotmap,bormann-plain,
 # bormann-furnished,tuning,held-out (default: all). --passes: a subset of the
-# passes (default: all; none: the defaults row only, e.g. to score another
-# build's binaries with --build). --check: only checks that the passes named in
-# paper.pbtxt are accepted by ag-run (the test suite runs it).
+# passes, each STAGE.PASS or just PASS (e.g. cut.CLOSE_WALL_DOORS or
+# JOIN_ROOMS_WITHOUT_DOORS; default: all; none: the defaults row only, e.g. to
+# score another build's binaries with --build). --check: only checks that the
+# passes named in paper.pbtxt are accepted by ag-run (the test suite runs it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 DATA=../shared/data
@@ -38,25 +42,38 @@ while [ $# -gt 0 ]; do
     --passes) PASSES=$2; shift 2 ;;
     --jobs) JOBS=$2; shift 2 ;;
     --check) CHECK=1; shift ;;
-    -h|--help) sed -n '2,22p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,27p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "bench-ablation: unknown argument '$1' (see --help)" >&2; exit 2 ;;
   esac
 done
 if [ -n "$BUILD" ]; then BIN=$BUILD/bin; else tools/build.sh >/dev/null; BIN=build/bin; fi
 [ -x "$BIN/ag-run" ] || { echo "bench-ablation: no ag-run in $BIN" >&2; exit 1; }
 
-# The passes: what paper.pbtxt skips, in the table's order.
-ALL_PASSES=$(sed -n '/skip_passes/,/]/p' examples/options/paper.pbtxt | tr -c 'A-Z_\n' ' ' |
-  tr ' ' '\n' | grep -E '^[A-Z][A-Z_]+$' | grep -v '^SKIP' || true)
+# The passes: what paper.pbtxt skips, as STAGE.PASS in the stages' and the
+# tables' order (ag-run prints one `skip_passes: PASS` line each).
+ALL_PASSES=$("$BIN/ag-run" --print-options --options examples/options/paper.pbtxt |
+  awk '/^[a-z_]+ \{$/ { stage = $1 } $1 == "skip_passes:" { print stage "." $2 }')
 [ -n "$ALL_PASSES" ] || { echo "bench-ablation: no skip_passes in paper.pbtxt" >&2; exit 1; }
+# stage_pass PASS: STAGE.PASS for a pass named with or without its stage.
+stage_pass() {
+  local name
+  for name in $ALL_PASSES; do
+    if [ "$name" = "$1" ] || [ "${name#*.}" = "$1" ]; then echo "$name"; return; fi
+  done
+  echo "bench-ablation: no pass '$1' in paper.pbtxt's skip_passes" >&2
+  exit 2
+}
 if [ "$CHECK" = 1 ]; then
   for pass in $ALL_PASSES; do
-    "$BIN/ag-run" --print-options --set "merge.skip_passes=$pass" >/dev/null
+    "$BIN/ag-run" --print-options --set "${pass%%.*}.skip_passes=${pass#*.}" >/dev/null
   done
   echo "bench-ablation: $(wc -w <<<"$ALL_PASSES") passes"
   exit 0
 fi
 PASSES=${PASSES:-$(echo $ALL_PASSES | tr ' ' ',')}
+[ "$PASSES" = none ] && PASSES=
+# Every name checked before any set runs.
+for name in ${PASSES//,/ }; do stage_pass "$name" >/dev/null || exit 2; done
 
 wanted() { [[ ",$SETS," == *",$1,"* ]]; }
 AG=$DATA/areagraph
@@ -121,7 +138,7 @@ for set in ${SETS//,/ }; do wanted "$set" && sets+=("$set"); done
 header="| run |"
 rule="|---|"
 for set in "${sets[@]}"; do header+=" $set |"; rule+="---|"; manifest "$set"; done
-echo "Mean MCC (maoris), $(date -u +%Y-%m-%d): the defaults, and each merge pass's effect on it"
+echo "Mean MCC (maoris), $(date -u +%Y-%m-%d): the defaults, and each pass's effect on it"
 echo "(the mean without the pass minus the defaults'; negative: the pass helps)."
 echo
 echo "$header"
@@ -133,11 +150,11 @@ for set in "${sets[@]}"; do
   row+=" ${base[$set]} |"
 done
 echo "$row"
-[ "$PASSES" = none ] && PASSES=
-for pass in ${PASSES//,/ }; do
+for name in ${PASSES//,/ }; do
+  pass=$(stage_pass "$name")
   row="| without $pass |"
   for set in "${sets[@]}"; do
-    value=$(mean "$set" "$pass" --set "merge.skip_passes=$pass")
+    value=$(mean "$set" "$pass" --set "${pass%%.*}.skip_passes=${pass#*.}")
     row+=" $(awk -v a="$value" -v b="${base[$set]}" 'BEGIN { if (a == "" || b == "") print "-"; else printf "%+.3f", a - b }') |"
   done
   echo "$row"

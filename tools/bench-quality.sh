@@ -17,7 +17,7 @@
 #   kinds, so these sets also report kind accuracy (ag-eval, with ag-export
 #   --format kinds).
 # Every set also runs with W = 1.25 m (the defaults otherwise: a number for W
-# skips the width estimate, so cut.close_wall_doors, which closes the doors the
+# skips the width estimate, so the cut pass CLOSE_WALL_DOORS, which closes the doors the
 # estimate finds, closes none there; that column differs from the defaults in
 # W and in that rule, docs/quality.md, "How to score") and with the
 # paper's behaviour (examples/options/paper.pbtxt); the generated floors also
@@ -285,7 +285,7 @@ for part in $GENERATED; do
   done
   run "$M" "$OUT/$part/auto" "${OURS[@]}"
   run "$M" "$OUT/$part/fixed" "${FIXED[@]}"
-  run "$S" "$OUT/$part/true" --set cut.room_width_auto=false
+  run "$S" "$OUT/$part/true"
   run "$M" "$OUT/$part/paper" "${PAPER[@]}"
   for run_name in auto fixed true paper; do
     mcc "$OUT/$part/$run_name" "$G/gt" --gt-style labels --mcc-variant maoris >"$T/$part-$run_name"

@@ -44,10 +44,10 @@ fi
 
 # The constants and their candidates; the first value of each is its default.
 CONSTANTS=(
-  "cut.close_mouths_max_m 0 6 10"
+  "cut.mouths.max_width_m 0 6 10"
   "cut.room_width_open_doors false true"
-  "cut.close_wall_gaps_max_m 3.5 3 4"
-  "cut.room_island_max_m 4 3 5"
+  "cut.wall_gaps.max_width_m 3.5 3 4"
+  "cut.islands.max_length_m 4 3 5"
 )
 TUNING_PARTS=(tuning public-tuning robotmap)
 SETS=(areagraph robotmap bormann offices public)

@@ -6,6 +6,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "stages/common/pipeline_options_check.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -30,7 +31,7 @@ CleanParameters CleanParametersFor(const proto::CleanOptions& options,
   parameters.alpha_radius_px = robot_width / (2 * resolution);
   parameters.furniture_max_perimeter_px = options.furniture_max_perimeter_m() / resolution;
   parameters.unknown_island_max_cells = options.unknown_island_max_m2() / (resolution * resolution);
-  parameters.keep_wall_pieces = options.keep_wall_pieces();
+  parameters.keep_wall_pieces = RunsStagePass(options, proto::CleanOptions::KEEP_WALL_PIECES);
   parameters.wall_pieces.thinner_than_px = kWallPieceThinnerThanM / resolution;
   parameters.wall_pieces.min_length_px = kWallPieceMinLengthM / resolution;
   parameters.wall_pieces.max_gap_px = kWallPieceMaxGapM / resolution;

@@ -20,7 +20,7 @@ struct CleanParameters {
   // Unknown islands of at most this many cells become free.
   double unknown_island_max_cells = 0;
   // Furniture pieces' regions that are pieces of wall stay
-  // (clean.keep_wall_pieces).
+  // (clean pass KEEP_WALL_PIECES).
   bool keep_wall_pieces = false;
   WallPieceSizes wall_pieces;
 };

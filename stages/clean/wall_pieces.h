@@ -8,7 +8,7 @@
 namespace areagraph {
 
 // What makes an obstacle region of a furniture piece a piece of wall
-// standing between two doors (clean.keep_wall_pieces), in pixels: it is
+// standing between two doors (clean pass KEEP_WALL_PIECES), in pixels: it is
 // thinner than `thinner_than_px` or kWallPieceWallRatio times the map's
 // typical wall (TypicalWallThickness; twice its deepest cell's depth), at
 // least kWallPieceMinElongation times as long as wide and `min_length_px`
@@ -31,7 +31,7 @@ inline constexpr double kWallPieceThinnerThanM = 0.3;
 inline constexpr double kWallPieceWallRatio = 2.0;
 inline constexpr double kWallPieceMinElongation = 3.0;
 // At least as long as the short wall pieces that ag-cut takes as jambs
-// (cut.close_wall_gaps_max_m, its short tips).
+// (cut pass CLOSE_WALL_GAPS, its short tips).
 inline constexpr double kWallPieceMinLengthM = 0.5;
 // The gap past each end is at most a door's (as kWallGapM,
 // stages/cut/structure_sites.h).

@@ -43,45 +43,43 @@ std::string JoinKeys(const std::vector<std::string>& keys) {
   return joined;
 }
 
-// Numeric options that also take the word `auto`: `auto` sets the bool
-// `auto_field` (which makes the stage estimate the number from the map); a
-// number turns it off again.
+// Numeric options that also take the word `auto`, which stands for 0: the
+// stage estimates the number from the map.
 struct AutoOption {
   const char* stage;
   const char* number_field;
-  const char* auto_field;
 };
-constexpr AutoOption kAutoOptions[] = {{"cut", "room_width_m", "room_width_auto"}};
+constexpr AutoOption kAutoOptions[] = {{"cut", "room_width_m"}};
 
 Message* StageMessage(proto::PipelineOptions* options, const std::string& stage_name) {
   const FieldDescriptor* stage = proto::PipelineOptions::descriptor()->FindFieldByName(stage_name);
   return options->GetReflection()->MutableMessage(options, stage);
 }
 
-void SetAuto(Message* stage_options, const AutoOption& option, bool on) {
-  const FieldDescriptor* field = stage_options->GetDescriptor()->FindFieldByName(option.auto_field);
-  stage_options->GetReflection()->SetBool(stage_options, field, on);
-}
-
-// `room_width_m: auto` -> `room_width_auto: true`, before the text parser
-// (which wants a number) sees it.
+// `room_width_m: auto` -> `room_width_m: 0`, before the text parser (which
+// wants a number) sees it.
 std::string RewriteAutoWords(std::string text) {
   for (const AutoOption& option : kAutoOptions) {
     const std::regex word(std::string("\\b") + option.number_field + "\\s*:\\s*auto\\b");
-    text = std::regex_replace(text, word, std::string(option.auto_field) + ": true");
+    text = std::regex_replace(text, word, std::string(option.number_field) + ": 0");
   }
   return text;
 }
 
-// A number given in a file without a word on `auto` means that number.
-void NumbersTurnAutoOff(proto::PipelineOptions* options) {
-  for (const AutoOption& option : kAutoOptions) {
-    Message* stage_options = StageMessage(options, option.stage);
-    const Descriptor* descriptor = stage_options->GetDescriptor();
-    const Reflection* reflection = stage_options->GetReflection();
-    if (reflection->HasField(*stage_options, descriptor->FindFieldByName(option.number_field)) &&
-        !reflection->HasField(*stage_options, descriptor->FindFieldByName(option.auto_field))) {
-      SetAuto(stage_options, option, false);
+// The text parser skips reserved field names without a word, so a file
+// written for an older build would lose its switches silently: a removed
+// option in `text` (comments stripped) throws OptionsError naming it.
+void RefuseRemovedOptions(const std::string& text, const std::string& path) {
+  const std::string code = std::regex_replace(text, std::regex("#[^\\n]*"), "");
+  const Descriptor* pipeline = proto::PipelineOptions::descriptor();
+  for (int i = 0; i < pipeline->field_count(); ++i) {
+    const FieldDescriptor* stage = pipeline->field(i);
+    const Descriptor* options = stage->message_type();
+    for (int k = 0; k < options->reserved_name_count(); ++k) {
+      const std::string& name = options->reserved_name(k);
+      if (!std::regex_search(code, std::regex("\\b" + name + "\\s*[:{]"))) continue;
+      throw OptionsError("options file '" + path + "': option '" + stage->name() + "." + name +
+                         "' was removed (proto/pipeline_options.proto says what replaced it)");
     }
   }
 }
@@ -197,7 +195,7 @@ proto::PipelineOptions ReadOptionsFile(const std::string& path) {
   if (!parser.ParseFromString(RewriteAutoWords(text), &options)) {
     throw OptionsError("options file '" + path + "', " + errors.first_error);
   }
-  NumbersTurnAutoOff(&options);
+  RefuseRemovedOptions(text, path);
   try {
     CheckOptionNumbers(options);
   } catch (const OptionsError& error) {
@@ -253,7 +251,7 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
     if (key == std::string(option.stage) + "." + option.number_field) auto_option = &option;
   }
   if (auto_option != nullptr && value == "auto") {
-    SetAuto(owner, *auto_option, true);
+    owner->GetReflection()->SetDouble(owner, field, 0);
     return;
   }
   if (field->is_repeated()) {
@@ -296,7 +294,6 @@ void ApplyOverride(const std::string& assignment, proto::PipelineOptions* option
                        (auto_option != nullptr ? " or auto" : "") + ", got '" + value + "'");
   }
   CheckNumbersOfStage(stage_name, *StageMessage(options, stage_name));
-  if (auto_option != nullptr) SetAuto(owner, *auto_option, false);
 }
 
 void FillDefaults(Message* message) {

@@ -24,13 +24,12 @@ void CheckOptionNumbers(const proto::PipelineOptions& options);
 
 // Reads a PipelineOptions text-format file. Throws OptionsError on a missing
 // file, a folder, a parse error (with line and column) or a number out of
-// range. `room_width_m: auto` means `room_width_auto: true`; a number for
-// room_width_m without a room_width_auto line means that number (auto off).
+// range. `room_width_m: auto` means `room_width_m: 0` (W from the map).
 proto::PipelineOptions ReadOptionsFile(const std::string& path);
 
 // Applies one "stage.field=value" override, for example
-// "cut.room_width_m=1.1". "cut.room_width_m=auto" sets cut.room_width_auto
-// and a number clears it. A boolean takes true or false (any letter case) or
+// "cut.room_width_m=1.1". "cut.room_width_m=auto" sets it to 0 (W from the
+// map). A boolean takes true or false (any letter case) or
 // 1 or 0. Throws OptionsError naming the valid keys when the key is unknown,
 // saying the expected type when the value does not parse, and the range when
 // a number is out of it (see CheckOptionNumbers).

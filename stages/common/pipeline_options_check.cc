@@ -93,13 +93,14 @@ void CheckCutOptions(const proto::CutOptions& options) {
   Require(!(door > 0) || door < corridor || corridor - 0.1 > 0,
           "cut.corridor_width_m = " + FormatNumber(corridor) +
               " m gives no room width (W = corridor - 0.1 m)");
-  RequirePositive(options.room_width_m(), "cut.room_width_m", "metres");
-  RequireNotNegative(options.room_island_max_m(), "cut.room_island_max_m", "metres");
-  RequireNotNegative(options.close_wall_gaps_max_m(), "cut.close_wall_gaps_max_m", "metres");
-  RequireNotNegative(options.close_mouths_max_m(), "cut.close_mouths_max_m", "metres");
-  const double share = options.island_end_on_face_share();
+  // 0: W is estimated from the map.
+  RequireNotNegative(options.room_width_m(), "cut.room_width_m", "metres");
+  RequireNotNegative(options.islands().max_length_m(), "cut.islands.max_length_m", "metres");
+  RequireNotNegative(options.wall_gaps().max_width_m(), "cut.wall_gaps.max_width_m", "metres");
+  RequireNotNegative(options.mouths().max_width_m(), "cut.mouths.max_width_m", "metres");
+  const double share = options.islands().end_on_face_share();
   Require(std::isfinite(share) && share >= 0 && share <= 1,
-          "cut.island_end_on_face_share must be between 0 and 1, got " + FormatNumber(share));
+          "cut.islands.end_on_face_share must be between 0 and 1, got " + FormatNumber(share));
 }
 
 void CheckMergeOptions(const proto::MergeOptions& options) {
@@ -128,10 +129,6 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
   RequireNotNegative(options.fold_fragments_below_m2(), "match.fold_fragments_below_m2",
                      "square metres");
   RequireNotNegative(options.split_joins_below_m2(), "match.split_joins_below_m2", "square metres");
-  Require(
-      options.fold_fragments_below_share() >= 0 && options.fold_fragments_below_share() <= 1,
-      "match.fold_fragments_below_share = " + FormatNumber(options.fold_fragments_below_share()) +
-          " must be between 0 and 1 (a share of the area it would join)");
   Require(options.split_joins_inside_share() > 0 && options.split_joins_inside_share() <= 1,
           "match.split_joins_inside_share = " + FormatNumber(options.split_joins_inside_share()) +
               " must be above 0 and at most 1 (a share of the previous area's cells)");

@@ -12,6 +12,11 @@ namespace areagraph {
 
 // A stage's identity in cache keys. Bump `version` whenever the stage's
 // output changes for the same input, so that cached results are recomputed.
+// Renaming or folding options needs no bump: the canonical options in the
+// key change by themselves (clean's, cut's and match's switches becoming
+// skip_passes and cut's W switch folding into cut.room_width_m left every
+// artifact byte as it was with the defaults and with paper.pbtxt, only
+// match's segmentation_options_digest follows the new options).
 struct StageInfo {
   const char* name;
   int version;
@@ -20,7 +25,7 @@ struct StageInfo {
 inline constexpr StageInfo kImportStage{"import", 1};
 // clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
 // clean 4: furniture removal keeps pieces of wall standing between two doors
-// (clean.keep_wall_pieces; scans whose short wall pieces looked like furniture).
+// (clean pass KEEP_WALL_PIECES; scans whose short wall pieces looked like furniture).
 inline constexpr StageInfo kCleanStage{"clean", 4};
 // voronoi 2: edges in face order.
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.

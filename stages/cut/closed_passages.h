@@ -16,8 +16,8 @@ namespace areagraph {
 // at the narrowest point next to it), so a few cells are enough.
 inline constexpr double kClosedPassageReachM = 0.15;
 
-// The lines ag-cut closed on purpose (the sites of cut.close_wall_doors and
-// cut.close_wall_gaps_max_m), bucketed in cells of the reach so that a
+// The lines ag-cut closed on purpose (the sites of the cut passes
+// CLOSE_WALL_DOORS and CLOSE_WALL_GAPS), bucketed in cells of the reach so that a
 // query looks at 3 x 3 buckets.
 class ClosedLines {
  public:

@@ -9,6 +9,7 @@
 #include "stages/common/stage_info.h"
 #include "stages/cut/absorbed_polygons.h"
 #include "stages/cut/closed_passages.h"
+#include "stages/cut/cut_passes.h"
 #include "stages/cut/cut_planning.h"
 #include "stages/cut/door_sites.h"
 #include "stages/cut/edge_track.h"
@@ -78,10 +79,13 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   CutInputs in;
   const int width = grid.width(), height = grid.height();
   const double resolution_m = grid.resolution_m();
-  const bool islands = options.room_island_max_m() > 0;
-  const bool finds_gaps = options.close_wall_gaps_max_m() > 0;
-  const bool closes_lines =
-      options.close_wall_doors() || finds_gaps || options.close_mouths_max_m() > 0;
+  const double island_max_m = IslandMaxLengthM(options);
+  const double gap_max_m = WallGapMaxWidthM(options);
+  const double mouth_max_m = MouthMaxWidthM(options);
+  const bool closes_doors = RunsCutPass(options, proto::CutOptions::CLOSE_WALL_DOORS);
+  const bool islands = island_max_m > 0;
+  const bool finds_gaps = gap_max_m > 0;
+  const bool closes_lines = closes_doors || finds_gaps || mouth_max_m > 0;
   std::vector<int> site_cells;
   IslandDepth island_depth;
   // The obstacles labelled once for the three site finders.
@@ -113,9 +117,10 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
            /*on_caller=*/2);
   // The estimate's scratch is gone; the rasters below come from new mappings.
   if (between_steps) between_steps();
-  in.sites = StructureSitesFrom(site_cells, island_depth, width, resolution_m,
-                                options.room_island_max_m(), options.island_end_on_face_share(),
-                                options.island_wall_piece_both_ends(), obstacles);
+  in.sites = StructureSitesFrom(site_cells, island_depth, width, resolution_m, island_max_m,
+                                options.islands().end_on_face_share(),
+                                RunsCutPass(options, proto::CutOptions::WALL_PIECES_NEED_BOTH_ENDS),
+                                obstacles);
   island_depth = IslandDepth();
   std::vector<int>().swap(site_cells);
   cv::Mat free_spaces;
@@ -126,8 +131,7 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   // The door sites beside the gap sites' edge ranges.
   std::unique_ptr<WallGapFinder> gap_finder;
   if (finds_gaps) {
-    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m,
-                                                 options.close_wall_gaps_max_m(),
+    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m, gap_max_m,
                                                  /*short_tips=*/true, spaces);
   }
   const size_t edge_count = static_cast<size_t>(topology.edges_size());
@@ -136,13 +140,11 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   std::vector<Opening> mouths;
   std::vector<std::function<void()>> tasks = {
       [&] {
-        if (options.close_wall_doors()) {
+        if (closes_doors) {
           in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, spaces);
         }
       },
-      [&] {
-        mouths = MouthOpenings(obstacles, resolution_m, options.close_mouths_max_m(), spaces);
-      }};
+      [&] { mouths = MouthOpenings(obstacles, resolution_m, mouth_max_m, spaces); }};
   for (int range = 0; range < gap_ranges; ++range) {
     tasks.push_back([&, range] {
       gaps[range] = gap_finder->Openings(
@@ -215,7 +217,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     return grid.Contains(col, row) && in.inside.at<uint8_t>(row, col) != 0;
   };
   const ClosedLines closed_lines(in.closing, grid.resolution_m());
-  const ClosedLines* kept_tips = options.keep_closed_room_tips() ? &closed_lines : nullptr;
+  const ClosedLines* kept_tips =
+      RunsCutPass(options, proto::CutOptions::KEEP_CLOSED_ROOM_TIPS) ? &closed_lines : nullptr;
   SiteAlphaShape shape(std::move(in.sites), room_width_px / 2);
   int room_count = shape.DetectRooms(inside_boundary);
   DropSmallRooms(room_width_px, &shape, &room_count);
@@ -247,7 +250,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     const bool target_dead = topology.vertices(edge.target()).kind() == proto::VERTEX_DEAD_END;
     std::vector<EdgePiece>& plan = plans[edge_index];
     plan = PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
-    if (options.cut_narrow_tails()) CutNarrowTails(track, source_dead, target_dead, &plan);
+    if (RunsCutPass(options, proto::CutOptions::CUT_NARROW_TAILS))
+      CutNarrowTails(track, source_dead, target_dead, &plan);
     for (const EdgePiece& piece : plan) {
       if (piece.room >= 0) room_ids.emplace(piece.room, static_cast<int>(room_ids.size()));
     }

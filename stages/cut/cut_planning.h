@@ -22,7 +22,7 @@ struct EdgePiece {
 // 2. A dead-end edge shorter than `room_width_px` is not cut; it takes the
 //    room found at its junction end. Likewise a piece shorter than W at a
 //    dead end joins its neighbour. Neither happens where the cut lies on
-//    one of `closed_lines` (cut.keep_closed_room_tips): a small room behind
+//    one of `closed_lines` (cut pass KEEP_CLOSED_ROOM_TIPS): a small room behind
 //    a door the cut closed is shorter than W, not a bulge of the corridor.
 // 3. A room-less piece shorter than W between two rooms is a doorway: it
 //    vanishes, leaving one cut at its narrowest point (or none when both

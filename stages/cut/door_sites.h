@@ -13,7 +13,7 @@ namespace areagraph {
 
 // The doors that the width estimate found (EstimateRoomWidth: a narrowing
 // between two clearly wider spaces) as openings, each closed
-// (cut.close_wall_doors) when its two jambs are the building's wall
+// (cut pass CLOSE_WALL_DOORS) when its two jambs are the building's wall
 // structure, so that the room disk never passes such a door, however wide
 // W is. A door's jambs:
 // - are the nearest non-free cells on either side of its narrowest point;
@@ -44,7 +44,7 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // candidate; both sites must line up with a wall (as above) and one at
 // least be wall structure. Consecutive segments of one edge that pass make
 // one opening, closed along every segment's line.
-// - A wall gap (cut.close_wall_gaps_max_m): at most `max_gap_m` wide, at
+// - A wall gap (cut pass CLOSE_WALL_GAPS): at most `max_gap_m` wide, at
 //   least one site the end of a thin wall (from the site on, for kJambRunM
 //   and kMinTipRunGaps times the gap, the non-free cells across the line
 //   span at most kMaxTipWallM, with free cells on both sides), both sites

@@ -8,7 +8,7 @@
 
 namespace areagraph {
 
-// The mouths of the map (cut.close_mouths_max_m): rooms open along a whole
+// The mouths of the map (cut pass CLOSE_MOUTHS, cut.mouths.max_width_m): rooms open along a whole
 // side to the space in front of them (a bay on a wide corridor, a room open
 // to a lobby), each as a closed opening from jamb to jamb. A mouth runs from
 // a jamb along a straight wall line across free cells to the first obstacle

@@ -7,7 +7,7 @@
 
 namespace areagraph {
 
-// What makes the end of a room's edge a narrow tail (cut.cut_narrow_tails).
+// What makes the end of a room's edge a narrow tail (cut pass CUT_NARROW_TAILS).
 struct NarrowTailParams {
   // The room is at least this many times as wide as the tail: the tail is
   // the stretch before the dead end where the clearance stays at most the

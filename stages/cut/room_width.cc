@@ -8,6 +8,7 @@
 #include "common/error.h"
 #include "common/text.h"
 #include "stages/common/pipeline_options_check.h"
+#include "stages/cut/cut_passes.h"
 #include "stages/cut/width_estimate.h"
 #include "stages/geometry/disjoint_sets.h"
 
@@ -55,7 +56,7 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
   CheckCutOptions(options);
   const double door = options.door_width_m();
   const double corridor = options.corridor_width_m();
-  double width = options.room_width_m();
+  double width = options.room_width_m() > 0 ? options.room_width_m() : kPaperRoomWidthM;
   if (door > 0 && corridor > 0) {
     width = door < corridor ? door + kPaperWidthMarginM : corridor - kPaperWidthMarginM;
   }
@@ -69,9 +70,10 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
   const double fixed = RoomWidthM(options, frame);
   const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
   proto::RoomWidthEstimate estimate;
-  if (options.room_width_auto() && !strategy) {
+  if (EstimatesRoomWidth(options) && !strategy) {
     estimate = EstimateRoomWidth(topology, LongestPart(topology), frame.resolution_m(), fixed,
-                                 options.room_width_above_doors(), kPaperWidthMarginM);
+                                 RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS),
+                                 kPaperWidthMarginM);
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);
@@ -88,14 +90,15 @@ void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedL
     if (closed.Near(opening.position)) continue;
     open.push_back(opening.width_m);
   }
-  if (!options.close_wall_doors()) {
+  if (!RunsCutPass(options, proto::CutOptions::CLOSE_WALL_DOORS)) {
     for (const proto::DetectedWidth& door : estimate->doors()) open.push_back(door.width_m());
   }
   const double door = WidestDoorM(open);
   estimate->set_widest_open_door_m(door);
   const double corridor = estimate->narrowest_corridor_m();
-  double width = WidthRule(door, corridor, options.room_width_m(), options.room_width_above_doors(),
-                           kPaperWidthMarginM);
+  double width =
+      WidthRule(door, corridor, kPaperRoomWidthM,
+                RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS), kPaperWidthMarginM);
   if (corridor > 0) width = std::max(width, corridor + kPaperWidthMarginM);
   estimate->set_room_width_m(std::min(estimate->room_width_m(), width));
 }

@@ -9,21 +9,29 @@
 
 namespace areagraph {
 
+// The paper's W (metres): the room width where cut.room_width_m is 0 and the
+// map shows neither a door nor a corridor to estimate it from.
+inline constexpr double kPaperRoomWidthM = 1.25;
+
+// Whether W is estimated from the map: cut.room_width_m is 0 (`auto`).
+inline bool EstimatesRoomWidth(const proto::CutOptions& options) {
+  return options.room_width_m() == 0;
+}
+
 // The width W in metres that decides the room alpha radius (W / 2): the
 // paper's strategy W = door + 0.1 m when the widest door is narrower than the
 // narrowest corridor, else corridor - 0.1 m, when both widths are given
 // (a width of 0 counts as not given, as in the stored canonical options);
-// cut.room_width_m otherwise. Throws OptionsError for bad options
-// (CheckCutOptions) and for a W wider than the whole map.
-// Ignores cut.room_width_auto.
+// cut.room_width_m otherwise, and kPaperRoomWidthM where that is 0 (to be
+// estimated). Throws OptionsError for bad options (CheckCutOptions) and for
+// a W wider than the whole map.
 double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame);
 
 // The W that ag-cut uses, and how it came about: RoomWidthM when door and
-// corridor widths are given or cut.room_width_auto is off, else
+// corridor widths are given or cut.room_width_m is a number, else
 // EstimateRoomWidth on the connected part of the Topology Graph with the
-// most edge length (falling back to cut.room_width_m when it finds neither
-// doors nor corridors). Throws as
-// RoomWidthM does.
+// most edge length (falling back to kPaperRoomWidthM when it finds neither
+// doors nor corridors). Throws as RoomWidthM does.
 proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
                                          const proto::MapFrame& frame,
                                          const proto::TopologyGraph& topology);

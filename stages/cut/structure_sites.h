@@ -21,10 +21,10 @@ namespace areagraph {
 // only at these sites, so that a room stays one room whatever stands in it;
 // furniture standing against a wall is part of the wall's region and still
 // counts. `max_island_m` <= 0 keeps every site. `end_on_face_share`
-// (cut.island_end_on_face_share; 0 probes the centre line only): the
+// (cut.islands.end_on_face_share; 0 probes the centre line only): the
 // other obstacle may continue the region's line on any line across this
 // share of its end face's width, centred on the face, not only on its centre
-// line. `wall_piece_both_ends` (cut.island_wall_piece_both_ends): a region
+// line. `wall_piece_both_ends` (cut pass WALL_PIECES_NEED_BOTH_ENDS): a region
 // continued end-on is a piece of wall only when another obstacle also lies
 // within kWallGapM past its other end (a wall piece stands between two
 // doors); a cabinet at a wall that lines up with a desk leaves the desk's

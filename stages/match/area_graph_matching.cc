@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "stages/common/pipeline_options.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/match/area_cells.h"
 #include "stages/match/fragment_folding.h"
 #include "stages/match/join_undoing.h"
@@ -72,10 +73,9 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
     std::vector<int> ids =
         MatchAreas(current, previous, after, before, overlaps, options.min_overlap());
     if (!fold) return ids;
-    if (options.fold_fragments_below_m2() > 0 || options.fold_fragments_below_share() > 0) {
+    if (options.fold_fragments_below_m2() > 0) {
       const std::vector<AreaFold> folds = FindNoiseFragments(
-          current, previous, ids, after, overlaps, options.fold_fragments_below_m2(),
-          options.fold_fragments_below_share());
+          current, previous, ids, after, overlaps, options.fold_fragments_below_m2());
       int folded = 0;
       if (!folds.empty()) current = FoldAreas(current, folds, &folded);
       if (folded > 0) continue;
@@ -84,8 +84,9 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
     --rounds_left;
     const std::vector<AreaUnjoin> unjoins =
         FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2(),
-                          options.split_joins_inside_share(), options.split_joins_when_id_moved(),
-                          options.split_joins_without_passage());
+                          options.split_joins_inside_share(),
+                          RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WHEN_ID_MOVED),
+                          RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WITHOUT_PASSAGE));
     int split = 0;
     if (!unjoins.empty()) {
       current = SplitJoinedAreas(current, previous, unjoins, options, &split);

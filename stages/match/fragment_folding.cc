@@ -11,8 +11,7 @@ namespace areagraph {
 std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
                                          const proto::AreaGraph& previous,
                                          const std::vector<int>& ids, const AreaCells& cells,
-                                         const std::vector<AreaOverlap>& overlaps, double max_m2,
-                                         double max_share) {
+                                         const std::vector<AreaOverlap>& overlaps, double max_m2) {
   // The previous area holding most of each current area's cells.
   std::vector<int> best(current.areas_size(), -1);
   std::vector<int64_t> best_cells(current.areas_size(), 0);
@@ -32,10 +31,7 @@ std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
     if (best_cells[i] < kFragmentInsideShare * cells.cells[i]) continue;
     const auto parent = area_of_id.find(previous.areas(best[i]).stable_id());
     if (parent == area_of_id.end()) continue;
-    const double area_m2 = current.areas(i).area_m2();
-    if (area_m2 >= max_m2 && area_m2 >= max_share * current.areas(parent->second).area_m2()) {
-      continue;
-    }
+    if (current.areas(i).area_m2() >= max_m2) continue;
     proto::Polygon joined;
     if (!UnionOfNeighbours(current.areas(parent->second).polygon_m(), current.areas(i).polygon_m(),
                            &joined)) {

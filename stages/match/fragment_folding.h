@@ -21,7 +21,7 @@ struct AreaFold {
 
 // The areas of `current` that scan noise split off an area of `previous`:
 // an area that took no previous id (`ids[i]` < 0, see MatchAreaGraph),
-// smaller than `max_m2` or than `max_share` of the area it would join, with kFragmentInsideShare of
+// smaller than `max_m2`, with kFragmentInsideShare of
 // its cells (`cells` of `current`; `overlaps` from CountOverlaps(previous's cells, `cells`)) inside
 // one previous area whose id went to an area it borders. Each goes back into that area. ag-merge's
 // thresholds (merge.min_area_m2 above all) cut such pieces off in one update and fold them back in
@@ -30,8 +30,7 @@ struct AreaFold {
 std::vector<AreaFold> FindNoiseFragments(const proto::AreaGraph& current,
                                          const proto::AreaGraph& previous,
                                          const std::vector<int>& ids, const AreaCells& cells,
-                                         const std::vector<AreaOverlap>& overlaps, double max_m2,
-                                         double max_share = 0);
+                                         const std::vector<AreaOverlap>& overlaps, double max_m2);
 
 // `graph` with each fold's fragment joined to its `into` area: one polygon
 // (the border they shared dropped, see UnionOfNeighbours), summed area,

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "stages/common/map_frame.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/geometry/polygon_split.h"
 #include "stages/match/graph_assembly.h"
 #include "stages/match/passage_cutting.h"
@@ -234,12 +235,12 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
 // One join cut apart (see SplitJoinedAreas), on `areas` and `passages`.
 // `kept` is the previous area whose id the joined area holds.
 // `options`: whether a cut may cross a passage's border
-// (split_joins_across_passages), the wall margin (CutLengthOffWalls) and the
+// (UNDO_JOINS_ACROSS_PASSAGES), the wall margin (CutLengthOffWalls) and the
 // least opening (split_joins_min_opening_m).
 bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed, int kept,
               const proto::MatchOptions& options, const MapTransform& transform,
               std::vector<proto::Area>& areas, std::vector<proto::Passage>& passages) {
-  const bool cut_passages = options.split_joins_across_passages();
+  const bool cut_passages = RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_ACROSS_PASSAGES);
   const double wall_margin_m = options.split_joins_wall_margin_m();
   const proto::Area& joined = areas[joined_index];
   proto::Polygon inside, rest;
@@ -387,7 +388,7 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   between.set_width_m(std::sqrt(Distance2(border.front(), border.back())));
   // The previous passage between the two; the opening it was must not have
   // grown much (a wall removed is a real join, not noise).
-  // Without a previous passage (split_joins_without_passage) the opening
+  // Without a previous passage (UNDO_JOINS_WITHOUT_PASSAGE) the opening
   // counts as the least one.
   double opening_m = options.split_joins_min_opening_m();
   for (const proto::Passage& old : previous.passages()) {

@@ -31,9 +31,9 @@ struct AreaUnjoin {
 // (MatchOptions.split_joins_inside_share) of its cells (`before`: previous's cells on current's
 // grid; `overlaps` from CountOverlaps(before, current's cells)) inside one current area that took
 // the id of a previous area with a passage to it. `when_id_moved`
-// (MatchOptions.split_joins_when_id_moved) also counts a previous area whose
+// (match pass UNDO_JOINS_WHEN_ID_MOVED) also counts a previous area whose
 // id went to another area than the one holding most of it; `without_passage`
-// (split_joins_without_passage) also a neighbour it shared only a border
+// (UNDO_JOINS_WITHOUT_PASSAGE) also a neighbour it shared only a border
 // with. At most one per current
 // area (the largest). Scan noise moves merge's room joining back and forth
 // from one update to the next, and each join cost the smaller area's id.
@@ -54,8 +54,8 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
 // the two pieces along their shared border. Where the cut crosses the border
 // of a passage to a third area, that passage is cut too (CutPassage): the
 // longest stretch keeps it, each other stretch of at least kMinCutPassageM
-// is a new passage from its piece; with options.split_joins_across_passages()
-// false such a join stays. A join whose cut does not give two simple pieces,
+// is a new passage from its piece; with match pass UNDO_JOINS_ACROSS_PASSAGES
+// skipped such a join stays. A join whose cut does not give two simple pieces,
 // or is longer than kMaxCutPerOpening times the opening the previous passage
 // had, stays as it is; the stretches of the cut that run within
 // options.split_joins_wall_margin_m() of the joined area's outline (along a

@@ -36,7 +36,7 @@ struct CorridorStemParams {
 // constants above). A dead-end branch narrower than W gets no room, and
 // JoinSplitCorridors keeps it apart from a corridor more than 1.3 times as
 // wide; a hall (wider than a corridor) keeps its narrow tails, which
-// cut.cut_narrow_tails made areas of their own, apart.
+// cut pass CUT_NARROW_TAILS made areas of their own, apart.
 void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
                        const std::vector<bool>& closed, AreaPlan* plan,
                        const CorridorStemParams& params = {});

@@ -353,7 +353,6 @@ floorplan::FloorPlan FiveByFiveMaze() {
 proto::PipelineOptions PaperMazeOptions() {
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_m(2.0);
-  options.mutable_cut()->set_room_width_auto(false);  // a fixed W (auto is the default)
   // Every area kept (the default folds areas below merge.min_area_m2, and the
   // dead ends hold about 1-3 m2), and no corridor pieces joined (neither two
   // uniform pieces nor pieces the room disk split: a maze's passages are as

@@ -354,13 +354,13 @@ TEST(AgRunPartsTest, TilesOfAMapAreComponentsAndTheSummarySaysSo) {
   ASSERT_TRUE(cv::imwrite(dir.File("tiles.png"), tiles));
   const std::string store = dir.File("s.db");
   CommandResult run;
-  // With cut.close_wall_gaps_max_m one tile has an area less (113 against
+  // With cut pass CLOSE_WALL_GAPS one tile has an area less (113 against
   // 4 x 28): the tiles' Topology Graphs already differ slightly, and an
   // office of about merge.min_area_m2 folds in one tile only (docs/quality.md,
   // "Known weak spots"), so this test of components and summaries runs without it.
   // The same holds for merge's FOLD_CORRIDOR_PIECES: its small corridor "rooms" come out
   // of those slightly different graphs (110 areas against 4 x 29 with it on).
-  const std::vector<std::string> options = {"--set", "cut.close_wall_gaps_max_m=0", "--set",
+  const std::vector<std::string> options = {"--set", "cut.skip_passes=CLOSE_WALL_GAPS", "--set",
                                             "merge.skip_passes=FOLD_CORRIDOR_PIECES"};
   auto with_options = [&](std::vector<std::string> args) {
     args.insert(args.begin(), options.begin(), options.end());

@@ -140,7 +140,7 @@ TEST(Clean, KeepsAPieceOfWallBetweenTwoDoors) {
   EXPECT_EQ(At(cleaned, 65, 50), proto::CELL_OCCUPIED);
   // The paper's step (b) takes it: its perimeter is a desk's.
   proto::CleanOptions paper;
-  paper.set_keep_wall_pieces(false);
+  paper.add_skip_passes(proto::CleanOptions::KEEP_WALL_PIECES);
   const proto::CleanedMap removed = CleanGridMap(room.ToGridMap(), paper);
   EXPECT_EQ(removed.removed_furniture_cells_size(), 60);
   EXPECT_EQ(At(removed, 65, 50), proto::CELL_FREE);

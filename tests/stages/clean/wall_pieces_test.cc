@@ -1,4 +1,4 @@
-// clean.keep_wall_pieces: WallPieceRegions measures depths only where a
+// clean pass KEEP_WALL_PIECES: WallPieceRegions measures depths only where a
 // decision needs them, and must decide as the whole map's depth does.
 #include "stages/clean/wall_pieces.h"
 

@@ -17,16 +17,14 @@ using floorplan::DrawRoom;
 using floorplan::FloorPlan;
 using floorplan::WallDirection;
 
-TEST(AutoWidthOptionsTest, SetAutoTurnsEstimationOnAndANumberTurnsItOff) {
+TEST(AutoWidthOptionsTest, AutoIsZeroAndANumberFixesW) {
   proto::PipelineOptions options;
-  ApplyOverride("cut.room_width_m=auto", &options);
-  EXPECT_TRUE(options.cut().room_width_auto());
+  EXPECT_EQ(options.cut().room_width_m(), 0);  // estimated by default
   ApplyOverride("cut.room_width_m=1.1", &options);
-  EXPECT_FALSE(options.cut().room_width_auto());
   EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.1);
   ApplyOverride("cut.room_width_m=auto", &options);
-  EXPECT_TRUE(options.cut().room_width_auto());
-  EXPECT_DOUBLE_EQ(options.cut().room_width_m(), 1.1);  // kept as the fallback
+  EXPECT_TRUE(options.cut().has_room_width_m());
+  EXPECT_EQ(options.cut().room_width_m(), 0);
 }
 
 TEST(AutoWidthOptionsTest, AutoIsOnlyAWordForRoomWidth) {
@@ -45,22 +43,24 @@ TEST(AutoWidthOptionsTest, AutoAndANumberHaveDifferentCanonicalBytes) {
   ApplyOverride("cut.room_width_m=auto", &automatic);
   ApplyOverride("cut.room_width_m=1.25", &number);
   EXPECT_NE(CanonicalBytes(automatic.cut()), CanonicalBytes(number.cut()));
-  EXPECT_NE(CanonicalText(automatic.cut()).find("room_width_auto: true"), std::string::npos);
+  EXPECT_NE(CanonicalText(automatic.cut()).find("room_width_m: 0"), std::string::npos);
+  // `auto` is the default.
+  EXPECT_EQ(CanonicalBytes(automatic.cut()), CanonicalBytes(proto::CutOptions()));
 }
 
 TEST(AutoWidthOptionsTest, OptionsFilesTakeAutoAndNumbers) {
   TempDir dir;
   WriteFile(dir.File("auto.pbtxt"), "cut { room_width_m: auto }\n");
-  EXPECT_TRUE(ReadOptionsFile(dir.File("auto.pbtxt")).cut().room_width_auto());
-  WriteFile(dir.File("flag.pbtxt"), "cut { room_width_auto: true room_width_m: 1.5 }\n");
-  const proto::PipelineOptions flag = ReadOptionsFile(dir.File("flag.pbtxt"));
-  EXPECT_TRUE(flag.cut().room_width_auto());
-  EXPECT_DOUBLE_EQ(flag.cut().room_width_m(), 1.5);
-  // A number alone means that number, whatever the default of auto is.
+  const proto::PipelineOptions automatic = ReadOptionsFile(dir.File("auto.pbtxt"));
+  EXPECT_TRUE(automatic.cut().has_room_width_m());
+  EXPECT_EQ(automatic.cut().room_width_m(), 0);
   WriteFile(dir.File("number.pbtxt"), "cut { room_width_m: 0.95 }\n");
-  const proto::PipelineOptions number = ReadOptionsFile(dir.File("number.pbtxt"));
-  EXPECT_TRUE(number.cut().has_room_width_auto());
-  EXPECT_FALSE(number.cut().room_width_auto());
+  EXPECT_DOUBLE_EQ(ReadOptionsFile(dir.File("number.pbtxt")).cut().room_width_m(), 0.95);
+  // The switch it replaced is refused by name (protobuf's parser would skip
+  // it without a word).
+  WriteFile(dir.File("flag.pbtxt"), "cut { room_width_auto: true }\n");
+  const std::string error = ErrorOf<OptionsError>([&] { ReadOptionsFile(dir.File("flag.pbtxt")); });
+  EXPECT_NE(error.find("room_width_auto"), std::string::npos) << error;
 }
 
 // The cache key that ag-cut printed ("key 0123456789ab").

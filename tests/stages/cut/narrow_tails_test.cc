@@ -1,4 +1,4 @@
-// Where cut.cut_narrow_tails cuts a room's edge that runs on into a narrow
+// Where cut pass CUT_NARROW_TAILS cuts a room's edge that runs on into a narrow
 // dead-end tail, and where it does not.
 #include "stages/cut/narrow_tails.h"
 

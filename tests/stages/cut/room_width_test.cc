@@ -31,7 +31,6 @@ const proto::MapFrame kBigMap = Frame(400, 200);
 
 proto::CutOptions Fixed(double room_width_m) {
   proto::CutOptions options;
-  options.set_room_width_auto(false);
   options.set_room_width_m(room_width_m);
   return options;
 }
@@ -92,10 +91,10 @@ std::string OptionsErrorOf(const std::function<void()>& run) {
 
 TEST(RoomWidthTest, FixedWidthIsRoomWidthM) {
   EXPECT_DOUBLE_EQ(RoomWidthM(Fixed(1.1), kBigMap), 1.1);
-  EXPECT_DOUBLE_EQ(RoomWidthM(proto::CutOptions(), kBigMap), 1.25);  // the default
-  // room_width_auto makes no difference here, nor do door and corridor of 0.
+  // The default (0, to be estimated) gives the paper's W.
+  EXPECT_DOUBLE_EQ(RoomWidthM(proto::CutOptions(), kBigMap), kPaperRoomWidthM);
+  // Door and corridor of 0 make no difference.
   proto::CutOptions options = Fixed(0.9);
-  options.set_room_width_auto(true);
   options.set_door_width_m(0);
   options.set_corridor_width_m(0);
   EXPECT_DOUBLE_EQ(RoomWidthM(options, kBigMap), 0.9);
@@ -126,10 +125,9 @@ TEST(RoomWidthTest, BadOptionsAreRefused) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
   const std::vector<std::pair<proto::CutOptions, std::string>> cases = {
-      {Fixed(0), "cut.room_width_m must be a positive number"},
-      {Fixed(-1), "cut.room_width_m must be a positive number"},
-      {Fixed(nan), "cut.room_width_m must be a positive number"},
-      {Fixed(inf), "cut.room_width_m must be a positive number"},
+      {Fixed(-1), "cut.room_width_m must be zero or more"},
+      {Fixed(nan), "cut.room_width_m must be zero or more"},
+      {Fixed(inf), "cut.room_width_m must be zero or more"},
       {Strategy(0.9, 0), "set both or neither"},
       {Strategy(0, 1.6), "set both or neither"},
       {Strategy(-0.9, 1.6), "cut.door_width_m must be a positive number"},
@@ -141,10 +139,8 @@ TEST(RoomWidthTest, BadOptionsAreRefused) {
     const std::string fixed = OptionsErrorOf([&] { RoomWidthM(options, kBigMap); });
     EXPECT_NE(fixed.find(message), std::string::npos) << "'" << fixed << "' for " << message;
     // Also before any estimate.
-    proto::CutOptions automatic = options;
-    automatic.set_room_width_auto(true);
     const std::string chosen =
-        OptionsErrorOf([&] { ChooseRoomWidth(automatic, kBigMap, kCorridorWithADoor); });
+        OptionsErrorOf([&] { ChooseRoomWidth(options, kBigMap, kCorridorWithADoor); });
     EXPECT_NE(chosen.find(message), std::string::npos) << "'" << chosen << "' for " << message;
   }
   // A corridor just over 0.1 m still gives a width, and a narrow door with it.
@@ -153,8 +149,8 @@ TEST(RoomWidthTest, BadOptionsAreRefused) {
 }
 
 TEST(ChooseRoomWidthTest, FixedOrStrategyIsNotAutomatic) {
-  proto::CutOptions strategy = Strategy(0.9, 1.6);  // wins over room_width_auto
-  strategy.set_room_width_auto(true);
+  // The strategy wins over an estimated W (room_width_m 0).
+  const proto::CutOptions strategy = Strategy(0.9, 1.6);
   for (const proto::CutOptions& options : {Fixed(1.1), strategy}) {
     const proto::RoomWidthEstimate chosen = ChooseRoomWidth(options, kBigMap, kCorridorWithADoor);
     EXPECT_FALSE(chosen.automatic());
@@ -195,13 +191,12 @@ TEST(ChooseRoomWidthTest, DoorWiderThanTheCorridorFollowsRoomWidthAboveDoors) {
   EXPECT_NEAR(above.widest_door_m(), 1.45, 1e-9);
   EXPECT_NEAR(above.narrowest_corridor_m(), 1.15, 1e-9);
   EXPECT_NEAR(above.room_width_m(), 1.45 + kPaperWidthMarginM, 1e-9);
-  options.set_room_width_above_doors(false);  // the paper's rule
+  options.add_skip_passes(proto::CutOptions::WIDTH_ABOVE_DOORS);  // the paper's rule
   EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, graph).room_width_m(), 1.05, 1e-9);
 }
 
-TEST(ChooseRoomWidthTest, AutomaticFallsBackToRoomWidthM) {
-  proto::CutOptions options;
-  options.set_room_width_m(1.3);
+TEST(ChooseRoomWidthTest, AutomaticFallsBackToThePapersW) {
+  const proto::CutOptions options;
   // 1 m of constant width along one edge: too short for a corridor, no door.
   const proto::TopologyGraph short_edge = OneEdge(20, [](int) { return 10.0; });
   for (const proto::TopologyGraph& graph : {proto::TopologyGraph(), short_edge}) {
@@ -209,7 +204,7 @@ TEST(ChooseRoomWidthTest, AutomaticFallsBackToRoomWidthM) {
     EXPECT_TRUE(chosen.automatic());
     EXPECT_EQ(chosen.doors_size(), 0);
     EXPECT_EQ(chosen.narrowest_corridor_m(), 0);
-    EXPECT_DOUBLE_EQ(chosen.room_width_m(), 1.3);
+    EXPECT_DOUBLE_EQ(chosen.room_width_m(), kPaperRoomWidthM);
   }
 }
 

@@ -3,7 +3,7 @@
 // end-on is a piece of a dividing row and keeps its sites, also when the stub
 // is just beside the block's centre line, but not
 // when only the edge of its face lines up with the stub (a desk beside a door
-// jamb or a cabinet: cut.island_end_on_face_share).
+// jamb or a cabinet: cut.islands.end_on_face_share).
 #include "stages/cut/structure_sites.h"
 
 #include <gtest/gtest.h>
@@ -89,7 +89,7 @@ TEST(StructureSitesTest, BlockContinuedAtOneEndOnlyIsAnIsland) {
   // A cabinet 0.5 x 1 m against the top wall on the block's centre line,
   // 0.6 m above a block moved up to y = 1.7-3.7 m: its other end is 2.4 m
   // from the bottom wall, wider than a door, so it is no piece of wall
-  // between two doors (cut.island_wall_piece_both_ends); one continued end
+  // between two doors (cut pass WALL_PIECES_NEED_BOTH_ENDS); one continued end
   // was enough before.
   FloorPlan plan(12.2, 6.2, kResolutionM);
   floorplan::DrawRoom(plan, {0.1, 0.1, 7, 6});

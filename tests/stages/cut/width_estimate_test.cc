@@ -97,7 +97,7 @@ TEST(WidthEstimateTest, DoorWiderThanTheCorridorFollowsTheRuleChosen) {
   EXPECT_NEAR(paper.narrowest_corridor_m(), FreeWidth(plan, 1.2), 0.1);
   // The paper's rule: corridor - 0.1 m.
   EXPECT_NEAR(paper.room_width_m(), paper.narrowest_corridor_m() - 0.1, 1e-9);
-  // cut.room_width_above_doors: door + 0.1 m.
+  // cut pass WIDTH_ABOVE_DOORS: door + 0.1 m.
   const proto::RoomWidthEstimate above = Estimate(plan, /*above_doors=*/true);
   EXPECT_NEAR(above.room_width_m(), above.widest_door_m() + 0.1, 1e-9);
 }
@@ -121,7 +121,7 @@ TEST(WidthEstimateTest, OneRoomWithoutDoorsOrCorridorsFallsBack) {
 TEST(WidthEstimateTest, CutGraphStoresTheEstimateAndUsesIt) {
   const proto::CleanedMap map = CleanedMapFromImage(RoomsAlongACorridor(0.9, 2.0).image());
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(true);
+  options.mutable_cut()->set_room_width_m(0);  // estimated (the default)
   const AreaStages stages = RunAreaStages(map, options);
   const proto::RoomWidthEstimate& stored = stages.cut.room_width();
   EXPECT_TRUE(stored.automatic());
@@ -130,7 +130,6 @@ TEST(WidthEstimateTest, CutGraphStoresTheEstimateAndUsesIt) {
   // Three rooms and a corridor, kept apart at the doors.
   EXPECT_EQ(stages.areas.areas_size(), 4);
 
-  options.mutable_cut()->set_room_width_auto(false);
   options.mutable_cut()->set_room_width_m(1.3);
   const AreaStages fixed = RunAreaStages(map, options);
   EXPECT_FALSE(fixed.cut.room_width().automatic());

@@ -112,19 +112,15 @@ TEST(FragmentFoldingTest, ALargePieceAndNewlySeenSpaceStayAreasOfTheirOwn) {
   EXPECT_EQ(AreaIds(grown), (Ids{0, 1}));
 }
 
-TEST(FragmentFoldingTest, APieceUnderTheShareOfItsAreaFoldsHoweverLarge) {
-  // A 10 m2 piece off a 90 m2 room: above the 8 m2 limit, but a ninth of it.
+TEST(FragmentFoldingTest, APieceAboveTheLimitStaysHoweverSmallAShareOfItsArea) {
+  // A 10 m2 piece off a 90 m2 room: a ninth of it, but above the 8 m2 limit.
   const proto::AreaGraph first = MatchAfter(RectGraph(Frame(400, 200), {{0, 0, 18, 5}}), nullptr);
   proto::AreaGraph split = RectGraph(Frame(400, 200), {{16, 0, 18, 5}, {0, 0, 16, 5}});
   AddPassage(split, 0, 1, 16, 2.5);
+  EXPECT_EQ(AreaIds(MatchAfter(split, &first, proto::MatchOptions())), (Ids{1, 0}));
   proto::MatchOptions options;
-  EXPECT_EQ(AreaIds(MatchAfter(split, &first, options)), (Ids{1, 0}));  // the default: off
-  options.set_fold_fragments_below_share(0.15);
-  const proto::AreaGraph folded = MatchAfter(split, &first, options);
-  EXPECT_EQ(AreaIds(folded), (Ids{0}));
-  EXPECT_DOUBLE_EQ(folded.areas(0).area_m2(), 90);
-  options.set_fold_fragments_below_share(0.1);  // 10 m2 is not under a tenth of 80 m2
-  EXPECT_EQ(AreaIds(MatchAfter(split, &first, options)), (Ids{1, 0}));
+  options.set_fold_fragments_below_m2(12);  // now it is under the limit
+  EXPECT_EQ(AreaIds(MatchAfter(split, &first, options)), (Ids{0}));
 }
 
 TEST(FragmentFoldingTest, TheFragmentsPassagesMoveToTheAreaItJoins) {

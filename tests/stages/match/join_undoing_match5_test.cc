@@ -1,9 +1,9 @@
 // Match 5's join undoing, on the kinds of join that lab_e's noise-only
 // updates left standing: an id that moved to a small leftover of its area
-// (split_joins_when_id_moved), a previous outline that touches itself at a
+// (match pass UNDO_JOINS_WHEN_ID_MOVED), a previous outline that touches itself at a
 // vertex (WithoutPinches), a door whose passage measured narrower than a
 // robot (split_joins_min_opening_m), and two areas that shared a border but
-// no passage (split_joins_without_passage).
+// no passage (UNDO_JOINS_WITHOUT_PASSAGE).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -56,7 +56,7 @@ TEST(JoinUndoingMatch5Test, AnIdThatMovedToALeftoverGoesBackToItsArea) {
   AddPassage(merged, 1, 2, 6.5, 3);
 
   proto::MatchOptions match4;
-  match4.set_split_joins_when_id_moved(false);
+  match4.add_skip_passes(proto::MatchOptions::UNDO_JOINS_WHEN_ID_MOVED);
   const proto::AreaGraph before = MatchAfter(merged, &previous, match4);
   ASSERT_EQ(AreaIds(before), (Ids{0, 1, 2}));
   EXPECT_NEAR(before.areas(IndexOfId(before, 1)).area_m2(), 3, 1e-9);  // B's id on S
@@ -151,7 +151,7 @@ TEST(JoinUndoingMatch5Test, TwoAreasThatSharedABorderButNoPassageAreCutApart) {
   ASSERT_EQ(AreaIds(matched), (Ids{0, 2, 1}));
   EXPECT_NEAR(matched.areas(2).area_m2(), 3, 1e-9);
   proto::MatchOptions match4;
-  match4.set_split_joins_without_passage(false);
+  match4.add_skip_passes(proto::MatchOptions::UNDO_JOINS_WITHOUT_PASSAGE);
   EXPECT_EQ(AreaIds(MatchAfter(ShallowRoomsJoined(), &previous, match4)), (Ids{0, 2}));
 }
 

@@ -1,5 +1,5 @@
 // Match 4's join undoing: a cut that crosses a passage's border cuts the
-// passage too (split_joins_across_passages), a previous area only partly
+// passage too (match pass UNDO_JOINS_ACROSS_PASSAGES), a previous area only partly
 // inside the joined area is cut out as well (split_joins_inside_share), and
 // the stretches of a cut that run along a wall noise moved do not count as
 // opening (split_joins_wall_margin_m).
@@ -50,7 +50,9 @@ proto::AreaGraph PreviousVersion(double door_m = 0, double frame_origin_y = 0) {
 proto::MatchOptions Options(const std::string& which, double value) {
   proto::MatchOptions options;
   options.set_split_joins_below_m2(20);
-  if (which == "across") options.set_split_joins_across_passages(value != 0);
+  if (which == "across" && value == 0) {
+    options.add_skip_passes(proto::MatchOptions::UNDO_JOINS_ACROSS_PASSAGES);
+  }
   if (which == "share") options.set_split_joins_inside_share(value);
   if (which == "margin") options.set_split_joins_wall_margin_m(value);
   if (which == "rounds") options.set_split_joins_rounds(static_cast<int>(value));

@@ -51,7 +51,6 @@ int StableIdAt(const proto::AreaGraph& graph, double x_m, double y_m) {
 
 proto::PipelineOptions FixedWidthOptions(double room_width_m) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
   options.mutable_cut()->set_room_width_m(room_width_m);
   return options;
 }

@@ -62,7 +62,7 @@ TEST_F(VersionHistoryTest, OtherOptionsMakeANewVersionThatKeepsTheIds) {
 
   proto::PipelineOptions other = defaults;
   other.mutable_merge()->add_skip_passes(proto::MergeOptions::FOLD_OPEN_BAYS);
-  other.mutable_cut()->set_room_width_auto(false);
+  other.mutable_cut()->set_room_width_m(1.25);  // a fixed W (0, the default, estimates it)
   RunPlan(*store_, "m", Plan(), other);
   std::string second_key;
   const proto::AreaGraph second = MatchedGraph(*store_, "m", &second_key);

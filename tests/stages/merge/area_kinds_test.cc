@@ -95,7 +95,6 @@ TEST(AreaKindsTest, ANarrowPassageBehindADoorIsADeadEnd) {
   floorplan::DrawDoor(plan, 16.5, 5.6, 0.7, WallDirection::kVertical);
   const proto::CleanedMap map = CleanDrawnMap(plan.image());
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
   options.mutable_cut()->set_room_width_m(1.2);
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map, 0.9);

@@ -116,7 +116,7 @@ TEST(AreaStagesTest, LShapedCorridorNarrowerThanTheRoomWidthIsOneArea) {
   const proto::CleanedMap map = CleanedMapFromImage(LCorridor().image());
   // A fixed W (auto, the default, takes corridor - 0.1 m here: one room).
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
+  options.mutable_cut()->set_room_width_m(1.25);  // a fixed W (0, the default, estimates it)
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map);
   EXPECT_EQ(stages.cut.room_shapes_size(), 0);

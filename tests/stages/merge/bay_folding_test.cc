@@ -18,7 +18,7 @@ using floorplan::WallDirection;
 // areas, so that only bay folding can join them to the room.
 proto::PipelineOptions BayOptions(bool fold_open_bays) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
+  options.mutable_cut()->set_room_width_m(1.25);  // a fixed W (0, the default, estimates it)
   options.mutable_merge()->set_min_area_m2(0);
   if (!fold_open_bays) {
     options.mutable_merge()->add_skip_passes(proto::MergeOptions::FOLD_OPEN_BAYS);

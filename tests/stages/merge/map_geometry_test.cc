@@ -103,7 +103,7 @@ TEST(MapGeometryTest, NoisyLCorridorOutlineHasItsSixCorners) {
   }
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
+  options.mutable_cut()->set_room_width_m(1.25);  // a fixed W (0, the default, estimates it)
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map);
   ASSERT_EQ(stages.areas.areas_size(), 1);

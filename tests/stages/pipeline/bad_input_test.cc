@@ -124,7 +124,11 @@ TEST(AreaStagesBadInputTest, AbsurdCutAndMergeOptionsAreOptionsErrors) {
     set(&options);
     return ErrorOf<OptionsError>([&] { BuildCutGraph(stages.topology, map, options); });
   };
-  EXPECT_NE(cut_error([](auto* o) { o->set_room_width_m(0); }).find("cut.room_width_m"),
+  EXPECT_NE(cut_error([](auto* o) { o->set_room_width_m(-1); }).find("cut.room_width_m"),
+            std::string::npos);
+  EXPECT_NE(cut_error([](auto* o) {
+              o->mutable_wall_gaps()->set_max_width_m(-1);
+            }).find("cut.wall_gaps.max_width_m"),
             std::string::npos);
   EXPECT_NE(cut_error([](auto* o) { o->set_room_width_m(NAN); }).find("cut.room_width_m"),
             std::string::npos);

@@ -30,7 +30,6 @@ void DrawOffices(floorplan::FloorPlan& plan, double length_m, double office_m) {
 
 proto::PipelineOptions FixedW(double w) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
   options.mutable_cut()->set_room_width_m(w);
   return options;
 }

@@ -34,7 +34,7 @@ floorplan::FloorPlan RoomWithDivider(const RectM& divider) {
 }
 
 // A cabinet 0.6 m deep and 2.45 m long: too long and thin for ag-cut's
-// furniture islands (cut.room_island_max_m allows 3 times as long as wide).
+// furniture islands (cut.islands.max_length_m; islands are at most 3 times as long as wide).
 constexpr RectM kCabinet{3.2, 1.8, 0.6, 2.45};
 // A wall 0.15 m thick in the same place: a wall with a doorway at each end.
 constexpr RectM kWallPiece{3.43, 1.8, 0.15, 2.45};

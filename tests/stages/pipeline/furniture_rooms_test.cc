@@ -120,7 +120,7 @@ TEST(FurnitureRoomTest, WithoutIslandsAndRoomJoiningSomeRoomsSplit) {
   // (the paper), no room joining and no joining at furniture gaps, desks
   // split some of the rooms.
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_island_max_m(0);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::FREE_STANDING_ISLANDS);
   options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_ROOMS_WITHOUT_DOORS);
   options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_FURNITURE_GAPS);
   int split = 0;

@@ -1,4 +1,4 @@
-// Local door decisions (cut.close_wall_doors) through the whole pipeline: a
+// Local door decisions (cut pass CLOSE_WALL_DOORS) through the whole pipeline: a
 // door wider than the map's W still divides the room behind it from the
 // corridor, while furniture keeps a room whole (furniture_rooms_test).
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@ constexpr CorridorPlan kWideDoorPlan{11, 2, 1.3};
 // The corridor is 1.4 m between wall centres (1.3 m free) and the wide door
 // 1.8 m: wider than the corridor, so the space does not widen on the
 // corridor's side of it and the width estimate finds no door there
-// (cut.close_wall_gaps_max_m must close it).
+// (cut pass CLOSE_WALL_GAPS must close it).
 constexpr CorridorPlan kNarrowCorridorPlan{10, 1.4, 1.8};
 
 floorplan::FloorPlan OfficesAlongACorridor(const CorridorPlan& shape) {
@@ -78,10 +78,31 @@ TEST(LocalDoorsTest, DoorWiderThanWStillDividesOfficeFromCorridor) {
 TEST(LocalDoorsTest, WithOneGlobalWTheOfficeLeaksIntoTheCorridor) {
   // The paper's single W: the room disk passes the wide door.
   proto::PipelineOptions options;
-  options.mutable_cut()->set_close_wall_doors(false);
-  options.mutable_cut()->set_close_wall_gaps_max_m(0);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_DOORS);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_GAPS);
   const WideDoorAreas found = RunOffices(kWideDoorPlan, options);
   EXPECT_LT(found.room_width_m, kWideDoorPlan.wide_door_m);
+  EXPECT_EQ(found.office, found.corridor);
+}
+
+// The drawn walls are thin, so the wall gap rule closes the wide door too;
+// with wall gaps only up to 1 m closed, CLOSE_WALL_DOORS alone divides.
+proto::PipelineOptions NarrowWallGaps() {
+  proto::PipelineOptions options;
+  options.mutable_cut()->mutable_wall_gaps()->set_max_width_m(1.0);
+  return options;
+}
+
+TEST(LocalDoorsTest, ClosingWallDoorsDividesOfficeFromCorridor) {
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, NarrowWallGaps());
+  ASSERT_NE(found.office, -1);
+  EXPECT_NE(found.office, found.corridor);
+}
+
+TEST(LocalDoorsTest, WithoutClosingWallDoorsTheOfficeLeaksIntoTheCorridor) {
+  proto::PipelineOptions options = NarrowWallGaps();
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_DOORS);
+  const WideDoorAreas found = RunOffices(kWideDoorPlan, options);
   EXPECT_EQ(found.office, found.corridor);
 }
 
@@ -95,7 +116,7 @@ TEST(LocalDoorsTest, DoorWiderThanItsCorridorDividesOfficeFromCorridor) {
 
 TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_close_wall_gaps_max_m(0);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_GAPS);
   const WideDoorAreas found = RunOffices(kNarrowCorridorPlan, options);
   EXPECT_EQ(found.office, found.corridor);
 }

@@ -1,4 +1,4 @@
-// A hall with a narrow tail (cut.cut_narrow_tails, and merge's
+// A hall with a narrow tail (cut pass CUT_NARROW_TAILS, and merge's
 // JOIN_CORRIDOR_STEMS joins stems only into corridors): a corridor 1.45 m wide and 7 m long
 // running on from the side of a hall 6 m wide, open across its whole width,
 // like the side corridors of areagraph/ Freiburg101_scan. W (about 1 m, from
@@ -50,7 +50,7 @@ TEST(NarrowTailTest, TheTailIsItsOwnArea) {
 
 TEST(NarrowTailTest, WithoutTheCutTheTailIsPartOfTheHall) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_cut_narrow_tails(false);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CUT_NARROW_TAILS);
   const proto::AreaGraph areas = Areas(options);
   const int hall = AreaAt(areas, kHallX, kHallY);
   ASSERT_NE(hall, -1);

@@ -1,6 +1,6 @@
 // A free-standing block (a partition with furniture drawn around it, like
 // the one in bormann/ lab_ipa_furnitures) in a room, with a cabinet against
-// the top wall in its line (cut.island_wall_piece_both_ends). The cabinet
+// the top wall in its line (cut pass WALL_PIECES_NEED_BOTH_ENDS). The cabinet
 // continues the block end-on past a 0.6 m gap, but the block's other end is
 // 2 m from the bottom wall, more than a door: it stands in the room, it is
 // not a piece of wall between two doors. With W = 2.6 m (wider than that
@@ -34,8 +34,9 @@ floorplan::FloorPlan RoomWithPartition() {
 AreaStages Stages(bool both_ends) {
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_m(2.6);
-  options.mutable_cut()->set_room_width_auto(false);
-  options.mutable_cut()->set_island_wall_piece_both_ends(both_ends);
+  if (!both_ends) {
+    options.mutable_cut()->add_skip_passes(proto::CutOptions::WALL_PIECES_NEED_BOTH_ENDS);
+  }
   const proto::CleanedMap map = CleanDrawnMap(RoomWithPartition().image());
   const AreaStages stages = RunAreaStages(map, options);
   ExpectAreaGraphInvariants(stages, map, 0.9);

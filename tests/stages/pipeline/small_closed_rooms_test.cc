@@ -1,7 +1,7 @@
 // A closet of about 1.4 m2 behind a 0.8 m door in a 6 x 5 m room (as the
 // small rooms of areagraph/ lab_d_scan_furnitures and freiburg_building101):
 // the cut closes the door, but the closet's piece of the edge is shorter
-// than W, so the cut joined it to the room's piece (cut.keep_closed_room_tips
+// than W, so the cut joined it to the room's piece (cut pass KEEP_CLOSED_ROOM_TIPS
 // keeps it), and ag-merge folded the closet, smaller than merge.min_area_m2,
 // into the room (merge's KEEP_SMALL_CLOSED_ROOMS keeps it).
 #include <gtest/gtest.h>
@@ -73,7 +73,7 @@ TEST(SmallClosedRoomsTest, WithoutKeepSmallClosedRoomsTheClosetFolds) {
 
 TEST(SmallClosedRoomsTest, WithoutKeepClosedRoomTipsTheClosetJoinsTheRoom) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_keep_closed_room_tips(false);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::KEEP_CLOSED_ROOM_TIPS);
   const Result result = RunOn(RoomAndCloset(), options);
   ASSERT_NE(result.room, -1);
   EXPECT_EQ(result.room, result.closet);

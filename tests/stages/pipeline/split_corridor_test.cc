@@ -22,7 +22,6 @@ constexpr double kCorridorMiddleY = kCorridor.y + kCorridor.height / 2;
 
 proto::PipelineOptions FixedW(bool join_split_corridors) {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_auto(false);
   options.mutable_cut()->set_room_width_m(1.9);
   if (!join_split_corridors) {
     options.mutable_merge()->add_skip_passes(proto::MergeOptions::JOIN_SPLIT_CORRIDORS);

@@ -1,5 +1,5 @@
 // A strip above a room, divided by a wall with two doors 1 m wide: the piece
-// of wall between the doors stands free. clean.keep_wall_pieces: a thin piece
+// of wall between the doors stands free. clean pass KEEP_WALL_PIECES: a thin piece
 // (1.6 x 0.15 m) has a desk's perimeter, and furniture removal took it out,
 // so the strip and the room became one (areagraph/ lab_d_scan_furnitures).
 // merge.furniture_gaps.max_elongation: a thick piece (2.4 x 0.4 m) stays and
@@ -58,7 +58,7 @@ TEST(WallPiecesTest, AThinPieceOfWallBetweenTwoDoorsStays) {
 
 TEST(WallPiecesTest, WithoutKeepWallPiecesFurnitureRemovalTakesItAndJoinsTheTwo) {
   proto::PipelineOptions options;
-  options.mutable_clean()->set_keep_wall_pieces(false);
+  options.mutable_clean()->add_skip_passes(proto::CleanOptions::KEEP_WALL_PIECES);
   const proto::CleanedMap map = CleanDrawnMap(ThinPiece().image(), options.clean());
   EXPECT_GT(map.removed_furniture_cells_size(), 0);
   const Result result = RunOn(ThinPiece(), options);
@@ -70,8 +70,8 @@ TEST(WallPiecesTest, WithoutKeepWallPiecesFurnitureRemovalTakesItAndJoinsTheTwo)
 // joins nothing at a closed door: merge.keep_closed_doors).
 proto::PipelineOptions DoorsLeftOpen() {
   proto::PipelineOptions options;
-  options.mutable_cut()->set_close_wall_doors(false);
-  options.mutable_cut()->set_close_wall_gaps_max_m(0);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_DOORS);
+  options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_GAPS);
   return options;
 }
 

@@ -262,19 +262,19 @@ TEST(AreaLayerOf, CarriesStableIdsOfAMatchedGraphOnly) {
 
 TEST(StageOptionValues, FlagsTheOptionsThatDepartFromTheDefaults) {
   const auto values =
-      StageOptionValues("cut", "room_width_m: 0.9\nroom_width_auto: false\ndoor_width_m: 0\n");
+      StageOptionValues("cut", "room_width_m: 0.9\nroom_width_open_doors: true\ndoor_width_m: 0\n");
   ASSERT_FALSE(values.empty());
   int non_default = 0;
   for (const viewer::OptionValue& value : values) {
     if (value.is_default()) continue;
     ++non_default;
-    EXPECT_TRUE(value.name() == "room_width_m" || value.name() == "room_width_auto")
+    EXPECT_TRUE(value.name() == "room_width_m" || value.name() == "room_width_open_doors")
         << value.name();
   }
   EXPECT_EQ(non_default, 2);
   EXPECT_EQ(values[0].name(), "room_width_m");
   EXPECT_EQ(values[0].value(), "0.9");
-  EXPECT_EQ(values[0].default_value(), "1.25");
+  EXPECT_EQ(values[0].default_value(), "0");
   EXPECT_TRUE(StageOptionValues("cut", "no_such_option: 1").empty());
   EXPECT_TRUE(StageOptionValues("no_such_stage", "").empty());
 }
