@@ -24,4 +24,13 @@ double TypicalWallThickness(const cv::Mat& depth, double max_wall_px);
 // unknown space, not walls, when the typical wall thickness is measured.
 inline constexpr double kMaxWallThicknessM = 1.0;
 
+// Furniture (desks, cabinets, shelves) is at least this thick (metres) and
+// kFurnitureWallRatio times the map's typical wall thickness; a lone piece of
+// wall between two doors, and noise, are thinner. ag-clean keeps thinner
+// pieces as walls, ag-merge takes only thicker islands for furniture.
+inline constexpr double kMinFurnitureThicknessM = 0.3;
+// Twice a wall: a drawn or scanned wall varies by a cell or two, furniture
+// stands clearly thicker.
+inline constexpr double kFurnitureWallRatio = 2.0;
+
 }  // namespace areagraph

@@ -7,6 +7,8 @@
 
 #include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/merge/area_shapes.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 
@@ -42,8 +44,8 @@ void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
     if (area.kind != proto::AREA_DEAD_END || area.room_id >= 0 || corridor < 0) continue;
     const double w = shapes[stem].typical_px;
     if (w < params.min_width_m / resolution_m) continue;
-    if (mouth[stem] < params.opening_share * w) continue;
-    if (!shapes[stem].corridor || shapes[stem].Straightness() < params.axis_ratio) continue;
+    if (mouth[stem] < kCorridorOpeningShare * w) continue;
+    if (!shapes[stem].corridor || shapes[stem].Straightness() < kStraightAxisRatio) continue;
     const AreaPlan::Area& into = plan->areas[corridor];
     const double corridor_width = shapes[corridor].typical_px;
     const bool corridor_shaped =

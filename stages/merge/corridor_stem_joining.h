@@ -11,13 +11,6 @@ namespace areagraph {
 // The constants of JoinCorridorStems, chosen on the generated tuning and
 // tuning-extra floors and the real maps (docs/quality.md, "Options beyond the paper").
 struct CorridorStemParams {
-  // No narrowing at the stem's mouth: its opening there is at least this
-  // share of its own median free width (a closet or a room is wider than
-  // its door).
-  double opening_share = 0.8;
-  // Straight: the stem's major axis' variance is at least this many times
-  // its minor axis' (AreaShape::Straightness).
-  double axis_ratio = 3;
   // The stem is at least this wide (metres): a walkable passage.
   double min_width_m = 0.7;
   // A branch: the stem is at most this share of the corridor's median free
@@ -32,8 +25,9 @@ struct CorridorStemParams {
 // (ClosedVertices), joins it to one and the same area, which is a corridor
 // at most kMaxCorridorWidthM wide (room-less, or a room shaped like a
 // corridor, AreaShape.corridor) clearly wider than the stem; the stem does
-// not narrow at its mouth, is shaped like a corridor and straight (the
-// constants above). A dead-end branch narrower than W gets no room, and
+// not narrow at its mouth (kCorridorOpeningShare of its own median free
+// width: a closet or a room is wider than its door), is shaped like a
+// corridor and straight (kStraightAxisRatio), by the constants above. A dead-end branch narrower than W gets no room, and
 // JoinSplitCorridors keeps it apart from a corridor more than 1.3 times as
 // wide; a hall (wider than a corridor) keeps its narrow tails, which
 // cut.cut_narrow_tails made areas of their own, apart.

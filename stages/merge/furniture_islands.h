@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 
@@ -13,11 +14,10 @@ namespace areagraph {
 // cabinets, shelves and tables standing free. The building's walls are one
 // region with the map's outside, or longer.
 inline constexpr double kMaxFurnitureIslandM = 4.0;
-// Islands are at least this thick (metres; twice the depth of their deepest
-// cell) and kFurnitureWallRatio times the map's typical wall: noise specks
-// and pieces of wall between two doors are thinner.
-inline constexpr double kMinFurnitureThicknessM = 0.3;
-inline constexpr double kFurnitureWallRatio = 2.0;
+// Islands are at least kMinFurnitureThicknessM thick (twice the depth of
+// their deepest cell) and kFurnitureWallRatio times the map's typical wall
+// (stages/geometry/wall_thickness.h): noise specks and pieces of wall between
+// two doors are thinner.
 // Islands fill at least this share of their smallest enclosing rectangle: a
 // piece of wall with a T or a cabinet against it does not.
 inline constexpr double kMinFurnitureSolidity = 0.75;
