@@ -27,8 +27,8 @@ struct CorridorStemParams {
 // corridor, AreaShape.corridor) clearly wider than the stem; the stem does
 // not narrow at its mouth (kCorridorOpeningShare of its own median free
 // width: a closet or a room is wider than its door), is shaped like a
-// corridor and straight (kStraightAxisRatio), by the constants above. A dead-end branch narrower than W gets no room, and
-// JoinSplitCorridors keeps it apart from a corridor more than 1.3 times as
+// corridor and straight (kStraightAxisRatio), by the constants above. A dead-end branch narrower
+// than W gets no room, and JoinSplitCorridors keeps it apart from a corridor more than 1.3 times as
 // wide; a hall (wider than a corridor) keeps its narrow tails, which
 // cut.cut_narrow_tails made areas of their own, apart.
 void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,

@@ -7,11 +7,11 @@
 
 #include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
-#include "stages/merge/area_shapes.h"
-#include "stages/merge/vertex_openings.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/merge/area_shapes.h"
 #include "stages/merge/one_sided_narrowing.h"
 #include "stages/merge/plan_model.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,

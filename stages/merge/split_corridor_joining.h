@@ -30,9 +30,9 @@ struct SplitCorridorParams {
   double min_width_m = 1.0;
   // With a grid given: an opening
   // narrower than kCorridorOpeningShare (vertex_openings.h; 0.85 lost
-  // tuning-extra 0.006) of the wider piece's median free width joins anyway when it is one-sided (a flat
-  // wall on one side, stages/merge/one_sided_narrowing.h) and at least this
-  // share of the wider piece's median free width.
+  // tuning-extra 0.006) of the wider piece's median free width joins anyway when it is one-sided (a
+  // flat wall on one side, stages/merge/one_sided_narrowing.h) and at least this share of the wider
+  // piece's median free width.
   double one_sided_opening_share = 0.5;
 };
 

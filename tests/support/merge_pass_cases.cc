@@ -26,8 +26,11 @@ MergePassCase CorridorCutAtDoors() {
   FloorPlan plan(21, 6.5);
   DrawRoom(plan, {0.5, kCorridorY, 20, 1.5});
   DrawOffices(plan, 20, 4, kCorridorY);
-  return {"a corridor cut at its side doors is one corridor", plan, FixedRoomWidth(1.5),
-          {3, 5.25}, {{17, 5.25}}};
+  return {"a corridor cut at its side doors is one corridor",
+          plan,
+          FixedRoomWidth(1.5),
+          {3, 5.25},
+          {{17, 5.25}}};
 }
 
 // A room 5 x 2.2 m (2.05 m between its walls) that two wall stubs narrow by
@@ -38,13 +41,19 @@ MergePassCase RoomNarrowedByStubs() {
   DrawRoom(plan, {0.5, 0.5, 5, 2.2});
   DrawFurniture(plan, {2.85, 0.5, 0.3, 0.15});
   DrawFurniture(plan, {2.85, 2.55, 0.3, 0.15});
-  return {"a room that W splits at a slight narrowing is one room", plan, FixedRoomWidth(2),
-          {1.5, 1.6}, {{4.5, 1.6}}};
+  return {"a room that W splits at a slight narrowing is one room",
+          plan,
+          FixedRoomWidth(2),
+          {1.5, 1.6},
+          {{4.5, 1.6}}};
 }
 
 MergePassCase CabinetAcrossARoom() {
-  return {"a cabinet across a room does not split it", RoomWithDivider(kCabinetAcrossRoom), {},
-          {2, 3}, {{5, 3}}};
+  return {"a cabinet across a room does not split it",
+          RoomWithDivider(kCabinetAcrossRoom),
+          {},
+          {2, 3},
+          {{5, 3}}};
 }
 
 // The default W (1.25 m) does not fit in the bay, and no small area folds:
@@ -53,8 +62,11 @@ MergePassCase OpenBay() {
   proto::PipelineOptions options;
   options.mutable_cut()->set_room_width_auto(false);
   options.mutable_merge()->set_min_area_m2(0);
-  return {"a bay open over its whole width is part of its room", RoomWithOpenBay(), options,
-          {3.05, 6.2}, {{3.5, 2.5}}};
+  return {"a bay open over its whole width is part of its room",
+          RoomWithOpenBay(),
+          options,
+          {3.05, 6.2},
+          {{3.5, 2.5}}};
 }
 
 // A corridor 20 m long and 0.85 m between its walls that widens to a square
@@ -63,8 +75,11 @@ MergePassCase OpenBay() {
 MergePassCase CorridorWithAWideSpot() {
   FloorPlan plan(21, 5);
   DrawRegion(plan, {{0.5, 2, 20, 1}, {9, 1.5, 2, 2}});
-  return {"a wide spot of a corridor is part of the corridor", plan, FixedRoomWidth(1.5),
-          {10, 2.5}, {{3, 2.5}, {17, 2.5}}};
+  return {"a wide spot of a corridor is part of the corridor",
+          plan,
+          FixedRoomWidth(1.5),
+          {10, 2.5},
+          {{3, 2.5}, {17, 2.5}}};
 }
 
 // A 10 x 6 m room with a row of three shelves 0.4 m deep down its middle
@@ -84,20 +99,30 @@ MergePassCase RowOfShelves() {
 // W = 1.9 m (as an automatic W near the corridor's width comes out) does not
 // pass between the stubs, and the corridor falls into two room-shaped pieces.
 MergePassCase CorridorSplitAtStubs() {
-  return {"a corridor that W split at a narrowing is one corridor", CorridorWithStubs(),
-          FixedRoomWidth(1.9), {5, kCorridorMiddleY}, {{26, kCorridorMiddleY}}};
+  return {"a corridor that W split at a narrowing is one corridor",
+          CorridorWithStubs(),
+          FixedRoomWidth(1.9),
+          {5, kCorridorMiddleY},
+          {{26, kCorridorMiddleY}}};
 }
 
 // W = 1.5 m does not fit in the branch: a room-less dead end.
 MergePassCase BranchOfACorridor() {
-  return {"a dead-end branch as wide as its mouth is part of its corridor", CorridorWithStem(),
-          FixedRoomWidth(1.5), {7, 9.5}, {{3, kCorridorMiddleY}}};
+  return {"a dead-end branch as wide as its mouth is part of its corridor",
+          CorridorWithStem(),
+          FixedRoomWidth(1.5),
+          {7, 9.5},
+          {{3, kCorridorMiddleY}}};
 }
 
 // The closet (1.4 m2) is smaller than merge.min_area_m2.
 MergePassCase ClosetBehindADoor() {
-  return {"a closet behind a door the cut closed stays an area of its own", RoomAndCloset(), {},
-          {7.1, 1.25}, {{3.5, 3}}, /*joined=*/false};
+  return {"a closet behind a door the cut closed stays an area of its own",
+          RoomAndCloset(),
+          {},
+          {7.1, 1.25},
+          {{3.5, 3}},
+          /*joined=*/false};
 }
 
 }  // namespace

@@ -52,8 +52,7 @@ floorplan::FloorPlan RoomWithOpenBay();
 
 // Offices 4 m deep from x = 0.5 m along `length_m`, `office_m` wide, each with
 // a 0.9 m door in the wall at y = `corridor_y_m` below them.
-void DrawOffices(floorplan::FloorPlan& plan, double length_m, double office_m,
-                 double corridor_y_m);
+void DrawOffices(floorplan::FloorPlan& plan, double length_m, double office_m, double corridor_y_m);
 
 // A corridor 30 x 2.2 m at y = 4.5 m (2.05 m between its walls) under six
 // offices; two wall stubs 0.3 m long, reaching 0.175 m out of the walls, face

@@ -5,6 +5,8 @@
 // the pass means them to; without it they do not, so every pass shows an
 // effect of its own that no other pass makes up for. A pass added to the
 // table without a case fails here.
+#include "tests/support/merge_pass_cases.h"
+
 #include <gtest/gtest.h>
 
 #include <ostream>
@@ -12,7 +14,6 @@
 
 #include "stages/merge/merge_passes.h"
 #include "tests/support/area_test_support.h"
-#include "tests/support/merge_pass_cases.h"
 
 namespace areagraph {
 
