@@ -13,8 +13,7 @@
 namespace areagraph {
 
 void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
-                       const std::vector<bool>& closed, AreaPlan* plan,
-                       const CorridorStemParams& params) {
+                       const std::vector<bool>& closed, AreaPlan* plan) {
   const double resolution_m = model.resolution_m;
   const int area_count = static_cast<int>(plan->areas.size());
   const std::vector<AreaShape>& shapes = model.shapes;
@@ -43,14 +42,14 @@ void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
     const int corridor = neighbour[stem];
     if (area.kind != proto::AREA_DEAD_END || area.room_id >= 0 || corridor < 0) continue;
     const double w = shapes[stem].typical_px;
-    if (w < params.min_width_m / resolution_m) continue;
+    if (w < kMinStemWidthM / resolution_m) continue;
     if (mouth[stem] < kCorridorOpeningShare * w) continue;
     if (!shapes[stem].corridor || shapes[stem].Straightness() < kStraightAxisRatio) continue;
     const AreaPlan::Area& into = plan->areas[corridor];
     const double corridor_width = shapes[corridor].typical_px;
     const bool corridor_shaped =
         into.room_id < 0 ? into.kind == proto::AREA_CORRIDOR : shapes[corridor].corridor;
-    if (!corridor_shaped || w > params.max_width_share * corridor_width) continue;
+    if (!corridor_shaped || w * kCorridorWidthRatio > corridor_width) continue;
     if (corridor_width * resolution_m > kMaxCorridorWidthM) continue;
     groups.Union(stem, corridor);
     joined.push_back(corridor);

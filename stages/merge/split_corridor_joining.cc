@@ -42,7 +42,7 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
           const int i = a->first, j = b->first;
           const double narrow = std::min(shapes[i].typical_px, shapes[j].typical_px);
           const double wide = std::max(shapes[i].typical_px, shapes[j].typical_px);
-          if (narrow <= 0 || wide > params.width_ratio * narrow) continue;
+          if (narrow <= 0 || wide > kCorridorWidthRatio * narrow) continue;
           if (narrow < params.min_width_m / resolution_m) continue;
           const VertexOpening& narrowest =
               a->second.width_px <= b->second.width_px ? a->second : b->second;

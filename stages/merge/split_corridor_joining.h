@@ -12,9 +12,6 @@ namespace areagraph {
 // tuning-extra floors and the real maps (areagraph/, RobotMap, bormann/;
 // docs/quality.md, "Options beyond the paper").
 struct SplitCorridorParams {
-  // One corridor is about as wide everywhere: the wider piece's median free
-  // width is at most this many times the narrower's.
-  double width_ratio = 1.3;
   // The two pieces lie on either side of the vertex: seen from the vertex,
   // their centroids are at least this many degrees apart (a corridor goes
   // on; a room across from a side corridor's end is off to the side).
