@@ -14,22 +14,25 @@ namespace areagraph {
 struct SplitCorridorParams {
   // The two pieces lie on either side of the vertex: seen from the vertex,
   // their centroids are at least this many degrees apart (a corridor goes
-  // on; a room across from a side corridor's end is off to the side).
+  // on, bending little between two pieces; a room across from a side
+  // corridor's end is off to the side, at about 90 degrees).
   double straight_deg = 150;
   // A piece that runs straight (kStraightAxisRatio, area_shapes.h; a ratio
   // of 2 took rooms opening off a corridor piece's side for corridor
   // pieces) runs along the line between the two centroids, within this many
-  // degrees: such a room lies across that piece.
+  // degrees (as straight on as straight_deg): such a room lies across that
+  // piece.
   double axis_deg = 30;
   // Both pieces are at least this wide (median free width, metres): rows of
   // cluttered cubicles 0.9 m wide with a gap in their partition are no
   // corridor.
   double min_width_m = 1.0;
-  // With a grid given: an opening
-  // narrower than kCorridorOpeningShare (vertex_openings.h; 0.85 lost
-  // tuning-extra 0.006) of the wider piece's median free width joins anyway when it is one-sided (a
-  // flat wall on one side, stages/merge/one_sided_narrowing.h) and at least this share of the wider
-  // piece's median free width.
+  // With a grid given: an opening narrower than kCorridorOpeningShare
+  // (vertex_openings.h) of the wider piece's median free width joins anyway
+  // when it is one-sided (a flat wall on one side,
+  // stages/merge/one_sided_narrowing.h) and at least this share of that
+  // width. Half: a cabinet 0.6 m deep against one wall of a corridor 1.2 m
+  // wide or wider.
   double one_sided_opening_share = 0.5;
 };
 
