@@ -149,7 +149,7 @@ std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int h
       continue;
     }
     if (!typical) typical = TypicalWallThickness(depth(), sizes.max_wall_px);
-    wall[region] = thickness < kWallPieceWallRatio * *typical;
+    wall[region] = thickness < kFurnitureWallRatio * *typical;
   }
   return wall;
 }

@@ -9,7 +9,7 @@ namespace areagraph {
 
 // What makes an obstacle region of a furniture piece a piece of wall
 // standing between two doors (clean pass KEEP_WALL_PIECES), in pixels: it is
-// thinner than `thinner_than_px` or kWallPieceWallRatio times the map's
+// thinner than `thinner_than_px` or kFurnitureWallRatio times the map's
 // typical wall (TypicalWallThickness; twice its deepest cell's depth), at
 // least kWallPieceMinElongation times as long as wide and `min_length_px`
 // long, and past both of its ends its line (the centre line of its smallest
@@ -24,11 +24,12 @@ struct WallPieceSizes {
   // (kMaxWallThicknessM).
   double max_wall_px = 0;
 };
-// Thinner than the least furniture island of ag-merge (0.3 m, and twice the
-// map's typical wall, stages/merge/furniture_gap_joining.h): desks, cabinets
-// and shelves are not.
-inline constexpr double kWallPieceThinnerThanM = 0.3;
-inline constexpr double kWallPieceWallRatio = 2.0;
+// A wall piece is thinner than furniture (kMinFurnitureThicknessM and
+// kFurnitureWallRatio times the map's typical wall,
+// stages/geometry/wall_thickness.h), as ag-merge's furniture islands are
+// thicker.
+// At least this many times as long as thick: a wall runs on, a desk or a
+// cabinet is squarer.
 inline constexpr double kWallPieceMinElongation = 3.0;
 // At least as long as the short wall pieces that ag-cut takes as jambs
 // (cut pass CLOSE_WALL_GAPS, its short tips).

@@ -19,6 +19,11 @@ inline constexpr double kMaxCorridorWidthM = 4.0;
 // Rooms and halls are squarer: a room 2.5 m wide and 8 m long is one of the
 // narrowest offices; a corridor runs past several of them.
 inline constexpr double kCorridorElongation = 4.0;
+// One corridor is about as wide everywhere: the median free widths of two
+// pieces of it differ by at most this factor (a cabinet or a pillar narrows
+// it by a fifth or so; a side branch or a room off it is clearly narrower or
+// wider).
+inline constexpr double kCorridorWidthRatio = 1.3;
 
 // How many squares of `width` a space of `area` covers (0 without a width).
 inline double Elongation(double width, double area) {

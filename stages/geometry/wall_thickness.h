@@ -22,6 +22,16 @@ double TypicalWallThickness(const cv::Mat& depth, double max_wall_px);
 
 // Walls are thinner than this (metres): thicker ridges of non-free cells are
 // unknown space, not walls, when the typical wall thickness is measured.
+// Outer walls of old buildings reach 0.6-0.8 m; a metre is none.
 inline constexpr double kMaxWallThicknessM = 1.0;
+
+// Furniture (desks, cabinets, shelves) is at least this thick (metres) and
+// kFurnitureWallRatio times the map's typical wall thickness; a lone piece of
+// wall between two doors, and noise, are thinner. ag-clean keeps thinner
+// pieces as walls, ag-merge takes only thicker islands for furniture.
+inline constexpr double kMinFurnitureThicknessM = 0.3;
+// Twice a wall: a drawn or scanned wall varies by a cell or two, furniture
+// stands clearly thicker.
+inline constexpr double kFurnitureWallRatio = 2.0;
 
 }  // namespace areagraph

@@ -10,11 +10,13 @@ namespace areagraph {
 // A room-less area opens into a room without a constriction when the
 // narrowest free width near the vertex where they meet, on both sides, is at
 // least kOpenShare of the area's typical free width; this far from that
-// vertex, in multiples of that width.
+// vertex, in multiples of that width (the mouth and the stretch in front of
+// it, not the area's far end).
 inline constexpr double kMouthReachWidths = 2.0;
 // A bay is at most this many times as long (its graph edges) as it is wide;
 // longer room-less areas are corridors, which stay apart even where they
-// open into a room through a wide opening.
+// open into a room through a wide opening. Below kCorridorElongation (4
+// squares): a bay is shorter than any corridor.
 inline constexpr double kMaxBayLengthWidths = 3.0;
 
 // Folds short room-less areas into a room they open into without narrowing:

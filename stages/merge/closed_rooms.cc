@@ -44,14 +44,15 @@ bool WallsSeen(const cv::Mat& labels, const CellGrid& grid, int area, const cv::
 // Thickness (m) of the obstacle behind `jamb`, seen from the other jamb
 // `from`: the run of non-free cells through the point kJambDepthM beyond the
 // jamb on their line, across that line, between free cells on both sides;
-// infinity when either side meets no free cell within kJambMaxRunM.
+// infinity when either side meets no free cell within `enough_m` (the run is
+// then at least that thick: the search stops there).
 double JambThicknessM(const CellGrid& grid, const Eigen::Vector2d& from,
-                      const Eigen::Vector2d& jamb) {
+                      const Eigen::Vector2d& jamb, double enough_m) {
   const double res = grid.resolution_m();
   const Eigen::Vector2d along = (jamb - from).normalized();
   const Eigen::Vector2d across(-along.y(), along.x());
   const Eigen::Vector2d point = jamb + along * (kJambDepthM / res);
-  const int limit = static_cast<int>(std::ceil(kJambMaxRunM / res));
+  const int limit = static_cast<int>(std::ceil(enough_m / res));
   int run = 0;
   for (const double sign : {1.0, -1.0}) {
     for (int step = 0;; ++step) {
@@ -102,8 +103,8 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
       continue;
     }
     if (pocket_jamb_m > 0 &&
-        JambThicknessM(grid, own->second.right, own->second.left) >= pocket_jamb_m &&
-        JambThicknessM(grid, own->second.left, own->second.right) >= pocket_jamb_m) {
+        JambThicknessM(grid, own->second.right, own->second.left, pocket_jamb_m) >= pocket_jamb_m &&
+        JambThicknessM(grid, own->second.left, own->second.right, pocket_jamb_m) >= pocket_jamb_m) {
       continue;  // a pocket between furniture, not a door in a wall
     }
     kept[k] = WallsSeen(raster.labels, grid, k, boxes[k]);

@@ -12,12 +12,14 @@ namespace areagraph {
 
 // At most this share of the faces between the area's cells and non-free
 // cells may face unknown cells: a room's walls were seen; a piece that
-// borders unknown space is a scan's frontier or gap, not a room.
+// borders unknown space is a scan's frontier or gap, not a room. A tenth
+// allows a few cells a scan missed; a frontier runs along a whole side (a
+// quarter of a square piece's faces).
 inline constexpr double kClosedRoomMaxUnknownShare = 0.1;
-// A jamb's thickness is measured this far beyond it on the opening's line;
-// a run across that line longer than kJambMaxRunM counts as endless.
+// A jamb's thickness is measured this far beyond it on the opening's line:
+// more than a wall's end is rounded off by the scan, less than a cabinet's
+// depth (0.6 m, merge.small_closed_rooms.pocket_jamb_m).
 inline constexpr double kJambDepthM = 0.25;
-inline constexpr double kJambMaxRunM = 1.5;
 
 // Per area of `plan`: whether it is a small closed room that
 // FoldSmallAreas keeps although it has fewer than `min_cells` cells (and

@@ -7,7 +7,8 @@ namespace areagraph {
 
 // An edge is uniform when nothing along it narrows: its smallest clearance
 // is at least this share of its median clearance (a door on the way drops
-// the share to about door width / room width).
+// the share to about door width / room width: a 0.9 m door in a corridor
+// 1.2 m wide to 0.75).
 inline constexpr double kUniformClearanceShare = 0.75;
 
 // Joins room-less areas (corridor pieces and dead ends) made of uniform

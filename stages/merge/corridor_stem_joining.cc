@@ -7,12 +7,13 @@
 
 #include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/merge/area_shapes.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 
 void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
-                       const std::vector<bool>& closed, AreaPlan* plan,
-                       const CorridorStemParams& params) {
+                       const std::vector<bool>& closed, AreaPlan* plan) {
   const double resolution_m = model.resolution_m;
   const int area_count = static_cast<int>(plan->areas.size());
   const std::vector<AreaShape>& shapes = model.shapes;
@@ -41,14 +42,14 @@ void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
     const int corridor = neighbour[stem];
     if (area.kind != proto::AREA_DEAD_END || area.room_id >= 0 || corridor < 0) continue;
     const double w = shapes[stem].typical_px;
-    if (w < params.min_width_m / resolution_m) continue;
-    if (mouth[stem] < params.opening_share * w) continue;
-    if (!shapes[stem].corridor || shapes[stem].Straightness() < params.axis_ratio) continue;
+    if (w < kMinStemWidthM / resolution_m) continue;
+    if (mouth[stem] < kCorridorOpeningShare * w) continue;
+    if (!shapes[stem].corridor || shapes[stem].Straightness() < kStraightAxisRatio) continue;
     const AreaPlan::Area& into = plan->areas[corridor];
     const double corridor_width = shapes[corridor].typical_px;
     const bool corridor_shaped =
         into.room_id < 0 ? into.kind == proto::AREA_CORRIDOR : shapes[corridor].corridor;
-    if (!corridor_shaped || w > params.max_width_share * corridor_width) continue;
+    if (!corridor_shaped || w * kCorridorWidthRatio > corridor_width) continue;
     if (corridor_width * resolution_m > kMaxCorridorWidthM) continue;
     groups.Union(stem, corridor);
     joined.push_back(corridor);

@@ -14,7 +14,9 @@ namespace areagraph {
 
 // The smaller of two areas at a gap is at most this big (m2, its edges'
 // polygons): a room cut off by a row of blocks with openings between them
-// (a glass wall on pillars) is bigger than the strip beside a desk.
+// (a glass wall on pillars) is bigger than the strip beside a desk. The size
+// below which a room that opens widely is a piece of a corridor, too
+// (merge.corridor_pieces.below_m2, 20).
 inline constexpr double kMaxFurnitureGapPieceM2 = 20.0;
 
 // Joins areas that meet at a graph vertex where the opening between them has

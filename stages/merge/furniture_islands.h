@@ -5,21 +5,23 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 
 // Obstacle regions (8-connected non-free cells) that touch no image border
 // and whose bounding box is at most this long (metres) are islands: desks,
 // cabinets, shelves and tables standing free. The building's walls are one
-// region with the map's outside, or longer.
+// region with the map's outside, or longer. The same 4 m as ag-cut's
+// cut.islands.max_length_m: a row of desks or a long shelf.
 inline constexpr double kMaxFurnitureIslandM = 4.0;
-// Islands are at least this thick (metres; twice the depth of their deepest
-// cell) and kFurnitureWallRatio times the map's typical wall: noise specks
-// and pieces of wall between two doors are thinner.
-inline constexpr double kMinFurnitureThicknessM = 0.3;
-inline constexpr double kFurnitureWallRatio = 2.0;
+// Islands are at least kMinFurnitureThicknessM thick (twice the depth of
+// their deepest cell) and kFurnitureWallRatio times the map's typical wall
+// (stages/geometry/wall_thickness.h): noise specks and pieces of wall between
+// two doors are thinner.
 // Islands fill at least this share of their smallest enclosing rectangle: a
-// piece of wall with a T or a cabinet against it does not.
+// piece of wall with a T or a cabinet against it does not (a desk or a
+// cabinet fills all of it, an L of two about half to three quarters).
 inline constexpr double kMinFurnitureSolidity = 0.75;
 
 // Which obstacle cells belong to an island, as CV_8U the map's size (1 on

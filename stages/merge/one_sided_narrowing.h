@@ -13,7 +13,8 @@ namespace areagraph {
 // there with free cells just in front of it). A door has two jambs, wall
 // ends whose wall runs along the door's line, so neither side is such a
 // face; a cabinet or a wall's end standing out into a corridor narrows it
-// from one side while the corridor's other wall runs on straight.
+// from one side while the corridor's other wall runs on straight. Nine in
+// ten: a scanned wall face has a few missing cells.
 inline constexpr double kFlatWallShare = 0.9;
 
 // Whether the narrowing between the obstacle cells `left` and `right`

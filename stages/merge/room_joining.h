@@ -9,7 +9,9 @@
 
 namespace areagraph {
 
-// How far into each area the width beside an opening is looked for (metres).
+// How far into each area the width beside an opening is looked for (metres):
+// past a door's depth and its stub, the space behind it has its own width
+// (the reach of ag-cut's door finding, kDoorReachM, too).
 inline constexpr double kSideReachM = 1.5;
 
 // Joins room areas that meet at a graph vertex without a narrowing between

@@ -8,8 +8,10 @@
 #include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/merge/area_shapes.h"
 #include "stages/merge/one_sided_narrowing.h"
 #include "stages/merge/plan_model.h"
+#include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
 void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
@@ -40,12 +42,12 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
           const int i = a->first, j = b->first;
           const double narrow = std::min(shapes[i].typical_px, shapes[j].typical_px);
           const double wide = std::max(shapes[i].typical_px, shapes[j].typical_px);
-          if (narrow <= 0 || wide > params.width_ratio * narrow) continue;
+          if (narrow <= 0 || wide > kCorridorWidthRatio * narrow) continue;
           if (narrow < params.min_width_m / resolution_m) continue;
           const VertexOpening& narrowest =
               a->second.width_px <= b->second.width_px ? a->second : b->second;
           const double opening = narrowest.width_px;
-          if (opening < params.opening_share * wide) {
+          if (opening < kCorridorOpeningShare * wide) {
             if (grid == nullptr || opening < params.one_sided_opening_share * wide ||
                 !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
               continue;
@@ -54,7 +56,6 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
           const bool long_enough =
               corridor(wide, std::max(shapes[i].widest_px, shapes[j].widest_px),
                        shapes[i].area_px + shapes[j].area_px);
-          if (!long_enough && !params.chains) continue;
           const AreaMoments& mi = shapes[i].moments;
           const AreaMoments& mj = shapes[j].moments;
           if (mi.a <= 0 || mj.a <= 0) continue;
@@ -66,31 +67,29 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
           const Eigen::Vector2d line = (cj - ci).normalized();
           for (const AreaMoments* m : {&mi, &mj}) {
             const auto [axis, ratio] = m->Axis();
-            if (ratio >= params.axis_ratio && std::abs(axis.dot(line)) < axis_cos) aligned = false;
+            if (ratio >= kStraightAxisRatio && std::abs(axis.dot(line)) < axis_cos) aligned = false;
           }
           if (!aligned) continue;
           pairs.push_back({i, j, long_enough});
         }
       }
     }
-    // With `chains`, a pair too short alone joins when the chain of pairs it
-    // belongs to is shaped like a corridor.
+    // A pair too short alone joins when the chain of pairs it belongs to is
+    // shaped like a corridor.
     std::vector<bool> chain_long(area_count, false);
     DisjointSets chains(area_count);
-    if (params.chains) {
-      for (const Pair& pair : pairs) chains.Union(pair.i, pair.j);
-      std::vector<double> chain_px(area_count, 0), chain_typical(area_count, 0),
-          chain_widest(area_count, 0);
-      for (int k = 0; k < area_count; ++k) {
-        const int root = chains.Find(k);
-        chain_px[root] += shapes[k].area_px;
-        chain_typical[root] = std::max(chain_typical[root], shapes[k].typical_px);
-        chain_widest[root] = std::max(chain_widest[root], shapes[k].widest_px);
-      }
-      for (int k = 0; k < area_count; ++k) {
-        const int root = chains.Find(k);
-        chain_long[k] = corridor(chain_typical[root], chain_widest[root], chain_px[root]);
-      }
+    for (const Pair& pair : pairs) chains.Union(pair.i, pair.j);
+    std::vector<double> chain_px(area_count, 0), chain_typical(area_count, 0),
+        chain_widest(area_count, 0);
+    for (int k = 0; k < area_count; ++k) {
+      const int root = chains.Find(k);
+      chain_px[root] += shapes[k].area_px;
+      chain_typical[root] = std::max(chain_typical[root], shapes[k].typical_px);
+      chain_widest[root] = std::max(chain_widest[root], shapes[k].widest_px);
+    }
+    for (int k = 0; k < area_count; ++k) {
+      const int root = chains.Find(k);
+      chain_long[k] = corridor(chain_typical[root], chain_widest[root], chain_px[root]);
     }
     DisjointSets groups(area_count);
     bool changed = false;

@@ -12,44 +12,38 @@ namespace areagraph {
 // tuning-extra floors and the real maps (areagraph/, RobotMap, bormann/;
 // docs/quality.md, "Options beyond the paper").
 struct SplitCorridorParams {
-  // No narrowing between the pieces: the opening at their shared vertex is at
-  // least this share of the wider piece's median free width (a door is
-  // narrower than the corridor it opens from; 0.85 lost tuning-extra 0.006).
-  double opening_share = 0.8;
-  // One corridor is about as wide everywhere: the wider piece's median free
-  // width is at most this many times the narrower's.
-  double width_ratio = 1.3;
   // The two pieces lie on either side of the vertex: seen from the vertex,
   // their centroids are at least this many degrees apart (a corridor goes
-  // on; a room across from a side corridor's end is off to the side).
+  // on, bending little between two pieces; a room across from a side
+  // corridor's end is off to the side, at about 90 degrees).
   double straight_deg = 150;
-  // A piece that is elongated (its major axis' variance at least
-  // axis_ratio times its minor axis') runs along the line between the two
-  // centroids, within this many degrees: a room opening off a corridor
-  // piece's side lies across that piece (a ratio of 2 took such rooms for
-  // corridor pieces).
+  // A piece that runs straight (kStraightAxisRatio, area_shapes.h; a ratio
+  // of 2 took rooms opening off a corridor piece's side for corridor
+  // pieces) runs along the line between the two centroids, within this many
+  // degrees (as straight on as straight_deg): such a room lies across that
+  // piece.
   double axis_deg = 30;
-  double axis_ratio = 3;
   // Both pieces are at least this wide (median free width, metres): rows of
   // cluttered cubicles 0.9 m wide with a gap in their partition are no
   // corridor.
   double min_width_m = 1.0;
-  // With a grid given: an opening
-  // narrower than opening_share joins anyway when it is one-sided (a flat
-  // wall on one side, stages/merge/one_sided_narrowing.h) and at least this
-  // share of the wider piece's median free width.
+  // With a grid given: an opening narrower than kCorridorOpeningShare
+  // (vertex_openings.h) of the wider piece's median free width joins anyway
+  // when it is one-sided (a flat wall on one side,
+  // stages/merge/one_sided_narrowing.h) and at least this share of that
+  // width. Half: a cabinet 0.6 m deep against one wall of a corridor 1.2 m
+  // wide or wider.
   double one_sided_opening_share = 0.5;
-  // A pair not shaped like a corridor together joins when the chain of
-  // pairs that pass the other tests is: a corridor that W split into three
-  // or four short pieces is long only as a whole.
-  bool chains = true;
 };
 
 // Joins pairs of areas (rooms or room-less pieces) that meet at a graph
 // vertex that is not `closed` (ClosedVertices), where the two are pieces of
-// one corridor by the constants above and together are shaped like a
-// corridor (IsCorridorShaped of the two as one: the wider typical and widest
-// width, the sum of their sizes), repeatedly until no pair joins (a corridor
+// one corridor by the constants above (and do not narrow where they meet,
+// kCorridorOpeningShare) and together are shaped like a corridor
+// (IsCorridorShaped of the two as one: the wider typical and widest width,
+// the sum of their sizes), or belong to a chain of such pairs that is (a
+// corridor that W split into three or four short pieces is long only as a
+// whole), repeatedly until no pair joins (a corridor
 // split into three or four pieces). With an automatic W near or above a corridor's
 // width the room disk stops at every slight narrowing and the corridor
 // falls into room-shaped pieces; room-less pieces stay apart where a side

@@ -25,7 +25,7 @@ std::vector<uint8_t> WholeMapWallPieces(const std::string& cells, int width, int
       labels.clone(), count, ObstacleDepth(ObstacleMask(cells, width, height)), candidates);
   const double thinner_than =
       std::max(sizes.thinner_than_px,
-               kWallPieceWallRatio * TypicalWallThickness(regions.depth, sizes.max_wall_px));
+               kFurnitureWallRatio * TypicalWallThickness(regions.depth, sizes.max_wall_px));
   std::vector<uint8_t> wall(count, 0);
   for (int region = 1; region < count; ++region) {
     const RegionShape& shape = regions.shapes[region];

@@ -3,13 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
+#include "tests/support/merge_pass_cases.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
 namespace {
 
 using floorplan::DrawDoor;
-using floorplan::DrawRegion;
 using floorplan::DrawRoom;
 using floorplan::FloorPlan;
 using floorplan::WallDirection;
@@ -26,14 +26,9 @@ proto::PipelineOptions BayOptions(bool fold_open_bays) {
   return options;
 }
 
-// A 6 x 4 m room with a bay about 0.95 m wide and 2.5 m deep on its lower
-// wall, open to the room over its whole width (narrower than W: outside the
-// room shape, so the Topology Graph edge into it is room-less).
-FloorPlan RoomWithOpenBay() {
-  FloorPlan plan(7, 7.5);
-  DrawRegion(plan, {{0.5, 0.5, 6, 4}, {2.5, 4.0, 1.1, 3.0}});
-  return plan;
-}
+// RoomWithOpenBay (tests/support/merge_pass_cases.h): the bay is narrower
+// than W, outside the room shape, so the Topology Graph edge into it is
+// room-less.
 
 TEST(BayFoldingTest, OpenBayIsPartOfItsRoom) {
   const proto::CleanedMap map = CleanedMapFromImage(RoomWithOpenBay().image());

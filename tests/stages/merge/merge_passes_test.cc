@@ -1,13 +1,12 @@
 // The merge's pass table (stages/merge/merge_passes.h): every pass once, in
-// the order paper.pbtxt skips them, and a case that each pass fixes; the
-// passes without a test file of their own are tested here on hand-made cut
-// graphs: ClosedVertices, FoldOpenBays, JoinSplitCorridors and
-// JoinCorridorStems.
+// the order paper.pbtxt skips them (each pass's drawn case is in
+// merge_pass_cases_test.cc); the passes without a test file of their own are
+// tested here on hand-made cut graphs: ClosedVertices, FoldOpenBays,
+// JoinSplitCorridors and JoinCorridorStems.
 #include "stages/merge/merge_passes.h"
 
 #include <gtest/gtest.h>
 
-#include <map>
 #include <set>
 
 #include "stages/common/pipeline_options.h"
@@ -24,41 +23,15 @@ namespace {
 using Pass = proto::MergeOptions::Pass;
 constexpr double kResolutionM = 0.05;
 
-// Where each pass's case lives: a test on a constructed map that fails when
-// the pass is skipped (or, for a test on a hand-made cut graph, when the
-// pass's function is not called).
-const std::map<Pass, const char*>& CaseOfEachPass() {
-  static const std::map<Pass, const char*> cases = {
-      {proto::MergeOptions::JOIN_CORRIDOR_PIECES, "corridor_joining_test.cc CorridorJoiningTest.*"},
-      {proto::MergeOptions::JOIN_ROOMS_WITHOUT_DOORS,
-       "closed_doors_test.cc ClosedDoorsTest.RoomJoiningJoinsRoomsAtAnOpenCut"},
-      {proto::MergeOptions::JOIN_FURNITURE_GAPS,
-       "pipeline/furniture_gaps_test.cc FurnitureGapsTest.WithoutTheRuleTheCabinetSplitsTheRoom"},
-      {proto::MergeOptions::FOLD_OPEN_BAYS, "this file, FoldOpenBaysTest.*"},
-      {proto::MergeOptions::FOLD_CORRIDOR_PIECES,
-       "corridor_piece_folding_test.cc CorridorPieceFoldingTest.*"},
-      {proto::MergeOptions::JOIN_POROUS_BORDERS,
-       "porous_border_joining_test.cc PorousBorderJoiningTest.*"},
-      {proto::MergeOptions::JOIN_SPLIT_CORRIDORS, "this file, JoinSplitCorridorsTest.*"},
-      {proto::MergeOptions::JOIN_CORRIDOR_STEMS, "this file, JoinCorridorStemsTest.*"},
-      {proto::MergeOptions::KEEP_SMALL_CLOSED_ROOMS,
-       "pipeline/small_closed_rooms_test.cc "
-       "SmallClosedRoomsTest.WithoutKeepSmallClosedRoomsTheClosetFolds"},
-  };
-  return cases;
-}
-
-TEST(MergePassTableTest, EveryPassOnceWithACaseAndAReason) {
+TEST(MergePassTableTest, EveryPassOnceWithAReason) {
   const std::vector<MergePass>& table = MergePassTable();
   std::set<int> seen;
   for (const MergePass& row : table) {
     EXPECT_TRUE(seen.insert(row.pass).second) << MergePassName(row.pass);
     EXPECT_TRUE((row.join == nullptr) != (row.keep == nullptr)) << MergePassName(row.pass);
     EXPECT_GT(std::string(row.order).size(), 20u) << MergePassName(row.pass);
-    EXPECT_EQ(CaseOfEachPass().count(row.pass), 1u) << MergePassName(row.pass) << " has no case";
   }
   EXPECT_EQ(static_cast<int>(seen.size()), proto::MergeOptions::Pass_descriptor()->value_count());
-  EXPECT_EQ(CaseOfEachPass().size(), table.size());
 }
 
 TEST(MergePassTableTest, ThePaperSkipsEveryPassInTheTablesOrder) {

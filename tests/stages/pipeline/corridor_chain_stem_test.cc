@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
+#include "tests/support/merge_pass_cases.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
@@ -21,18 +22,7 @@ constexpr double kCorridorY = 4.5;
 constexpr double kCorridorHeight = 2.2;
 constexpr double kCorridorMiddleY = kCorridorY + kCorridorHeight / 2;
 
-void DrawOffices(floorplan::FloorPlan& plan, double length_m, double office_m) {
-  for (double x = 0.5; x + office_m <= 0.5 + length_m + 1e-9; x += office_m) {
-    floorplan::DrawRoom(plan, {x, 0.5, office_m, 4});
-    floorplan::DrawDoor(plan, x + office_m / 2, kCorridorY, 0.9, WallDirection::kHorizontal);
-  }
-}
-
-proto::PipelineOptions FixedW(double w) {
-  proto::PipelineOptions options;
-  options.mutable_cut()->set_room_width_m(w);
-  return options;
-}
+proto::PipelineOptions FixedW(double w) { return FixedRoomWidth(w); }
 
 proto::AreaGraph Areas(const floorplan::FloorPlan& plan, const proto::PipelineOptions& options) {
   const proto::CleanedMap map = CleanDrawnMap(plan.image());
@@ -48,7 +38,7 @@ proto::AreaGraph Areas(const floorplan::FloorPlan& plan, const proto::PipelineOp
 floorplan::FloorPlan CabinetCorridor() {
   floorplan::FloorPlan plan(21, 7.5);
   floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
-  DrawOffices(plan, 20, 5);
+  DrawOffices(plan, 20, 5, kCorridorY);
   floorplan::DrawFurniture(plan, {11, kCorridorY, 1, 0.675});
   return plan;
 }
@@ -69,7 +59,7 @@ TEST(OneSidedNarrowingTest, ADoorAcrossTheCorridorStillDividesIt) {
   floorplan::FloorPlan plan(21, 7.5);
   floorplan::DrawRoom(plan, {0.5, kCorridorY, 10, kCorridorHeight});
   floorplan::DrawRoom(plan, {10.5, kCorridorY, 10, kCorridorHeight});
-  DrawOffices(plan, 20, 5);
+  DrawOffices(plan, 20, 5, kCorridorY);
   floorplan::DrawDoor(plan, 10.5, kCorridorMiddleY, 1.45, WallDirection::kVertical);
   const proto::AreaGraph areas = Areas(plan, FixedW(1.7));
   const int left = AreaAt(areas, 4, kCorridorMiddleY), right = AreaAt(areas, 17, kCorridorMiddleY);
@@ -84,7 +74,7 @@ TEST(OneSidedNarrowingTest, ADoorAcrossTheCorridorStillDividesIt) {
 floorplan::FloorPlan ThreePieceCorridor() {
   floorplan::FloorPlan plan(15, 7.5);
   floorplan::DrawRoom(plan, {0.5, kCorridorY, 13.5, kCorridorHeight});
-  DrawOffices(plan, 13.5, 4.5);
+  DrawOffices(plan, 13.5, 4.5, kCorridorY);
   for (const double x : {5.0, 9.5}) {
     floorplan::DrawFurniture(plan, {x - 0.15, kCorridorY, 0.3, 0.25});
     floorplan::DrawFurniture(plan, {x - 0.15, kCorridorY + kCorridorHeight - 0.25, 0.3, 0.25});
@@ -103,22 +93,8 @@ TEST(SplitCorridorChainTest, ThreeShortPiecesOfOneCorridorJoin) {
   EXPECT_NE(office, left);
 }
 
-// A corridor 20 m long with a dead-end branch 1.05 m wide (1.2 m between
-// wall centres) and 6 m long down from its middle, open across its whole width, and a closet 1.2 m
-// wide and 4.5 m deep behind a 0.7 m door further along. W = 1.5 m: the branch and the closet get
-// no room.
-floorplan::FloorPlan CorridorWithStem() {
-  floorplan::FloorPlan plan(21, 13.5);
-  floorplan::DrawRoom(plan, {0.5, kCorridorY, 20, kCorridorHeight});
-  DrawOffices(plan, 20, 5);
-  const double below = kCorridorY + kCorridorHeight;
-  floorplan::DrawRoom(plan, {6.4, below, 1.2, 6});
-  floorplan::DrawDoor(plan, 7, below, 1.05, WallDirection::kHorizontal);  // no narrowing
-  floorplan::DrawRoom(plan, {15, below, 1.2, 4.5});
-  floorplan::DrawDoor(plan, 15.6, below, 0.7, WallDirection::kHorizontal);
-  return plan;
-}
-
+// CorridorWithStem (tests/support/merge_pass_cases.h) with W = 1.5 m: the
+// branch and the closet get no room.
 constexpr double kStemX = 7.0, kStemY = 9.5, kClosetX = 15.6, kClosetY = 9.0;
 
 TEST(CorridorStemTest, WithoutTheRuleTheBranchStaysApart) {

@@ -6,36 +6,17 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
+#include "tests/support/merge_pass_cases.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
 namespace {
 
 using floorplan::RectM;
-using floorplan::WallDirection;
 
-// A 5 x 4 m room above a 1.8 m corridor, joined by a 0.9 m door at x = 2 m;
-// a 4 x 4 m office beside it with its own 0.9 m door. Down the middle of the
-// room (x = 3.5 m) stands `divider`, leaving 0.7 m to the walls above and
-// below it: narrower than W (about 1 m, above the doors).
-constexpr RectM kRoom{1, 1, 5, 4};
-constexpr RectM kOffice{6, 1, 4, 4};
-constexpr RectM kCorridor{1, 5, 9, 1.8};
-
-floorplan::FloorPlan RoomWithDivider(const RectM& divider) {
-  floorplan::FloorPlan plan(11, 7.8);
-  floorplan::DrawRoom(plan, kRoom);
-  floorplan::DrawRoom(plan, kOffice);
-  floorplan::DrawRoom(plan, kCorridor);
-  floorplan::DrawDoor(plan, 2, kCorridor.y, 0.9, WallDirection::kHorizontal);
-  floorplan::DrawDoor(plan, 8, kCorridor.y, 0.9, WallDirection::kHorizontal);
-  floorplan::DrawFurniture(plan, divider);
-  return plan;
-}
-
-// A cabinet 0.6 m deep and 2.45 m long: too long and thin for ag-cut's
-// furniture islands (cut.islands.max_length_m; islands are at most 3 times as long as wide).
-constexpr RectM kCabinet{3.2, 1.8, 0.6, 2.45};
+// RoomWithDivider (tests/support/merge_pass_cases.h) with kCabinetAcrossRoom:
+// 0.7 m to the walls above and below it, narrower than W.
+constexpr RectM kCabinet = kCabinetAcrossRoom;
 // A wall 0.15 m thick in the same place: a wall with a doorway at each end.
 constexpr RectM kWallPiece{3.43, 1.8, 0.15, 2.45};
 

@@ -7,29 +7,14 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
+#include "tests/support/merge_pass_cases.h"
 #include "tools/example_maps/benchmark_floor.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
 namespace {
 
-using floorplan::WallDirection;
-
-// The room {0.5, 0.5, 6, 5} and the closet {6.5, 0.5, 1.2, 1.5} beside its
-// top right corner, with a 0.8 m door in the wall between them. With
-// `far_wall_unknown` the closet's far wall was never seen: unknown cells.
-floorplan::FloorPlan RoomAndCloset(bool far_wall_unknown = false) {
-  floorplan::FloorPlan plan(8.6, 6);
-  floorplan::DrawRoom(plan, {0.5, 0.5, 6, 5});
-  floorplan::DrawRoom(plan, {6.5, 0.5, 1.2, 1.5});
-  floorplan::DrawDoor(plan, 6.5, 1.25, 0.8, WallDirection::kVertical);
-  if (far_wall_unknown) {
-    const cv::Rect inner = floorplan::InnerCells(plan, {6.5, 0.5, 1.2, 1.5});
-    plan.image()(cv::Rect(inner.br().x, inner.y, plan.wall_thickness_px(), inner.height))
-        .setTo(floorplan::kUnknownGrey);
-  }
-  return plan;
-}
+// RoomAndCloset (tests/support/merge_pass_cases.h).
 
 struct Result {
   int room = -1, closet = -1;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/area_test_support.h"
+#include "tests/support/merge_pass_cases.h"
 #include "tools/example_maps/floor_plan.h"
 
 namespace areagraph::testing {
@@ -29,21 +30,9 @@ proto::PipelineOptions FixedW(bool join_split_corridors) {
   return options;
 }
 
-// Offices above the corridor, each with a door into it; two wall stubs
-// 0.3 m long, reaching 0.175 m out of the walls, face each other across the
-// corridor at x = 15.5 m.
-floorplan::FloorPlan SplitCorridor() {
-  floorplan::FloorPlan plan(31, 7.5);
-  for (int k = 0; k < 6; ++k) {
-    const double x = 0.5 + 5 * k;
-    floorplan::DrawRoom(plan, {x, 0.5, 5, 4});
-    floorplan::DrawDoor(plan, x + 2.5, kCorridor.y, 0.9, WallDirection::kHorizontal);
-  }
-  floorplan::DrawRoom(plan, kCorridor);
-  floorplan::DrawFurniture(plan, {15.35, kCorridor.y, 0.3, 0.25});
-  floorplan::DrawFurniture(plan, {15.35, kCorridor.y + kCorridor.height - 0.25, 0.3, 0.25});
-  return plan;
-}
+// The corridor of CorridorWithStubs (tests/support/merge_pass_cases.h), whose
+// stubs narrow it at x = 15.5 m.
+floorplan::FloorPlan SplitCorridor() { return CorridorWithStubs(); }
 
 struct Result {
   int left = -1, right = -1, office = -1;
@@ -78,11 +67,7 @@ TEST(SplitCorridorTest, ARoomBehindADoorInLineStaysApart) {
   // the corridor, into a room as wide as the corridor and 6 m long beyond it:
   // together they are as long and narrow as a corridor, but the door narrows.
   floorplan::FloorPlan plan(38, 7.5);
-  for (int k = 0; k < 6; ++k) {
-    const double x = 0.5 + 5 * k;
-    floorplan::DrawRoom(plan, {x, 0.5, 5, 4});
-    floorplan::DrawDoor(plan, x + 2.5, kCorridor.y, 0.9, WallDirection::kHorizontal);
-  }
+  DrawOffices(plan, 30, 5, kCorridor.y);
   floorplan::DrawRoom(plan, kCorridor);
   floorplan::DrawRoom(plan, {30.5, kCorridor.y, 6, kCorridor.height});
   floorplan::DrawDoor(plan, 30.5, kCorridorMiddleY, 1.2, WallDirection::kVertical);
