@@ -84,7 +84,8 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // the passes in one table (merge.skip_passes), corridor clutter joining removed.
 // merge 17: every border between two areas that a body fits across is a passage, also without a
 // graph vertex there (merge.open_border_clearance_m); labels unchanged.
-inline constexpr StageInfo kMergeStage{"merge", 17};
+// merge 18: areas join across a stack of rows of long free-standing blocks (seats, shelves).
+inline constexpr StageInfo kMergeStage{"merge", 18};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

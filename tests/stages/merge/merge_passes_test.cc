@@ -34,6 +34,9 @@ const std::map<Pass, const char*>& CaseOfEachPass() {
        "closed_doors_test.cc ClosedDoorsTest.RoomJoiningJoinsRoomsAtAnOpenCut"},
       {proto::MergeOptions::JOIN_FURNITURE_GAPS,
        "pipeline/furniture_gaps_test.cc FurnitureGapsTest.WithoutTheRuleTheCabinetSplitsTheRoom"},
+      {proto::MergeOptions::JOIN_FURNITURE_ROWS,
+       "pipeline/furniture_rows_test.cc "
+       "FurnitureRowsTest.WithoutTheRuleTheStripsBetweenRowsAreAreas"},
       {proto::MergeOptions::FOLD_OPEN_BAYS, "this file, FoldOpenBaysTest.*"},
       {proto::MergeOptions::FOLD_CORRIDOR_PIECES,
        "corridor_piece_folding_test.cc CorridorPieceFoldingTest.*"},
