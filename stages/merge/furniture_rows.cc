@@ -98,7 +98,7 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
     const cv::RotatedRect rect = cv::minAreaRect(cells);
     const double longer = std::max(rect.size.width, rect.size.height) + 1;
     const double shorter = std::min(rect.size.width, rect.size.height) + 1;
-    if (!(static_cast<double>(cells.size()) >= kMinFurnitureSolidity * longer * shorter)) continue;
+    if (!(static_cast<double>(cells.size()) >= kMinRowSolidity * longer * shorter)) continue;
     if (!(longer > min_elongation * shorter)) continue;
     // The rectangle's angle is that of its `width` side.
     const double angle = rect.angle * CV_PI / 180.0 +
