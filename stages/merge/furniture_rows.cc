@@ -30,8 +30,8 @@ bool InOneStack(const RowCandidate& a, const RowCandidate& b, double max_pitch_p
   const double along = offset.dot(a.axis);
   const double across = std::abs(offset.x * a.axis.y - offset.y * a.axis.x);
   if (across > max_pitch_px) return false;
-  const double overlap = std::min(a.length / 2, along + b.length / 2) -
-                         std::max(-a.length / 2, along - b.length / 2);
+  const double overlap =
+      std::min(a.length / 2, along + b.length / 2) - std::max(-a.length / 2, along - b.length / 2);
   return overlap >= kRowSideBySideShare * std::min(a.length, b.length);
 }
 
@@ -82,9 +82,9 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
   std::vector<RowCandidate> candidates;
   std::vector<cv::Point> cells;
   for (const int label : free_standing) {
-    const cv::Rect box(stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
-                       stats.at<int>(label, cv::CC_STAT_WIDTH),
-                       stats.at<int>(label, cv::CC_STAT_HEIGHT));
+    const cv::Rect box(
+        stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
+        stats.at<int>(label, cv::CC_STAT_WIDTH), stats.at<int>(label, cv::CC_STAT_HEIGHT));
     cells.clear();
     float deepest = 0;
     for (int r = box.y; r < box.y + box.height; ++r) {
@@ -101,8 +101,8 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
     if (!(static_cast<double>(cells.size()) >= kMinRowSolidity * longer * shorter)) continue;
     if (!(longer > min_elongation * shorter)) continue;
     // The rectangle's angle is that of its `width` side.
-    const double angle = rect.angle * CV_PI / 180.0 +
-                         (rect.size.width >= rect.size.height ? 0 : CV_PI / 2);
+    const double angle =
+        rect.angle * CV_PI / 180.0 + (rect.size.width >= rect.size.height ? 0 : CV_PI / 2);
     candidates.push_back({label, rect.center, {std::cos(angle), std::sin(angle)}, longer});
   }
   DisjointSets stacks(candidates.size());
@@ -117,9 +117,9 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
   for (size_t k = 0; k < candidates.size(); ++k) {
     if (stack_size[stacks.Find(k)] < kMinStackRows) continue;
     const int label = candidates[k].label;
-    const cv::Rect box(stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
-                       stats.at<int>(label, cv::CC_STAT_WIDTH),
-                       stats.at<int>(label, cv::CC_STAT_HEIGHT));
+    const cv::Rect box(
+        stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
+        stats.at<int>(label, cv::CC_STAT_WIDTH), stats.at<int>(label, cv::CC_STAT_HEIGHT));
     rows(box).setTo(1, labels(box) == label);
   }
   return rows;
