@@ -14,6 +14,7 @@
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/area_kinds.h"
+#include "stages/merge/furniture_rows.h"
 #include "stages/merge/merge_passes.h"
 #include "stages/merge/small_area_folding.h"
 #include "stages/merge/vertex_openings.h"
@@ -122,7 +123,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   proto::AreaGraph out;
   out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  SetAreaKinds(graph, raster, grid.resolution_m(), &plan);
+  // Rows of seats do not make a hall a corridor where that pass saw them.
+  const cv::Mat rows = RunsPass(options, proto::MergeOptions::JOIN_FURNITURE_ROWS)
+                           ? FurnitureRowCells(map, options.furniture_gaps().max_elongation())
+                           : cv::Mat();
+  SetAreaKinds(graph, raster, grid.resolution_m(), &plan, rows);
   // Without a caller for the raster, its labels (4 bytes a cell) go once
   // the borders are traced, before they are simplified.
   AddAreasAndPassages(graph, plan, raster, options, &out, [&] {

@@ -16,7 +16,7 @@ using floorplan::RectM;
 using floorplan::WallDirection;
 
 // A 12 x 12 m hall above a 2 m corridor, joined by a 1.2 m door; a 4 x 4 m
-// office beside the hall with its own 0.9 m door. Rows of seats 0.5 m deep
+// office beside the hall with its own 0.9 m doors to both. Rows of seats 0.5 m deep
 // and 9.6 m long stand 1.1 m apart from y = 4 m on, with 1.2 m side aisles.
 constexpr RectM kHall{1, 1, 12, 12};
 constexpr RectM kOffice{13, 1, 4, 4};
@@ -31,6 +31,9 @@ floorplan::FloorPlan HallWithRows(int rows) {
   floorplan::DrawRoom(plan, kCorridor);
   floorplan::DrawDoor(plan, 6, kCorridor.y, 1.2, WallDirection::kHorizontal);
   floorplan::DrawDoor(plan, 14, kCorridor.y, 0.9, WallDirection::kHorizontal);
+  // A way through the hall into the office: the hall has two exits, as a
+  // corridor has.
+  floorplan::DrawDoor(plan, kOffice.x, 2, 0.9, WallDirection::kVertical);
   for (int k = 0; k < rows; ++k) {
     floorplan::DrawFurniture(plan, {kRowX, kFirstRowY + k * kRowPitch, kRowLength, kSeatDepth});
   }
@@ -43,6 +46,7 @@ floorplan::FloorPlan HallWithRows(int rows) {
 struct HallAreas {
   std::set<int> hall;
   int front = -1, corridor = -1;
+  int front_kind = -1;
 };
 
 HallAreas AreasOf(const floorplan::FloorPlan& plan, int rows,
@@ -60,6 +64,9 @@ HallAreas AreasOf(const floorplan::FloorPlan& plan, int rows,
   areas.hall.insert(AreaAt(stages.areas, kHall.x + 0.6, 7));
   areas.hall.insert(AreaAt(stages.areas, 7, 12));
   areas.corridor = AreaAt(stages.areas, 9, 14);
+  for (const proto::Area& area : stages.areas.areas()) {
+    if (area.id() == areas.front) areas.front_kind = area.kind();
+  }
   return areas;
 }
 
@@ -71,6 +78,8 @@ TEST(FurnitureRowsTest, RowsOfSeatsDoNotCutTheHallIntoStrips) {
   ASSERT_NE(areas.corridor, -1);
   EXPECT_EQ(areas.hall, std::set<int>{areas.front});
   EXPECT_NE(areas.front, areas.corridor);
+  // The strips between the rows do not make the hall a corridor.
+  EXPECT_EQ(areas.front_kind, static_cast<int>(proto::AREA_ROOM));
 }
 
 TEST(FurnitureRowsTest, WithoutTheRuleTheStripsBetweenRowsAreAreas) {
