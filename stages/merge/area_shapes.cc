@@ -76,7 +76,7 @@ AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m,
   AreaShape shape;
   if (k >= static_cast<int>(raster.boxes.size()) || raster.boxes[k].area() == 0) return shape;
   cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, raster.boxes[k]);
-  if (!furniture.empty()) {
+  if (!furniture.empty() && cv::countNonZero(furniture(raster.boxes[k])) > 0) {
     // The mask has a free border of one cell around the box. Only the
     // furniture that touches the area joins it: the box may hold rows of a
     // hall next door.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/distance_transform.h"
 #include "stages/geometry/wall_thickness.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/furniture_islands.h"
@@ -65,6 +66,10 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
   const double max_px = kMaxFurnitureRowM / resolution_m;
+  const double min_thickness_px = kMinFurnitureThicknessM / resolution_m;
+  // A row is longer than `min_elongation` times its least thickness: most
+  // regions (specks, desks) are too short to be measured at all.
+  const double min_length_px = min_elongation * min_thickness_px;
   std::vector<int> free_standing;
   for (int label = 1; label < count; ++label) {
     const int left = stats.at<int>(label, cv::CC_STAT_LEFT);
@@ -72,34 +77,34 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
     const int w = stats.at<int>(label, cv::CC_STAT_WIDTH);
     const int h = stats.at<int>(label, cv::CC_STAT_HEIGHT);
     if (left == 0 || top == 0 || left + w == width || top + h == height) continue;
-    if (std::max(w, h) > max_px) continue;
+    if (std::max(w, h) > max_px || std::hypot(w, h) < min_length_px) continue;
     free_standing.push_back(label);
   }
   cv::Mat rows = cv::Mat::zeros(height, width, CV_8U);
   if (free_standing.empty()) return rows;
-  const cv::Mat depth = ObstacleDepth(obstacle);
-  const double min_thickness_px = kMinFurnitureThicknessM / resolution_m;
   std::vector<RowCandidate> candidates;
   std::vector<cv::Point> cells;
   for (const int label : free_standing) {
     const cv::Rect box(
         stats.at<int>(label, cv::CC_STAT_LEFT), stats.at<int>(label, cv::CC_STAT_TOP),
         stats.at<int>(label, cv::CC_STAT_WIDTH), stats.at<int>(label, cv::CC_STAT_HEIGHT));
+    // The region alone, with a free border: free cells are all around a
+    // free-standing region, so its depth there is its depth in the map.
+    cv::Mat region = cv::Mat::zeros(box.height + 2, box.width + 2, CV_8U);
     cells.clear();
-    float deepest = 0;
     for (int r = box.y; r < box.y + box.height; ++r) {
       for (int c = box.x; c < box.x + box.width; ++c) {
         if (labels.at<int>(r, c) != label) continue;
         cells.emplace_back(c, r);
-        deepest = std::max(deepest, depth.at<float>(r, c));
+        region.at<uint8_t>(r - box.y + 1, c - box.x + 1) = 255;
       }
     }
-    if (!(2 * deepest >= min_thickness_px)) continue;
     const cv::RotatedRect rect = cv::minAreaRect(cells);
     const double longer = std::max(rect.size.width, rect.size.height) + 1;
     const double shorter = std::min(rect.size.width, rect.size.height) + 1;
     if (!(static_cast<double>(cells.size()) >= kMinRowSolidity * longer * shorter)) continue;
     if (!(longer > min_elongation * shorter)) continue;
+    if (!(2 * DeepestDistance(region) >= min_thickness_px)) continue;
     // The rectangle's angle is that of its `width` side.
     const double angle =
         rect.angle * CV_PI / 180.0 + (rect.size.width >= rect.size.height ? 0 : CV_PI / 2);
@@ -126,10 +131,8 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
 }
 
 void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& model,
-                              const proto::CleanedMap& map, double min_elongation,
-                              std::vector<bool> closed, AreaPlan* plan) {
-  const cv::Mat rows = FurnitureRowCells(map, min_elongation);
-  if (cv::countNonZero(rows) == 0) return;
+                              const cv::Mat& rows, std::vector<bool> closed, AreaPlan* plan) {
+  if (rows.empty()) return;
   for (size_t vertex = 0; vertex < closed.size(); ++vertex) {
     if (!closed[vertex]) continue;
     for (const auto& [area, opening] : model.openings[vertex]) {

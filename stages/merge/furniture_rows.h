@@ -40,12 +40,11 @@ inline constexpr int kMinStackRows = 3;
 // enter: rows of seats are often no thicker than two walls.
 cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation);
 
-// Joins areas at openings where a row of FurnitureRowCells is a jamb, as
-// JoinAreasAtFurnitureGaps joins them at islands, also at a cut that ag-cut
-// closed (`closed`): it took the row's end for a wall's, and the aisle
-// beside it for a door.
+// Joins areas at openings where a row of `rows` (FurnitureRowCells; empty
+// for none) is a jamb, as JoinAreasAtFurnitureGaps joins them at islands,
+// also at a cut that ag-cut closed (`closed`): it took the row's end for a
+// wall's, and the aisle beside it for a door.
 void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& model,
-                              const proto::CleanedMap& map, double min_elongation,
-                              std::vector<bool> closed, AreaPlan* plan);
+                              const cv::Mat& rows, std::vector<bool> closed, AreaPlan* plan);
 
 }  // namespace areagraph

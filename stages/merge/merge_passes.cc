@@ -62,8 +62,7 @@ std::vector<MergePass> MakeTable() {
       "island is, only too long for one",
       nullptr,
       [](const MergeInput& in, const PlanModel& model, AreaPlan* plan) {
-        JoinAreasAtFurnitureRows(in.graph, model, in.map,
-                                 in.options.furniture_gaps().max_elongation(), in.closed, plan);
+        JoinAreasAtFurnitureRows(in.graph, model, in.furniture_rows, in.closed, plan);
       },
       nullptr,
   });
