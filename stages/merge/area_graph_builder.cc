@@ -14,6 +14,7 @@
 #include "stages/merge/area_assignment.h"
 #include "stages/merge/area_graph_geometry.h"
 #include "stages/merge/area_kinds.h"
+#include "stages/merge/furniture_rows.h"
 #include "stages/merge/merge_passes.h"
 #include "stages/merge/small_area_folding.h"
 #include "stages/merge/vertex_openings.h"
@@ -107,8 +108,13 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
   AreaPlan plan = AssignAreas(graph);
-  const MergeInput input{graph, map, grid, options,
-                         ClosedVertices(graph, options.keep_closed_doors())};
+  cv::Mat rows;
+  if (RunsPass(options, proto::MergeOptions::JOIN_FURNITURE_ROWS)) {
+    rows = FurnitureRowCells(map, options.furniture_gaps().max_elongation());
+    if (cv::countNonZero(rows) == 0) rows.release();
+  }
+  const MergeInput input{
+      graph, map, grid, options, ClosedVertices(graph, options.keep_closed_doors()), rows};
   RunJoinPasses(input, &plan);
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =
@@ -122,7 +128,8 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   proto::AreaGraph out;
   out.set_format_version(kAreaGraphFormatVersion);
   *out.mutable_frame() = map.frame();
-  SetAreaKinds(graph, raster, grid.resolution_m(), &plan);
+  // Rows of seats do not make a hall a corridor.
+  SetAreaKinds(graph, raster, grid.resolution_m(), &plan, rows);
   // Without a caller for the raster, its labels (4 bytes a cell) go once
   // the borders are traced, before they are simplified.
   AddAreasAndPassages(graph, plan, raster, options, &out, [&] {

@@ -7,7 +7,7 @@
 namespace areagraph {
 
 void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double resolution_m,
-                  AreaPlan* plan) {
+                  AreaPlan* plan, const cv::Mat& furniture) {
   const int area_count = static_cast<int>(plan->areas.size());
   std::vector<int> exits(area_count, 0);
   for (const std::set<int>& at : AreasAtVertices(graph, *plan)) {
@@ -18,7 +18,7 @@ void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double
     AreaPlan::Area& area = plan->areas[k];
     const bool roomless = area.room_id < 0;
     const bool through = exits[k] >= 2;
-    if (through && (roomless || RasterShape(raster, k, resolution_m).corridor)) {
+    if (through && (roomless || RasterShape(raster, k, resolution_m, furniture).corridor)) {
       area.kind = proto::AREA_CORRIDOR;
     } else if (roomless) {
       area.kind = proto::AREA_DEAD_END;

@@ -14,8 +14,9 @@ namespace areagraph {
 //   in it: a piece of the corridors between junctions, narrower than W);
 // - a dead end has no room and one exit at most;
 // - everything else is a room (a long room with one door too).
-// Each area's `kind` is set; `room_id` and the edges stay.
+// Each area's `kind` is set; `room_id` and the edges stay. `furniture`
+// (optional) is RasterShape's.
 void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double resolution_m,
-                  AreaPlan* plan);
+                  AreaPlan* plan, const cv::Mat& furniture = cv::Mat());
 
 }  // namespace areagraph

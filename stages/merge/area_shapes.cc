@@ -1,6 +1,7 @@
 #include "stages/merge/area_shapes.h"
 
 #include <algorithm>
+#include <opencv2/imgproc.hpp>
 
 #include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/distance_transform.h"
@@ -70,10 +71,32 @@ std::vector<AreaShape> MeasureAreaShapes(const proto::CutGraph& graph, const Are
   return shapes;
 }
 
-AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m) {
+AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m,
+                      const cv::Mat& furniture) {
   AreaShape shape;
   if (k >= static_cast<int>(raster.boxes.size()) || raster.boxes[k].area() == 0) return shape;
   cv::Mat mask = LabelMaskInBox(raster.labels, k + 1, raster.boxes[k]);
+  if (!furniture.empty() && cv::countNonZero(furniture(raster.boxes[k])) > 0) {
+    // The mask has a free border of one cell around the box. Only the
+    // furniture that touches the area joins it: the box may hold rows of a
+    // hall next door.
+    const cv::Rect box = raster.boxes[k];
+    const cv::Mat own = mask.clone();
+    mask(cv::Rect(1, 1, box.width, box.height)).setTo(255, furniture(box) != 0);
+    cv::Mat pieces;
+    const int count = cv::connectedComponents(mask, pieces, 8, CV_32S);
+    std::vector<bool> touches(count, false);
+    for (int r = 0; r < own.rows; ++r) {
+      for (int c = 0; c < own.cols; ++c) {
+        if (own.at<uint8_t>(r, c) != 0) touches[pieces.at<int>(r, c)] = true;
+      }
+    }
+    for (int r = 0; r < mask.rows; ++r) {
+      for (int c = 0; c < mask.cols; ++c) {
+        if (!touches[pieces.at<int>(r, c)]) mask.at<uint8_t>(r, c) = 0;
+      }
+    }
+  }
   FillEnclosedPockets(kMaxFurnitureIslandM / resolution_m, &mask);
   const cv::Mat depth = ExactDistanceTransform(mask);
   std::vector<double> widths;

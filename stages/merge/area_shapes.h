@@ -49,6 +49,10 @@ std::vector<AreaShape> MeasureAreaShapes(const proto::CutGraph& graph, const Are
 // that desks and pillars do not narrow it while the block of rooms inside a
 // corridor loop stays out; the width profile is twice the distance to its
 // outline along its ridge (the cells at least as deep as their neighbours).
-AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m);
+// Cells where `furniture` (CV_8U, map size, optional) is non-zero count as
+// the area's too within its box: rows of seats (FurnitureRowCells) are
+// longer than an island, and the strips between them no corridor.
+AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m,
+                      const cv::Mat& furniture = cv::Mat());
 
 }  // namespace areagraph

@@ -8,6 +8,7 @@
 #include "stages/merge/corridor_piece_folding.h"
 #include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/furniture_gap_joining.h"
+#include "stages/merge/furniture_rows.h"
 #include "stages/merge/porous_border_joining.h"
 #include "stages/merge/room_joining.h"
 #include "stages/merge/split_corridor_joining.h"
@@ -52,6 +53,16 @@ std::vector<MergePass> MakeTable() {
           return FurnitureIslandsAt(in.map, kMaxFurnitureIslandM, options.max_elongation(), cells);
         };
         JoinAreasAtFurnitureGaps(in.graph, model, in.closed, islands_at, plan);
+      },
+      nullptr,
+  });
+  table.push_back({
+      Options::JOIN_FURNITURE_ROWS,
+      "with the furniture gaps, and with their limits: a stack of rows is furniture as an "
+      "island is, only too long for one",
+      nullptr,
+      [](const MergeInput& in, const PlanModel& model, AreaPlan* plan) {
+        JoinAreasAtFurnitureRows(in.graph, model, in.furniture_rows, in.closed, plan);
       },
       nullptr,
   });

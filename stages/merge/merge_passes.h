@@ -3,6 +3,7 @@
 #include <google/protobuf/message.h>
 
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct MergeInput {
   // keeps the areas apart (ClosedVertices); all false without that option.
   // Set once, here, for every pass.
   std::vector<bool> closed;
+  // The cells of furniture rows (FurnitureRowCells) where JOIN_FURNITURE_ROWS
+  // runs and finds any, else empty: that pass and the areas' kinds read them.
+  cv::Mat furniture_rows;
 };
 
 // One row of the merge's pass table: a rule beyond the paper that changes

@@ -125,6 +125,16 @@ MergePassCase ClosetBehindADoor() {
           /*joined=*/false};
 }
 
+// Six rows of seats, each too long and thin for a furniture island: without
+// the pass the strips between them are areas of their own.
+MergePassCase LectureHall() {
+  return {"a lecture hall's rows of seats do not cut it into strips",
+          HallWithSeatRows(6),
+          {},
+          {7, 2.5},
+          {{7, kFirstSeatRowY + 2 * kSeatRowPitch + 0.8}}};
+}
+
 }  // namespace
 
 std::optional<MergePassCase> CaseOfMergePass(proto::MergeOptions::Pass pass) {
@@ -135,6 +145,8 @@ std::optional<MergePassCase> CaseOfMergePass(proto::MergeOptions::Pass pass) {
       return RoomNarrowedByStubs();
     case Options::JOIN_FURNITURE_GAPS:
       return CabinetAcrossARoom();
+    case Options::JOIN_FURNITURE_ROWS:
+      return LectureHall();
     case Options::FOLD_OPEN_BAYS:
       return OpenBay();
     case Options::FOLD_CORRIDOR_PIECES:
@@ -216,6 +228,27 @@ FloorPlan RoomAndCloset(bool far_wall_unknown) {
     const cv::Rect inner = floorplan::InnerCells(plan, {6.5, 0.5, 1.2, 1.5});
     plan.image()(cv::Rect(inner.br().x, inner.y, plan.wall_thickness_px(), inner.height))
         .setTo(floorplan::kUnknownGrey);
+  }
+  return plan;
+}
+
+FloorPlan HallWithSeatRows(int rows) {
+  constexpr RectM kHall{1, 1, 12, 12};
+  constexpr RectM kOffice{13, 1, 4, 4};
+  constexpr RectM kCorridor{1, 13, 16, 2};
+  constexpr double kAisle = 1.2, kSeatDepth = 0.5;
+  FloorPlan plan(18, 16);
+  DrawRoom(plan, kHall);
+  DrawRoom(plan, kOffice);
+  DrawRoom(plan, kCorridor);
+  DrawDoor(plan, 6, kCorridor.y, 1.2, WallDirection::kHorizontal);
+  DrawDoor(plan, 14, kCorridor.y, 0.9, WallDirection::kHorizontal);
+  // A way through the hall into the office: the hall has two exits, as a
+  // corridor has.
+  DrawDoor(plan, kOffice.x, 2, 0.9, WallDirection::kVertical);
+  for (int k = 0; k < rows; ++k) {
+    DrawFurniture(plan, {kHall.x + kAisle, kFirstSeatRowY + k * kSeatRowPitch,
+                         kHall.width - 2 * kAisle, kSeatDepth});
   }
   return plan;
 }

@@ -71,4 +71,13 @@ floorplan::FloorPlan CorridorWithStem();
 // `far_wall_unknown` the closet's far wall was never seen: unknown cells.
 floorplan::FloorPlan RoomAndCloset(bool far_wall_unknown = false);
 
+// A 12 x 12 m lecture hall {1, 1, 12, 12} above a 2 m corridor {1, 13, 16, 2},
+// joined by a 1.2 m door; a 4 x 4 m office {13, 1, 4, 4} beside the hall with
+// 0.9 m doors to both. `rows` rows of seats 0.5 m deep and 9.6 m long stand
+// 1.1 m apart from y = 4 m on (kFirstSeatRowY, kSeatRowPitch), with 1.2 m side
+// aisles.
+floorplan::FloorPlan HallWithSeatRows(int rows);
+inline constexpr double kFirstSeatRowY = 4;
+inline constexpr double kSeatRowPitch = 1.1;
+
 }  // namespace areagraph::testing
