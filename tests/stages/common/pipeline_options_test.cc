@@ -109,6 +109,23 @@ TEST(PipelineOptionsTest, BadFileNamesLine) {
   EXPECT_THROW(ReadOptionsFile(dir.File("missing.pbtxt")), InputError);
 }
 
+// The text parser would skip a reserved name silently; a removed option is
+// refused by name instead; a comment that names it is no use of it.
+TEST(PipelineOptionsTest, RemovedOptionIsRefusedByName) {
+  TempDir dir;
+  WriteFile(dir.File("old.pbtxt"), "merge { keep_closed_doors: false }\n");
+  try {
+    ReadOptionsFile(dir.File("old.pbtxt"));
+    FAIL() << "expected OptionsError";
+  } catch (const OptionsError& e) {
+    EXPECT_NE(std::string(e.what()).find("'merge.keep_closed_doors' was removed"),
+              std::string::npos)
+        << e.what();
+  }
+  WriteFile(dir.File("comment.pbtxt"), "# keep_closed_doors: false\nmerge { min_area_m2: 1 }\n");
+  EXPECT_DOUBLE_EQ(ReadOptionsFile(dir.File("comment.pbtxt")).merge().min_area_m2(), 1);
+}
+
 // The fields of `message` (and of its messages) that it does not set.
 void CollectUnsetFields(const google::protobuf::Message& message, const std::string& prefix,
                         std::vector<std::string>* unset) {
@@ -208,8 +225,9 @@ TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
   }
   for (const char* no : {"false", "FALSE", "fAlSe", "0"}) {
     proto::PipelineOptions options;
-    ApplyOverride(std::string("merge.keep_closed_doors=") + no, &options);
-    EXPECT_FALSE(options.merge().keep_closed_doors()) << no;
+    ApplyOverride(std::string("cut.room_width_open_doors=") + no, &options);
+    EXPECT_TRUE(options.cut().has_room_width_open_doors()) << no;
+    EXPECT_FALSE(options.cut().room_width_open_doors()) << no;
   }
   for (const char* unclear : {"t", "f", "yes", "2", "", "true "}) {
     proto::PipelineOptions options;
