@@ -83,8 +83,8 @@ size_t Rooms(const AreaPlan& plan) { return plan.area_of_edge[0] == plan.area_of
 size_t RoomsAfterJoining(const proto::CutGraph& graph) {
   AreaPlan plan = AssignAreas(graph);
   EXPECT_EQ(Rooms(plan), 2u);
-  JoinRoomsWithoutDoors(graph, MeasurePlan(graph, plan, kResolutionM),
-                        ClosedVertices(graph), &plan);
+  JoinRoomsWithoutDoors(graph, MeasurePlan(graph, plan, kResolutionM), ClosedVertices(graph),
+                        &plan);
   return Rooms(plan);
 }
 
@@ -111,8 +111,8 @@ TEST(ClosedDoorsTest, FurnitureGapJoiningKeepsRoomsApartAtAClosedCut) {
   auto rooms = [&](bool closed) {
     const proto::CutGraph graph = TwoRooms(20, closed);
     AreaPlan plan = AssignAreas(graph);
-    JoinAreasAtFurnitureGaps(graph, MeasurePlan(graph, plan, kResolutionM),
-                             ClosedVertices(graph), islands, &plan);
+    JoinAreasAtFurnitureGaps(graph, MeasurePlan(graph, plan, kResolutionM), ClosedVertices(graph),
+                             islands, &plan);
     return Rooms(plan);
   };
   EXPECT_EQ(rooms(false), 1u);
