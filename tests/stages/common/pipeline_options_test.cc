@@ -56,7 +56,7 @@ TEST(PipelineOptionsTest, WrongTypeIsAnError) {
     EXPECT_NE(std::string(e.what()).find("expects a double"), std::string::npos) << e.what();
   }
   EXPECT_THROW(ApplyOverride("clean.outlier_neighbors=1.5", &options), OptionsError);
-  EXPECT_THROW(ApplyOverride("voronoi.keep_rays=maybe", &options), OptionsError);
+  EXPECT_THROW(ApplyOverride("cut.room_width_open_doors=maybe", &options), OptionsError);
   EXPECT_FALSE(options.clean().has_outlier_neighbors());
 }
 
@@ -219,9 +219,9 @@ TEST(PipelineOptionsTest, NumbersAtTheirBoundsAreAccepted) {
 TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
   for (const char* yes : {"true", "TRUE", "True", "1"}) {
     proto::PipelineOptions options;
-    ApplyOverride(std::string("voronoi.keep_rays=") + yes, &options);
-    EXPECT_TRUE(options.voronoi().has_keep_rays()) << yes;
-    EXPECT_TRUE(options.voronoi().keep_rays()) << yes;
+    ApplyOverride(std::string("merge.cover_removed_obstacles=") + yes, &options);
+    EXPECT_TRUE(options.merge().has_cover_removed_obstacles()) << yes;
+    EXPECT_TRUE(options.merge().cover_removed_obstacles()) << yes;
   }
   for (const char* no : {"false", "FALSE", "fAlSe", "0"}) {
     proto::PipelineOptions options;
@@ -231,9 +231,10 @@ TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
   }
   for (const char* unclear : {"t", "f", "yes", "2", "", "true "}) {
     proto::PipelineOptions options;
-    EXPECT_EQ(testing::ErrorOf<OptionsError>(
-                  [&] { ApplyOverride(std::string("voronoi.keep_rays=") + unclear, &options); }),
-              "option 'voronoi.keep_rays' expects true or false (or 1 or 0), got '" +
+    EXPECT_EQ(testing::ErrorOf<OptionsError>([&] {
+                ApplyOverride(std::string("cut.room_width_open_doors=") + unclear, &options);
+              }),
+              "option 'cut.room_width_open_doors' expects true or false (or 1 or 0), got '" +
                   std::string(unclear) + "'");
   }
 }
