@@ -113,8 +113,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
     rows = FurnitureRowCells(map, options.furniture_gaps().max_elongation());
     if (cv::countNonZero(rows) == 0) rows.release();
   }
-  const MergeInput input{
-      graph, map, grid, options, ClosedVertices(graph, options.keep_closed_doors()), rows};
+  const MergeInput input{graph, map, grid, options, ClosedVertices(graph), rows};
   RunJoinPasses(input, &plan);
   AreaRaster raster = PartitionedFreeSpace(graph, map, grid, plan, options);
   const int64_t min_cells =

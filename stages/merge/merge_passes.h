@@ -23,8 +23,8 @@ struct MergeInput {
   const CellGrid& grid;
   const proto::MergeOptions& options;
   // Per graph vertex: a cut that ag-cut made on a door or wall gap it closed
-  // on purpose (PassagePoint.closed_by_cut), where merge.keep_closed_doors
-  // keeps the areas apart (ClosedVertices); all false without that option.
+  // on purpose (PassagePoint.closed_by_cut), where no pass joins the areas
+  // (ClosedVertices).
   // Set once, here, for every pass.
   std::vector<bool> closed;
   // The cells of furniture rows (FurnitureRowCells) where JOIN_FURNITURE_ROWS

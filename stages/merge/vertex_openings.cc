@@ -23,9 +23,8 @@ std::vector<std::map<int, VertexOpening>> OpeningsAtVertices(const proto::CutGra
   return openings;
 }
 
-std::vector<bool> ClosedVertices(const proto::CutGraph& graph, bool keep_closed_doors) {
+std::vector<bool> ClosedVertices(const proto::CutGraph& graph) {
   std::vector<bool> closed(graph.vertices_size(), false);
-  if (!keep_closed_doors) return closed;
   for (const proto::PassagePoint& passage : graph.passage_points()) {
     if (passage.closed_by_cut() && passage.vertex() >= 0 &&
         passage.vertex() < graph.vertices_size()) {

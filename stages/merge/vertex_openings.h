@@ -35,8 +35,7 @@ std::vector<std::map<int, VertexOpening>> OpeningsAtVertices(const proto::CutGra
                                                              const AreaPlan& plan);
 
 // Per graph vertex, whether ag-cut made it on a door or wall gap it closed
-// on purpose (PassagePoint.closed_by_cut); all false unless
-// `keep_closed_doors` (merge.keep_closed_doors).
-std::vector<bool> ClosedVertices(const proto::CutGraph& graph, bool keep_closed_doors);
+// on purpose (PassagePoint.closed_by_cut): no merge pass joins areas there.
+std::vector<bool> ClosedVertices(const proto::CutGraph& graph);
 
 }  // namespace areagraph

@@ -12,7 +12,7 @@
 namespace areagraph {
 
 proto::VoronoiDiagram ComputeVoronoiStage(const proto::CleanedMap& map,
-                                          const proto::VoronoiOptions& options) {
+                                          const proto::VoronoiOptions& /*options: none today*/) {
   const int width = map.frame().width_px();
   const int height = map.frame().height_px();
   CheckCellStates(map.cells(), width, height);
@@ -23,10 +23,8 @@ proto::VoronoiDiagram ComputeVoronoiStage(const proto::CleanedMap& map,
   std::vector<Eigen::Vector2d> sites = ObstacleSites(map.cells(), width, height);
   if (sites.empty()) throw InputError("the map has no obstacle cells next to free space");
 
-  VoronoiBuildOptions build_options;
-  build_options.keep_rays = options.keep_rays();
   SiteTriangulationPtr triangulation;
-  proto::VoronoiDiagram diagram = BuildVoronoiDiagram(sites, build_options, &triangulation);
+  proto::VoronoiDiagram diagram = BuildVoronoiDiagram(sites, {}, &triangulation);
   if (VoronoiVertexCount(diagram) == 0) {
     throw InputError("the map has too few obstacle cells for a Voronoi diagram (" +
                      std::to_string(sites.size()) + ", all on one line)");

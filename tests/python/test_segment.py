@@ -51,16 +51,16 @@ class SegmentTest(TempDirTest):
         self.assertEqual(len(graph.passages), len(expected["links"]))
 
     def test_overrides_act_as_ag_run_set(self):
-        expected = exported_json(self.ag_run("cut.room_width_m=2.5", "merge.keep_closed_doors=false"),
+        expected = exported_json(self.ag_run("cut.room_width_m=2.5", "merge.cover_removed_obstacles=true"),
                                  "office_small")
         default = exported_json(self.ag_run(), "office_small")
         self.assertNotEqual(expected["nodes"], default["nodes"], "the options change nothing")
         for graph in (
-                areagraph.segment(OFFICE, cut__room_width_m=2.5, merge__keep_closed_doors=False),
+                areagraph.segment(OFFICE, cut__room_width_m=2.5, merge__cover_removed_obstacles=True),
                 areagraph.segment(OFFICE, **{"cut.room_width_m": "2.5",
-                                             "merge.keep_closed_doors": "false"}),
+                                             "merge.cover_removed_obstacles": "true"}),
                 areagraph.segment(OFFICE, options={"cut.room_width_m": 2.5,
-                                                   "merge.keep_closed_doors": False})):
+                                                   "merge.cover_removed_obstacles": True})):
             self.assertEqual(json.loads(graph._handle.node_link_json())["nodes"],
                              expected["nodes"])
 

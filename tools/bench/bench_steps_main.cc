@@ -65,9 +65,7 @@ std::vector<double> TimeSteps(const std::string& path, const proto::PipelineOpti
     std::vector<Eigen::Vector2d> sites;
     samples[kSites].push_back(
         ElapsedMs([&] { sites = ObstacleSites(cleaned.cells(), width, height); }));
-    VoronoiBuildOptions build_options;
-    build_options.keep_rays = options.voronoi().keep_rays();
-    samples[kDiagram].push_back(ElapsedMs([&] { BuildVoronoiDiagram(sites, build_options); }));
+    samples[kDiagram].push_back(ElapsedMs([&] { BuildVoronoiDiagram(sites); }));
     proto::VoronoiDiagram diagram;
     samples[kVoronoi].push_back(
         ElapsedMs([&] { diagram = ComputeVoronoiStage(cleaned, options.voronoi()); }));

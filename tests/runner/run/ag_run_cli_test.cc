@@ -305,10 +305,12 @@ TEST(AgRunInputTest, EmptyCollectionsAreErrorsAndNothingIsCreated) {
 TEST(AgRunInputTest, ByteOrderMarkAndCapitalBooleansAreRead) {
   TempDir dir;
   WriteRandomMaps(dir.path(), 1, /*first_seed=*/5);
-  WriteFile(dir.File("maps.csv"), "\xEF\xBB\xBFpath,merge.keep_closed_doors\nmap_5.png,FALSE\n");
+  WriteFile(dir.File("maps.csv"), "\xEF\xBB\xBFpath,cut.room_width_open_doors\nmap_5.png,FALSE\n");
   CommandResult run;
-  const proto::RunSummary summary = RunJson(
-      {"--store", dir.File("s.db"), "--set", "voronoi.keep_rays=TRUE", dir.File("maps.csv")}, &run);
+  const proto::RunSummary summary =
+      RunJson({"--store", dir.File("s.db"), "--set", "merge.cover_removed_obstacles=TRUE",
+               dir.File("maps.csv")},
+              &run);
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_EQ(summary.succeeded(), 1);
 }

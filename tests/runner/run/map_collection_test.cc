@@ -151,7 +151,7 @@ TEST(MapCollectionTest, DirectoryWithoutImagesIsRefusedEvenBesideOthers) {
 TEST(MapCollectionTest, ManifestNumbersThatAreNotFiniteOrAbsurdNameTheRow) {
   TempDir dir;
   WriteFile(dir.File("list.csv"),
-            "path,name,cut.room_width_m,voronoi.keep_rays\n"
+            "path,name,cut.room_width_m,cut.room_width_open_doors\n"
             "a.png,a,nan,true\nb.png,b,1e308,TRUE\nc.png,c,1.2,T\n");
   const std::vector<MapEntry> maps = CollectMaps({dir.File("list.csv")});
   ASSERT_EQ(maps.size(), 3u);

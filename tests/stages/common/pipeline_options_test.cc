@@ -56,7 +56,7 @@ TEST(PipelineOptionsTest, WrongTypeIsAnError) {
     EXPECT_NE(std::string(e.what()).find("expects a double"), std::string::npos) << e.what();
   }
   EXPECT_THROW(ApplyOverride("clean.outlier_neighbors=1.5", &options), OptionsError);
-  EXPECT_THROW(ApplyOverride("voronoi.keep_rays=maybe", &options), OptionsError);
+  EXPECT_THROW(ApplyOverride("cut.room_width_open_doors=maybe", &options), OptionsError);
   EXPECT_FALSE(options.clean().has_outlier_neighbors());
 }
 
@@ -107,6 +107,23 @@ TEST(PipelineOptionsTest, BadFileNamesLine) {
     EXPECT_NE(std::string(e.what()).find("line 2"), std::string::npos) << e.what();
   }
   EXPECT_THROW(ReadOptionsFile(dir.File("missing.pbtxt")), InputError);
+}
+
+// The text parser would skip a reserved name silently; a removed option is
+// refused by name instead; a comment that names it is no use of it.
+TEST(PipelineOptionsTest, RemovedOptionIsRefusedByName) {
+  TempDir dir;
+  WriteFile(dir.File("old.pbtxt"), "merge { keep_closed_doors: false }\n");
+  try {
+    ReadOptionsFile(dir.File("old.pbtxt"));
+    FAIL() << "expected OptionsError";
+  } catch (const OptionsError& e) {
+    EXPECT_NE(std::string(e.what()).find("'merge.keep_closed_doors' was removed"),
+              std::string::npos)
+        << e.what();
+  }
+  WriteFile(dir.File("comment.pbtxt"), "# keep_closed_doors: false\nmerge { min_area_m2: 1 }\n");
+  EXPECT_DOUBLE_EQ(ReadOptionsFile(dir.File("comment.pbtxt")).merge().min_area_m2(), 1);
 }
 
 // The fields of `message` (and of its messages) that it does not set.
@@ -202,20 +219,22 @@ TEST(PipelineOptionsTest, NumbersAtTheirBoundsAreAccepted) {
 TEST(PipelineOptionsTest, BooleansTakeTrueAndFalseInAnyCaseAndOneAndZero) {
   for (const char* yes : {"true", "TRUE", "True", "1"}) {
     proto::PipelineOptions options;
-    ApplyOverride(std::string("voronoi.keep_rays=") + yes, &options);
-    EXPECT_TRUE(options.voronoi().has_keep_rays()) << yes;
-    EXPECT_TRUE(options.voronoi().keep_rays()) << yes;
+    ApplyOverride(std::string("merge.cover_removed_obstacles=") + yes, &options);
+    EXPECT_TRUE(options.merge().has_cover_removed_obstacles()) << yes;
+    EXPECT_TRUE(options.merge().cover_removed_obstacles()) << yes;
   }
   for (const char* no : {"false", "FALSE", "fAlSe", "0"}) {
     proto::PipelineOptions options;
-    ApplyOverride(std::string("merge.keep_closed_doors=") + no, &options);
-    EXPECT_FALSE(options.merge().keep_closed_doors()) << no;
+    ApplyOverride(std::string("cut.room_width_open_doors=") + no, &options);
+    EXPECT_TRUE(options.cut().has_room_width_open_doors()) << no;
+    EXPECT_FALSE(options.cut().room_width_open_doors()) << no;
   }
   for (const char* unclear : {"t", "f", "yes", "2", "", "true "}) {
     proto::PipelineOptions options;
-    EXPECT_EQ(testing::ErrorOf<OptionsError>(
-                  [&] { ApplyOverride(std::string("voronoi.keep_rays=") + unclear, &options); }),
-              "option 'voronoi.keep_rays' expects true or false (or 1 or 0), got '" +
+    EXPECT_EQ(testing::ErrorOf<OptionsError>([&] {
+                ApplyOverride(std::string("cut.room_width_open_doors=") + unclear, &options);
+              }),
+              "option 'cut.room_width_open_doors' expects true or false (or 1 or 0), got '" +
                   std::string(unclear) + "'");
   }
 }

@@ -1,4 +1,4 @@
-// merge.keep_closed_doors on hand-made cut graphs: two rooms that room
+// Closed doors (ClosedVertices) on hand-made cut graphs: two rooms that room
 // joining (or furniture-gap joining) would join stay apart where ag-cut
 // marked the cut between them closed, unless both are shaped like corridors.
 #include <gtest/gtest.h>
@@ -80,46 +80,43 @@ proto::CutGraph TwoRooms(double room_length, bool closed) {
 // 1 when the two rooms (edges 0 and 1) are one area, else 2.
 size_t Rooms(const AreaPlan& plan) { return plan.area_of_edge[0] == plan.area_of_edge[1] ? 1 : 2; }
 
-size_t RoomsAfterJoining(const proto::CutGraph& graph, bool keep_closed_doors) {
+size_t RoomsAfterJoining(const proto::CutGraph& graph) {
   AreaPlan plan = AssignAreas(graph);
   EXPECT_EQ(Rooms(plan), 2u);
-  JoinRoomsWithoutDoors(graph, MeasurePlan(graph, plan, kResolutionM),
-                        ClosedVertices(graph, keep_closed_doors), &plan);
+  JoinRoomsWithoutDoors(graph, MeasurePlan(graph, plan, kResolutionM), ClosedVertices(graph),
+                        &plan);
   return Rooms(plan);
 }
 
 TEST(ClosedDoorsTest, RoomJoiningJoinsRoomsAtAnOpenCut) {
-  EXPECT_EQ(RoomsAfterJoining(TwoRooms(20, false), true), 1u);
+  EXPECT_EQ(RoomsAfterJoining(TwoRooms(20, false)), 1u);
 }
 
 TEST(ClosedDoorsTest, RoomJoiningKeepsRoomsApartAtAClosedCut) {
-  EXPECT_EQ(RoomsAfterJoining(TwoRooms(20, true), true), 2u);
-  // With the option off, the mark is ignored.
-  EXPECT_EQ(RoomsAfterJoining(TwoRooms(20, true), false), 1u);
+  EXPECT_EQ(RoomsAfterJoining(TwoRooms(20, true)), 2u);
 }
 
 TEST(ClosedDoorsTest, TwoCorridorShapedRoomsJoinAtAClosedCut) {
   // 130 x 20 px (6.5 x 1 m): more than kCorridorElongation squares of the
   // 20 px width, and each meets others at two places: corridors.
-  EXPECT_EQ(RoomsAfterJoining(TwoRooms(130, true), true), 1u);
+  EXPECT_EQ(RoomsAfterJoining(TwoRooms(130, true)), 1u);
   // 60 x 20 px is three squares: rooms, kept apart.
-  EXPECT_EQ(RoomsAfterJoining(TwoRooms(60, true), true), 2u);
+  EXPECT_EQ(RoomsAfterJoining(TwoRooms(60, true)), 2u);
 }
 
 TEST(ClosedDoorsTest, FurnitureGapJoiningKeepsRoomsApartAtAClosedCut) {
   // An island under the opening's left jamb (20, 10).
   cv::Mat islands = cv::Mat::zeros(40, 40, CV_8U);
   islands.at<uint8_t>(10, 20) = 1;
-  auto rooms = [&](bool closed, bool keep) {
+  auto rooms = [&](bool closed) {
     const proto::CutGraph graph = TwoRooms(20, closed);
     AreaPlan plan = AssignAreas(graph);
-    JoinAreasAtFurnitureGaps(graph, MeasurePlan(graph, plan, kResolutionM),
-                             ClosedVertices(graph, keep), islands, &plan);
+    JoinAreasAtFurnitureGaps(graph, MeasurePlan(graph, plan, kResolutionM), ClosedVertices(graph),
+                             islands, &plan);
     return Rooms(plan);
   };
-  EXPECT_EQ(rooms(false, true), 1u);
-  EXPECT_EQ(rooms(true, true), 2u);
-  EXPECT_EQ(rooms(true, false), 1u);
+  EXPECT_EQ(rooms(false), 1u);
+  EXPECT_EQ(rooms(true), 2u);
 }
 
 }  // namespace

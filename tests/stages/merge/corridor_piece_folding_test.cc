@@ -79,7 +79,7 @@ TEST(CorridorPieceFoldingTest, SmallRoomOpenAtBothEndsFoldsIntoTheCorridor) {
   // 60 x 40 px = 3 x 2 m, openings as wide as the room (40 px).
   Line line = CorridorWithRoom(60, 40, 40);
   FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
-                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
+                     ClosedVertices(line.graph), kMaxM2, &line.plan);
   ExpectPlan(line.plan, {{AREA_DEAD_END, -1, {0, 1}}, {AREA_DEAD_END, -1, {2}}}, {0, 0, 1});
 }
 
@@ -89,7 +89,7 @@ TEST(CorridorPieceFoldingTest, RoomBehindADoorStays) {
   Line line = CorridorWithRoom(60, 40, 18);
   const AreaPlan before = line.plan;
   FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
-                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
+                     ClosedVertices(line.graph), kMaxM2, &line.plan);
   ExpectPlan(line.plan, {{AREA_DEAD_END, -1, {0}}, {AREA_ROOM, 7, {1}}, {AREA_DEAD_END, -1, {2}}},
              before.area_of_edge);
 }
@@ -98,21 +98,21 @@ TEST(CorridorPieceFoldingTest, RoomAboveTheLimitStays) {
   // 300 x 40 px = 15 x 2 m = 30 m2, over 20 m2; folds under a 40 m2 limit.
   Line line = CorridorWithRoom(300, 40, 40);
   FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
-                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
+                     ClosedVertices(line.graph), kMaxM2, &line.plan);
   EXPECT_EQ(line.plan.areas.size(), 3u);
   FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
-                     ClosedVertices(line.graph, true), 40, &line.plan);
+                     ClosedVertices(line.graph), 40, &line.plan);
   EXPECT_EQ(line.plan.areas.size(), 2u);
 }
 
-TEST(CorridorPieceFoldingTest, ClosedCutCountsAsADoorWithKeepClosedDoors) {
+TEST(CorridorPieceFoldingTest, ClosedCutCountsAsADoor) {
   Line kept = CorridorWithRoom(60, 40, 40, /*closed_left=*/true);
   FoldCorridorPieces(kept.graph, MeasurePlan(kept.graph, kept.plan, kResolutionM),
-                     ClosedVertices(kept.graph, true), kMaxM2, &kept.plan);
+                     ClosedVertices(kept.graph), kMaxM2, &kept.plan);
   EXPECT_EQ(kept.plan.areas.size(), 3u);
-  Line folded = CorridorWithRoom(60, 40, 40, /*closed_left=*/true);
+  Line folded = CorridorWithRoom(60, 40, 40, /*closed_left=*/false);
   FoldCorridorPieces(folded.graph, MeasurePlan(folded.graph, folded.plan, kResolutionM),
-                     ClosedVertices(folded.graph, false), kMaxM2, &folded.plan);
+                     ClosedVertices(folded.graph), kMaxM2, &folded.plan);
   EXPECT_EQ(folded.plan.areas.size(), 2u);
 }
 
@@ -124,7 +124,7 @@ TEST(CorridorPieceFoldingTest, SmallRoomBetweenTwoRoomsStays) {
   line.graph.mutable_edges(2)->set_room_id(6);
   line.plan.areas = {{AREA_ROOM, 5, {0}}, {AREA_ROOM, 7, {1}}, {AREA_ROOM, 6, {2}}};
   FoldCorridorPieces(line.graph, MeasurePlan(line.graph, line.plan, kResolutionM),
-                     ClosedVertices(line.graph, true), kMaxM2, &line.plan);
+                     ClosedVertices(line.graph), kMaxM2, &line.plan);
   EXPECT_EQ(line.plan.areas.size(), 3u);
 }
 

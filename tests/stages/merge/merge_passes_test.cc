@@ -61,7 +61,7 @@ TEST(MergePassTableTest, OptionsOfAPassAreItsOwnMessage) {
 
 // Four passage vertices; passage points on three of them (two marked
 // closed_by_cut) and on a vertex that does not exist.
-TEST(ClosedVerticesTest, OnlyTheMarkedCutsWithTheOption) {
+TEST(ClosedVerticesTest, OnlyTheMarkedCuts) {
   proto::CutGraph graph;
   for (int k = 0; k < 4; ++k) AddVertex(&graph, VERTEX_PASSAGE, 10, 100 * k, 0);
   for (const auto& [vertex, closed] : {std::pair{1, true}, {2, false}, {3, true}, {9, true}}) {
@@ -69,8 +69,7 @@ TEST(ClosedVerticesTest, OnlyTheMarkedCutsWithTheOption) {
     passage->set_vertex(vertex);  // 9: no such vertex, ignored
     passage->set_closed_by_cut(closed);
   }
-  EXPECT_EQ(ClosedVertices(graph, true), (std::vector<bool>{false, true, false, true}));
-  EXPECT_EQ(ClosedVertices(graph, false), (std::vector<bool>(4, false)));
+  EXPECT_EQ(ClosedVertices(graph), (std::vector<bool>{false, true, false, true}));
 }
 
 // A room 200 x 120 px (two edges in room 0, meeting at the vertex 1) with a
@@ -135,14 +134,14 @@ TEST(JoinSplitCorridorsTest, TwoPiecesOfOneCorridorJoin) {
   const proto::CutGraph graph = SplitCorridor(false);
   AreaPlan plan = AssignAreas(graph);
   ASSERT_EQ(plan.areas.size(), 2u);
-  JoinSplitCorridors(graph, kResolutionM, ClosedVertices(graph, true), &plan);
+  JoinSplitCorridors(graph, kResolutionM, ClosedVertices(graph), &plan);
   ExpectPlan(plan, {{AREA_ROOM, 0, {0, 1}}}, {0, 0});
 }
 
 TEST(JoinSplitCorridorsTest, PiecesStayApartAtAClosedCutOrANarrowing) {
   const proto::CutGraph closed = SplitCorridor(true);
   AreaPlan plan = AssignAreas(closed);
-  JoinSplitCorridors(closed, kResolutionM, ClosedVertices(closed, true), &plan);
+  JoinSplitCorridors(closed, kResolutionM, ClosedVertices(closed), &plan);
   EXPECT_EQ(plan.areas.size(), 2u);
   // A door 20 px wide between the two: a room behind a door in line.
   proto::CutGraph door = SplitCorridor(false);
@@ -154,7 +153,7 @@ TEST(JoinSplitCorridorsTest, PiecesStayApartAtAClosedCutOrANarrowing) {
     right->set_y(-10);
   }
   AreaPlan door_plan = AssignAreas(door);
-  JoinSplitCorridors(door, kResolutionM, ClosedVertices(door, true), &door_plan);
+  JoinSplitCorridors(door, kResolutionM, ClosedVertices(door), &door_plan);
   EXPECT_EQ(door_plan.areas.size(), 2u);
 }
 
@@ -183,14 +182,14 @@ CorridorAndStem StemOf(double mouth) {
 TEST(JoinCorridorStemsTest, ABranchThatDoesNotNarrowJoinsItsCorridor) {
   CorridorAndStem stem = StemOf(20);
   JoinCorridorStems(stem.graph, MeasurePlan(stem.graph, stem.plan, kResolutionM),
-                    ClosedVertices(stem.graph, true), &stem.plan);
+                    ClosedVertices(stem.graph), &stem.plan);
   ExpectPlan(stem.plan, {{AREA_CORRIDOR, -1, {0, 1, 2}}}, {0, 0, 0});
 }
 
 TEST(JoinCorridorStemsTest, AClosetBehindANarrowerDoorStaysApart) {
   CorridorAndStem closet = StemOf(12);
   JoinCorridorStems(closet.graph, MeasurePlan(closet.graph, closet.plan, kResolutionM),
-                    ClosedVertices(closet.graph, true), &closet.plan);
+                    ClosedVertices(closet.graph), &closet.plan);
   EXPECT_EQ(closet.plan.areas.size(), 2u);
 }
 

@@ -60,7 +60,7 @@ TEST(PorousBorderJoiningTest, ThreeOpeningsOneTooNarrowForADoorJoin) {
   // 0.4 m between two shelves, and two 1 m gaps.
   TwoRooms rooms = RoomsMeetingAt({8, 20, 20});
   JoinAtPorousBorders(rooms.graph, MeasurePlan(rooms.graph, rooms.plan, kResolutionM),
-                      ClosedVertices(rooms.graph, true), kNarrowGapPx, &rooms.plan);
+                      ClosedVertices(rooms.graph), kNarrowGapPx, &rooms.plan);
   ExpectPlan(rooms.plan, {{AREA_ROOM, 1, {0, 1, 2, 3, 4, 5}}}, {0, 0, 0, 0, 0, 0});
 }
 
@@ -68,7 +68,7 @@ TEST(PorousBorderJoiningTest, TwoOpeningsStayApart) {
   // A wall with a door and a narrow gap: no more than a wall with two doors.
   TwoRooms rooms = RoomsMeetingAt({8, 8});
   JoinAtPorousBorders(rooms.graph, MeasurePlan(rooms.graph, rooms.plan, kResolutionM),
-                      ClosedVertices(rooms.graph, true), kNarrowGapPx, &rooms.plan);
+                      ClosedVertices(rooms.graph), kNarrowGapPx, &rooms.plan);
   EXPECT_EQ(rooms.plan.areas.size(), 2u);
 }
 
@@ -76,18 +76,18 @@ TEST(PorousBorderJoiningTest, ThreeDoorWideOpeningsStayApart) {
   // A big room with three doors into its neighbour (a meeting room opening wide into an office).
   TwoRooms rooms = RoomsMeetingAt({20, 20, 21});
   JoinAtPorousBorders(rooms.graph, MeasurePlan(rooms.graph, rooms.plan, kResolutionM),
-                      ClosedVertices(rooms.graph, true), kNarrowGapPx, &rooms.plan);
+                      ClosedVertices(rooms.graph), kNarrowGapPx, &rooms.plan);
   EXPECT_EQ(rooms.plan.areas.size(), 2u);
 }
 
-TEST(PorousBorderJoiningTest, ClosedCutDoesNotCountWithKeepClosedDoors) {
+TEST(PorousBorderJoiningTest, ClosedCutDoesNotCount) {
   TwoRooms kept = RoomsMeetingAt({8, 20, 20}, {false, true, false});
   JoinAtPorousBorders(kept.graph, MeasurePlan(kept.graph, kept.plan, kResolutionM),
-                      ClosedVertices(kept.graph, true), kNarrowGapPx, &kept.plan);
+                      ClosedVertices(kept.graph), kNarrowGapPx, &kept.plan);
   EXPECT_EQ(kept.plan.areas.size(), 2u);
-  TwoRooms joined = RoomsMeetingAt({8, 20, 20}, {false, true, false});
+  TwoRooms joined = RoomsMeetingAt({8, 20, 20}, {false, false, false});
   JoinAtPorousBorders(joined.graph, MeasurePlan(joined.graph, joined.plan, kResolutionM),
-                      ClosedVertices(joined.graph, false), kNarrowGapPx, &joined.plan);
+                      ClosedVertices(joined.graph), kNarrowGapPx, &joined.plan);
   EXPECT_EQ(joined.plan.areas.size(), 1u);
 }
 

@@ -121,17 +121,6 @@ TEST(LocalDoorsTest, WithoutWallGapsTheDoorWiderThanItsCorridorStaysOpen) {
   EXPECT_EQ(found.office, found.corridor);
 }
 
-TEST(LocalDoorsTest, WithoutKeepingClosedDoorsRoomJoiningOpensTheDoorAgain) {
-  // merge's JOIN_ROOMS_WITHOUT_DOORS joins two rooms whose opening is nearly
-  // as wide as the space beside it, and this door is wider than the
-  // corridor; the cut marks it closed (merge.keep_closed_doors).
-  proto::PipelineOptions options;
-  options.mutable_merge()->set_keep_closed_doors(false);
-  const WideDoorAreas found = RunOffices(kNarrowCorridorPlan, options);
-  ASSERT_NE(found.office, -1);
-  EXPECT_EQ(found.office, found.corridor);
-}
-
 TEST(LocalDoorsTest, CorridorWiderThanWIsLabelledACorridor) {
   // The room disk (W about 1 m) fits in the 1.85 m corridor, but the
   // corridor is ten times as long as it is wide (SetAreaKinds).

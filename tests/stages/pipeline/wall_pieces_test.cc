@@ -67,7 +67,7 @@ TEST(WallPiecesTest, WithoutKeepWallPiecesFurnitureRemovalTakesItAndJoinsTheTwo)
 }
 
 // As on lab_d, where the cut closed neither door (here it would, and merge
-// joins nothing at a closed door: merge.keep_closed_doors).
+// joins nothing at a closed door: ClosedVertices).
 proto::PipelineOptions DoorsLeftOpen() {
   proto::PipelineOptions options;
   options.mutable_cut()->add_skip_passes(proto::CutOptions::CLOSE_WALL_DOORS);
