@@ -139,18 +139,23 @@ void MarkIslands(const cv::Mat& mask, const std::vector<cv::Point>& cells, doubl
 
 }  // namespace
 
-std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fill_pockets_m,
-                                        double max_elongation,
-                                        const std::vector<cv::Point>& cells) {
+cv::Mat ObstaclesBeforeCleaning(const proto::CleanedMap& map) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
-  const double resolution_m = map.frame().resolution_m();
-  // What cleaning removed is still no free space: a wall it broke stays one.
   cv::Mat obstacle = ObstacleMask(map.cells(), width, height);
   for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
     for (const int index : *list) {
       if (index >= 0 && index < width * height) obstacle.data[index] = 255;
     }
   }
+  return obstacle;
+}
+
+std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fill_pockets_m,
+                                        double max_elongation,
+                                        const std::vector<cv::Point>& cells) {
+  const int width = map.frame().width_px(), height = map.frame().height_px();
+  const double resolution_m = map.frame().resolution_m();
+  cv::Mat obstacle = ObstaclesBeforeCleaning(map);
   if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
   const double max_px = kMaxFurnitureIslandM / resolution_m;
   const cv::Rect inside(0, 0, width, height);

@@ -24,6 +24,11 @@ inline constexpr double kMaxFurnitureIslandM = 4.0;
 // cabinet fills all of it, an L of two about half to three quarters).
 inline constexpr double kMinFurnitureSolidity = 0.75;
 
+// The map's non-free cells (ObstacleMask) plus the cells that cleaning
+// removed: what cleaning removed is still no free space, so a wall it broke
+// stays one region.
+cv::Mat ObstaclesBeforeCleaning(const proto::CleanedMap& map);
+
 // Which obstacle cells belong to an island, as CV_8U the map's size (1 on
 // island cells). Cells that cleaning removed count as obstacles, so that a
 // wall it broke stays one region. Free pockets enclosed by obstacles and at

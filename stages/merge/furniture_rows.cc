@@ -56,13 +56,7 @@ bool OnRow(const cv::Mat& rows, const Eigen::Vector2d& jamb) {
 cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const double resolution_m = map.frame().resolution_m();
-  // What cleaning removed is still no free space, as for the islands.
-  cv::Mat obstacle = ObstacleMask(map.cells(), width, height);
-  for (const auto* list : {&map.removed_outlier_cells(), &map.removed_furniture_cells()}) {
-    for (const int index : *list) {
-      if (index >= 0 && index < width * height) obstacle.data[index] = 255;
-    }
-  }
+  cv::Mat obstacle = ObstaclesBeforeCleaning(map);
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
   const double max_px = kMaxFurnitureRowM / resolution_m;
