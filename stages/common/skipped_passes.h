@@ -6,7 +6,7 @@ namespace areagraph {
 
 // Whether a stage's `options` run `pass`: it is not in their skip_passes,
 // the list every stage with passes beyond the paper has (CleanOptions,
-// CutOptions, MatchOptions; merge has its own RunsPass).
+// CutOptions, MergeOptions, MatchOptions).
 template <typename StageOptions>
 bool RunsStagePass(const StageOptions& options, typename StageOptions::Pass pass) {
   const auto& skipped = options.skip_passes();

@@ -6,6 +6,7 @@
 
 #include "common/error.h"
 #include "stages/common/pipeline_options_check.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/common/stage_info.h"
 #include "stages/geometry/cell_grid.h"
 #include "stages/geometry/disjoint_sets.h"
@@ -109,7 +110,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
 
   AreaPlan plan = AssignAreas(graph);
   cv::Mat rows;
-  if (RunsPass(options, proto::MergeOptions::JOIN_FURNITURE_ROWS)) {
+  if (RunsStagePass(options, proto::MergeOptions::JOIN_FURNITURE_ROWS)) {
     rows = FurnitureRowCells(map, options.furniture_gaps().max_elongation());
     if (cv::countNonZero(rows) == 0) rows.release();
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "stages/common/skipped_passes.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/closed_rooms.h"
 #include "stages/merge/corridor_joining.h"
@@ -142,14 +143,9 @@ std::string MergePassName(proto::MergeOptions::Pass pass) {
   return proto::MergeOptions::Pass_Name(pass);
 }
 
-bool RunsPass(const proto::MergeOptions& options, proto::MergeOptions::Pass pass) {
-  const auto& skipped = options.skip_passes();
-  return std::find(skipped.begin(), skipped.end(), pass) == skipped.end();
-}
-
 void RunJoinPasses(const MergeInput& input, AreaPlan* plan) {
   for (const MergePass& row : MergePassTable()) {
-    if (row.join == nullptr || !RunsPass(input.options, row.pass)) continue;
+    if (row.join == nullptr || !RunsStagePass(input.options, row.pass)) continue;
     row.join(input, MeasurePlan(input.graph, *plan, input.grid.resolution_m()), plan);
   }
 }
@@ -158,7 +154,7 @@ std::vector<bool> KeptSmallAreas(const MergeInput& input, const AreaPlan& plan,
                                  const AreaRaster& raster, int64_t min_cells) {
   std::vector<bool> kept;
   for (const MergePass& row : MergePassTable()) {
-    if (row.keep == nullptr || !RunsPass(input.options, row.pass)) continue;
+    if (row.keep == nullptr || !RunsStagePass(input.options, row.pass)) continue;
     const std::vector<bool> more = row.keep(input, plan, raster, min_cells);
     kept.resize(std::max(kept.size(), more.size()), false);
     for (size_t k = 0; k < more.size(); ++k) kept[k] = kept[k] || more[k];

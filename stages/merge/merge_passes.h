@@ -57,9 +57,6 @@ const std::vector<MergePass>& MergePassTable();
 // A pass's name as merge.skip_passes spells it, e.g. "JOIN_CORRIDOR_PIECES".
 std::string MergePassName(proto::MergeOptions::Pass pass);
 
-// Whether `options` runs `pass` (it is not in merge.skip_passes).
-bool RunsPass(const proto::MergeOptions& options, proto::MergeOptions::Pass pass);
-
 // The join passes that the options run, in order, each on a model of the
 // plan as the passes before it left it.
 void RunJoinPasses(const MergeInput& input, AreaPlan* plan);

@@ -12,6 +12,7 @@
 #include <ostream>
 #include <string>
 
+#include "stages/common/skipped_passes.h"
 #include "stages/merge/merge_passes.h"
 #include "tests/support/area_test_support.h"
 
@@ -48,7 +49,7 @@ TEST_P(MergePassCaseTest, ThePassMakesItsCaseAndNothingElseDoes) {
   const std::optional<MergePassCase> c = CaseOfMergePass(pass);
   ASSERT_TRUE(c.has_value()) << MergePassName(pass) << " has no constructed case";
   SCOPED_TRACE(c->what);
-  ASSERT_TRUE(RunsPass(c->options.merge(), pass));
+  ASSERT_TRUE(RunsStagePass(c->options.merge(), pass));
   {
     SCOPED_TRACE("with the pass");
     EXPECT_EQ(ProbeJoinsAPartner(*c, c->options), c->joined);

@@ -10,6 +10,7 @@
 #include <set>
 
 #include "stages/common/pipeline_options.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/merge/bay_folding.h"
 #include "stages/merge/corridor_stem_joining.h"
 #include "stages/merge/split_corridor_joining.h"
@@ -40,8 +41,8 @@ TEST(MergePassTableTest, ThePaperSkipsEveryPassInTheTablesOrder) {
   ASSERT_EQ(paper.merge().skip_passes_size(), static_cast<int>(table.size()));
   for (size_t k = 0; k < table.size(); ++k) {
     EXPECT_EQ(paper.merge().skip_passes(static_cast<int>(k)), table[k].pass);
-    EXPECT_FALSE(RunsPass(paper.merge(), table[k].pass));
-    EXPECT_TRUE(RunsPass(proto::MergeOptions(), table[k].pass));
+    EXPECT_FALSE(RunsStagePass(paper.merge(), table[k].pass));
+    EXPECT_TRUE(RunsStagePass(proto::MergeOptions(), table[k].pass));
   }
 }
 
