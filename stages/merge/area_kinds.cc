@@ -16,14 +16,12 @@ void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double
   }
   for (int k = 0; k < area_count; ++k) {
     AreaPlan::Area& area = plan->areas[k];
-    const bool roomless = area.room_id < 0;
-    const bool through = exits[k] >= 2;
-    if (through && (roomless || RasterShape(raster, k, resolution_m, furniture).corridor)) {
-      area.kind = proto::AREA_CORRIDOR;
-    } else if (roomless) {
-      area.kind = proto::AREA_DEAD_END;
-    } else {
+    if (!RasterShape(raster, k, resolution_m, furniture).corridor) {
       area.kind = proto::AREA_ROOM;
+    } else if (exits[k] >= 2) {
+      area.kind = proto::AREA_CORRIDOR;
+    } else {
+      area.kind = proto::AREA_DEAD_END;
     }
   }
 }

@@ -8,12 +8,15 @@ namespace areagraph {
 
 // The kind of every area of the final plan, from its shape in `raster`
 // (RasterShape) and its exits (the graph vertices where it meets other
-// areas), as PlanModel::Corridor has it for the passes:
-// - a corridor is a way through (two exits or more) and is shaped like a
-//   corridor (IsCorridorShaped), or has no room (the room disk fits nowhere
-//   in it: a piece of the corridors between junctions, narrower than W);
-// - a dead end has no room and one exit at most;
-// - everything else is a room (a long room with one door too).
+// areas):
+// - a corridor is shaped like a corridor (IsCorridorShaped) and is a way
+//   through (two exits or more), as PlanModel::Corridor has it for the
+//   passes;
+// - a dead end is shaped like a corridor and has one exit at most: a
+//   corridor that ends blind;
+// - everything else is a room. Whether the room disk fits does not matter:
+//   a closet or a stair core narrower than W is a small room, and a short
+//   narrow link between two areas is no corridor either.
 // Each area's `kind` is set; `room_id` and the edges stay. `furniture`
 // (optional) is RasterShape's.
 void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double resolution_m,

@@ -102,6 +102,47 @@ TEST(AreaKindsTest, ANarrowPassageBehindADoorIsADeadEnd) {
   EXPECT_EQ(KindAt(stages, 8, 5.5), proto::AREA_CORRIDOR);
 }
 
+// A corridor 2 m wide with offices above and, below it, small rooms too
+// narrow for the room disk of W = 1.2 m (1.05 m free), kept as areas of
+// their own (merge.min_area_m2 = 1): the room disk fits in none of them,
+// their shapes decide.
+AreaStages RunNarrowRoomsBelowACorridor(const std::vector<RectM>& rooms,
+                                        const std::vector<std::pair<double, double>>& doors) {
+  floorplan::FloorPlan plan(18, 14);
+  const RectM corridor{0.5, 4.5, 16, 2};
+  floorplan::DrawRoom(plan, corridor);
+  DrawOffices(plan, corridor, /*above=*/true);
+  for (const RectM& room : rooms) floorplan::DrawRoom(plan, room);
+  for (const auto& [x, y] : doors) floorplan::DrawDoor(plan, x, y, 0.7, WallDirection::kHorizontal);
+  const proto::CleanedMap map = CleanDrawnMap(plan.image());
+  proto::PipelineOptions options;
+  options.mutable_cut()->set_room_width_m(1.2);
+  options.mutable_merge()->set_min_area_m2(1);
+  AreaStages stages = RunAreaStages(map, options);
+  ExpectAreaGraphInvariants(stages, map, 0.9);
+  EXPECT_EQ(KindAt(stages, 8, 5.5), proto::AREA_CORRIDOR);
+  return stages;
+}
+
+TEST(AreaKindsTest, ACupboardNarrowerThanTheRoomDiskIsARoom) {
+  // 1.2 x 3 m behind a door 0.7 m wide: one exit, but too short for its
+  // width to be a corridor that ends blind.
+  const AreaStages stages = RunNarrowRoomsBelowACorridor({{3, 6.5, 1.2, 3}}, {{3.6, 6.5}});
+  EXPECT_NE(AreaAt(stages.areas, 3.6, 8), AreaAt(stages.areas, 8, 5.5));
+  EXPECT_EQ(KindAt(stages, 3.6, 8), proto::AREA_ROOM);
+}
+
+TEST(AreaKindsTest, AShortNarrowLinkBetweenTwoAreasIsARoom) {
+  // A lobby 1.2 x 2 m between the corridor and an office 4 m square behind
+  // it, a door at either end: a way through, but squat.
+  const AreaStages stages =
+      RunNarrowRoomsBelowACorridor({{8, 6.5, 1.2, 2}, {6.6, 8.5, 4, 4}}, {{8.6, 6.5}, {8.6, 8.5}});
+  const int link = AreaAt(stages.areas, 8.6, 7.5);
+  EXPECT_NE(link, AreaAt(stages.areas, 8, 5.5));
+  EXPECT_NE(link, AreaAt(stages.areas, 8.6, 10.5));
+  EXPECT_EQ(KindAt(stages, 8.6, 7.5), proto::AREA_ROOM);
+}
+
 // The maps people filter corridors on: the area that opens into the most
 // others, each map's corridor system, is a corridor.
 TEST(AreaKindsTest, CorridorsOfRealMapsAreCorridors) {

@@ -105,7 +105,14 @@ TEST(AreaStagesTest, MazeHasOneAreaPerTopologyGraphEdge) {
     const proto::VertexKind target = stages.cut.vertices(edge.target()).kind();
     // Dead end to junction, or junction to junction.
     EXPECT_TRUE(source == proto::VERTEX_JUNCTION || target == proto::VERTEX_JUNCTION);
-    EXPECT_EQ(area.kind(), source == target ? proto::AREA_CORRIDOR : proto::AREA_DEAD_END);
+    // The piece between the junctions is a corridor; the pieces out to a
+    // dead end are not (a long one is a dead end, a short one is as squat
+    // as a small room: SetAreaKinds goes by shape).
+    if (source == target) {
+      EXPECT_EQ(area.kind(), proto::AREA_CORRIDOR);
+    } else {
+      EXPECT_NE(area.kind(), proto::AREA_CORRIDOR);
+    }
     corridors += area.kind() == proto::AREA_CORRIDOR;
   }
   EXPECT_GE(corridors, 1);
