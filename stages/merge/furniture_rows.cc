@@ -125,7 +125,8 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
 }
 
 void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& model,
-                              const cv::Mat& rows, std::vector<bool> closed, AreaPlan* plan) {
+                              const cv::Mat& rows, std::vector<bool> closed, double max_piece_m2,
+                              AreaPlan* plan) {
   if (rows.empty()) return;
   for (size_t vertex = 0; vertex < closed.size(); ++vertex) {
     if (!closed[vertex]) continue;
@@ -133,7 +134,7 @@ void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& mod
       if (OnRow(rows, opening.left) || OnRow(rows, opening.right)) closed[vertex] = false;
     }
   }
-  JoinAreasAtFurnitureGaps(graph, model, closed, rows, plan);
+  JoinAreasAtFurnitureGaps(graph, model, closed, rows, max_piece_m2, plan);
 }
 
 }  // namespace areagraph

@@ -42,9 +42,11 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation);
 
 // Joins areas at openings where a row of `rows` (FurnitureRowCells; empty
 // for none) is a jamb, as JoinAreasAtFurnitureGaps joins them at islands,
-// also at a cut that ag-cut closed (`closed`): it took the row's end for a
+// (the smaller area at most `max_piece_m2`), also at a cut that ag-cut
+// closed (`closed`): it took the row's end for a
 // wall's, and the aisle beside it for a door.
 void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& model,
-                              const cv::Mat& rows, std::vector<bool> closed, AreaPlan* plan);
+                              const cv::Mat& rows, std::vector<bool> closed, double max_piece_m2,
+                              AreaPlan* plan);
 
 }  // namespace areagraph

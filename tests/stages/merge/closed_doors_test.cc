@@ -112,7 +112,7 @@ TEST(ClosedDoorsTest, FurnitureGapJoiningKeepsRoomsApartAtAClosedCut) {
     const proto::CutGraph graph = TwoRooms(20, closed);
     AreaPlan plan = AssignAreas(graph);
     JoinAreasAtFurnitureGaps(graph, MeasurePlan(graph, plan, kResolutionM), ClosedVertices(graph),
-                             islands, &plan);
+                             islands, proto::FoldCorridorPiecesOptions().below_m2(), &plan);
     return Rooms(plan);
   };
   EXPECT_EQ(rooms(false), 1u);
