@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "proto/pipeline_options.pb.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
