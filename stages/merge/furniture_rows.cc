@@ -25,8 +25,6 @@ struct RowCandidate {
 
 // Whether two candidates stand side by side in one stack.
 bool InOneStack(const RowCandidate& a, const RowCandidate& b, double max_pitch_px) {
-  const double cross = a.axis.x * b.axis.y - a.axis.y * b.axis.x;
-  if (std::abs(cross) > std::sin(kRowParallelDeg * CV_PI / 180.0)) return false;
   const cv::Point2d offset = b.centre - a.centre;
   const double along = offset.dot(a.axis);
   const double across = std::abs(offset.x * a.axis.y - offset.y * a.axis.x);

@@ -16,9 +16,8 @@ inline constexpr double kMaxFurnitureRowM = 20.0;
 // seats about 1 m, the shelves of a library or store under 2 m. A piece of
 // wall between two doors has a room on either side instead.
 inline constexpr double kMaxRowPitchM = 2.0;
-// Two rows of one stack run within this angle of each other (degrees) and
-// side by side along at least this share of the shorter one.
-inline constexpr double kRowParallelDeg = 10.0;
+// Two rows of one stack stand side by side along at least this share of the
+// shorter one (measured along the first one's axis).
 inline constexpr double kRowSideBySideShare = 0.5;
 // Rows fill at least this share of their smallest enclosing rectangle: a
 // rough scan leaves a thin block ragged by a cell on either side (a third
@@ -33,8 +32,8 @@ inline constexpr int kMinStackRows = 3;
 // border, at most kMaxFurnitureRowM long), kMinRowSolidity solid and at
 // least kMinFurnitureThicknessM thick (furniture_islands.h), but more
 // than `min_elongation` times as long as wide, in a stack of at least
-// kMinStackRows such regions (each beside the next: parallel, side by side,
-// within kMaxRowPitchM). Alone, such a block is no island (a thick piece of
+// kMinStackRows such regions (each beside the next: side by side, within
+// kMaxRowPitchM). Alone, such a block is no island (a thick piece of
 // wall between two doors); a stack of them is the furniture of one room, and
 // the strips between them are no rooms. The map's wall thickness does not
 // enter: rows of seats are often no thicker than two walls.
