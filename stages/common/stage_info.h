@@ -93,7 +93,7 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // taken as endless past 1.5 m (the same areas for values up to 1.5 m).
 // merge 19: areas join across a stack of rows of long free-standing blocks (seats, shelves).
 // merge 20: fewer constants: rows of a stack need not run parallel (their overlap decides), a
-// corridor stem has no least width of its own.
+// corridor stem has no least width of its own, a row no greatest length.
 inline constexpr StageInfo kMergeStage{"merge", 20};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).

@@ -57,7 +57,6 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
   cv::Mat obstacle = ObstaclesBeforeCleaning(map);
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
-  const double max_px = kMaxFurnitureRowM / resolution_m;
   const double min_thickness_px = kMinFurnitureThicknessM / resolution_m;
   // A row is longer than `min_elongation` times its least thickness: most
   // regions (specks, desks) are too short to be measured at all.
@@ -69,7 +68,7 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
     const int w = stats.at<int>(label, cv::CC_STAT_WIDTH);
     const int h = stats.at<int>(label, cv::CC_STAT_HEIGHT);
     if (left == 0 || top == 0 || left + w == width || top + h == height) continue;
-    if (std::max(w, h) > max_px || std::hypot(w, h) < min_length_px) continue;
+    if (std::hypot(w, h) < min_length_px) continue;
     free_standing.push_back(label);
   }
   cv::Mat rows = cv::Mat::zeros(height, width, CV_8U);
