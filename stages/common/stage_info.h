@@ -93,7 +93,8 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // taken as endless past 1.5 m (the same areas for values up to 1.5 m).
 // merge 19: areas join across a stack of rows of long free-standing blocks (seats, shelves).
 // merge 20: fewer constants: rows of a stack need not run parallel (their overlap decides), a
-// corridor stem has no least width of its own, a row no greatest length.
+// corridor stem has no least width of its own, a row no greatest length; a bay's mouth is measured
+// within ag-cut's door reach (1.5 m) instead of two of the bay's widths.
 inline constexpr StageInfo kMergeStage{"merge", 20};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
