@@ -94,7 +94,10 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // merge 19: areas join across a stack of rows of long free-standing blocks (seats, shelves).
 // merge 20: an area's kind is its shape's alone: a room unless shaped like a corridor (a way
 // through is a corridor, one exit a dead end), whether the room disk fits or not; labels unchanged.
-inline constexpr StageInfo kMergeStage{"merge", 20};
+// merge 21: fewer constants: rows of a stack need not run parallel (their overlap decides), a
+// corridor stem has no least width of its own, a row no greatest length; a bay's mouth is measured
+// within ag-cut's door reach (1.5 m) instead of two of the bay's widths.
+inline constexpr StageInfo kMergeStage{"merge", 21};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

@@ -4,6 +4,7 @@
 #include <map>
 #include <vector>
 
+#include "stages/cut/width_estimate.h"
 #include "stages/geometry/edge_polygon.h"
 
 namespace areagraph {
@@ -34,13 +35,14 @@ void FoldOpenBays(const proto::CutGraph& graph, const PlanModel& model, AreaPlan
     typical[k] = model.shapes[k].typical_px;
     for (int e : plan->areas[k].edges) length[k] += graph.edges(e).length_px();
   }
+  const double reach_px = kDoorReachM / model.resolution_m;
   // Per vertex: area -> the narrowest width near the vertex along its edges.
   std::vector<std::map<int, double>> mouth_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {
     const proto::GraphEdge& edge = graph.edges(e);
     const int area = plan->area_of_edge[e];
     for (const bool at_target : {false, true}) {
-      const double width = NarrowestNearEnd(edge, at_target, kMouthReachWidths * typical[area]);
+      const double width = NarrowestNearEnd(edge, at_target, reach_px);
       auto [it, added] = mouth_at[at_target ? edge.target() : edge.source()].emplace(area, width);
       if (!added) it->second = std::min(it->second, width);
     }

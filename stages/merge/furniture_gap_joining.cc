@@ -73,7 +73,7 @@ void ApplyGroups(DisjointSets& groups, AreaPlan* plan) {
 
 void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& model,
                               const std::vector<bool>& closed, const cv::Mat& islands,
-                              AreaPlan* plan) {
+                              double max_piece_m2, AreaPlan* plan) {
   const cv::Rect inside(0, 0, islands.cols, islands.rows);
   const IslandsAt from_raster = [&](const std::vector<cv::Point>& cells) {
     std::vector<uint8_t> values(cells.size(), 0);
@@ -82,14 +82,14 @@ void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& mod
     }
     return values;
   };
-  JoinAreasAtFurnitureGaps(graph, model, closed, from_raster, plan);
+  JoinAreasAtFurnitureGaps(graph, model, closed, from_raster, max_piece_m2, plan);
 }
 
 void JoinAreasAtFurnitureGaps(const proto::CutGraph& graph, const PlanModel& model,
                               const std::vector<bool>& closed, const IslandsAt& islands_at,
-                              AreaPlan* plan) {
+                              double max_piece_m2, AreaPlan* plan) {
   const int area_count = static_cast<int>(plan->areas.size());
-  const double max_piece_px = kMaxFurnitureGapPieceM2 / (model.resolution_m * model.resolution_m);
+  const double max_piece_px = max_piece_m2 / (model.resolution_m * model.resolution_m);
   // Pairs of areas that meet at a vertex where the opening (the narrower of
   // their two sides) has an island for a jamb, and room-less areas that have
   // any other opening.

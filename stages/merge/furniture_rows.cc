@@ -25,8 +25,6 @@ struct RowCandidate {
 
 // Whether two candidates stand side by side in one stack.
 bool InOneStack(const RowCandidate& a, const RowCandidate& b, double max_pitch_px) {
-  const double cross = a.axis.x * b.axis.y - a.axis.y * b.axis.x;
-  if (std::abs(cross) > std::sin(kRowParallelDeg * CV_PI / 180.0)) return false;
   const cv::Point2d offset = b.centre - a.centre;
   const double along = offset.dot(a.axis);
   const double across = std::abs(offset.x * a.axis.y - offset.y * a.axis.x);
@@ -59,7 +57,6 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
   cv::Mat obstacle = ObstaclesBeforeCleaning(map);
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(obstacle, labels, stats, centroids, 8, CV_32S);
-  const double max_px = kMaxFurnitureRowM / resolution_m;
   const double min_thickness_px = kMinFurnitureThicknessM / resolution_m;
   // A row is longer than `min_elongation` times its least thickness: most
   // regions (specks, desks) are too short to be measured at all.
@@ -71,7 +68,7 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
     const int w = stats.at<int>(label, cv::CC_STAT_WIDTH);
     const int h = stats.at<int>(label, cv::CC_STAT_HEIGHT);
     if (left == 0 || top == 0 || left + w == width || top + h == height) continue;
-    if (std::max(w, h) > max_px || std::hypot(w, h) < min_length_px) continue;
+    if (std::hypot(w, h) < min_length_px) continue;
     free_standing.push_back(label);
   }
   cv::Mat rows = cv::Mat::zeros(height, width, CV_8U);
@@ -125,7 +122,8 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
 }
 
 void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& model,
-                              const cv::Mat& rows, std::vector<bool> closed, AreaPlan* plan) {
+                              const cv::Mat& rows, std::vector<bool> closed, double max_piece_m2,
+                              AreaPlan* plan) {
   if (rows.empty()) return;
   for (size_t vertex = 0; vertex < closed.size(); ++vertex) {
     if (!closed[vertex]) continue;
@@ -133,7 +131,7 @@ void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& mod
       if (OnRow(rows, opening.left) || OnRow(rows, opening.right)) closed[vertex] = false;
     }
   }
-  JoinAreasAtFurnitureGaps(graph, model, closed, rows, plan);
+  JoinAreasAtFurnitureGaps(graph, model, closed, rows, max_piece_m2, plan);
 }
 
 }  // namespace areagraph

@@ -9,16 +9,12 @@
 
 namespace areagraph {
 
-// A row of seats, shelves or desks runs across one room: at most this long
-// (metres), where the building's walls are one region with its outside.
-inline constexpr double kMaxFurnitureRowM = 20.0;
 // Rows stand in a stack, at most this far apart centre to centre (metres):
 // seats about 1 m, the shelves of a library or store under 2 m. A piece of
 // wall between two doors has a room on either side instead.
 inline constexpr double kMaxRowPitchM = 2.0;
-// Two rows of one stack run within this angle of each other (degrees) and
-// side by side along at least this share of the shorter one.
-inline constexpr double kRowParallelDeg = 10.0;
+// Two rows of one stack stand side by side along at least this share of the
+// shorter one (measured along the first one's axis).
 inline constexpr double kRowSideBySideShare = 0.5;
 // Rows fill at least this share of their smallest enclosing rectangle: a
 // rough scan leaves a thin block ragged by a cell on either side (a third
@@ -30,21 +26,22 @@ inline constexpr int kMinStackRows = 3;
 
 // Which obstacle cells belong to a furniture row, as CV_8U the map's size
 // (1 on row cells): a free-standing obstacle region (touching no image
-// border, at most kMaxFurnitureRowM long), kMinRowSolidity solid and at
-// least kMinFurnitureThicknessM thick (furniture_islands.h), but more
-// than `min_elongation` times as long as wide, in a stack of at least
-// kMinStackRows such regions (each beside the next: parallel, side by side,
-// within kMaxRowPitchM). Alone, such a block is no island (a thick piece of
-// wall between two doors); a stack of them is the furniture of one room, and
-// the strips between them are no rooms. The map's wall thickness does not
-// enter: rows of seats are often no thicker than two walls.
+// border), kMinRowSolidity solid and at least kMinFurnitureThicknessM thick
+// (furniture_islands.h), but more than `min_elongation` times as long as
+// wide, in a stack of at least kMinStackRows such regions (each beside the
+// next: side by side, within kMaxRowPitchM). Alone, such a block is no
+// island (a thick piece of wall between two doors); a stack of them is the furniture of one room,
+// and the strips between them are no rooms. The map's wall thickness does not enter: rows of seats
+// are often no thicker than two walls.
 cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation);
 
 // Joins areas at openings where a row of `rows` (FurnitureRowCells; empty
 // for none) is a jamb, as JoinAreasAtFurnitureGaps joins them at islands,
-// also at a cut that ag-cut closed (`closed`): it took the row's end for a
+// (the smaller area at most `max_piece_m2`), also at a cut that ag-cut
+// closed (`closed`): it took the row's end for a
 // wall's, and the aisle beside it for a door.
 void JoinAreasAtFurnitureRows(const proto::CutGraph& graph, const PlanModel& model,
-                              const cv::Mat& rows, std::vector<bool> closed, AreaPlan* plan);
+                              const cv::Mat& rows, std::vector<bool> closed, double max_piece_m2,
+                              AreaPlan* plan);
 
 }  // namespace areagraph

@@ -53,7 +53,8 @@ std::vector<MergePass> MakeTable() {
         const IslandsAt islands_at = [&](const std::vector<cv::Point>& cells) {
           return FurnitureIslandsAt(in.map, kMaxFurnitureIslandM, options.max_elongation(), cells);
         };
-        JoinAreasAtFurnitureGaps(in.graph, model, in.closed, islands_at, plan);
+        JoinAreasAtFurnitureGaps(in.graph, model, in.closed, islands_at,
+                                 in.options.corridor_pieces().below_m2(), plan);
       },
       nullptr,
   });
@@ -63,7 +64,8 @@ std::vector<MergePass> MakeTable() {
       "island is, only too long for one",
       nullptr,
       [](const MergeInput& in, const PlanModel& model, AreaPlan* plan) {
-        JoinAreasAtFurnitureRows(in.graph, model, in.furniture_rows, in.closed, plan);
+        JoinAreasAtFurnitureRows(in.graph, model, in.furniture_rows, in.closed,
+                                 in.options.corridor_pieces().below_m2(), plan);
       },
       nullptr,
   });

@@ -5,6 +5,7 @@
 #include <map>
 #include <vector>
 
+#include "stages/cut/width_estimate.h"
 #include "stages/geometry/disjoint_sets.h"
 #include "stages/geometry/edge_polygon.h"
 
@@ -71,7 +72,7 @@ double WidestWithin(const proto::CutGraph& graph, const AreaPlan& plan,
 
 void JoinRoomsWithoutDoors(const proto::CutGraph& graph, const PlanModel& model,
                            const std::vector<bool>& closed, AreaPlan* plan) {
-  const double reach_px = kSideReachM / model.resolution_m;
+  const double reach_px = kDoorReachM / model.resolution_m;
   std::vector<std::vector<int>> edges_at(graph.vertices_size());
   for (int e = 0; e < graph.edges_size(); ++e) {
     edges_at[graph.edges(e).source()].push_back(e);

@@ -17,8 +17,7 @@ namespace areagraph {
 void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
                         const std::vector<bool>& closed, AreaPlan* plan,
                         const SplitCorridorParams& params, const CellGrid* grid) {
-  const double straight_cos = std::cos(params.straight_deg * M_PI / 180);
-  const double axis_cos = std::cos(params.axis_deg * M_PI / 180);
+  const double bend_cos = std::cos(params.bend_deg * M_PI / 180);
   for (int pass = 0; pass < 8; ++pass) {
     const int area_count = static_cast<int>(plan->areas.size());
     const PlanModel model = MeasurePlan(graph, *plan, resolution_m);
@@ -62,12 +61,12 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
           const Eigen::Vector2d vertex_at = FromProtoPoint(graph.vertices(vertex).position());
           const Eigen::Vector2d ci = mi.Centroid(), cj = mj.Centroid();
           const double across = (ci - vertex_at).normalized().dot((cj - vertex_at).normalized());
-          if (across > straight_cos) continue;
+          if (across > -bend_cos) continue;
           bool aligned = true;
           const Eigen::Vector2d line = (cj - ci).normalized();
           for (const AreaMoments* m : {&mi, &mj}) {
             const auto [axis, ratio] = m->Axis();
-            if (ratio >= kStraightAxisRatio && std::abs(axis.dot(line)) < axis_cos) aligned = false;
+            if (ratio >= kStraightAxisRatio && std::abs(axis.dot(line)) < bend_cos) aligned = false;
           }
           if (!aligned) continue;
           pairs.push_back({i, j, long_enough});

@@ -12,17 +12,15 @@ namespace areagraph {
 // tuning-extra floors and the real maps (areagraph/, RobotMap, bormann/;
 // docs/quality.md, "Options beyond the paper").
 struct SplitCorridorParams {
-  // The two pieces lie on either side of the vertex: seen from the vertex,
-  // their centroids are at least this many degrees apart (a corridor goes
-  // on, bending little between two pieces; a room across from a side
-  // corridor's end is off to the side, at about 90 degrees).
-  double straight_deg = 150;
-  // A piece that runs straight (kStraightAxisRatio, area_shapes.h; a ratio
-  // of 2 took rooms opening off a corridor piece's side for corridor
-  // pieces) runs along the line between the two centroids, within this many
-  // degrees (as straight on as straight_deg): such a room lies across that
-  // piece.
-  double axis_deg = 30;
+  // How far a corridor bends between two of its pieces (degrees). Seen
+  // from the vertex, the two pieces' centroids are at least 180 minus this
+  // apart (a corridor goes on, bending little; a room across from a side
+  // corridor's end is off to the side, at about 90 degrees), and a piece
+  // that runs straight (kStraightAxisRatio, area_shapes.h; a ratio of 2
+  // took rooms opening off a corridor piece's side for corridor pieces)
+  // runs along the line between the two centroids within this angle: such a
+  // room lies across that piece.
+  double bend_deg = 30;
   // Both pieces are at least this wide (median free width, metres): rows of
   // cluttered cubicles 0.9 m wide with a gap in their partition are no
   // corridor.

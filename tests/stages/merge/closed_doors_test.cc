@@ -5,6 +5,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "proto/pipeline_options.pb.h"
 #include "stages/merge/furniture_gap_joining.h"
 #include "stages/merge/room_joining.h"
 #include "tests/stages/merge/hand_made_cut_graph.h"
@@ -112,7 +113,7 @@ TEST(ClosedDoorsTest, FurnitureGapJoiningKeepsRoomsApartAtAClosedCut) {
     const proto::CutGraph graph = TwoRooms(20, closed);
     AreaPlan plan = AssignAreas(graph);
     JoinAreasAtFurnitureGaps(graph, MeasurePlan(graph, plan, kResolutionM), ClosedVertices(graph),
-                             islands, &plan);
+                             islands, proto::FoldCorridorPiecesOptions().below_m2(), &plan);
     return Rooms(plan);
   };
   EXPECT_EQ(rooms(false), 1u);
