@@ -129,9 +129,6 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
   RequireNotNegative(options.fold_fragments_below_m2(), "match.fold_fragments_below_m2",
                      "square metres");
   RequireNotNegative(options.split_joins_below_m2(), "match.split_joins_below_m2", "square metres");
-  Require(options.split_joins_inside_share() > 0 && options.split_joins_inside_share() <= 1,
-          "match.split_joins_inside_share = " + FormatNumber(options.split_joins_inside_share()) +
-              " must be above 0 and at most 1 (a share of the previous area's cells)");
   RequireNotNegative(options.split_joins_wall_margin_m(), "match.split_joins_wall_margin_m",
                      "metres");
   RequireNotNegative(options.split_joins_min_opening_m(), "match.split_joins_min_opening_m",

@@ -82,11 +82,10 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
     }
     if (rounds_left <= 0) return ids;
     --rounds_left;
-    const std::vector<AreaUnjoin> unjoins =
-        FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2(),
-                          options.split_joins_inside_share(),
-                          RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WHEN_ID_MOVED),
-                          RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WITHOUT_PASSAGE));
+    const std::vector<AreaUnjoin> unjoins = FindUndoableJoins(
+        previous, ids, before, overlaps, options.split_joins_below_m2(), options.min_overlap(),
+        RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WHEN_ID_MOVED),
+        RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WITHOUT_PASSAGE));
     int split = 0;
     if (!unjoins.empty()) {
       current = SplitJoinedAreas(current, previous, unjoins, options, &split);

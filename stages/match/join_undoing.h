@@ -28,7 +28,7 @@ struct AreaUnjoin {
 // The joins of `current` that ag-merge made of two areas of `previous` that
 // were apart: a previous area smaller than `max_m2` whose id no area of
 // `current` took (`ids`, see MatchAreaGraph), with `inside_share`
-// (MatchOptions.split_joins_inside_share) of its cells (`before`: previous's cells on current's
+// (MatchOptions.min_overlap) of its cells (`before`: previous's cells on current's
 // grid; `overlaps` from CountOverlaps(before, current's cells)) inside one current area that took
 // the id of a previous area with a passage to it. `when_id_moved`
 // (match pass UNDO_JOINS_WHEN_ID_MOVED) also counts a previous area whose

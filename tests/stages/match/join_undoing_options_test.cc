@@ -1,6 +1,6 @@
 // Match 4's join undoing: a cut that crosses a passage's border cuts the
 // passage too (match pass UNDO_JOINS_ACROSS_PASSAGES), a previous area only partly
-// inside the joined area is cut out as well (split_joins_inside_share), and
+// inside the joined area is cut out as well (match.min_overlap), and
 // the stretches of a cut that run along a wall noise moved do not count as
 // opening (split_joins_wall_margin_m).
 #include <gtest/gtest.h>
@@ -53,7 +53,7 @@ proto::MatchOptions Options(const std::string& which, double value) {
   if (which == "across" && value == 0) {
     options.add_skip_passes(proto::MatchOptions::UNDO_JOINS_ACROSS_PASSAGES);
   }
-  if (which == "share") options.set_split_joins_inside_share(value);
+  if (which == "share") options.set_min_overlap(value);
   if (which == "margin") options.set_split_joins_wall_margin_m(value);
   if (which == "rounds") options.set_split_joins_rounds(static_cast<int>(value));
   return options;
