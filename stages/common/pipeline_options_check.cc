@@ -133,9 +133,6 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
                      "metres");
   RequireNotNegative(options.split_joins_min_opening_m(), "match.split_joins_min_opening_m",
                      "metres");
-  Require(options.split_joins_rounds() >= 0 && options.split_joins_rounds() <= 100,
-          "match.split_joins_rounds = " + std::to_string(options.split_joins_rounds()) +
-              " must be between 0 and 100");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

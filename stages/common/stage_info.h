@@ -98,7 +98,8 @@ inline constexpr StageInfo kMergeStage{"merge", 19};
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.
 // match 5: joins also cut where the id moved to a leftover, without a passage, along pinched
 // outlines, and with a 0.5 m least opening (ids lost to scan noise alone).
-inline constexpr StageInfo kMatchStage{"match", 5};
+// match 6: join undoing runs rounds until one cuts nothing, not up to match.split_joins_rounds.
+inline constexpr StageInfo kMatchStage{"match", 6};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {
