@@ -111,8 +111,6 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.open_border_clearance_m(), "merge.open_border_clearance_m", "metres");
   RequireNotNegative(options.corridor_pieces().below_m2(), "merge.corridor_pieces.below_m2",
                      "square metres");
-  RequireNotNegative(options.porous_borders().max_gap_m(), "merge.porous_borders.max_gap_m",
-                     "metres");
   RequireNotNegative(options.small_closed_rooms().pocket_jamb_m(),
                      "merge.small_closed_rooms.pocket_jamb_m", "metres");
   const double elongation = options.furniture_gaps().max_elongation();

@@ -26,7 +26,8 @@ inline constexpr StageInfo kImportStage{"import", 1};
 // clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
 // clean 4: furniture removal keeps pieces of wall standing between two doors
 // (clean pass KEEP_WALL_PIECES; scans whose short wall pieces looked like furniture).
-inline constexpr StageInfo kCleanStage{"clean", 4};
+// clean 5: the CleanedMap carries clean.robot_width_m, which merge reads (robot_width_m).
+inline constexpr StageInfo kCleanStage{"clean", 5};
 // voronoi 2: edges in face order.
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};

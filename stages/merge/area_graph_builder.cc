@@ -105,6 +105,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   CheckMergeOptions(options);
   const CellGrid grid(map);
   CheckCutGraph(graph);
+  if (!map.has_robot_width_m()) {
+    throw InputError(
+        "the CleanedMap holds no robot width (written by clean 4 or older): run "
+        "ag-clean again");
+  }
   CheckOutlineTolerance(options, graph.room_width().room_width_m());
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 

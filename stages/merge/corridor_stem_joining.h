@@ -9,7 +9,7 @@
 namespace areagraph {
 
 // A stem is at least this wide (metres): a passage one walks down, wider
-// than the 0.5 m gaps that nobody walks through (merge.porous_borders).
+// than the 0.5 m gaps that nobody walks through (clean.robot_width_m).
 inline constexpr double kMinStemWidthM = 0.7;
 
 // Joins a room-less dead end (AREA_DEAD_END) into the corridor it opens

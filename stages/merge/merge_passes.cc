@@ -91,10 +91,10 @@ std::vector<MergePass> MakeTable() {
       Options::JOIN_POROUS_BORDERS,
       "after the openings of rooms and corridors are settled: what still meets at many "
       "openings, one too narrow for a door, is one space",
-      [](const Options& o) -> const Message* { return &o.porous_borders(); },
+      nullptr,
       [](const MergeInput& in, const PlanModel& model, AreaPlan* plan) {
         JoinAtPorousBorders(in.graph, model, in.closed,
-                            in.options.porous_borders().max_gap_m() / in.grid.resolution_m(), plan);
+                            in.map.robot_width_m() / in.grid.resolution_m(), plan);
       },
       nullptr,
   });

@@ -147,6 +147,8 @@ proto::CleanedMap CleanedMapOfCells(const cv::Mat& cells, double resolution_m) {
   map.mutable_frame()->set_height_px(cells.rows);
   map.mutable_frame()->set_resolution_m(resolution_m);
   map.set_cells(std::string(cells.datastart, cells.dataend));
+  // As ag-clean writes it with the default options.
+  map.set_robot_width_m(proto::CleanOptions().robot_width_m());
   return map;
 }
 
@@ -167,6 +169,7 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) 
     }
   }
   map.set_cells(cells);
+  map.set_robot_width_m(proto::CleanOptions().robot_width_m());
   return map;
 }
 
