@@ -108,7 +108,6 @@ void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.grow_min_gap_m(), "merge.grow_min_gap_m", "metres");
   RequireNotNegative(options.outline_tolerance_m(), "merge.outline_tolerance_m", "metres");
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
-  RequireNotNegative(options.open_border_clearance_m(), "merge.open_border_clearance_m", "metres");
   RequireNotNegative(options.corridor_pieces().below_m2(), "merge.corridor_pieces.below_m2",
                      "square metres");
   RequireNotNegative(options.small_closed_rooms().pocket_jamb_m(),

@@ -36,7 +36,8 @@ inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
 // a room behind a gap the graph does not pass got no area).
 // prune 4: edge polygons, boundaries and part outlines as packed rings (TopologyGraph format 2),
 // a third of the memory of Point2 messages; same numbers.
-inline constexpr StageInfo kPruneStage{"prune", 4};
+// prune 5: the TopologyGraph carries prune.min_clearance_m, which merge reads (min_clearance_m).
+inline constexpr StageInfo kPruneStage{"prune", 5};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
@@ -54,7 +55,8 @@ inline constexpr StageInfo kPruneStage{"prune", 4};
 // free, hollow blocks; cut.jamb_wall_behind_line).
 // cut 12: edge polygons and room shapes as packed rings (CutGraph format 2, as prune 4).
 // cut 13: the openings (narrowings, wall gaps, mouths) and their decisions kept in the CutGraph.
-inline constexpr StageInfo kCutStage{"cut", 13};
+// cut 14: the CutGraph carries the TopologyGraph's min_clearance_m on to merge.
+inline constexpr StageInfo kCutStage{"cut", 14};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

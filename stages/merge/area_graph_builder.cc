@@ -110,6 +110,11 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
         "the CleanedMap holds no robot width (written by clean 4 or older): run "
         "ag-clean again");
   }
+  if (!graph.has_min_clearance_m()) {
+    throw InputError(
+        "the CutGraph holds no clearance (written by cut 13 or older): run ag-prune "
+        "and ag-cut again");
+  }
   CheckOutlineTolerance(options, graph.room_width().room_width_m());
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 

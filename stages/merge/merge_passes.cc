@@ -129,6 +129,14 @@ std::vector<MergePass> MakeTable() {
                                 in.options.small_closed_rooms().pocket_jamb_m());
       },
   });
+  table.push_back({
+      Options::OPEN_BORDER_PASSAGES,
+      "once the areas are outlined: it puts passages on the borders they share and changes no "
+      "area (AddAreasAndPassages reads its switch)",
+      nullptr,
+      nullptr,
+      nullptr,
+  });
   return table;
 }
 

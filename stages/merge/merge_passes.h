@@ -33,7 +33,8 @@ struct MergeInput {
 };
 
 // One row of the merge's pass table: a rule beyond the paper that changes
-// which edges make up an area.
+// which edges make up an area, or (join and keep both null) one that adds
+// passages between the areas, whose switch AddAreasAndPassages reads.
 struct MergePass {
   proto::MergeOptions::Pass pass;
   // Why it runs where it does.
