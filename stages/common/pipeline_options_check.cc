@@ -128,8 +128,6 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
   RequireNotNegative(options.split_joins_below_m2(), "match.split_joins_below_m2", "square metres");
   RequireNotNegative(options.split_joins_wall_margin_m(), "match.split_joins_wall_margin_m",
                      "metres");
-  RequireNotNegative(options.split_joins_min_opening_m(), "match.split_joins_min_opening_m",
-                     "metres");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

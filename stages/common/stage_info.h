@@ -95,7 +95,8 @@ inline constexpr StageInfo kCutStage{"cut", 14};
 // merge 18: a pocket's jamb is measured up to merge.small_closed_rooms.pocket_jamb_m, no longer
 // taken as endless past 1.5 m (the same areas for values up to 1.5 m).
 // merge 19: areas join across a stack of rows of long free-standing blocks (seats, shelves).
-inline constexpr StageInfo kMergeStage{"merge", 19};
+// merge 20: the AreaGraph carries the CleanedMap's robot_width_m on to match.
+inline constexpr StageInfo kMergeStage{"merge", 20};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

@@ -171,6 +171,11 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
   int32_t next_area_id = 0, next_passage_id = 0;
   if (previous != nullptr) {
     CheckIsMatched(*previous);
+    if (!current.has_robot_width_m()) {
+      throw InputError(
+          "the Area Graph holds no robot width (written by merge 19 or older): run "
+          "ag-merge again");
+    }
     const bool same_segmentation =
         previous->version().segmentation_options_digest() == segmentation_options_digest;
     area_ids = MatchAreasFoldingFragments(matched, *previous, options, same_segmentation);

@@ -148,6 +148,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   out.set_components(CountComponents(out));
   out.set_dropped_parts(graph.dropped_parts());
   out.set_dropped_area_m2(graph.dropped_area_m2());
+  out.set_robot_width_m(map.robot_width_m());
   if (raster_out != nullptr) *raster_out = std::move(raster);
   return out;
 }
