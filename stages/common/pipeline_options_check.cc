@@ -105,7 +105,6 @@ void CheckCutOptions(const proto::CutOptions& options) {
 
 void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_area_m2(), "merge.min_area_m2", "square metres");
-  RequireNotNegative(options.grow_min_gap_m(), "merge.grow_min_gap_m", "metres");
   RequireNotNegative(options.outline_tolerance_m(), "merge.outline_tolerance_m", "metres");
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
   RequireNotNegative(options.corridor_pieces().below_m2(), "merge.corridor_pieces.below_m2",

@@ -95,7 +95,9 @@ AreaRaster PartitionedFreeSpace(const proto::CutGraph& graph, const proto::Clean
     }
   }
   return PartitionFreeSpace(grid, std::move(domain), polygons, paths, ThroughPaths(graph, plan),
-                            options.grow_min_gap_m() / grid.resolution_m());
+                            RunsStagePass(options, proto::MergeOptions::GROWTH_STOPS_AT_NARROW_GAPS)
+                                ? map.robot_width_m() / grid.resolution_m()
+                                : 0);
 }
 
 }  // namespace

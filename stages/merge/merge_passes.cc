@@ -119,6 +119,14 @@ std::vector<MergePass> MakeTable() {
       nullptr,
   });
   table.push_back({
+      Options::GROWTH_STOPS_AT_NARROW_GAPS,
+      "after the joins, when the free space is split among the areas: it decides how far "
+      "each area's cells grow (BuildAreaGraph reads its switch)",
+      nullptr,
+      nullptr,
+      nullptr,
+  });
+  table.push_back({
       Options::KEEP_SMALL_CLOSED_ROOMS,
       "after the free space is split: it reads the areas' cells (their walls, their inner "
       "width) to keep a closet from being folded as a small area",

@@ -5,7 +5,9 @@
 // the pass means them to; without it they do not, so every pass shows an
 // effect of its own that no other pass makes up for. A pass added to the
 // table without a case fails here. OPEN_BORDER_PASSAGES changes no area and
-// is tested on its constructed raster (tests/stages/merge/open_borders_test.cc).
+// is tested on its constructed raster (tests/stages/merge/open_borders_test.cc);
+// GROWTH_STOPS_AT_NARROW_GAPS decides which cells an area covers, not which
+// areas are one (tests/stages/merge/areas_test.cc).
 #include "tests/support/merge_pass_cases.h"
 
 #include <gtest/gtest.h>
