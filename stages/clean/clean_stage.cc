@@ -47,6 +47,7 @@ proto::CleanedMap CleanGridMap(const proto::GridMap& map, const proto::CleanOpti
   std::inplace_merge(islands.begin(), middle, islands.end());
   cleaned.mutable_removed_furniture_cells()->Add(islands.begin(), islands.end());
   for (const proto::Polygon& shape : furniture.shapes) *cleaned.add_furniture_shapes() = shape;
+  cleaned.set_robot_width_m(options.robot_width_m());
   return cleaned;
 }
 

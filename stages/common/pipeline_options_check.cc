@@ -105,14 +105,10 @@ void CheckCutOptions(const proto::CutOptions& options) {
 
 void CheckMergeOptions(const proto::MergeOptions& options) {
   RequireNotNegative(options.min_area_m2(), "merge.min_area_m2", "square metres");
-  RequireNotNegative(options.grow_min_gap_m(), "merge.grow_min_gap_m", "metres");
   RequireNotNegative(options.outline_tolerance_m(), "merge.outline_tolerance_m", "metres");
   RequireNotNegative(options.min_hole_m2(), "merge.min_hole_m2", "square metres");
-  RequireNotNegative(options.open_border_clearance_m(), "merge.open_border_clearance_m", "metres");
   RequireNotNegative(options.corridor_pieces().below_m2(), "merge.corridor_pieces.below_m2",
                      "square metres");
-  RequireNotNegative(options.porous_borders().max_gap_m(), "merge.porous_borders.max_gap_m",
-                     "metres");
   RequireNotNegative(options.small_closed_rooms().pocket_jamb_m(),
                      "merge.small_closed_rooms.pocket_jamb_m", "metres");
   const double elongation = options.furniture_gaps().max_elongation();
@@ -129,16 +125,8 @@ void CheckMatchOptions(const proto::MatchOptions& options) {
   RequireNotNegative(options.fold_fragments_below_m2(), "match.fold_fragments_below_m2",
                      "square metres");
   RequireNotNegative(options.split_joins_below_m2(), "match.split_joins_below_m2", "square metres");
-  Require(options.split_joins_inside_share() > 0 && options.split_joins_inside_share() <= 1,
-          "match.split_joins_inside_share = " + FormatNumber(options.split_joins_inside_share()) +
-              " must be above 0 and at most 1 (a share of the previous area's cells)");
   RequireNotNegative(options.split_joins_wall_margin_m(), "match.split_joins_wall_margin_m",
                      "metres");
-  RequireNotNegative(options.split_joins_min_opening_m(), "match.split_joins_min_opening_m",
-                     "metres");
-  Require(options.split_joins_rounds() >= 0 && options.split_joins_rounds() <= 100,
-          "match.split_joins_rounds = " + std::to_string(options.split_joins_rounds()) +
-              " must be between 0 and 100");
 }
 
 void CheckPipelineOptions(const proto::PipelineOptions& options) {

@@ -26,7 +26,8 @@ inline constexpr StageInfo kImportStage{"import", 1};
 // clean 2: outlier threshold for k + 1 points; 3: unknown islands become free.
 // clean 4: furniture removal keeps pieces of wall standing between two doors
 // (clean pass KEEP_WALL_PIECES; scans whose short wall pieces looked like furniture).
-inline constexpr StageInfo kCleanStage{"clean", 4};
+// clean 5: the CleanedMap carries clean.robot_width_m, which merge reads (robot_width_m).
+inline constexpr StageInfo kCleanStage{"clean", 5};
 // voronoi 2: edges in face order.
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
@@ -35,7 +36,8 @@ inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
 // a room behind a gap the graph does not pass got no area).
 // prune 4: edge polygons, boundaries and part outlines as packed rings (TopologyGraph format 2),
 // a third of the memory of Point2 messages; same numbers.
-inline constexpr StageInfo kPruneStage{"prune", 4};
+// prune 5: the TopologyGraph carries prune.min_clearance_m, which merge reads (min_clearance_m).
+inline constexpr StageInfo kPruneStage{"prune", 5};
 // cut 2: stores the W used (RoomWidthEstimate), and can estimate it (auto).
 // cut 3: obstacle islands (furniture) do not stop the room disk (cut.room_island_max_m).
 // cut 4: room detection inside every part's boundary; parts carried to merge.
@@ -53,7 +55,8 @@ inline constexpr StageInfo kPruneStage{"prune", 4};
 // free, hollow blocks; cut.jamb_wall_behind_line).
 // cut 12: edge polygons and room shapes as packed rings (CutGraph format 2, as prune 4).
 // cut 13: the openings (narrowings, wall gaps, mouths) and their decisions kept in the CutGraph.
-inline constexpr StageInfo kCutStage{"cut", 13};
+// cut 14: the CutGraph carries the TopologyGraph's min_clearance_m on to merge.
+inline constexpr StageInfo kCutStage{"cut", 14};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
@@ -97,13 +100,15 @@ inline constexpr StageInfo kCutStage{"cut", 13};
 // merge 21: fewer constants: rows of a stack need not run parallel (their overlap decides), a
 // corridor stem has no least width of its own, a row no greatest length; a bay's mouth is measured
 // within ag-cut's door reach (1.5 m) instead of two of the bay's widths.
-inline constexpr StageInfo kMergeStage{"merge", 21};
+// merge 22: the AreaGraph carries the CleanedMap's robot_width_m on to match.
+inline constexpr StageInfo kMergeStage{"merge", 22};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.
 // match 5: joins also cut where the id moved to a leftover, without a passage, along pinched
 // outlines, and with a 0.5 m least opening (ids lost to scan noise alone).
-inline constexpr StageInfo kMatchStage{"match", 5};
+// match 6: join undoing runs rounds until one cuts nothing, not up to match.split_joins_rounds.
+inline constexpr StageInfo kMatchStage{"match", 6};
 
 // Whether two StageInfos name the same stage.
 inline bool SameStage(const StageInfo& a, const StageInfo& b) {

@@ -232,6 +232,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   out.set_parts(topology.parts());
   out.set_dropped_parts(topology.dropped_parts());
   out.set_dropped_area_m2(topology.dropped_area_m2());
+  out.set_min_clearance_m(topology.min_clearance_m());
   *out.mutable_vertices() = topology.vertices();
   *out.mutable_room_width() = room_width;
 

@@ -57,16 +57,17 @@ std::vector<int> MatchAreas(const proto::AreaGraph& current, const proto::AreaGr
 // that noise split off a previous area back into it (FindNoiseFragments;
 // again while folds make more of them, as when a piece only borders another
 // piece), then cutting apart the joins of two previous areas
-// (FindUndoableJoins, up to options.split_joins_rounds() times, since each
-// round cuts one previous area out of each joined area; the pieces are
-// matched and folded again):
+// (FindUndoableJoins, in rounds until one cuts nothing, since each round
+// cuts one previous area out of each joined area; the pieces are matched and
+// folded again; no more rounds than previous areas, as each round gives one
+// back):
 // `current` becomes the graph that is published, and the result is its
 // areas' previous ids (or -1).
 std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
                                             const proto::AreaGraph& previous,
                                             const proto::MatchOptions& options, bool fold) {
   const AreaCells before = RasterizeAreas(previous, current.frame());
-  int rounds_left = !fold || options.split_joins_below_m2() <= 0 ? 0 : options.split_joins_rounds();
+  int rounds_left = !fold || options.split_joins_below_m2() <= 0 ? 0 : previous.areas_size();
   while (true) {
     const AreaCells after = RasterizeAreas(current, current.frame());
     const std::vector<AreaOverlap> overlaps = CountOverlaps(before, after);
@@ -82,11 +83,10 @@ std::vector<int> MatchAreasFoldingFragments(proto::AreaGraph& current,
     }
     if (rounds_left <= 0) return ids;
     --rounds_left;
-    const std::vector<AreaUnjoin> unjoins =
-        FindUndoableJoins(previous, ids, before, overlaps, options.split_joins_below_m2(),
-                          options.split_joins_inside_share(),
-                          RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WHEN_ID_MOVED),
-                          RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WITHOUT_PASSAGE));
+    const std::vector<AreaUnjoin> unjoins = FindUndoableJoins(
+        previous, ids, before, overlaps, options.split_joins_below_m2(), options.min_overlap(),
+        RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WHEN_ID_MOVED),
+        RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_WITHOUT_PASSAGE));
     int split = 0;
     if (!unjoins.empty()) {
       current = SplitJoinedAreas(current, previous, unjoins, options, &split);
@@ -171,6 +171,11 @@ proto::AreaGraph MatchAreaGraph(const proto::AreaGraph& current, const proto::Ar
   int32_t next_area_id = 0, next_passage_id = 0;
   if (previous != nullptr) {
     CheckIsMatched(*previous);
+    if (!current.has_robot_width_m()) {
+      throw InputError(
+          "the Area Graph holds no robot width (written by merge 19 or older): run "
+          "ag-merge again");
+    }
     const bool same_segmentation =
         previous->version().segmentation_options_digest() == segmentation_options_digest;
     area_ids = MatchAreasFoldingFragments(matched, *previous, options, same_segmentation);

@@ -235,11 +235,14 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
 // One join cut apart (see SplitJoinedAreas), on `areas` and `passages`.
 // `kept` is the previous area whose id the joined area holds.
 // `options`: whether a cut may cross a passage's border
-// (UNDO_JOINS_ACROSS_PASSAGES), the wall margin (CutLengthOffWalls) and the
-// least opening (split_joins_min_opening_m).
+// (UNDO_JOINS_ACROSS_PASSAGES) and the wall margin (CutLengthOffWalls).
+// `robot_width_m`: the least opening (a passage narrower than a robot is
+// where two polygons barely touched, not how wide the door was) and the
+// least stretch of a cut passage that stays one.
 bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed, int kept,
-              const proto::MatchOptions& options, const MapTransform& transform,
-              std::vector<proto::Area>& areas, std::vector<proto::Passage>& passages) {
+              const proto::MatchOptions& options, double robot_width_m,
+              const MapTransform& transform, std::vector<proto::Area>& areas,
+              std::vector<proto::Passage>& passages) {
   const bool cut_passages = RunsStagePass(options, proto::MatchOptions::UNDO_JOINS_ACROSS_PASSAGES);
   const double wall_margin_m = options.split_joins_wall_margin_m();
   const proto::Area& joined = areas[joined_index];
@@ -341,7 +344,7 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
       moved.push_back(passages[j]);
       continue;
     }
-    std::vector<proto::Passage> pieces = CutPassage(passages[j], cut->second);
+    std::vector<proto::Passage> pieces = CutPassage(passages[j], cut->second, robot_width_m);
     if (pieces.empty()) return false;
     moved.insert(moved.end(), pieces.begin(), pieces.end());
   }
@@ -390,7 +393,7 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   // grown much (a wall removed is a real join, not noise).
   // Without a previous passage (UNDO_JOINS_WITHOUT_PASSAGE) the opening
   // counts as the least one.
-  double opening_m = options.split_joins_min_opening_m();
+  double opening_m = robot_width_m;
   for (const proto::Passage& old : previous.passages()) {
     const bool between_them = (old.area_a() == kept && old.area_b() == swallowed) ||
                               (old.area_a() == swallowed && old.area_b() == kept);
@@ -401,7 +404,7 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     for (int i = 0; i + 1 < old.border_m_size(); ++i) {
       border_m += std::sqrt(Distance2(ToPoint(old.border_m(i)), ToPoint(old.border_m(i + 1))));
     }
-    opening_m = std::max({old.width_m(), border_m, options.split_joins_min_opening_m()});
+    opening_m = std::max({old.width_m(), border_m, robot_width_m});
     break;
   }
   if (CutLengthOffWalls(chain, joined_m, wall_margin_m) > kMaxCutPerOpening * opening_m) {
@@ -470,8 +473,8 @@ proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::
   const MapTransform transform(current.frame());
   int count = 0;
   for (const AreaUnjoin& unjoin : unjoins) {
-    if (SplitOne(previous, unjoin.area, unjoin.previous, unjoin.kept, options, transform, areas,
-                 passages)) {
+    if (SplitOne(previous, unjoin.area, unjoin.previous, unjoin.kept, options,
+                 current.robot_width_m(), transform, areas, passages)) {
       ++count;
     }
   }

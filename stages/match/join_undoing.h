@@ -28,7 +28,7 @@ struct AreaUnjoin {
 // The joins of `current` that ag-merge made of two areas of `previous` that
 // were apart: a previous area smaller than `max_m2` whose id no area of
 // `current` took (`ids`, see MatchAreaGraph), with `inside_share`
-// (MatchOptions.split_joins_inside_share) of its cells (`before`: previous's cells on current's
+// (MatchOptions.min_overlap) of its cells (`before`: previous's cells on current's
 // grid; `overlaps` from CountOverlaps(before, current's cells)) inside one current area that took
 // the id of a previous area with a passage to it. `when_id_moved`
 // (match pass UNDO_JOINS_WHEN_ID_MOVED) also counts a previous area whose
@@ -53,14 +53,13 @@ std::vector<AreaUnjoin> FindUndoableJoins(const proto::AreaGraph& previous,
 // (where the previous version's passage between the two was, as wide) joins
 // the two pieces along their shared border. Where the cut crosses the border
 // of a passage to a third area, that passage is cut too (CutPassage): the
-// longest stretch keeps it, each other stretch of at least kMinCutPassageM
-// is a new passage from its piece; with match pass UNDO_JOINS_ACROSS_PASSAGES
-// skipped such a join stays. A join whose cut does not give two simple pieces,
-// or is longer than kMaxCutPerOpening times the opening the previous passage
-// had, stays as it is; the stretches of the cut that run within
-// options.split_joins_wall_margin_m() of the joined area's outline (along a
-// wall that noise moved) do not count as its length.
-// `done` (optional) counts the joins undone.
+// longest stretch keeps it, each other stretch of at least the robot's width
+// (AreaGraph.robot_width_m) is a new passage from its piece; with match pass
+// UNDO_JOINS_ACROSS_PASSAGES skipped such a join stays. A join whose cut does not give two simple
+// pieces, or is longer than kMaxCutPerOpening times the opening the previous passage had, stays as
+// it is; the stretches of the cut that run within options.split_joins_wall_margin_m() of the joined
+// area's outline (along a wall that noise moved) do not count as its length. `done` (optional)
+// counts the joins undone.
 proto::AreaGraph SplitJoinedAreas(const proto::AreaGraph& current, const proto::AreaGraph& previous,
                                   const std::vector<AreaUnjoin>& unjoins,
                                   const proto::MatchOptions& options, int* done = nullptr);

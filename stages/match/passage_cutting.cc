@@ -55,7 +55,7 @@ bool OnSegment(const BorderPoint& p, const BorderPoint& u, const BorderPoint& v)
 }
 
 std::vector<proto::Passage> CutPassage(const proto::Passage& passage,
-                                       const std::vector<BorderPoint>& cuts) {
+                                       const std::vector<BorderPoint>& cuts, double min_piece_m) {
   std::set<BorderPoint> placed;
   std::vector<std::vector<BorderPoint>> pieces(1);
   for (int i = 0; i < passage.border_m_size(); ++i) {
@@ -85,7 +85,7 @@ std::vector<proto::Passage> CutPassage(const proto::Passage& passage,
   }
   std::vector<proto::Passage> out;
   for (size_t i = 0; i < pieces.size(); ++i) {
-    if (i != longest && Length(pieces[i]) < kMinCutPassageM) continue;
+    if (i != longest && Length(pieces[i]) < min_piece_m) continue;
     out.push_back(PassageAlong(passage, pieces[i], i == longest));
   }
   return out;

@@ -95,7 +95,9 @@ AreaRaster PartitionedFreeSpace(const proto::CutGraph& graph, const proto::Clean
     }
   }
   return PartitionFreeSpace(grid, std::move(domain), polygons, paths, ThroughPaths(graph, plan),
-                            options.grow_min_gap_m() / grid.resolution_m());
+                            RunsStagePass(options, proto::MergeOptions::GROWTH_STOPS_AT_NARROW_GAPS)
+                                ? map.robot_width_m() / grid.resolution_m()
+                                : 0);
 }
 
 }  // namespace
@@ -105,6 +107,16 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   CheckMergeOptions(options);
   const CellGrid grid(map);
   CheckCutGraph(graph);
+  if (!map.has_robot_width_m()) {
+    throw InputError(
+        "the CleanedMap holds no robot width (written by clean 4 or older): run "
+        "ag-clean again");
+  }
+  if (!graph.has_min_clearance_m()) {
+    throw InputError(
+        "the CutGraph holds no clearance (written by cut 13 or older): run ag-prune "
+        "and ag-cut again");
+  }
   CheckOutlineTolerance(options, graph.room_width().room_width_m());
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 
@@ -138,6 +150,7 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
   out.set_components(CountComponents(out));
   out.set_dropped_parts(graph.dropped_parts());
   out.set_dropped_area_m2(graph.dropped_area_m2());
+  out.set_robot_width_m(map.robot_width_m());
   if (raster_out != nullptr) *raster_out = std::move(raster);
   return out;
 }

@@ -13,7 +13,8 @@ namespace areagraph {
 // among themselves (PartitionFreeSpace), so they never overlap and each is
 // one piece; cells that ag-clean freed stay out unless
 // merge.cover_removed_obstacles, and free space behind gaps narrower than
-// merge.grow_min_gap_m that no edge reaches stays unlabelled; areas smaller
+// the robot's width (merge pass GROWTH_STOPS_AT_NARROW_GAPS) that no edge
+// reaches stays unlabelled; areas smaller
 // than merge.min_area_m2 (and areas left without cells) fold into the
 // neighbour they share the longest border with. The areas' polygons are
 // a planar partition of that raster, simplified without changing its

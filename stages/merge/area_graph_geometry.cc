@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "stages/common/map_frame.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/merge/area_outlines.h"
 #include "stages/merge/open_borders.h"
 #include "stages/merge/passage_borders.h"
@@ -48,8 +49,11 @@ void AddAreasAndPassages(const proto::CutGraph& graph, const AreaPlan& plan,
   const double resolution_m = transform.resolution_m();
   const PlanarPartition partition = BuildPlanarPartition(raster.labels, area_count);
   // Read before the simplification lets the labels go.
+  const double clearance_m = RunsStagePass(options, proto::MergeOptions::OPEN_BORDER_PASSAGES)
+                                 ? graph.min_clearance_m()
+                                 : 0;
   const std::vector<bool> passable =
-      PassableChains(partition, raster.labels, options.open_border_clearance_m() / resolution_m);
+      PassableChains(partition, raster.labels, clearance_m / resolution_m);
   const PartitionOutlines outlines =
       SimplifiedOutlines(partition, raster.labels, options.outline_tolerance_m() / resolution_m,
                          options.min_hole_m2() / (resolution_m * resolution_m), labels_done);

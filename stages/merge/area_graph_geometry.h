@@ -16,8 +16,9 @@ namespace areagraph {
 // is made of borders it shares with its neighbours. The passages found at
 // graph vertices (FindPassages) are put on the borders they open
 // (PlacePassagesOnBorders): their end points are vertices of both areas.
-// Every other border between two areas that a body fits across
-// (merge.open_border_clearance_m) gets a passage too (OpenBorderPassages).
+// With merge pass OPEN_BORDER_PASSAGES, every other border between two areas
+// that a body fits across (the graph's min_clearance_m, prune.min_clearance_m)
+// gets a passage too (OpenBorderPassages).
 // Areas without cells are left out; ids are consecutive. `labels_done` is
 // called once raster.labels is read no more (see SimplifiedOutlines), and
 // before the plan's kinds are: it may still set them.

@@ -93,10 +93,10 @@ std::vector<MergePass> MakeTable() {
       Options::JOIN_POROUS_BORDERS,
       "after the openings of rooms and corridors are settled: what still meets at many "
       "openings, one too narrow for a door, is one space",
-      [](const Options& o) -> const Message* { return &o.porous_borders(); },
+      nullptr,
       [](const MergeInput& in, const PlanModel& model, AreaPlan* plan) {
         JoinAtPorousBorders(in.graph, model, in.closed,
-                            in.options.porous_borders().max_gap_m() / in.grid.resolution_m(), plan);
+                            in.map.robot_width_m() / in.grid.resolution_m(), plan);
       },
       nullptr,
   });
@@ -121,6 +121,14 @@ std::vector<MergePass> MakeTable() {
       nullptr,
   });
   table.push_back({
+      Options::GROWTH_STOPS_AT_NARROW_GAPS,
+      "after the joins, when the free space is split among the areas: it decides how far "
+      "each area's cells grow (BuildAreaGraph reads its switch)",
+      nullptr,
+      nullptr,
+      nullptr,
+  });
+  table.push_back({
       Options::KEEP_SMALL_CLOSED_ROOMS,
       "after the free space is split: it reads the areas' cells (their walls, their inner "
       "width) to keep a closet from being folded as a small area",
@@ -130,6 +138,14 @@ std::vector<MergePass> MakeTable() {
         return SmallClosedRooms(in.graph, plan, raster, in.grid, in.closed, min_cells,
                                 in.options.small_closed_rooms().pocket_jamb_m());
       },
+  });
+  table.push_back({
+      Options::OPEN_BORDER_PASSAGES,
+      "once the areas are outlined: it puts passages on the borders they share and changes no "
+      "area (AddAreasAndPassages reads its switch)",
+      nullptr,
+      nullptr,
+      nullptr,
   });
   return table;
 }

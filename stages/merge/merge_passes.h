@@ -33,7 +33,9 @@ struct MergeInput {
 };
 
 // One row of the merge's pass table: a rule beyond the paper that changes
-// which edges make up an area.
+// which edges make up an area, or (join and keep both null) one whose switch
+// is read where the free space is split (GROWTH_STOPS_AT_NARROW_GAPS) or the
+// passages are found (OPEN_BORDER_PASSAGES).
 struct MergePass {
   proto::MergeOptions::Pass pass;
   // Why it runs where it does.

@@ -308,10 +308,12 @@ std::vector<proto::Polygon> PartBoundaries(const FilteredGraph& filtered,
 
 // Takes the graph over: the chains' absorbed polygons move into the proto.
 proto::TopologyGraph ToProto(ChainGraph graph, const proto::MapFrame& frame,
-                             std::vector<proto::Polygon> parts, const PartSelection& selection) {
+                             std::vector<proto::Polygon> parts, const PartSelection& selection,
+                             double min_clearance_m) {
   proto::TopologyGraph out;
   out.set_format_version(kTopologyGraphFormatVersion);
   *out.mutable_frame() = frame;
+  out.set_min_clearance_m(min_clearance_m);
   if (!parts.empty()) *out.mutable_boundary() = parts.front();
   for (proto::Polygon& part : parts) *out.add_part_boundaries() = std::move(part);
   out.set_parts(selection.kept);
@@ -435,7 +437,8 @@ proto::TopologyGraph BuildTopologyGraph(const proto::VoronoiDiagram& diagram,
   if (parts.empty()) {
     throw InputError("no Topology Graph: no part of the graph lies inside the boundary");
   }
-  return ToProto(std::move(graph), map.frame(), std::move(parts), selection);
+  return ToProto(std::move(graph), map.frame(), std::move(parts), selection,
+                 options.min_clearance_m());
 }
 
 }  // namespace areagraph

@@ -11,6 +11,7 @@
 
 #include "stages/clean/clean_stage.h"
 #include "stages/common/map_frame.h"
+#include "stages/common/skipped_passes.h"
 #include "stages/cut/cut_graph_builder.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/polygon_raster.h"
@@ -147,6 +148,8 @@ proto::CleanedMap CleanedMapOfCells(const cv::Mat& cells, double resolution_m) {
   map.mutable_frame()->set_height_px(cells.rows);
   map.mutable_frame()->set_resolution_m(resolution_m);
   map.set_cells(std::string(cells.datastart, cells.dataend));
+  // As ag-clean writes it with the default options.
+  map.set_robot_width_m(proto::CleanOptions().robot_width_m());
   return map;
 }
 
@@ -167,6 +170,7 @@ proto::CleanedMap CleanedMapFromImage(const cv::Mat& grey, double resolution_m) 
     }
   }
   map.set_cells(cells);
+  map.set_robot_width_m(proto::CleanOptions().robot_width_m());
   return map;
 }
 
@@ -265,7 +269,10 @@ void ExpectAreaGraphInvariants(const AreaStages& stages, const proto::CleanedMap
   ASSERT_GT(raster.domain_cells, 0);
   EXPECT_GE(static_cast<double>(covered) / raster.domain_cells, min_coverage);
   EXPECT_GE(static_cast<double>(polygon_cells) / raster.domain_cells, min_coverage);
-  const double min_gap_px = stages.options.merge().grow_min_gap_m() / map.frame().resolution_m();
+  const double min_gap_px =
+      RunsStagePass(stages.options.merge(), proto::MergeOptions::GROWTH_STOPS_AT_NARROW_GAPS)
+          ? map.robot_width_m() / map.frame().resolution_m()
+          : 0;
   EXPECT_GE(static_cast<double>(covered) / ReachableCells(raster, map, stages.cut, min_gap_px),
             0.99);
 

@@ -46,7 +46,7 @@ AreaStages RunAreaStages(const proto::CleanedMap& map, const proto::PipelineOpti
 //   boundary, in the raster and in the polygons, and at least 99 % of those
 //   that are reachable (4-connected through free cells inside the boundary)
 //   from some area: real maps have closed-off pockets, such as courtyards,
-//   and rooms behind gaps narrower than merge.grow_min_gap_m that no area
+//   and rooms behind gaps narrower than the robot's width that no area
 //   reached do not count;
 // - every passage joins two different existing areas, both have cells next
 //   to the passage point, and its end points are vertices of both areas'

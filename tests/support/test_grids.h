@@ -3,6 +3,7 @@
 #include <string>
 
 #include "proto/artifacts.pb.h"
+#include "proto/pipeline_options.pb.h"
 
 namespace areagraph::testing {
 
@@ -50,6 +51,8 @@ class TestGrid {
     map.set_format_version(1);
     *map.mutable_frame() = ToGridMap(resolution_m).frame();
     map.set_cells(cells_);
+    // As ag-clean writes it with the default options.
+    map.set_robot_width_m(proto::CleanOptions().robot_width_m());
     return map;
   }
 

@@ -205,7 +205,7 @@ void ExplainLosses(const proto::AreaGraph& before, const GroundTruthView& before
     std::string kind = "joined";
     if (!passage) {
       kind += ", no passage";
-    } else if (inside < 100 * options.split_joins_inside_share()) {
+    } else if (inside < 100 * options.min_overlap()) {
       kind += ", under the share inside";
     } else if (before.areas(b).area_m2() >= options.split_joins_below_m2()) {
       kind += ", too large";

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/error.h"
+#include "proto/pipeline_options.pb.h"
 #include "stages/match/area_graph_matching.h"
 
 namespace areagraph::testing {
@@ -37,6 +38,8 @@ proto::GridMap MakeGridMap() {
 proto::AreaGraph MakeAreaGraph() {
   proto::AreaGraph graph;
   graph.set_format_version(1);
+  // As ag-merge writes it with the default options.
+  graph.set_robot_width_m(proto::CleanOptions().robot_width_m());
   proto::MapFrame* frame = graph.mutable_frame();
   frame->set_resolution_m(0.05);
   frame->set_origin_x_m(0.5);

@@ -238,7 +238,7 @@ TEST_F(AgRunTest, ManifestColumnThatIsNoOptionFailsBeforeAnyWork) {
 TEST_F(AgRunTest, BadOptionsOfAnyStageFailBeforeTheStore) {
   for (const char* bad :
        {"import.max_pixels=0", "clean.outlier_percent=100", "prune.dead_end_passes=-1",
-        "cut.room_width_m=-1", "merge.grow_min_gap_m=nan"}) {
+        "cut.room_width_m=-1", "merge.min_area_m2=nan"}) {
     const CommandResult run = RunTool("ag-run", Args({"--set", bad}));
     EXPECT_EQ(run.exit_code, 2) << bad;
     EXPECT_EQ(CountLines(run.err), 1) << run.err;

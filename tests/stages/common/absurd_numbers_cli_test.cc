@@ -108,7 +108,7 @@ std::vector<NumberEntry> Entries() {
        }},
       {"pipeline_options_file", "ag-pipeline",
        [=](const TempDir& dir, const AbsurdNumber& n) {
-         WriteFile(dir.File("o.pbtxt"), "merge { grow_min_gap_m: " + n.text + " }\n");
+         WriteFile(dir.File("o.pbtxt"), "merge { min_area_m2: " + n.text + " }\n");
          return std::vector<std::string>{"--store",   store(),     "--map",
                                          "two_rooms", "--options", dir.File("o.pbtxt")};
        }},

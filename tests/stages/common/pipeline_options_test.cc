@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/error.h"
@@ -124,6 +125,29 @@ TEST(PipelineOptionsTest, RemovedOptionIsRefusedByName) {
   }
   WriteFile(dir.File("comment.pbtxt"), "# keep_closed_doors: false\nmerge { min_area_m2: 1 }\n");
   EXPECT_DOUBLE_EQ(ReadOptionsFile(dir.File("comment.pbtxt")).merge().min_area_m2(), 1);
+}
+
+// The options folded into carried quantities or other options are refused
+// by name too, whichever stage they were in.
+TEST(PipelineOptionsTest, FoldedOptionsAreRefusedByName) {
+  TempDir dir;
+  const std::vector<std::pair<std::string, std::string>> folded{
+      {"match { split_joins_inside_share: 0.5 }", "match.split_joins_inside_share"},
+      {"match { split_joins_rounds: 4 }", "match.split_joins_rounds"},
+      {"match { split_joins_min_opening_m: 0.5 }", "match.split_joins_min_opening_m"},
+      {"merge { porous_borders { max_gap_m: 0.5 } }", "merge.porous_borders"},
+      {"merge { open_border_clearance_m: 0.15 }", "merge.open_border_clearance_m"},
+      {"merge { grow_min_gap_m: 0.5 }", "merge.grow_min_gap_m"}};
+  for (const auto& [text, name] : folded) {
+    WriteFile(dir.File("old.pbtxt"), text + "\n");
+    try {
+      ReadOptionsFile(dir.File("old.pbtxt"));
+      ADD_FAILURE() << "expected OptionsError for " << text;
+    } catch (const OptionsError& e) {
+      EXPECT_NE(std::string(e.what()).find("'" + name + "' was removed"), std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 // The fields of `message` (and of its messages) that it does not set.

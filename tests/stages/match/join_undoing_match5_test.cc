@@ -2,7 +2,7 @@
 // updates left standing: an id that moved to a small leftover of its area
 // (match pass UNDO_JOINS_WHEN_ID_MOVED), a previous outline that touches itself at a
 // vertex (WithoutPinches), a door whose passage measured narrower than a
-// robot (split_joins_min_opening_m), and two areas that shared a border but
+// robot (the Area Graph's robot_width_m), and two areas that shared a border but
 // no passage (UNDO_JOINS_WITHOUT_PASSAGE).
 #include <gtest/gtest.h>
 
@@ -133,9 +133,10 @@ TEST(JoinUndoingMatch5Test, ADoorNarrowerThanARobotCountsAsTheLeastOpening) {
   // 4 x 0.5 m.
   const proto::AreaGraph previous = ShallowRooms(0.3);
   EXPECT_EQ(AreaIds(MatchAfter(ShallowRoomsJoined(), &previous)), (Ids{0, 2, 1}));
-  proto::MatchOptions match4;
-  match4.set_split_joins_min_opening_m(0);
-  EXPECT_EQ(AreaIds(MatchAfter(ShallowRoomsJoined(), &previous, match4)), (Ids{0, 2}));
+  // Match 4 took the passage as measured (a robot width of 0).
+  proto::AreaGraph measured = ShallowRoomsJoined();
+  measured.set_robot_width_m(0);
+  EXPECT_EQ(AreaIds(MatchAfter(measured, &previous)), (Ids{0, 2}));
   // A wall of 2.5 m between rooms 2.5 m deep is still a real join.
   proto::AreaGraph deep = RectGraph(Frame(140, 100), {{0, 0, 4, 2.5}, {4, 0, 6, 2.5}});
   AddPassage(deep, 0, 1, 4, 1.25);

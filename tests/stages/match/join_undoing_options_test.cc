@@ -1,6 +1,6 @@
 // Match 4's join undoing: a cut that crosses a passage's border cuts the
 // passage too (match pass UNDO_JOINS_ACROSS_PASSAGES), a previous area only partly
-// inside the joined area is cut out as well (split_joins_inside_share), and
+// inside the joined area is cut out as well (match.min_overlap), and
 // the stretches of a cut that run along a wall noise moved do not count as
 // opening (split_joins_wall_margin_m).
 #include <gtest/gtest.h>
@@ -53,9 +53,8 @@ proto::MatchOptions Options(const std::string& which, double value) {
   if (which == "across" && value == 0) {
     options.add_skip_passes(proto::MatchOptions::UNDO_JOINS_ACROSS_PASSAGES);
   }
-  if (which == "share") options.set_split_joins_inside_share(value);
+  if (which == "share") options.set_min_overlap(value);
   if (which == "margin") options.set_split_joins_wall_margin_m(value);
-  if (which == "rounds") options.set_split_joins_rounds(static_cast<int>(value));
   return options;
 }
 
@@ -122,7 +121,7 @@ TEST(JoinUndoingOptionsTest, ACutAlongAMovedWallIsNoOpening) {
   EXPECT_EQ(AreaIds(MatchAfter(joined, &previous, Options("margin", 0))), (Ids{0, 2}));
 }
 
-TEST(JoinUndoingOptionsTest, AnAreaThatSwallowedTwoGivesBothBackInTwoRounds) {
+TEST(JoinUndoingOptionsTest, AnAreaThatSwallowedTwoGivesBothBack) {
   // B [0,2], A [2,5] and D [5,7] in a row, each open to the next, under a
   // corridor; now merge joined all three.
   proto::AreaGraph merged = RectGraph(Frame(160, 120), {{0, 0, 2, 3}, {2, 0, 5, 3}, {5, 0, 7, 3}});
@@ -130,9 +129,9 @@ TEST(JoinUndoingOptionsTest, AnAreaThatSwallowedTwoGivesBothBackInTwoRounds) {
   AddBorderPassage(merged, 1, 2, {{5, 0}, {5, 3}});
   const proto::AreaGraph previous = MatchAfter(merged, nullptr);
   const proto::AreaGraph joined = RectGraph(Frame(160, 120), {{0, 0, 7, 3}});
-  // Each round cuts one previous area out of the joined one.
-  EXPECT_EQ(AreaIds(MatchAfter(joined, &previous, Options("rounds", 1))).size(), 2u);
-  const proto::AreaGraph matched = MatchAfter(joined, &previous, Options("rounds", 2));
+  // Each round cuts one previous area out of the joined one; rounds run
+  // until none is left to cut (one round gave back only one of the two).
+  const proto::AreaGraph matched = MatchAfter(joined, &previous, Options("", 0));
   ASSERT_EQ(matched.areas_size(), 3);
   std::vector<int> ids = AreaIds(matched);
   std::sort(ids.begin(), ids.end());

@@ -1,12 +1,15 @@
 // A passage whose border a join's cut crosses is cut in two: the longer
 // stretch keeps it (and where it was), a long enough other stretch becomes a
-// passage of its own, a stub shorter than kMinCutPassageM is dropped.
+// passage of its own, a stub shorter than a robot's width is dropped.
 #include "stages/match/passage_cutting.h"
 
 #include <gtest/gtest.h>
 
 namespace areagraph {
 namespace {
+
+// clean.robot_width_m's default, which the Area Graph carries to match.
+constexpr double kRobotWidthM = 0.5;
 
 // A passage along the straight border (0, 0) -> (length, 0), point at x.
 proto::Passage StraightPassage(double length, double point_x) {
@@ -25,7 +28,8 @@ proto::Passage StraightPassage(double length, double point_x) {
 }
 
 TEST(PassageCuttingTest, TheLongerStretchKeepsThePassageAndTheOtherGetsOne) {
-  const std::vector<proto::Passage> pieces = CutPassage(StraightPassage(3, 2), {{1, 0}});
+  const std::vector<proto::Passage> pieces =
+      CutPassage(StraightPassage(3, 2), {{1, 0}}, kRobotWidthM);
   ASSERT_EQ(pieces.size(), 2u);
   // In border order: [0, 1] then [1, 3]; the second is longer and keeps the point and id.
   EXPECT_EQ(pieces[0].border_m_size(), 2);
@@ -46,14 +50,18 @@ TEST(PassageCuttingTest, TheLongerStretchKeepsThePassageAndTheOtherGetsOne) {
 }
 
 TEST(PassageCuttingTest, AStubShorterThanARobotIsDropped) {
-  const std::vector<proto::Passage> pieces = CutPassage(StraightPassage(3, 2), {{0.3, 0}});
+  const std::vector<proto::Passage> pieces =
+      CutPassage(StraightPassage(3, 2), {{0.3, 0}}, kRobotWidthM);
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_EQ(pieces[0].border_m(0).x(), 0.3);
   EXPECT_EQ(pieces[0].border_m(1).x(), 3);
+  // For a narrower robot the stub is a passage of its own.
+  EXPECT_EQ(CutPassage(StraightPassage(3, 2), {{0.3, 0}}, 0.2).size(), 2u);
 }
 
 TEST(PassageCuttingTest, TwoCutsGiveThreeStretches) {
-  const std::vector<proto::Passage> pieces = CutPassage(StraightPassage(4, 2), {{3, 0}, {1, 0}});
+  const std::vector<proto::Passage> pieces =
+      CutPassage(StraightPassage(4, 2), {{3, 0}, {1, 0}}, kRobotWidthM);
   ASSERT_EQ(pieces.size(), 3u);
   EXPECT_EQ(pieces[0].border_m(1).x(), 1);
   EXPECT_EQ(pieces[1].border_m(0).x(), 1);
@@ -62,8 +70,9 @@ TEST(PassageCuttingTest, TwoCutsGiveThreeStretches) {
 }
 
 TEST(PassageCuttingTest, ACutOffTheBorderIsRefused) {
-  EXPECT_TRUE(CutPassage(StraightPassage(3, 2), {{1, 0.5}}).empty());
-  EXPECT_TRUE(CutPassage(StraightPassage(3, 2), {{0, 0}}).empty());  // an end, not inside an edge
+  EXPECT_TRUE(CutPassage(StraightPassage(3, 2), {{1, 0.5}}, kRobotWidthM).empty());
+  // An end, not inside an edge.
+  EXPECT_TRUE(CutPassage(StraightPassage(3, 2), {{0, 0}}, kRobotWidthM).empty());
 }
 
 }  // namespace

@@ -21,6 +21,8 @@ proto::AreaGraph RectGraph(const proto::MapFrame& frame, const std::vector<World
   proto::AreaGraph graph;
   graph.set_format_version(1);
   *graph.mutable_frame() = frame;
+  // As ag-merge writes it with the default options.
+  graph.set_robot_width_m(proto::CleanOptions().robot_width_m());
   const MapTransform transform(frame);
   for (const WorldRect& rect : rects) {
     proto::Area* area = graph.add_areas();

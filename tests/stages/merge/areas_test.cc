@@ -198,8 +198,9 @@ TEST(AreaStagesTest, RoomBehindATooNarrowDoorStaysUnlabelled) {
   // The big room is covered up to the door.
   EXPECT_NEAR(stages.areas.areas(0).area_m2(), 4.85 * 3.85, 0.5);
 
-  // Growing everywhere (merge.grow_min_gap_m = 0) floods the small room too.
-  options.mutable_merge()->set_grow_min_gap_m(0);
+  // Growing everywhere (the pass skipped, as in the paper) floods the small
+  // room too.
+  options.mutable_merge()->add_skip_passes(proto::MergeOptions::GROWTH_STOPS_AT_NARROW_GAPS);
   const AreaStages flooded = RunAreaStages(map, options);
   ASSERT_EQ(flooded.areas.areas_size(), 1);
   EXPECT_NE(AreaAt(flooded.areas, 7.25, 2.5), -1);

@@ -42,6 +42,7 @@ proto::CutGraph TwoEdges(bool shared_vertex) {
   const int b = AddVertex(&graph, proto::VERTEX_DEAD_END, 2, 10, 5);
   AddStraightEdge(&graph, a, m, 0, {2, 5}, {shared_vertex ? 6.0 : 4.0, 5}, 2, 4, 4);
   AddStraightEdge(&graph, n, b, 1, {shared_vertex ? 6.0 : 8.0, 5}, {10, 5}, 2, 4, 4);
+  graph.set_min_clearance_m(0.15);  // prune.min_clearance_m's default
   return graph;
 }
 
@@ -105,7 +106,7 @@ std::vector<std::string> WallWithAGap(int gap) {
 }
 
 TEST(OpenBordersTest, AGapNarrowerThanTheBodyStaysShut) {
-  // merge.open_border_clearance_m 0.15 m: 3 cells either side of the border.
+  // The graph's min_clearance_m 0.15 m: 3 cells either side of the border.
   EXPECT_EQ(Areas(TwoEdges(false), DrawnRaster(WallWithAGap(5))).passages_size(), 0);
   const proto::AreaGraph wide = Areas(TwoEdges(false), DrawnRaster(WallWithAGap(6)));
   ASSERT_EQ(wide.passages_size(), 1);
@@ -119,10 +120,13 @@ TEST(OpenBordersTest, ABorderWithAPassageAtAVertexGetsNoSecond) {
   EXPECT_NEAR(graph.passages(0).width_m(), 4 * 0.05, 1e-9);
 }
 
-TEST(OpenBordersTest, ZeroClearanceAddsNoPassage) {
+TEST(OpenBordersTest, TheSkippedPassAddsNoPassage) {
   proto::MergeOptions options;
-  options.set_open_border_clearance_m(0);
+  options.add_skip_passes(proto::MergeOptions::OPEN_BORDER_PASSAGES);
   EXPECT_EQ(Areas(TwoEdges(false), DrawnRaster(kOpenRoom), options).passages_size(), 0);
+  proto::CutGraph graph = TwoEdges(false);
+  graph.set_min_clearance_m(0);
+  EXPECT_EQ(Areas(graph, DrawnRaster(kOpenRoom)).passages_size(), 0);
 }
 
 TEST(OpenBordersTest, OnlyChainsBetweenTwoAreasAreTested) {

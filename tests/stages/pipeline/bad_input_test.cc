@@ -90,6 +90,13 @@ TEST(AreaStagesBadInputTest, CorruptArtifactsAreInputErrors) {
               BuildAreaGraph(cut, map, {});
             }).find("no Area Graph: the cut graph has no edges"),
             std::string::npos);
+
+  proto::CleanedMap old_clean = map;
+  old_clean.clear_robot_width_m();
+  EXPECT_NE(ErrorOf<InputError>([&] {
+              BuildAreaGraph(stages.cut, old_clean, {});
+            }).find("the CleanedMap holds no robot width"),
+            std::string::npos);
 }
 
 TEST(AreaStagesBadInputTest, AbsurdPruneOptionsAreOptionsErrors) {

@@ -2,7 +2,7 @@
 // only opening is a gap narrower than twice prune.min_clearance_m (a cluttered
 // doorway, areagraph/ lab_b) has a graph of its own, cut off from the rest of
 // its free-space part; the paper keeps only the part's longest graph, and
-// the areas' growth does not pass the gap either (merge.grow_min_gap_m), so
+// the areas' growth does not pass the gap either (merge pass GROWTH_STOPS_AT_NARROW_GAPS), so
 // the room got no area at all.
 #include <gtest/gtest.h>
 
