@@ -158,7 +158,7 @@ IslandDepth IslandDepthOf(const std::string& cells, int width, int height, doubl
   island_depth.depth = ObstacleDepth(ObstacleMask(cells, width, height));
   island_depth.min_thickness_px =
       std::max(kMinIslandThicknessM / resolution_m,
-               kIslandWallRatio *
+               kFurnitureWallRatio *
                    TypicalWallThickness(island_depth.depth, kMaxWallThicknessM / resolution_m));
   return island_depth;
 }

@@ -14,9 +14,9 @@ namespace areagraph {
 // rectangle is at most `max_island_m` long and at most kMaxIslandElongation
 // times as long as wide, and that are at least `min_island_thickness_px`
 // thick (twice the depth of their deepest cell): free-standing desks, tables
-// and shelves that furniture removal left, at least kIslandWallRatio times
-// as thick as the map's typical wall, whose line no other obstacle continues
-// end-on (ContinuedEndOn in the .cc). A piece of wall between two doors is
+// and shelves that furniture removal left, at least kFurnitureWallRatio
+// times as thick as the map's typical wall (stages/geometry/wall_thickness.h),
+// whose line no other obstacle continues end-on (ContinuedEndOn in the .cc). A piece of wall between two doors is
 // thinner, longer or continued, and stays. The room disk looks
 // only at these sites, so that a room stays one room whatever stands in it;
 // furniture standing against a wall is part of the wall's region and still
@@ -51,9 +51,6 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
 
 // Walls are thinner than this (metres); furniture islands are not.
 inline constexpr double kMinIslandThicknessM = 0.8;
-// Islands are at least this many times as thick as the map's typical wall
-// (drawn maps have walls thicker than kMinIslandThicknessM).
-inline constexpr double kIslandWallRatio = 2.0;
 // Pieces of wall are longer than this many times their width; furniture
 // islands are not.
 inline constexpr double kMaxIslandElongation = 3.0;
