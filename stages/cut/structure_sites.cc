@@ -7,6 +7,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/geometry/cell_states.h"
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/obstacle_sites.h"
 #include "stages/geometry/wall_thickness.h"
@@ -179,7 +180,7 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
       if (!island[region]) continue;
       const RegionShape& s = regions.shapes[region];
       island[region] = !s.on_border && s.length <= max_island_px && s.thickness >= min_thickness &&
-                       s.length <= kMaxIslandElongation * s.width &&
+                       s.length <= kWallPieceElongation * s.width &&
                        s.cells >= kMinIslandSolidity * s.length * s.width;
       if (island[region] &&
           WallPiece(regions, region, gap_px, run_px, end_on_face_share, wall_piece_both_ends)) {

@@ -11,8 +11,8 @@ namespace areagraph {
 // The obstacle sites (ObstacleSites) that belong to the building's
 // structure: every 8-connected region of non-free cells except islands, the
 // regions that touch no image border, whose smallest enclosing (rotated)
-// rectangle is at most `max_island_m` long and at most kMaxIslandElongation
-// times as long as wide, and that are at least `min_island_thickness_px`
+// rectangle is at most `max_island_m` long and at most kWallPieceElongation
+// times as long as wide (stages/geometry/furniture_shape.h), and that are at least `min_island_thickness_px`
 // thick (twice the depth of their deepest cell): free-standing desks, tables
 // and shelves that furniture removal left, at least kFurnitureWallRatio
 // times as thick as the map's typical wall (stages/geometry/wall_thickness.h),
@@ -51,9 +51,6 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
 
 // Walls are thinner than this (metres); furniture islands are not.
 inline constexpr double kMinIslandThicknessM = 0.8;
-// Pieces of wall are longer than this many times their width; furniture
-// islands are not.
-inline constexpr double kMaxIslandElongation = 3.0;
 // Furniture islands fill at least this share of their rectangle; a piece of
 // wall with a T or an L and a cabinet against it does not.
 inline constexpr double kMinIslandSolidity = 0.75;

@@ -1,0 +1,15 @@
+#pragma once
+
+namespace areagraph {
+
+// The shape that tells a piece of wall standing between two doors from
+// furniture standing free. ag-clean keeps such pieces (clean pass
+// KEEP_WALL_PIECES); ag-cut keeps them as structure for the room disk
+// (cut pass FREE_STANDING_ISLANDS) and takes them as door jambs (cut pass
+// CLOSE_WALL_GAPS). How thick each is: stages/geometry/wall_thickness.h.
+
+// A wall runs on: a piece of wall is at least this many times as long as
+// wide, a desk or a cabinet is squarer.
+inline constexpr double kWallPieceElongation = 3.0;
+
+}  // namespace areagraph
