@@ -7,6 +7,7 @@
 #include "common/text.h"
 #include "stages/common/pipeline_options_check.h"
 #include "stages/common/skipped_passes.h"
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -34,7 +35,7 @@ CleanParameters CleanParametersFor(const proto::CleanOptions& options,
   parameters.keep_wall_pieces = RunsStagePass(options, proto::CleanOptions::KEEP_WALL_PIECES);
   parameters.wall_pieces.thinner_than_px = kMinFurnitureThicknessM / resolution;
   parameters.wall_pieces.min_length_px = kWallPieceMinLengthM / resolution;
-  parameters.wall_pieces.max_gap_px = kWallPieceMaxGapM / resolution;
+  parameters.wall_pieces.max_gap_px = kWallPieceGapM / resolution;
   parameters.wall_pieces.max_wall_px = kMaxWallThicknessM / resolution;
   return parameters;
 }

@@ -174,7 +174,7 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
     const double max_island_px = max_island_m / resolution_m;
     const double min_thickness = island_depth.min_thickness_px;
     regions = CandidateRegions(obstacles, island_depth.depth, site_cells, max_island_px, &island);
-    const double gap_px = kWallGapM / resolution_m;
+    const double gap_px = kWallPieceGapM / resolution_m;
     const double run_px = kEndOnRunM / resolution_m;
     for (size_t region = 1; region < regions.shapes.size(); ++region) {
       if (!island[region]) continue;

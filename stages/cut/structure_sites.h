@@ -26,7 +26,7 @@ namespace areagraph {
 // share of its end face's width, centred on the face, not only on its centre
 // line. `wall_piece_both_ends` (cut pass WALL_PIECES_NEED_BOTH_ENDS): a region
 // continued end-on is a piece of wall only when another obstacle also lies
-// within kWallGapM past its other end (a wall piece stands between two
+// within kWallPieceGapM past its other end (a wall piece stands between two
 // doors); a cabinet at a wall that lines up with a desk leaves the desk's
 // other end open.
 // `obstacles` labels `cells` (LabelObstacles; read only when max_island_m > 0).
@@ -55,11 +55,10 @@ inline constexpr double kMinIslandThicknessM = 0.8;
 // wall with a T or an L and a cabinet against it does not.
 inline constexpr double kMinIslandSolidity = 0.75;
 // A region whose line another obstacle continues end-on past a gap of at
-// most kWallGapM (a door), for kEndOnRunM and at most kEndOnWidthRatio times
+// most kWallPieceGapM (a door), for kEndOnRunM and at most kEndOnWidthRatio times
 // as wide, is a piece of a wall (or of a row of blocks dividing a room), not
 // an island. A desk's line ends in the face of a wall, which is long across
 // it.
-inline constexpr double kWallGapM = 1.6;
 inline constexpr double kEndOnRunM = 0.4;
 inline constexpr double kEndOnWidthRatio = 1.5;
 

@@ -11,5 +11,7 @@ namespace areagraph {
 // A wall runs on: a piece of wall is at least this many times as long as
 // wide, a desk or a cabinet is squarer.
 inline constexpr double kWallPieceElongation = 3.0;
+// The gap past each end of a piece of wall is at most a door's (metres).
+inline constexpr double kWallPieceGapM = 1.6;
 
 }  // namespace areagraph
