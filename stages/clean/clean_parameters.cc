@@ -34,7 +34,7 @@ CleanParameters CleanParametersFor(const proto::CleanOptions& options,
   parameters.unknown_island_max_cells = options.unknown_island_max_m2() / (resolution * resolution);
   parameters.keep_wall_pieces = RunsStagePass(options, proto::CleanOptions::KEEP_WALL_PIECES);
   parameters.wall_pieces.thinner_than_px = kMinFurnitureThicknessM / resolution;
-  parameters.wall_pieces.min_length_px = kWallPieceMinLengthM / resolution;
+  parameters.wall_pieces.min_length_px = kMinWallPieceM / resolution;
   parameters.wall_pieces.max_gap_px = kWallPieceGapM / resolution;
   parameters.wall_pieces.max_wall_px = kMaxWallThicknessM / resolution;
   return parameters;

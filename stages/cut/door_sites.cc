@@ -7,6 +7,7 @@
 
 #include "stages/cut/wall_probes.h"
 #include "stages/cut/width_estimate.h"
+#include "stages/geometry/furniture_shape.h"
 
 namespace areagraph {
 namespace {
@@ -117,7 +118,7 @@ struct WallGapFinder::Impl {
         max_thickness_px(kMaxTipWallM / resolution_m),
         max_gap_px(max_gap_m / resolution_m + 1),
         min_gap_px(kMinGapM / resolution_m + 1),
-        min_tip_px(kMinShortTipM / resolution_m) {}
+        min_tip_px(kMinWallPieceM / resolution_m) {}
 
   // The wall gap of segment `s` of edge `e` (sites a and b), if it is one;
   // its line is a to b.

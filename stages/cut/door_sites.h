@@ -53,10 +53,11 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 //   room's cross-section ends in the face of a wall (or of a cabinet
 //   standing against one), which is long across the line; a corridor's
 //   cross-section between two doors facing each other does not widen on
-//   either side. `short_tips` (always in cut): one of the
-//   two sites may lie in a region that is not structure when it is the thin
-//   wall end and its region is at least kMinShortTipM long: a piece of wall
-//   between two doors, a partition, a block of a row dividing a room.
+//   either side. `short_tips` (always in cut): one of the two sites may lie
+//   in a region that is not structure when it is the thin wall end and its
+//   region is at least kMinWallPieceM long (stages/geometry/furniture_shape.h):
+//   a piece of wall between two doors, a partition, a block of a row dividing
+//   a room.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
                        double resolution_m, double max_gap_m, bool short_tips,
@@ -87,11 +88,6 @@ inline constexpr double kMinTipRunGaps = 0.25;
 // Gaps narrower than this are no doors (metres).
 inline constexpr double kMinGapM = 0.5;
 
-// A short piece of wall is at least this long (metres, bounding box) to be
-// a jamb facing the structure (WallGapSites' short_tips): 0.5 and 1 m gave
-// the same means on bormann/, tuning and tuning-extra (but tuning-extra
-// 0.933 against 0.931), 2 m lost (tuning 0.916, tuning-extra 0.925).
-inline constexpr double kMinShortTipM = 0.5;
 // Obstacle regions at least this long (metres, bounding box) are structure.
 inline constexpr double kMinWallRegionM = 4.0;
 // How far the wall must run on past each jamb along the door's line (m).

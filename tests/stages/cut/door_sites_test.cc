@@ -187,7 +187,7 @@ TEST(DoorSitesTest, ShortPieceOfWallBetweenTwoDoorsIsAJamb) {
 
 TEST(DoorSitesTest, DeskOrSpeckInTheWallsLineIsNoJamb) {
   // A 0.9 m deep desk in the piece's place is no thin wall end, and a
-  // 0.3 m speck is shorter than kMinShortTipM: nothing is closed.
+  // 0.3 m speck is shorter than kMinWallPieceM: nothing is closed.
   EXPECT_TRUE(GapSites(WallWithTwoDoors(1.0, 0.9), 3.5).empty());
   EXPECT_TRUE(GapSites(WallWithTwoDoors(0.3), 3.5).empty());
 }
