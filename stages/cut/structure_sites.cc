@@ -181,7 +181,7 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
       const RegionShape& s = regions.shapes[region];
       island[region] = !s.on_border && s.length <= max_island_px && s.thickness >= min_thickness &&
                        s.length <= kWallPieceElongation * s.width &&
-                       s.cells >= kMinIslandSolidity * s.length * s.width;
+                       s.cells >= kMinFurnitureSolidity * s.length * s.width;
       if (island[region] &&
           WallPiece(regions, region, gap_px, run_px, end_on_face_share, wall_piece_both_ends)) {
         island[region] = 0;

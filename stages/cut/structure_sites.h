@@ -11,12 +11,14 @@ namespace areagraph {
 // The obstacle sites (ObstacleSites) that belong to the building's
 // structure: every 8-connected region of non-free cells except islands, the
 // regions that touch no image border, whose smallest enclosing (rotated)
-// rectangle is at most `max_island_m` long and at most kWallPieceElongation
-// times as long as wide (stages/geometry/furniture_shape.h), and that are at least `min_island_thickness_px`
-// thick (twice the depth of their deepest cell): free-standing desks, tables
-// and shelves that furniture removal left, at least kFurnitureWallRatio
-// times as thick as the map's typical wall (stages/geometry/wall_thickness.h),
-// whose line no other obstacle continues end-on (ContinuedEndOn in the .cc). A piece of wall between two doors is
+// rectangle is at most `max_island_m` long, at most kWallPieceElongation
+// times as long as wide and at least kMinFurnitureSolidity full
+// (stages/geometry/furniture_shape.h), and that are at least
+// `min_island_thickness_px` thick (twice the depth of their deepest cell):
+// free-standing desks, tables and shelves that furniture removal left, at
+// least kFurnitureWallRatio times as thick as the map's typical wall
+// (stages/geometry/wall_thickness.h), whose line no other obstacle continues
+// end-on (ContinuedEndOn in the .cc). A piece of wall between two doors is
 // thinner, longer or continued, and stays. The room disk looks
 // only at these sites, so that a room stays one room whatever stands in it;
 // furniture standing against a wall is part of the wall's region and still
@@ -51,14 +53,11 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
 
 // Walls are thinner than this (metres); furniture islands are not.
 inline constexpr double kMinIslandThicknessM = 0.8;
-// Furniture islands fill at least this share of their rectangle; a piece of
-// wall with a T or an L and a cabinet against it does not.
-inline constexpr double kMinIslandSolidity = 0.75;
 // A region whose line another obstacle continues end-on past a gap of at
-// most kWallPieceGapM (a door), for kEndOnRunM and at most kEndOnWidthRatio times
-// as wide, is a piece of a wall (or of a row of blocks dividing a room), not
-// an island. A desk's line ends in the face of a wall, which is long across
-// it.
+// most kWallPieceGapM (a door), for kEndOnRunM and at most kEndOnWidthRatio
+// times as wide, is a piece of a wall (or of a row of blocks dividing a
+// room), not an island. A desk's line ends in the face of a wall, which is
+// long across it.
 inline constexpr double kEndOnRunM = 0.4;
 inline constexpr double kEndOnWidthRatio = 1.5;
 

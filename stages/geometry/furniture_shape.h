@@ -18,5 +18,10 @@ inline constexpr double kWallPieceElongation = 3.0;
 inline constexpr double kMinWallPieceM = 0.5;
 // The gap past each end of a piece of wall is at most a door's (metres).
 inline constexpr double kWallPieceGapM = 1.6;
+// Furniture fills at least this share of its smallest enclosing rectangle
+// (a desk or a cabinet all of it, an L of two about half to three
+// quarters); a piece of wall with a T or an L and a cabinet against it does
+// not. (The same as ag-merge's furniture islands, stages/merge/furniture_islands.h.)
+inline constexpr double kMinFurnitureSolidity = 0.75;
 
 }  // namespace areagraph
