@@ -1,6 +1,7 @@
 #include "stages/cut/wall_probes.h"
 
 #include "stages/cut/door_sites.h"
+#include "stages/geometry/corridor_shape.h"
 
 namespace areagraph {
 
@@ -114,14 +115,9 @@ double FreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
   return t - 1;
 }
 
-// Whether the space behind a mouth from `a` to `b` runs on deeper than
-// kMouthCorridorDepth times its width along `behind`: a corridor (a side
-// corridor meeting another one, a wing corridor opening into a hall), not a
-// room. Probed at the middle and the quarters of the mouth, the deepest
-// counting, so that furniture in a room does not make it shallow.
 bool CorridorBehind(const WallStructure& walls, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& behind, int space) {
-  const double limit = kMouthCorridorDepth * (b - a).norm();
+  const double limit = kCorridorElongation * (b - a).norm();
   double deepest = 0;
   for (const double share : {0.25, 0.5, 0.75}) {
     deepest = std::max(deepest, FreeRun(walls, a + share * (b - a), behind, limit, space));

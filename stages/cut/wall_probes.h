@@ -118,15 +118,11 @@ double FreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
                const Eigen::Vector2d& direction, double limit_px, int space);
 
 // Whether the space behind a mouth from `a` to `b` runs on deeper than
-// kMouthCorridorDepth times its width along `behind`: a corridor (a side
-// corridor meeting another one, a wing corridor opening into a hall), not a
-// room. Probed at the middle and the quarters of the mouth, the deepest
+// kCorridorElongation (stages/geometry/corridor_shape.h) times its width along
+// `behind`: a corridor (a side corridor meeting another one, a wing corridor
+// opening into a hall), not a room. Probed at the middle and the quarters of the mouth, the deepest
 // counting, so that furniture in a room does not make it shallow.
 bool CorridorBehind(const WallStructure& walls, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& behind, int space);
-
-// A space behind a mouth this many times as deep as the mouth is wide is a
-// corridor (merge's kMinCorridorElongation).
-inline constexpr double kMouthCorridorDepth = 4.0;
 
 }  // namespace areagraph
