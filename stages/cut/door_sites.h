@@ -6,6 +6,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/cut/openings.h"
+#include "stages/cut/width_estimate.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/obstacle_regions.h"
 
@@ -85,8 +86,6 @@ inline constexpr double kMaxTipWallM = 0.6;
 // The thin wall runs on for at least this many times the gap's width: a
 // door is a short break in a long wall, a short stub in a room is no jamb.
 inline constexpr double kMinTipRunGaps = 0.25;
-// Gaps narrower than this are no doors (metres).
-inline constexpr double kMinGapM = 0.5;
 
 // Obstacle regions at least this long (metres, bounding box) are structure.
 inline constexpr double kMinWallRegionM = 4.0;

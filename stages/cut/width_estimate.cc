@@ -231,7 +231,7 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
   } else if (corridor_m > 0) {
     width = corridor_m - kPaperWidthMarginM;
   }
-  return std::max(width, kMinRoomWidthM);
+  return std::max(width, MinRoomWidthM());
 }
 
 }  // namespace areagraph

@@ -24,7 +24,7 @@ namespace areagraph {
 // the door is narrower than the corridor (or within kPaperWidthMarginM), else
 // corridor - 0.1 m; one of them alone decides when the other is missing;
 // `fallback_m` when neither was found. `above_doors`: door + `door_margin_m` whenever
-// a door was found. Never below kMinRoomWidthM.
+// a door was found. Never below MinRoomWidthM().
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m,
                                            bool above_doors = false, double door_margin_m = 0.1);
@@ -55,6 +55,10 @@ inline constexpr double kDoorRiseRatio = 0.25;
 inline constexpr double kCorridorMinLengthM = 2.5;
 inline constexpr double kCorridorToleranceM = 0.1;
 inline constexpr double kCorridorMinTotalM = 5.0;
-inline constexpr double kMinRoomWidthM = 0.6;
+// Gaps narrower than this are no doors (metres).
+inline constexpr double kMinGapM = 0.5;
+
+// The least W: the narrowest door (kMinGapM) and the paper's margin above it.
+constexpr double MinRoomWidthM() { return kMinGapM + kPaperWidthMarginM; }
 
 }  // namespace areagraph
