@@ -4,8 +4,8 @@
 
 namespace areagraph {
 
-// Whether all sites on one side of the edge are one obstacle cell (within
-// 1.5 px): the edge is then part of the boundary of that cell's Voronoi face,
+// Whether all sites on one side of the edge are one obstacle cell or cells
+// touching it (its 8-neighbours): the edge is then part of the boundary of that cell's Voronoi face,
 // a spur that a convex corner (a step of a slanted wall, the end of a wall)
 // sends into the free space, however long it is.
 bool IsCornerSpur(const ChainEdge& edge);
