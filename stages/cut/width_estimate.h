@@ -14,7 +14,8 @@ namespace areagraph {
 //   relative) on both sides within that reach, looking past the edge's ends
 //   into the edges that meet there: a constriction between wider spaces;
 // - a corridor is a stretch of at least kCorridorMinLengthM along one edge
-//   whose width stays within kCorridorTolerance of its narrowest point.
+//   whose width stays within kPaperWidthMarginM (or 10 %) of its narrowest
+//   point.
 // Returns the doors (one per place, widest first) and corridors found, the
 // widest door (the 90th percentile, so that one stray wide gap between
 // furniture does not decide)
@@ -46,14 +47,15 @@ double WidestDoorM(const std::vector<double>& widths_widest_first);
 double WidthRule(double door_m, double corridor_m, double fallback_m, bool above_doors,
                  double door_margin_m);
 
-// The paper's margin: W = door + 0.1 m, or corridor - 0.1 m.
+// The paper's margin: W = door + 0.1 m, or corridor - 0.1 m. Widths closer
+// than this count as the same width (the door against the corridor, the
+// width along a corridor).
 inline constexpr double kPaperWidthMarginM = 0.1;
 
 inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;
 inline constexpr double kDoorRiseRatio = 0.25;
 inline constexpr double kCorridorMinLengthM = 2.5;
-inline constexpr double kCorridorToleranceM = 0.1;
 inline constexpr double kCorridorMinTotalM = 5.0;
 // Gaps narrower than this are no doors (metres).
 inline constexpr double kMinGapM = 0.5;
