@@ -106,10 +106,10 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 
 struct WallGapFinder::Impl {
   Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
-       double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
+       double structure_m, double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
       : topology(topology),
         resolution_m(resolution_m),
-        walls(obstacles, kMinWallRegionM / resolution_m, free_spaces),
+        walls(obstacles, structure_m / resolution_m, free_spaces),
         arcs(topology),
         short_tips(short_tips),
         run_px(kJambRunM / resolution_m),
@@ -133,10 +133,10 @@ struct WallGapFinder::Impl {
 };
 
 WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                             double resolution_m, double max_gap_m, bool short_tips,
-                             const cv::Mat* free_spaces)
-    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, max_gap_m, short_tips,
-                                   free_spaces)) {}
+                             double resolution_m, double structure_m, double max_gap_m,
+                             bool short_tips, const cv::Mat* free_spaces)
+    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, structure_m, max_gap_m,
+                                   short_tips, free_spaces)) {}
 
 WallGapFinder::~WallGapFinder() = default;
 
@@ -221,20 +221,20 @@ std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
 }
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces) {
+                       double resolution_m, double structure_m, double max_gap_m,
+                       bool short_tips, const cv::Mat* free_spaces) {
   if (max_gap_m <= 0) return PointList();
-  return ClosingSites(
-      WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
-          .Openings(0, topology.edges_size()));
+  return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, structure_m, max_gap_m,
+                                    short_tips, free_spaces)
+                          .Openings(0, topology.edges_size()));
 }
 
 std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
                                        const ObstacleLabels& obstacles, double resolution_m,
-                                       const cv::Mat* free_spaces) {
+                                       double structure_m, const cv::Mat* free_spaces) {
   std::vector<Opening> openings;
   if (estimate.doors_size() == 0) return openings;
-  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
+  const WallStructure walls(obstacles, structure_m / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
   for (const proto::DetectedWidth& door : estimate.doors()) {
     Opening& opening = openings.emplace_back();
@@ -262,8 +262,9 @@ std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
 
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
                            const ObstacleLabels& obstacles, double resolution_m,
-                           const cv::Mat* free_spaces) {
-  return ClosingSites(NarrowingOpenings(estimate, obstacles, resolution_m, free_spaces));
+                           double structure_m, const cv::Mat* free_spaces) {
+  return ClosingSites(
+      NarrowingOpenings(estimate, obstacles, resolution_m, structure_m, free_spaces));
 }
 
 }  // namespace areagraph

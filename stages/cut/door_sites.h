@@ -19,9 +19,10 @@ namespace areagraph {
 // W is. A door's jambs:
 // - are the nearest non-free cells on either side of its narrowest point;
 // - both lie in obstacle regions that are the building's structure: regions
-//   that touch the image border or are at least kMinWallRegionM long (a
-//   desk or a shelf standing free is a small island, and its gap to a wall
-//   is no door);
+//   that touch the image border or are at least `structure_m` long
+//   (cut.islands.max_length_m: longer than any island of furniture; a desk or
+//   a shelf standing free is a small island, and its gap to a wall is no
+//   door);
 // - line up with a wall: past each jamb, away from the door, the line
 //   through both jambs runs on in non-free cells for kJambRunM.
 // `obstacles` labels the map's cells (LabelObstacles). With `free_spaces`
@@ -31,11 +32,11 @@ namespace areagraph {
 // as the outline of a hollow block. Null: only non-free cells count.
 std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
                                        const ObstacleLabels& obstacles, double resolution_m,
-                                       const cv::Mat* free_spaces = nullptr);
+                                       double structure_m, const cv::Mat* free_spaces = nullptr);
 // ClosingSites of NarrowingOpenings.
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
                            const ObstacleLabels& obstacles, double resolution_m,
-                           const cv::Mat* free_spaces = nullptr);
+                           double structure_m, const cv::Mat* free_spaces = nullptr);
 
 // Openings found from the jambs alone, for doors that the width estimate
 // misses because the space beyond them does not widen on both sides. Every
@@ -61,8 +62,8 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 //   a room.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces = nullptr);
+                       double resolution_m, double structure_m, double max_gap_m,
+                       bool short_tips, const cv::Mat* free_spaces = nullptr);
 
 // WallGapSites' openings edge range by edge range, for callers that run
 // ranges as tasks: the openings of all ranges in edge order are
@@ -70,7 +71,7 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabel
 class WallGapFinder {
  public:
   WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                double resolution_m, double max_gap_m, bool short_tips,
+                double resolution_m, double structure_m, double max_gap_m, bool short_tips,
                 const cv::Mat* free_spaces = nullptr);
   ~WallGapFinder();
   // The openings found on edges [begin, end).
@@ -87,8 +88,6 @@ inline constexpr double kMaxTipWallM = 0.6;
 // door is a short break in a long wall, a short stub in a room is no jamb.
 inline constexpr double kMinTipRunGaps = 0.25;
 
-// Obstacle regions at least this long (metres, bounding box) are structure.
-inline constexpr double kMinWallRegionM = 4.0;
 // How far the wall must run on past each jamb along the door's line (m).
 inline constexpr double kJambRunM = 0.3;
 // Share of the cells along that run that must be non-free.
