@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/cut/door_sites.h"
 #include "stages/geometry/cell_states.h"
 #include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/obstacle_regions.h"
@@ -175,7 +176,7 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
     const double min_thickness = island_depth.min_thickness_px;
     regions = CandidateRegions(obstacles, island_depth.depth, site_cells, max_island_px, &island);
     const double gap_px = kWallPieceGapM / resolution_m;
-    const double run_px = kEndOnRunM / resolution_m;
+    const double run_px = kJambRunM / resolution_m;
     for (size_t region = 1; region < regions.shapes.size(); ++region) {
       if (!island[region]) continue;
       const RegionShape& s = regions.shapes[region];
