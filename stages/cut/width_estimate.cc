@@ -158,18 +158,13 @@ std::vector<proto::DetectedWidth> OnePerPlace(std::vector<proto::DetectedWidth> 
   return kept;
 }
 
-// The narrowest width that corridors run for at least kCorridorMinTotalM
-// (summed over the stretches at most that wide): one short gap between a
-// desk and a wall is no corridor.
-double NarrowestCorridorM(std::vector<proto::DetectedWidth> corridors) {
-  std::sort(corridors.begin(), corridors.end(),
-            [](const auto& a, const auto& b) { return a.width_m() < b.width_m(); });
-  double total = 0;
+// The narrowest corridor stretch's width; 0 for none.
+double NarrowestCorridorM(const std::vector<proto::DetectedWidth>& corridors) {
+  double narrowest = 0;
   for (const proto::DetectedWidth& corridor : corridors) {
-    total += corridor.length_m();
-    if (total >= kCorridorMinTotalM) return corridor.width_m();
+    if (narrowest == 0 || corridor.width_m() < narrowest) narrowest = corridor.width_m();
   }
-  return 0;
+  return narrowest;
 }
 
 }  // namespace

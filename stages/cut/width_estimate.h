@@ -19,13 +19,12 @@ namespace areagraph {
 // Returns the doors (one per place, widest first) and corridors found, the
 // widest door (the 90th percentile, so that one stray wide gap between
 // furniture does not decide)
-// and the narrowest corridor (the narrowest width that corridors keep for
-// kCorridorMinTotalM in all), and W by the paper's rule: door + `door_margin_m`
-// (the paper: 0.1 m) when
-// the door is narrower than the corridor (or within kPaperWidthMarginM), else
-// corridor - 0.1 m; one of them alone decides when the other is missing;
-// `fallback_m` when neither was found. `above_doors`: door + `door_margin_m` whenever
-// a door was found. Never below MinRoomWidthM().
+// and the narrowest corridor (the narrowest stretch), and W by the paper's
+// rule: door + `door_margin_m` (the paper: 0.1 m) when the door is narrower
+// than the corridor (or within kPaperWidthMarginM), else corridor - 0.1 m;
+// one of them alone decides when the other is missing; `fallback_m` when
+// neither was found. `above_doors`: door + `door_margin_m` whenever a door
+// was found. Never below MinRoomWidthM().
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m,
                                            bool above_doors = false, double door_margin_m = 0.1);
@@ -56,7 +55,6 @@ inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;
 inline constexpr double kDoorRiseRatio = 0.25;
 inline constexpr double kCorridorMinLengthM = 2.5;
-inline constexpr double kCorridorMinTotalM = 5.0;
 // Gaps narrower than this are no doors (metres).
 inline constexpr double kMinGapM = 0.5;
 
