@@ -161,9 +161,8 @@ bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
   if (!WallRunsOn(walls, a, -along, run_px, space) || !WallRunsOn(walls, b, along, run_px, space)) {
     return false;
   }
-  const double min_run_px = kMinTipRunGaps * span;
-  const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
-  const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
+  const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px);
+  const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px);
   if (!tip_a && !tip_b) return false;
   // With short_tips, a thin wall end facing the structure may be a short
   // piece of wall (between two doors, a partition, a block of a row).

@@ -47,9 +47,9 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // least be wall structure. Consecutive segments of one edge that pass make
 // one opening, closed along every segment's line.
 // - A wall gap (cut pass CLOSE_WALL_GAPS): at most `max_gap_m` wide, at
-//   least one site the end of a thin wall (from the site on, for kJambRunM
-//   and kMinTipRunGaps times the gap, the non-free cells across the line
-//   span at most kMaxTipWallM, with free cells on both sides), both sites
+//   least one site the end of a thin wall (from the site on, for kJambRunM,
+//   the non-free cells across the line span at most kMaxTipWallM, with free
+//   cells on both sides), both sites
 //   structure, and the free width along the edge growing clearly
 //   (IsConstriction's rise) within kDoorReachM on at least one side. A
 //   room's cross-section ends in the face of a wall (or of a cabinet
@@ -84,9 +84,6 @@ class WallGapFinder {
 
 // A wall end is at most this thick across the door's line (metres).
 inline constexpr double kMaxTipWallM = 0.6;
-// The thin wall runs on for at least this many times the gap's width: a
-// door is a short break in a long wall, a short stub in a room is no jamb.
-inline constexpr double kMinTipRunGaps = 0.25;
 
 // How far the wall must run on past each jamb along the door's line (m).
 inline constexpr double kJambRunM = 0.3;

@@ -65,14 +65,9 @@ bool IsThinAt(const WallStructure& walls, const Eigen::Vector2d& probe,
   return one > 0 && other > 0 && one + other <= max_thickness_px;
 }
 
-// Whether `jamb` is the end of a thin wall running on away from the gap in
-// `outward`: thin (IsThinAt) from the jamb on for kJambRunM and at least
-// `min_run_px` (a short stub in a room is no door's jamb; a partition wall
-// meeting a corridor's wall beside a door is thick at the jamb).
 bool IsThinWallEnd(const WallStructure& walls, const Eigen::Vector2d& jamb,
-                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px,
-                   double min_run_px) {
-  for (double t = 1; t <= std::max(run_px, min_run_px); t += 1) {
+                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px) {
+  for (double t = 1; t <= run_px; t += 1) {
     if (!IsThinAt(walls, jamb + t * outward, outward, max_thickness_px)) return false;
   }
   return true;
