@@ -159,7 +159,7 @@ IslandDepth IslandDepthOf(const std::string& cells, int width, int height, doubl
   IslandDepth island_depth;
   island_depth.depth = ObstacleDepth(ObstacleMask(cells, width, height));
   island_depth.min_thickness_px =
-      std::max(kMinIslandThicknessM / resolution_m,
+      std::max(kMinFurnitureThicknessM / resolution_m,
                kFurnitureWallRatio *
                    TypicalWallThickness(island_depth.depth, kMaxWallThicknessM / resolution_m));
   return island_depth;

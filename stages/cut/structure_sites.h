@@ -14,10 +14,10 @@ namespace areagraph {
 // rectangle is at most `max_island_m` long, at most kWallPieceElongation
 // times as long as wide and at least kMinFurnitureSolidity full
 // (stages/geometry/furniture_shape.h), and that are at least
-// `min_island_thickness_px` thick (twice the depth of their deepest cell):
-// free-standing desks, tables and shelves that furniture removal left, at
-// least kFurnitureWallRatio times as thick as the map's typical wall
-// (stages/geometry/wall_thickness.h), whose line no other obstacle continues
+// kMinFurnitureThicknessM and kFurnitureWallRatio times the map's
+// typical wall thick (twice the depth of their deepest cell;
+// stages/geometry/wall_thickness.h): free-standing desks, tables and shelves
+// that furniture removal left, whose line no other obstacle continues
 // end-on (ContinuedEndOn in the .cc). A piece of wall between two doors is
 // thinner, longer or continued, and stays. The room disk looks
 // only at these sites, so that a room stays one room whatever stands in it;
@@ -51,8 +51,6 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
                              double end_on_face_share, bool wall_piece_both_ends,
                              const ObstacleLabels& obstacles);
 
-// Walls are thinner than this (metres); furniture islands are not.
-inline constexpr double kMinIslandThicknessM = 0.8;
 // A region whose line another obstacle continues end-on past a gap of at
 // most kWallPieceGapM (a door), for kJambRunM (as a wall runs on past a
 // door's jamb, stages/cut/door_sites.h) and at most kEndOnWidthRatio times
