@@ -134,8 +134,7 @@ std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int h
     }
     RegionShape shape;
     FitRegionRectangle(site_cells[i], &shape);
-    if (shape.length < sizes.min_length_px ||
-        shape.length < kWallPieceElongation * shape.width ||
+    if (shape.length < sizes.min_length_px || shape.length < kWallPieceElongation * shape.width ||
         !MeetsObstaclePastEnd(labels, shape, region, 1, sizes.max_gap_px) ||
         !MeetsObstaclePastEnd(labels, shape, region, -1, sizes.max_gap_px)) {
       continue;

@@ -12,10 +12,11 @@ namespace areagraph {
 // thinner than `thinner_than_px` or kFurnitureWallRatio times the map's
 // typical wall (TypicalWallThickness; twice its deepest cell's depth), at
 // least kWallPieceElongation (stages/geometry/furniture_shape.h) times as long
-// as wide and `min_length_px` (kMinWallPieceM) long, and past both of its ends its line (the centre line of its smallest
-// enclosing rectangle, or a line one cell beside it) meets another obstacle
-// region within `max_gap_px` (kWallPieceGapM). A wall broken by two doors leaves such a piece;
-// its perimeter is as short as a desk's.
+// as wide and `min_length_px` (kMinWallPieceM) long, and past both of its
+// ends its line (the centre line of its smallest enclosing rectangle, or a
+// line one cell beside it) meets another obstacle region within `max_gap_px`
+// (kWallPieceGapM). A wall broken by two doors leaves such a piece; its
+// perimeter is as short as a desk's.
 struct WallPieceSizes {
   double thinner_than_px = 0;
   double min_length_px = 0;

@@ -143,7 +143,8 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   std::vector<std::function<void()>> tasks = {
       [&] {
         if (closes_doors) {
-          in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, structure_m, spaces);
+          in.openings =
+              NarrowingOpenings(in.room_width, obstacles, resolution_m, structure_m, spaces);
         }
       },
       [&] { mouths = MouthOpenings(obstacles, resolution_m, structure_m, mouth_max_m, spaces); }};

@@ -220,8 +220,8 @@ std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
 }
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double structure_m, double max_gap_m,
-                       bool short_tips, const cv::Mat* free_spaces) {
+                       double resolution_m, double structure_m, double max_gap_m, bool short_tips,
+                       const cv::Mat* free_spaces) {
   if (max_gap_m <= 0) return PointList();
   return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, structure_m, max_gap_m,
                                     short_tips, free_spaces)
@@ -260,8 +260,8 @@ std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
 }
 
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m,
-                           double structure_m, const cv::Mat* free_spaces) {
+                           const ObstacleLabels& obstacles, double resolution_m, double structure_m,
+                           const cv::Mat* free_spaces) {
   return ClosingSites(
       NarrowingOpenings(estimate, obstacles, resolution_m, structure_m, free_spaces));
 }

@@ -35,8 +35,8 @@ std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
                                        double structure_m, const cv::Mat* free_spaces = nullptr);
 // ClosingSites of NarrowingOpenings.
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m,
-                           double structure_m, const cv::Mat* free_spaces = nullptr);
+                           const ObstacleLabels& obstacles, double resolution_m, double structure_m,
+                           const cv::Mat* free_spaces = nullptr);
 
 // Openings found from the jambs alone, for doors that the width estimate
 // misses because the space beyond them does not widen on both sides. Every
@@ -62,8 +62,8 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 //   a room.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double structure_m, double max_gap_m,
-                       bool short_tips, const cv::Mat* free_spaces = nullptr);
+                       double resolution_m, double structure_m, double max_gap_m, bool short_tips,
+                       const cv::Mat* free_spaces = nullptr);
 
 // WallGapSites' openings edge range by edge range, for callers that run
 // ranges as tasks: the openings of all ranges in edge order are

@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include "proto/pipeline_options.pb.h"
-
 #include "tests/support/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 

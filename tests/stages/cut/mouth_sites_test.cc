@@ -5,10 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "proto/pipeline_options.pb.h"
-
 #include <algorithm>
 
+#include "proto/pipeline_options.pb.h"
 #include "tests/support/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
