@@ -57,6 +57,7 @@ inline constexpr StageInfo kPruneStage{"prune", 4};
 // Also in cut 14: the narrowest corridor is the narrowest stretch (no 5 m in all).
 // Also in cut 14: a wall gap's thin wall end runs on for kJambRunM only (no quarter of the gap).
 // Also in cut 14: islands are as thick as merge's, kMinFurnitureThicknessM (0.3 m, was 0.8 m).
+// Also in cut 14: a narrow tail is kCorridorWidthRatio (1.3, was 2) times narrower than its room.
 inline constexpr StageInfo kCutStage{"cut", 14};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
