@@ -53,7 +53,7 @@ IMPLEMENTATION+='|GapEdgesPerRange|Parallel[A-Za-z]*|Chunk[A-Za-z]*|SpatialSortO
 IMPLEMENTATION+='|Initial|MostSteps|Bits|Slots|Empty|Far|NoZero|Infinity|Unreached|Ray|NotHere'
 IMPLEMENTATION+='|TwoPi|HalfGridLimit|MixedLimit|ShiftBits|Scale|Full|Row|One|Four|Near'
 IMPLEMENTATION+='|BoxMargin|MaxNearer|SamePointPx|TieBreakStep|SlackPx|BucketPx|CornerCut'
-IMPLEMENTATION+='|SampleStepPx|East|South|West|North|SouthEast|SouthWest|NorthWest|NorthEast'
+IMPLEMENTATION+='|SampleStepPx|NarrowTolerancePx|East|South|West|North|SouthEast|SouthWest|NorthWest|NorthEast'
 BOUNDS='MinResolutionM|MaxResolutionM|MaxOptionLengthM|MaxOptionAreaM2|MaxOriginM'
 
 options=$(awk '

@@ -7,6 +7,7 @@
 #include "common/text.h"
 #include "stages/common/pipeline_options_check.h"
 #include "stages/common/skipped_passes.h"
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -33,8 +34,8 @@ CleanParameters CleanParametersFor(const proto::CleanOptions& options,
   parameters.unknown_island_max_cells = options.unknown_island_max_m2() / (resolution * resolution);
   parameters.keep_wall_pieces = RunsStagePass(options, proto::CleanOptions::KEEP_WALL_PIECES);
   parameters.wall_pieces.thinner_than_px = kMinFurnitureThicknessM / resolution;
-  parameters.wall_pieces.min_length_px = kWallPieceMinLengthM / resolution;
-  parameters.wall_pieces.max_gap_px = kWallPieceMaxGapM / resolution;
+  parameters.wall_pieces.min_length_px = kMinWallPieceM / resolution;
+  parameters.wall_pieces.max_gap_px = kWallPieceGapM / resolution;
   parameters.wall_pieces.max_wall_px = kMaxWallThicknessM / resolution;
   return parameters;
 }

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "stages/geometry/distance_transform.h"
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/region_boxes.h"
 #include "stages/geometry/wall_thickness.h"
@@ -133,8 +134,7 @@ std::vector<uint8_t> WallPieceRegions(const std::string& cells, int width, int h
     }
     RegionShape shape;
     FitRegionRectangle(site_cells[i], &shape);
-    if (shape.length < sizes.min_length_px ||
-        shape.length < kWallPieceMinElongation * shape.width ||
+    if (shape.length < sizes.min_length_px || shape.length < kWallPieceElongation * shape.width ||
         !MeetsObstaclePastEnd(labels, shape, region, 1, sizes.max_gap_px) ||
         !MeetsObstaclePastEnd(labels, shape, region, -1, sizes.max_gap_px)) {
       continue;

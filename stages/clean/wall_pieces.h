@@ -11,11 +11,12 @@ namespace areagraph {
 // standing between two doors (clean pass KEEP_WALL_PIECES), in pixels: it is
 // thinner than `thinner_than_px` or kFurnitureWallRatio times the map's
 // typical wall (TypicalWallThickness; twice its deepest cell's depth), at
-// least kWallPieceMinElongation times as long as wide and `min_length_px`
-// long, and past both of its ends its line (the centre line of its smallest
-// enclosing rectangle, or a line one cell beside it) meets another obstacle
-// region within `max_gap_px`. A wall broken by two doors leaves such a piece;
-// its perimeter is as short as a desk's.
+// least kWallPieceElongation (stages/geometry/furniture_shape.h) times as long
+// as wide and `min_length_px` (kMinWallPieceM) long, and past both of its
+// ends its line (the centre line of its smallest enclosing rectangle, or a
+// line one cell beside it) meets another obstacle region within `max_gap_px`
+// (kWallPieceGapM). A wall broken by two doors leaves such a piece; its
+// perimeter is as short as a desk's.
 struct WallPieceSizes {
   double thinner_than_px = 0;
   double min_length_px = 0;
@@ -28,15 +29,6 @@ struct WallPieceSizes {
 // kFurnitureWallRatio times the map's typical wall,
 // stages/geometry/wall_thickness.h), as ag-merge's furniture islands are
 // thicker.
-// At least this many times as long as thick: a wall runs on, a desk or a
-// cabinet is squarer.
-inline constexpr double kWallPieceMinElongation = 3.0;
-// At least as long as the short wall pieces that ag-cut takes as jambs
-// (cut pass CLOSE_WALL_GAPS, its short tips).
-inline constexpr double kWallPieceMinLengthM = 0.5;
-// The gap past each end is at most a door's (as kWallGapM,
-// stages/cut/structure_sites.h).
-inline constexpr double kWallPieceMaxGapM = 1.6;
 
 // The obstacle regions (8-connected non-free cells of `cells`: `labels`, as
 // cv::connectedComponents labels ObstacleMask, `label_count` of them) among

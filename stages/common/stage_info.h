@@ -56,7 +56,12 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // cut 12: edge polygons and room shapes as packed rings (CutGraph format 2, as prune 4).
 // cut 13: the openings (narrowings, wall gaps, mouths) and their decisions kept in the CutGraph.
 // cut 14: the CutGraph carries the TopologyGraph's min_clearance_m on to merge.
-inline constexpr StageInfo kCutStage{"cut", 14};
+// cut 15: a block is continued end-on by a wall running on for kJambRunM (0.3 m, was 0.4 m).
+// Also in cut 15: the narrowest corridor is the narrowest stretch (no 5 m in all).
+// Also in cut 15: a wall gap's thin wall end runs on for kJambRunM only (no quarter of the gap).
+// Also in cut 15: islands are as thick as merge's, kMinFurnitureThicknessM (0.3 m, was 0.8 m).
+// Also in cut 15: a narrow tail is kCorridorWidthRatio (1.3, was 2) times narrower than its room.
+inline constexpr StageInfo kCutStage{"cut", 15};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

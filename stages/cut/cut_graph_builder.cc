@@ -81,6 +81,8 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   const double resolution_m = grid.resolution_m();
   const double island_max_m = IslandMaxLengthM(options);
   const double gap_max_m = WallGapMaxWidthM(options);
+  // Door jambs are the building's structure: obstacles longer than any island.
+  const double structure_m = options.islands().max_length_m();
   const double mouth_max_m = MouthMaxWidthM(options);
   const bool closes_doors = RunsCutPass(options, proto::CutOptions::CLOSE_WALL_DOORS);
   const bool islands = island_max_m > 0;
@@ -131,8 +133,8 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   // The door sites beside the gap sites' edge ranges.
   std::unique_ptr<WallGapFinder> gap_finder;
   if (finds_gaps) {
-    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m, gap_max_m,
-                                                 /*short_tips=*/true, spaces);
+    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m, structure_m,
+                                                 gap_max_m, /*short_tips=*/true, spaces);
   }
   const size_t edge_count = static_cast<size_t>(topology.edges_size());
   const int gap_ranges = gap_finder ? ParallelRangeCount(edge_count, kGapEdgesPerRange) : 0;
@@ -141,10 +143,11 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   std::vector<std::function<void()>> tasks = {
       [&] {
         if (closes_doors) {
-          in.openings = NarrowingOpenings(in.room_width, obstacles, resolution_m, spaces);
+          in.openings =
+              NarrowingOpenings(in.room_width, obstacles, resolution_m, structure_m, spaces);
         }
       },
-      [&] { mouths = MouthOpenings(obstacles, resolution_m, mouth_max_m, spaces); }};
+      [&] { mouths = MouthOpenings(obstacles, resolution_m, structure_m, mouth_max_m, spaces); }};
   for (int range = 0; range < gap_ranges; ++range) {
     tasks.push_back([&, range] {
       gaps[range] = gap_finder->Openings(

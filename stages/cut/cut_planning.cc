@@ -8,7 +8,9 @@ namespace {
 
 // Spacing of the samples that look for room changes along a segment (px).
 constexpr double kSampleStepPx = 0.5;
-// Clearances within this of the minimum count as equally narrow (px).
+// Clearances within this of the minimum count as equally narrow (px): a
+// tie-break, since the sites lie on cell centres and clearances closer than
+// half a cell are the grid's rounding, not a narrower spot.
 constexpr double kNarrowTolerancePx = 0.5;
 
 double Length(const EdgeTrack& track, const EdgePiece& piece) {

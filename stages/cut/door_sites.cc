@@ -7,6 +7,7 @@
 
 #include "stages/cut/wall_probes.h"
 #include "stages/cut/width_estimate.h"
+#include "stages/geometry/furniture_shape.h"
 
 namespace areagraph {
 namespace {
@@ -105,10 +106,10 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 
 struct WallGapFinder::Impl {
   Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
-       double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
+       double structure_m, double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
       : topology(topology),
         resolution_m(resolution_m),
-        walls(obstacles, kMinWallRegionM / resolution_m, free_spaces),
+        walls(obstacles, structure_m / resolution_m, free_spaces),
         arcs(topology),
         short_tips(short_tips),
         run_px(kJambRunM / resolution_m),
@@ -117,7 +118,7 @@ struct WallGapFinder::Impl {
         max_thickness_px(kMaxTipWallM / resolution_m),
         max_gap_px(max_gap_m / resolution_m + 1),
         min_gap_px(kMinGapM / resolution_m + 1),
-        min_tip_px(kMinShortTipM / resolution_m) {}
+        min_tip_px(kMinWallPieceM / resolution_m) {}
 
   // The wall gap of segment `s` of edge `e` (sites a and b), if it is one;
   // its line is a to b.
@@ -132,10 +133,10 @@ struct WallGapFinder::Impl {
 };
 
 WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                             double resolution_m, double max_gap_m, bool short_tips,
-                             const cv::Mat* free_spaces)
-    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, max_gap_m, short_tips,
-                                   free_spaces)) {}
+                             double resolution_m, double structure_m, double max_gap_m,
+                             bool short_tips, const cv::Mat* free_spaces)
+    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, structure_m, max_gap_m,
+                                   short_tips, free_spaces)) {}
 
 WallGapFinder::~WallGapFinder() = default;
 
@@ -160,9 +161,8 @@ bool WallGapFinder::Impl::Find(int e, int s, Opening* found) const {
   if (!WallRunsOn(walls, a, -along, run_px, space) || !WallRunsOn(walls, b, along, run_px, space)) {
     return false;
   }
-  const double min_run_px = kMinTipRunGaps * span;
-  const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px, min_run_px);
-  const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px, min_run_px);
+  const bool tip_a = IsThinWallEnd(walls, a, -along, run_px, max_thickness_px);
+  const bool tip_b = IsThinWallEnd(walls, b, along, run_px, max_thickness_px);
   if (!tip_a && !tip_b) return false;
   // With short_tips, a thin wall end facing the structure may be a short
   // piece of wall (between two doors, a partition, a block of a row).
@@ -220,20 +220,20 @@ std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
 }
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips,
+                       double resolution_m, double structure_m, double max_gap_m, bool short_tips,
                        const cv::Mat* free_spaces) {
   if (max_gap_m <= 0) return PointList();
-  return ClosingSites(
-      WallGapFinder(topology, obstacles, resolution_m, max_gap_m, short_tips, free_spaces)
-          .Openings(0, topology.edges_size()));
+  return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, structure_m, max_gap_m,
+                                    short_tips, free_spaces)
+                          .Openings(0, topology.edges_size()));
 }
 
 std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
                                        const ObstacleLabels& obstacles, double resolution_m,
-                                       const cv::Mat* free_spaces) {
+                                       double structure_m, const cv::Mat* free_spaces) {
   std::vector<Opening> openings;
   if (estimate.doors_size() == 0) return openings;
-  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
+  const WallStructure walls(obstacles, structure_m / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
   for (const proto::DetectedWidth& door : estimate.doors()) {
     Opening& opening = openings.emplace_back();
@@ -260,9 +260,10 @@ std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
 }
 
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m,
+                           const ObstacleLabels& obstacles, double resolution_m, double structure_m,
                            const cv::Mat* free_spaces) {
-  return ClosingSites(NarrowingOpenings(estimate, obstacles, resolution_m, free_spaces));
+  return ClosingSites(
+      NarrowingOpenings(estimate, obstacles, resolution_m, structure_m, free_spaces));
 }
 
 }  // namespace areagraph

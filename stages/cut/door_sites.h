@@ -6,6 +6,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/cut/openings.h"
+#include "stages/cut/width_estimate.h"
 #include "stages/geometry/edge_polygon.h"
 #include "stages/geometry/obstacle_regions.h"
 
@@ -18,9 +19,10 @@ namespace areagraph {
 // W is. A door's jambs:
 // - are the nearest non-free cells on either side of its narrowest point;
 // - both lie in obstacle regions that are the building's structure: regions
-//   that touch the image border or are at least kMinWallRegionM long (a
-//   desk or a shelf standing free is a small island, and its gap to a wall
-//   is no door);
+//   that touch the image border or are at least `structure_m` long
+//   (cut.islands.max_length_m: longer than any island of furniture; a desk or
+//   a shelf standing free is a small island, and its gap to a wall is no
+//   door);
 // - line up with a wall: past each jamb, away from the door, the line
 //   through both jambs runs on in non-free cells for kJambRunM.
 // `obstacles` labels the map's cells (LabelObstacles). With `free_spaces`
@@ -30,10 +32,10 @@ namespace areagraph {
 // as the outline of a hollow block. Null: only non-free cells count.
 std::vector<Opening> NarrowingOpenings(const proto::RoomWidthEstimate& estimate,
                                        const ObstacleLabels& obstacles, double resolution_m,
-                                       const cv::Mat* free_spaces = nullptr);
+                                       double structure_m, const cv::Mat* free_spaces = nullptr);
 // ClosingSites of NarrowingOpenings.
 PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
-                           const ObstacleLabels& obstacles, double resolution_m,
+                           const ObstacleLabels& obstacles, double resolution_m, double structure_m,
                            const cv::Mat* free_spaces = nullptr);
 
 // Openings found from the jambs alone, for doors that the width estimate
@@ -45,21 +47,22 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // least be wall structure. Consecutive segments of one edge that pass make
 // one opening, closed along every segment's line.
 // - A wall gap (cut pass CLOSE_WALL_GAPS): at most `max_gap_m` wide, at
-//   least one site the end of a thin wall (from the site on, for kJambRunM
-//   and kMinTipRunGaps times the gap, the non-free cells across the line
-//   span at most kMaxTipWallM, with free cells on both sides), both sites
+//   least one site the end of a thin wall (from the site on, for kJambRunM,
+//   the non-free cells across the line span at most kMaxTipWallM, with free
+//   cells on both sides), both sites
 //   structure, and the free width along the edge growing clearly
 //   (IsConstriction's rise) within kDoorReachM on at least one side. A
 //   room's cross-section ends in the face of a wall (or of a cabinet
 //   standing against one), which is long across the line; a corridor's
 //   cross-section between two doors facing each other does not widen on
-//   either side. `short_tips` (always in cut): one of the
-//   two sites may lie in a region that is not structure when it is the thin
-//   wall end and its region is at least kMinShortTipM long: a piece of wall
-//   between two doors, a partition, a block of a row dividing a room.
+//   either side. `short_tips` (always in cut): one of the two sites may lie
+//   in a region that is not structure when it is the thin wall end and its
+//   region is at least kMinWallPieceM long (stages/geometry/furniture_shape.h):
+//   a piece of wall between two doors, a partition, a block of a row dividing
+//   a room.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double max_gap_m, bool short_tips,
+                       double resolution_m, double structure_m, double max_gap_m, bool short_tips,
                        const cv::Mat* free_spaces = nullptr);
 
 // WallGapSites' openings edge range by edge range, for callers that run
@@ -68,7 +71,7 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabel
 class WallGapFinder {
  public:
   WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                double resolution_m, double max_gap_m, bool short_tips,
+                double resolution_m, double structure_m, double max_gap_m, bool short_tips,
                 const cv::Mat* free_spaces = nullptr);
   ~WallGapFinder();
   // The openings found on edges [begin, end).
@@ -81,19 +84,7 @@ class WallGapFinder {
 
 // A wall end is at most this thick across the door's line (metres).
 inline constexpr double kMaxTipWallM = 0.6;
-// The thin wall runs on for at least this many times the gap's width: a
-// door is a short break in a long wall, a short stub in a room is no jamb.
-inline constexpr double kMinTipRunGaps = 0.25;
-// Gaps narrower than this are no doors (metres).
-inline constexpr double kMinGapM = 0.5;
 
-// A short piece of wall is at least this long (metres, bounding box) to be
-// a jamb facing the structure (WallGapSites' short_tips): 0.5 and 1 m gave
-// the same means on bormann/, tuning and tuning-extra (but tuning-extra
-// 0.933 against 0.931), 2 m lost (tuning 0.916, tuning-extra 0.925).
-inline constexpr double kMinShortTipM = 0.5;
-// Obstacle regions at least this long (metres, bounding box) are structure.
-inline constexpr double kMinWallRegionM = 4.0;
 // How far the wall must run on past each jamb along the door's line (m).
 inline constexpr double kJambRunM = 0.3;
 // Share of the cells along that run that must be non-free.

@@ -9,12 +9,13 @@
 namespace areagraph {
 
 std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resolution_m,
-                                   double max_mouth_m, const cv::Mat* free_spaces) {
+                                   double structure_m, double max_mouth_m,
+                                   const cv::Mat* free_spaces) {
   std::vector<Opening> mouths;
   if (max_mouth_m <= 0) return mouths;
-  const WallStructure walls(obstacles, kMinWallRegionM / resolution_m, free_spaces);
+  const WallStructure walls(obstacles, structure_m / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
-  const double long_run_px = kMouthWallRunM / resolution_m;
+  const double long_run_px = 2 * kMaxTipWallM / resolution_m;
   const double depth_px = kDoorReachM / resolution_m;
   const double max_thickness_px = kMaxTipWallM / resolution_m;
   const double min_px = kMinGapM / resolution_m + 1, max_px = max_mouth_m / resolution_m + 1;

@@ -14,18 +14,17 @@ namespace areagraph {
 // a jamb along a straight wall line across free cells to the first obstacle
 // cell, at least kMinGapM and at most `max_mouth_m` wide, along a grid axis
 // (the finder reads the map's rows and columns). Both jambs are the
-// building's wall structure; the wall line runs on past both (kJambRunM) and
-// past one of them for at least kMouthWallRunM, so a cross-section of a
-// corridor between two doors, whose walls are thin, is none; at both jambs a
+// building's wall structure (regions at least `structure_m` long, as for
+// NarrowingOpenings); the wall line runs on past both (kJambRunM) and
+// past one of them for at least two thin walls' thickness (2 x
+// kMaxTipWallM), so a cross-section of a corridor between two doors, whose
+// walls are thin, is none; at both jambs a
 // side wall leaves the line on the same side for kDoorReachM, the wall line
 // being at most kMaxTipWallM thick on the other side; and the space behind,
 // on the side walls' side, is no corridor (CorridorBehind). `free_spaces` as
 // for NarrowingOpenings (stages/cut/door_sites.h).
 std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resolution_m,
-                                   double max_mouth_m, const cv::Mat* free_spaces = nullptr);
-
-// The wall line runs on past one jamb of a mouth at least this far (metres):
-// two thin walls' thickness.
-inline constexpr double kMouthWallRunM = 1.2;
+                                   double structure_m, double max_mouth_m,
+                                   const cv::Mat* free_spaces = nullptr);
 
 }  // namespace areagraph

@@ -35,7 +35,7 @@ int TailStart(const std::vector<Sample>& samples, const NarrowTailParams& params
   const int n = static_cast<int>(samples.size());
   double widest = 0;
   for (const Sample& s : samples) widest = std::max(widest, s.clearance);
-  const double narrow = widest / params.room_to_tail_width;
+  const double narrow = widest / kCorridorWidthRatio;
   int first = n;
   while (first > 0 && samples[first - 1].clearance <= narrow) --first;
   if (first == 0 || first == n) return -1;

@@ -8,11 +8,11 @@
 namespace areagraph {
 
 // What makes the end of a room's edge a narrow tail (cut pass CUT_NARROW_TAILS).
+// The tail is the stretch before the dead end where the clearance stays at
+// most the room's widest clearance on the edge over kCorridorWidthRatio
+// (stages/geometry/corridor_shape.h): clearly narrower than the room, as a
+// side branch is than its corridor.
 struct NarrowTailParams {
-  // The room is at least this many times as wide as the tail: the tail is
-  // the stretch before the dead end where the clearance stays at most the
-  // room's widest clearance on the edge divided by this.
-  double room_to_tail_width = 2;
   // The tail begins where the clearance first comes within this factor of
   // the tail's median clearance (scan noise on its walls).
   double width_tolerance = 1.15;

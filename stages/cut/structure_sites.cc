@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/cut/door_sites.h"
 #include "stages/geometry/cell_states.h"
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/obstacle_sites.h"
 #include "stages/geometry/wall_thickness.h"
@@ -157,8 +159,8 @@ IslandDepth IslandDepthOf(const std::string& cells, int width, int height, doubl
   IslandDepth island_depth;
   island_depth.depth = ObstacleDepth(ObstacleMask(cells, width, height));
   island_depth.min_thickness_px =
-      std::max(kMinIslandThicknessM / resolution_m,
-               kIslandWallRatio *
+      std::max(kMinFurnitureThicknessM / resolution_m,
+               kFurnitureWallRatio *
                    TypicalWallThickness(island_depth.depth, kMaxWallThicknessM / resolution_m));
   return island_depth;
 }
@@ -173,14 +175,14 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
     const double max_island_px = max_island_m / resolution_m;
     const double min_thickness = island_depth.min_thickness_px;
     regions = CandidateRegions(obstacles, island_depth.depth, site_cells, max_island_px, &island);
-    const double gap_px = kWallGapM / resolution_m;
-    const double run_px = kEndOnRunM / resolution_m;
+    const double gap_px = kWallPieceGapM / resolution_m;
+    const double run_px = kJambRunM / resolution_m;
     for (size_t region = 1; region < regions.shapes.size(); ++region) {
       if (!island[region]) continue;
       const RegionShape& s = regions.shapes[region];
       island[region] = !s.on_border && s.length <= max_island_px && s.thickness >= min_thickness &&
-                       s.length <= kMaxIslandElongation * s.width &&
-                       s.cells >= kMinIslandSolidity * s.length * s.width;
+                       s.length <= kWallPieceElongation * s.width &&
+                       s.cells >= kMinFurnitureSolidity * s.length * s.width;
       if (island[region] &&
           WallPiece(regions, region, gap_px, run_px, end_on_face_share, wall_piece_both_ends)) {
         island[region] = 0;

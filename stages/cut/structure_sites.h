@@ -11,11 +11,13 @@ namespace areagraph {
 // The obstacle sites (ObstacleSites) that belong to the building's
 // structure: every 8-connected region of non-free cells except islands, the
 // regions that touch no image border, whose smallest enclosing (rotated)
-// rectangle is at most `max_island_m` long and at most kMaxIslandElongation
-// times as long as wide, and that are at least `min_island_thickness_px`
-// thick (twice the depth of their deepest cell): free-standing desks, tables
-// and shelves that furniture removal left, at least kIslandWallRatio times
-// as thick as the map's typical wall, whose line no other obstacle continues
+// rectangle is at most `max_island_m` long, at most kWallPieceElongation
+// times as long as wide and at least kMinFurnitureSolidity full
+// (stages/geometry/furniture_shape.h), and that are at least
+// kMinFurnitureThicknessM and kFurnitureWallRatio times the map's
+// typical wall thick (twice the depth of their deepest cell;
+// stages/geometry/wall_thickness.h): free-standing desks, tables and shelves
+// that furniture removal left, whose line no other obstacle continues
 // end-on (ContinuedEndOn in the .cc). A piece of wall between two doors is
 // thinner, longer or continued, and stays. The room disk looks
 // only at these sites, so that a room stays one room whatever stands in it;
@@ -26,7 +28,7 @@ namespace areagraph {
 // share of its end face's width, centred on the face, not only on its centre
 // line. `wall_piece_both_ends` (cut pass WALL_PIECES_NEED_BOTH_ENDS): a region
 // continued end-on is a piece of wall only when another obstacle also lies
-// within kWallGapM past its other end (a wall piece stands between two
+// within kWallPieceGapM past its other end (a wall piece stands between two
 // doors); a cabinet at a wall that lines up with a desk leaves the desk's
 // other end open.
 // `obstacles` labels `cells` (LabelObstacles; read only when max_island_m > 0).
@@ -49,24 +51,12 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
                              double end_on_face_share, bool wall_piece_both_ends,
                              const ObstacleLabels& obstacles);
 
-// Walls are thinner than this (metres); furniture islands are not.
-inline constexpr double kMinIslandThicknessM = 0.8;
-// Islands are at least this many times as thick as the map's typical wall
-// (drawn maps have walls thicker than kMinIslandThicknessM).
-inline constexpr double kIslandWallRatio = 2.0;
-// Pieces of wall are longer than this many times their width; furniture
-// islands are not.
-inline constexpr double kMaxIslandElongation = 3.0;
-// Furniture islands fill at least this share of their rectangle; a piece of
-// wall with a T or an L and a cabinet against it does not.
-inline constexpr double kMinIslandSolidity = 0.75;
 // A region whose line another obstacle continues end-on past a gap of at
-// most kWallGapM (a door), for kEndOnRunM and at most kEndOnWidthRatio times
+// most kWallPieceGapM (a door), for kJambRunM (as a wall runs on past a
+// door's jamb, stages/cut/door_sites.h) and at most kEndOnWidthRatio times
 // as wide, is a piece of a wall (or of a row of blocks dividing a room), not
 // an island. A desk's line ends in the face of a wall, which is long across
 // it.
-inline constexpr double kWallGapM = 1.6;
-inline constexpr double kEndOnRunM = 0.4;
 inline constexpr double kEndOnWidthRatio = 1.5;
 
 }  // namespace areagraph

@@ -1,6 +1,7 @@
 #include "stages/cut/wall_probes.h"
 
 #include "stages/cut/door_sites.h"
+#include "stages/geometry/corridor_shape.h"
 
 namespace areagraph {
 
@@ -64,14 +65,9 @@ bool IsThinAt(const WallStructure& walls, const Eigen::Vector2d& probe,
   return one > 0 && other > 0 && one + other <= max_thickness_px;
 }
 
-// Whether `jamb` is the end of a thin wall running on away from the gap in
-// `outward`: thin (IsThinAt) from the jamb on for kJambRunM and at least
-// `min_run_px` (a short stub in a room is no door's jamb; a partition wall
-// meeting a corridor's wall beside a door is thick at the jamb).
 bool IsThinWallEnd(const WallStructure& walls, const Eigen::Vector2d& jamb,
-                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px,
-                   double min_run_px) {
-  for (double t = 1; t <= std::max(run_px, min_run_px); t += 1) {
+                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px) {
+  for (double t = 1; t <= run_px; t += 1) {
     if (!IsThinAt(walls, jamb + t * outward, outward, max_thickness_px)) return false;
   }
   return true;
@@ -114,14 +110,9 @@ double FreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
   return t - 1;
 }
 
-// Whether the space behind a mouth from `a` to `b` runs on deeper than
-// kMouthCorridorDepth times its width along `behind`: a corridor (a side
-// corridor meeting another one, a wing corridor opening into a hall), not a
-// room. Probed at the middle and the quarters of the mouth, the deepest
-// counting, so that furniture in a room does not make it shallow.
 bool CorridorBehind(const WallStructure& walls, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& behind, int space) {
-  const double limit = kMouthCorridorDepth * (b - a).norm();
+  const double limit = kCorridorElongation * (b - a).norm();
   double deepest = 0;
   for (const double share : {0.25, 0.5, 0.75}) {
     deepest = std::max(deepest, FreeRun(walls, a + share * (b - a), behind, limit, space));

@@ -97,12 +97,11 @@ bool IsThinAt(const WallStructure& walls, const Eigen::Vector2d& probe,
               const Eigen::Vector2d& outward, double max_thickness_px);
 
 // Whether `jamb` is the end of a thin wall running on away from the gap in
-// `outward`: thin (IsThinAt) from the jamb on for kJambRunM and at least
-// `min_run_px` (a short stub in a room is no door's jamb; a partition wall
-// meeting a corridor's wall beside a door is thick at the jamb).
+// `outward`: thin (IsThinAt) from the jamb on for `run_px` (kJambRunM; a
+// partition wall meeting a corridor's wall beside a door is thick at the
+// jamb).
 bool IsThinWallEnd(const WallStructure& walls, const Eigen::Vector2d& jamb,
-                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px,
-                   double min_run_px);
+                   const Eigen::Vector2d& outward, double run_px, double max_thickness_px);
 
 // Which side of the line through a jamb (along `outward`, away from the
 // opening) a wall leaves it on for `depth_px` (+1 along the line's left
@@ -118,15 +117,11 @@ double FreeRun(const WallStructure& walls, const Eigen::Vector2d& from,
                const Eigen::Vector2d& direction, double limit_px, int space);
 
 // Whether the space behind a mouth from `a` to `b` runs on deeper than
-// kMouthCorridorDepth times its width along `behind`: a corridor (a side
-// corridor meeting another one, a wing corridor opening into a hall), not a
-// room. Probed at the middle and the quarters of the mouth, the deepest
+// kCorridorElongation (stages/geometry/corridor_shape.h) times its width along
+// `behind`: a corridor (a side corridor meeting another one, a wing corridor
+// opening into a hall), not a room. Probed at the middle and the quarters of the mouth, the deepest
 // counting, so that furniture in a room does not make it shallow.
 bool CorridorBehind(const WallStructure& walls, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                     const Eigen::Vector2d& behind, int space);
-
-// A space behind a mouth this many times as deep as the mouth is wide is a
-// corridor (merge's kMinCorridorElongation).
-inline constexpr double kMouthCorridorDepth = 4.0;
 
 }  // namespace areagraph

@@ -112,7 +112,7 @@ void FindCorridors(const std::vector<WidthProfile>& profiles,
                    std::vector<proto::DetectedWidth>* corridors) {
   for (const WidthProfile& p : profiles) {
     const size_t n = p.width_m.size();
-    SteadyRuns runs(p.width_m, kCorridorToleranceM, 0.1);
+    SteadyRuns runs(p.width_m, kPaperWidthMarginM, 0.1);
     size_t i = 0;
     while (i < n) {
       const size_t j = runs.EndFrom(static_cast<int>(i));
@@ -158,18 +158,13 @@ std::vector<proto::DetectedWidth> OnePerPlace(std::vector<proto::DetectedWidth> 
   return kept;
 }
 
-// The narrowest width that corridors run for at least kCorridorMinTotalM
-// (summed over the stretches at most that wide): one short gap between a
-// desk and a wall is no corridor.
-double NarrowestCorridorM(std::vector<proto::DetectedWidth> corridors) {
-  std::sort(corridors.begin(), corridors.end(),
-            [](const auto& a, const auto& b) { return a.width_m() < b.width_m(); });
-  double total = 0;
+// The narrowest corridor stretch's width; 0 for none.
+double NarrowestCorridorM(const std::vector<proto::DetectedWidth>& corridors) {
+  double narrowest = 0;
   for (const proto::DetectedWidth& corridor : corridors) {
-    total += corridor.length_m();
-    if (total >= kCorridorMinTotalM) return corridor.width_m();
+    if (narrowest == 0 || corridor.width_m() < narrowest) narrowest = corridor.width_m();
   }
-  return 0;
+  return narrowest;
 }
 
 }  // namespace
@@ -231,7 +226,7 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
   } else if (corridor_m > 0) {
     width = corridor_m - kPaperWidthMarginM;
   }
-  return std::max(width, kMinRoomWidthM);
+  return std::max(width, MinRoomWidthM());
 }
 
 }  // namespace areagraph

@@ -14,17 +14,17 @@ namespace areagraph {
 //   relative) on both sides within that reach, looking past the edge's ends
 //   into the edges that meet there: a constriction between wider spaces;
 // - a corridor is a stretch of at least kCorridorMinLengthM along one edge
-//   whose width stays within kCorridorTolerance of its narrowest point.
+//   whose width stays within kPaperWidthMarginM (or 10 %) of its narrowest
+//   point.
 // Returns the doors (one per place, widest first) and corridors found, the
 // widest door (the 90th percentile, so that one stray wide gap between
 // furniture does not decide)
-// and the narrowest corridor (the narrowest width that corridors keep for
-// kCorridorMinTotalM in all), and W by the paper's rule: door + `door_margin_m`
-// (the paper: 0.1 m) when
-// the door is narrower than the corridor (or within kPaperWidthMarginM), else
-// corridor - 0.1 m; one of them alone decides when the other is missing;
-// `fallback_m` when neither was found. `above_doors`: door + `door_margin_m` whenever
-// a door was found. Never below kMinRoomWidthM.
+// and the narrowest corridor (the narrowest stretch), and W by the paper's
+// rule: door + `door_margin_m` (the paper: 0.1 m) when the door is narrower
+// than the corridor (or within kPaperWidthMarginM), else corridor - 0.1 m;
+// one of them alone decides when the other is missing; `fallback_m` when
+// neither was found. `above_doors`: door + `door_margin_m` whenever a door
+// was found. Never below MinRoomWidthM().
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            double resolution_m, double fallback_m,
                                            bool above_doors = false, double door_margin_m = 0.1);
@@ -46,15 +46,19 @@ double WidestDoorM(const std::vector<double>& widths_widest_first);
 double WidthRule(double door_m, double corridor_m, double fallback_m, bool above_doors,
                  double door_margin_m);
 
-// The paper's margin: W = door + 0.1 m, or corridor - 0.1 m.
+// The paper's margin: W = door + 0.1 m, or corridor - 0.1 m. Widths closer
+// than this count as the same width (the door against the corridor, the
+// width along a corridor).
 inline constexpr double kPaperWidthMarginM = 0.1;
 
 inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;
 inline constexpr double kDoorRiseRatio = 0.25;
 inline constexpr double kCorridorMinLengthM = 2.5;
-inline constexpr double kCorridorToleranceM = 0.1;
-inline constexpr double kCorridorMinTotalM = 5.0;
-inline constexpr double kMinRoomWidthM = 0.6;
+// Gaps narrower than this are no doors (metres).
+inline constexpr double kMinGapM = 0.5;
+
+// The least W: the narrowest door (kMinGapM) and the paper's margin above it.
+constexpr double MinRoomWidthM() { return kMinGapM + kPaperWidthMarginM; }
 
 }  // namespace areagraph

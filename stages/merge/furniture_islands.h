@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
@@ -18,11 +19,8 @@ inline constexpr double kMaxFurnitureIslandM = 4.0;
 // Islands are at least kMinFurnitureThicknessM thick (twice the depth of
 // their deepest cell) and kFurnitureWallRatio times the map's typical wall
 // (stages/geometry/wall_thickness.h): noise specks and pieces of wall between
-// two doors are thinner.
-// Islands fill at least this share of their smallest enclosing rectangle: a
-// piece of wall with a T or a cabinet against it does not (a desk or a
-// cabinet fills all of it, an L of two about half to three quarters).
-inline constexpr double kMinFurnitureSolidity = 0.75;
+// two doors are thinner. Islands fill at least kMinFurnitureSolidity of their
+// smallest enclosing rectangle (stages/geometry/furniture_shape.h).
 
 // The map's non-free cells (ObstacleMask) plus the cells that cleaning
 // removed: what cleaning removed is still no free space, so a wall it broke

@@ -39,13 +39,12 @@ std::vector<int> EdgesByLength(const ChainGraph& graph) {
   return order;
 }
 
-// How far apart the sites of one side may be for an edge to count as a
-// corner spur (px): about one obstacle cell and its neighbours.
-constexpr double kSpurSiteSpreadPx = 1.5;
-
-bool WithinSpread(const PointList& sites) {
+// Whether all `sites` (obstacle cell centres) are the first one's cell or
+// cells touching it (8-neighbours).
+bool WithinNeighbours(const PointList& sites) {
   for (const Eigen::Vector2d& site : sites) {
-    if ((site - sites.front()).norm() > kSpurSiteSpreadPx) return false;
+    const Eigen::Vector2d step = (site - sites.front()).cwiseAbs();
+    if (step.x() > 1 || step.y() > 1) return false;
   }
   return !sites.empty();
 }
@@ -53,7 +52,7 @@ bool WithinSpread(const PointList& sites) {
 }  // namespace
 
 bool IsCornerSpur(const ChainEdge& edge) {
-  return WithinSpread(edge.left_sites) || WithinSpread(edge.right_sites);
+  return WithinNeighbours(edge.left_sites) || WithinNeighbours(edge.right_sites);
 }
 
 int RemoveShortDeadEnds(ChainGraph* graph, double max_length_px) {

@@ -4,10 +4,10 @@
 
 namespace areagraph {
 
-// Whether all sites on one side of the edge are one obstacle cell (within
-// 1.5 px): the edge is then part of the boundary of that cell's Voronoi face,
-// a spur that a convex corner (a step of a slanted wall, the end of a wall)
-// sends into the free space, however long it is.
+// Whether all sites on one side of the edge are one obstacle cell or cells
+// touching it (its 8-neighbours): the edge is then part of the boundary of
+// that cell's Voronoi face, a spur that a convex corner (a step of a slanted
+// wall, the end of a wall) sends into the free space, however long it is.
 bool IsCornerSpur(const ChainEdge& edge);
 
 // One pass of dead-end removal (the paper's Alg. 2): every dead-end edge

@@ -42,7 +42,7 @@ std::string RuleOf(const proto::RoomWidthEstimate& estimate, const proto::CutOpt
   if (corridor > 0 && Near(w, corridor - 0.1)) {
     return "estimated: narrowest corridor " + Metres(corridor) + " - 0.1 m";
   }
-  if (Near(w, kMinRoomWidthM)) return "estimated, held at the minimum " + Metres(kMinRoomWidthM);
+  if (Near(w, MinRoomWidthM())) return "estimated, held at the minimum " + Metres(MinRoomWidthM());
   return "no door or corridor found: the fallback cut.room_width_m";
 }
 

@@ -7,6 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
+#include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/wall_thickness.h"
 #include "tests/support/test_grids.h"
@@ -45,7 +46,7 @@ std::vector<uint8_t> WholeMapWallPieces(const std::string& cells, int width, int
       ends = ends && meets;
     }
     wall[region] = shape.thickness < thinner_than && shape.length >= sizes.min_length_px &&
-                   shape.length >= kWallPieceMinElongation * shape.width && ends;
+                   shape.length >= kWallPieceElongation * shape.width && ends;
     *by_typical += wall[region] && shape.thickness >= sizes.thinner_than_px;
   }
   return wall;

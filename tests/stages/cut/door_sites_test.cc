@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "proto/pipeline_options.pb.h"
 #include "tests/support/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
@@ -17,6 +18,8 @@ using floorplan::RectM;
 using floorplan::WallDirection;
 
 constexpr double kResolutionM = 0.05;
+// Obstacles at least this long are structure (cut.islands.max_length_m's default).
+const double kStructureM = proto::CutOptions().islands().max_length_m();
 
 // Two 4 x 4 m rooms side by side, the wall between them at x = 4.5 m with a
 // 1.0 m door centred at y = 2.5 m.
@@ -42,7 +45,7 @@ PointList Sites(const FloorPlan& plan, const proto::RoomWidthEstimate& estimate)
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   return DoorClosingSites(
       estimate, LabelObstacles(map.cells(), map.frame().width_px(), map.frame().height_px()),
-      kResolutionM);
+      kResolutionM, kStructureM);
 }
 
 TEST(DoorSitesTest, DoorInAWallIsClosedAcrossItsWholeWidth) {
@@ -89,7 +92,7 @@ PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = tr
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const cv::Mat spaces = LabelFreeSpaces(map.cells(), width, height);
   return WallGapSites(stages.topology, LabelObstacles(map.cells(), width, height), kResolutionM,
-                      max_gap_m, short_tips, free_spaces ? &spaces : nullptr);
+                      kStructureM, max_gap_m, short_tips, free_spaces ? &spaces : nullptr);
 }
 
 // WallGapFinder's openings of a plan (short tips on, free spaces off).
@@ -98,7 +101,8 @@ std::vector<Opening> GapOpenings(const FloorPlan& plan, double max_gap_m) {
   const AreaStages stages = RunAreaStages(map);
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const ObstacleLabels obstacles = LabelObstacles(map.cells(), width, height);
-  return WallGapFinder(stages.topology, obstacles, kResolutionM, max_gap_m, true, nullptr)
+  return WallGapFinder(stages.topology, obstacles, kResolutionM, kStructureM, max_gap_m, true,
+                       nullptr)
       .Openings(0, stages.topology.edges_size());
 }
 
@@ -187,7 +191,7 @@ TEST(DoorSitesTest, ShortPieceOfWallBetweenTwoDoorsIsAJamb) {
 
 TEST(DoorSitesTest, DeskOrSpeckInTheWallsLineIsNoJamb) {
   // A 0.9 m deep desk in the piece's place is no thin wall end, and a
-  // 0.3 m speck is shorter than kMinShortTipM: nothing is closed.
+  // 0.3 m speck is shorter than kMinWallPieceM: nothing is closed.
   EXPECT_TRUE(GapSites(WallWithTwoDoors(1.0, 0.9), 3.5).empty());
   EXPECT_TRUE(GapSites(WallWithTwoDoors(0.3), 3.5).empty());
 }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "proto/pipeline_options.pb.h"
 #include "tests/support/area_test_support.h"
 #include "tools/example_maps/floor_plan.h"
 
@@ -17,13 +18,15 @@ using floorplan::FloorPlan;
 using floorplan::WallDirection;
 
 constexpr double kResolutionM = 0.05;
+// Obstacles at least this long are structure (cut.islands.max_length_m's default).
+const double kStructureM = proto::CutOptions().islands().max_length_m();
 
 std::vector<Opening> Mouths(const FloorPlan& plan, double max_mouth_m) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image(), kResolutionM);
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const cv::Mat spaces = LabelFreeSpaces(map.cells(), width, height);
-  return MouthOpenings(LabelObstacles(map.cells(), width, height), kResolutionM, max_mouth_m,
-                       &spaces);
+  return MouthOpenings(LabelObstacles(map.cells(), width, height), kResolutionM, kStructureM,
+                       max_mouth_m, &spaces);
 }
 
 // A 12 x 8 m hall with a bay of `bay_width_m` x 4 m above it, open along its

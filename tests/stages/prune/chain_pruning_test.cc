@@ -117,6 +117,19 @@ TEST(ChainPruningTest, CornerSpurGoesWhateverItsLength) {
   EXPECT_TRUE(graph.edges[3].removed);
 }
 
+TEST(ChainPruningTest, CornerSpurSitesMayBeTouchingCells) {
+  ChainGraph graph = Star(80);
+  // Sites on the cell (-20.5, -90.5) and the cell diagonally beside it: still
+  // one corner; a site two cells away makes a wall.
+  PointList& sites = graph.edges[3].left_sites;
+  for (size_t i = 0; i < sites.size(); ++i) {
+    sites[i] = i % 2 ? Eigen::Vector2d(-19.5, -89.5) : Eigen::Vector2d(-20.5, -90.5);
+  }
+  EXPECT_TRUE(IsCornerSpur(graph.edges[3]));
+  sites.back() = {-18.5, -90.5};
+  EXPECT_FALSE(IsCornerSpur(graph.edges[3]));
+}
+
 // Junctions 0 (clearance 20) and 1 (15), 10 px apart, each with two more
 // edges: 2 -> 0 and 3 -> 0, and `east` and `south` (to vertices 4 and 5) at 1.
 ChainGraph CloseJunctions(ChainEdge east, ChainEdge south) {
