@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "proto/artifacts.pb.h"
+#include "stages/geometry/door_reach.h"
 
 namespace areagraph {
 
@@ -51,7 +52,6 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
 // width along a corridor).
 inline constexpr double kPaperWidthMarginM = 0.1;
 
-inline constexpr double kDoorReachM = 1.5;
 inline constexpr double kDoorRiseM = 0.25;
 inline constexpr double kDoorRiseRatio = 0.25;
 inline constexpr double kCorridorMinLengthM = 2.5;

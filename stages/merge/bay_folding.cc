@@ -4,7 +4,7 @@
 #include <map>
 #include <vector>
 
-#include "stages/cut/width_estimate.h"
+#include "stages/geometry/door_reach.h"
 #include "stages/geometry/edge_polygon.h"
 
 namespace areagraph {

@@ -15,7 +15,7 @@ inline constexpr double kMaxBayLengthWidths = 3.0;
 
 // Folds short room-less areas into a room they open into without narrowing
 // (the narrowest free width near the vertex where they meet, on both sides
-// and within kDoorReachM of it, stages/cut/width_estimate.h: the mouth and
+// and within kDoorReachM of it, stages/geometry/door_reach.h: the mouth and
 // the stretch in front of it, not the area's far end, is at least
 // kOpenShare of the area's typical free width): a bay of a room that the
 // room disk (W) could not reach, e.g. the strip between a row of tables and

@@ -5,8 +5,8 @@
 #include <map>
 #include <vector>
 
-#include "stages/cut/width_estimate.h"
 #include "stages/geometry/disjoint_sets.h"
+#include "stages/geometry/door_reach.h"
 #include "stages/geometry/edge_polygon.h"
 
 namespace areagraph {
