@@ -76,40 +76,11 @@ PASSES=${PASSES:-$(echo $ALL_PASSES | tr ' ' ',')}
 for name in ${PASSES//,/ }; do stage_pass "$name" >/dev/null || exit 2; done
 
 wanted() { [[ ",$SETS," == *",$1,"* ]]; }
-AG=$DATA/areagraph
-RM=$DATA/maoris/RobotMap
-BM=$DATA/bormann
 rm -rf "$OUT"
 mkdir -p "$OUT"
 
-# manifest SET: writes $OUT/SET.tsv (path, name) and $OUT/SET.eval (the
-# ground truth folder, then ag-eval's flags for the set).
-manifest() {
-  local set=$1 m=$OUT/$1.tsv suffix=
-  printf 'path\tname\n' >"$m"
-  case $set in
-    areagraph)
-      for image in "$AG"/input/*.png; do printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)"; done >>"$m"
-      echo "$AG/GT" >"$OUT/$set.eval" ;;
-    robotmap)
-      for image in "$RM"/Maps/*.png; do printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)"; done >>"$m"
-      echo "$RM/GT --gt-style maoris-lines" >"$OUT/$set.eval" ;;
-    bormann-plain|bormann-furnished)
-      [ "$set" = bormann-furnished ] && suffix=_furnitures
-      for gt in "$BM"/*_gt_segmentation.png; do
-        base=$(basename "$gt" _gt_segmentation.png)
-        [ -e "$BM/$base$suffix.png" ] && printf '%s\t%s\n' "$(realpath "$BM/$base$suffix.png")" "$base"
-      done >>"$m"
-      echo "$BM --gt-suffix _gt_segmentation --gt-style lines --scale-result" >"$OUT/$set.eval" ;;
-    tuning|held-out)
-      "$BIN/ag-make-benchmark" --part "$set" "$OUT/generated-$set" >/dev/null
-      for image in "$OUT/generated-$set"/maps/*.png; do
-        printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)"
-      done >>"$m"
-      echo "$OUT/generated-$set/gt --gt-style labels" >"$OUT/$set.eval" ;;
-    *) echo "bench-ablation: unknown set '$set'" >&2; exit 2 ;;
-  esac
-}
+# shellcheck source=tools/bench-sets.sh
+source tools/bench-sets.sh
 
 # mean SET RUN [ag-run flags]: runs the set's maps through the set's store,
 # exports their labels to $OUT/SET/RUN and prints the mean MCC.
@@ -137,7 +108,7 @@ sets=()
 for set in ${SETS//,/ }; do wanted "$set" && sets+=("$set"); done
 header="| run |"
 rule="|---|"
-for set in "${sets[@]}"; do header+=" $set |"; rule+="---|"; manifest "$set"; done
+for set in "${sets[@]}"; do header+=" $set |"; rule+="---|"; set_manifest "$set"; done
 echo "Mean MCC (maoris), $(date -u +%Y-%m-%d): the defaults, and each pass's effect on it"
 echo "(the mean without the pass minus the defaults'; negative: the pass helps)."
 echo

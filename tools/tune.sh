@@ -129,43 +129,16 @@ if [ "$CHECK" -eq 1 ]; then
 fi
 check >/dev/null
 
-AG=$DATA/areagraph
-RM=$DATA/maoris/RobotMap
-BM=$DATA/bormann
-for dir in "$AG/input" "$RM/Maps" "$BM"; do
+for dir in "$DATA/areagraph/input" "$DATA/maoris/RobotMap/Maps" "$DATA/bormann"; do
   [ -d "$dir" ] || { echo "tune: no maps in $dir (use --data)" >&2; exit 1; }
 done
 
+ALL_PARTS=(areagraph robotmap bormann-plain bormann-furnished tuning held-out public-tuning
+  public-held-out)
 mkdir -p "$OUT/scores" "$OUT/bins"
-declare -A GT_FLAGS
-manifest() {  # manifest PART IMAGE... (names are the images' base names)
-  local part=$1
-  shift
-  printf 'path\tname\n' >"$OUT/$part.tsv"
-  for image in "$@"; do
-    printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)" >>"$OUT/$part.tsv"
-  done
-}
-for part in tuning held-out public-tuning public-held-out; do
-  rm -rf "$OUT/generated/$part"
-  "$BIN/ag-make-benchmark" --part "$part" "$OUT/generated/$part" >/dev/null
-  manifest "$part" "$OUT/generated/$part"/maps/*.png
-  GT_FLAGS[$part]="--gt $OUT/generated/$part/gt --gt-style labels"
-done
-manifest areagraph "$AG"/input/*.png
-GT_FLAGS[areagraph]="--gt $AG/GT"
-manifest robotmap "$RM"/Maps/*.png
-GT_FLAGS[robotmap]="--gt $RM/GT --gt-style maoris-lines"
-for variant in plain furnitures; do
-  printf 'path\tname\timport.resolution_m\n' >"$OUT/bormann-$variant.tsv"
-  for gt in "$BM"/*_gt_segmentation.png; do
-    base=$(basename "$gt" _gt_segmentation.png)
-    image=$BM/$base.png
-    [ "$variant" = plain ] || image=$BM/${base}_$variant.png
-    [ -e "$image" ] && printf '%s\t%s\t0.05\n' "$(realpath "$image")" "$base" >>"$OUT/bormann-$variant.tsv"
-  done
-  GT_FLAGS[bormann-$variant]="--gt $BM --gt-suffix _gt_segmentation --gt-style lines --scale-result"
-done
+# shellcheck source=tools/bench-sets.sh
+source tools/bench-sets.sh
+for part in "${ALL_PARTS[@]}"; do set_manifest "$part"; done
 
 # A configuration is a list of changes "ENTRY=VALUE" (ENTRY a candidates
 # file line): options become --set flags, constants a build of a copy of the
@@ -236,8 +209,10 @@ score() {
       "$bin/ag-export" --store "$store" --map "$map" --format labels \
         --out "$labels/$map.png" >/dev/null 2>&1 || true
     done
-    # shellcheck disable=SC2086 # GT_FLAGS holds several words
-    "$bin/ag-eval" --dataset --results "$labels" ${GT_FLAGS[$part]} --mcc-variant maoris \
+    local gt eval_flags
+    read -r gt eval_flags <"$OUT/$part.eval"
+    # shellcheck disable=SC2086 # eval_flags holds several words
+    "$bin/ag-eval" --dataset --results "$labels" --gt "$gt" $eval_flags --mcc-variant maoris \
       2>/dev/null | awk -F'|' '$2 ~ /mean/ { gsub(/[ *]/, "", $3); print $3 }' >"$OUT/scores/$id"
   fi
   local mean
@@ -273,12 +248,10 @@ candidate_values() {  # the entry's non-default values
   if [ "$kind" = option ]; then echo "$default $values"; else echo "$values"; fi
 }
 
-ALL_PARTS=(areagraph robotmap bormann-plain bormann-furnitures tuning held-out public-tuning
-  public-held-out)
 TUNING_PARTS=(tuning public-tuning robotmap)
 SETS=(areagraph robotmap bormann offices public)
 declare -A SET_PARTS=(
-  [areagraph]="areagraph" [robotmap]="robotmap" [bormann]="bormann-plain bormann-furnitures"
+  [areagraph]="areagraph" [robotmap]="robotmap" [bormann]="bormann-plain bormann-furnished"
   [offices]="tuning held-out" [public]="public-tuning public-held-out"
 )
 

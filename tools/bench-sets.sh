@@ -1,0 +1,38 @@
+# shellcheck shell=bash
+# Sourced by the quality scripts that score whole sets (bench-ablation.sh,
+# tune.sh): which maps each set holds and how ag-eval scores them. Expects
+# DATA (the data folder, ../shared/data), BIN (the binaries) and OUT set.
+
+# set_manifest SET: writes $OUT/SET.tsv (path, name) and $OUT/SET.eval (the
+# ground truth folder, then ag-eval's flags for the set). SET is areagraph,
+# robotmap, bormann-plain, bormann-furnished or a part of
+# `ag-make-benchmark` (tuning, held-out, public-tuning, public-held-out),
+# which is generated into $OUT/generated-SET.
+set_manifest() {
+  local set=$1 m=$OUT/$1.tsv suffix='' image gt base
+  local ag=$DATA/areagraph rm=$DATA/maoris/RobotMap bm=$DATA/bormann
+  printf 'path\tname\n' >"$m"
+  case $set in
+    areagraph)
+      for image in "$ag"/input/*.png; do printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)"; done >>"$m"
+      echo "$ag/GT" >"$OUT/$set.eval" ;;
+    robotmap)
+      for image in "$rm"/Maps/*.png; do printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)"; done >>"$m"
+      echo "$rm/GT --gt-style maoris-lines" >"$OUT/$set.eval" ;;
+    bormann-plain|bormann-furnished)
+      [ "$set" = bormann-furnished ] && suffix=_furnitures
+      for gt in "$bm"/*_gt_segmentation.png; do
+        base=$(basename "$gt" _gt_segmentation.png)
+        [ -e "$bm/$base$suffix.png" ] && printf '%s\t%s\n' "$(realpath "$bm/$base$suffix.png")" "$base"
+      done >>"$m"
+      echo "$bm --gt-suffix _gt_segmentation --gt-style lines --scale-result" >"$OUT/$set.eval" ;;
+    tuning|held-out|public-tuning|public-held-out)
+      rm -rf "$OUT/generated-$set"
+      "$BIN/ag-make-benchmark" --part "$set" "$OUT/generated-$set" >/dev/null
+      for image in "$OUT/generated-$set"/maps/*.png; do
+        printf '%s\t%s\n' "$(realpath "$image")" "$(basename "$image" .png)"
+      done >>"$m"
+      echo "$OUT/generated-$set/gt --gt-style labels" >"$OUT/$set.eval" ;;
+    *) echo "$(basename "$0" .sh): unknown set '$set'" >&2; exit 2 ;;
+  esac
+}
