@@ -11,8 +11,9 @@
 # next, so a single run of a set shows none of their effect (0.000). The sets
 # as tools/bench-quality.sh runs them: areagraph/ (16 maps), RobotMap (20),
 # bormann/ plain and furnished (20 each), and the generated tuning and
-# held-out floors (30 each). One store a set is kept across the runs, so a
-# pass costs its stage and the ones after it only.
+# held-out floors (30 each). Every run has a new store: match undoes joins
+# against a map's earlier Area Graph, so a store kept across the runs would
+# let one run's result change the next one's.
 #
 #   tools/bench-ablation.sh [--data DIR] [--out DIR] [--build DIR] [--sets LIST]
 #                           [--passes LIST] [--jobs N]
@@ -82,26 +83,12 @@ mkdir -p "$OUT"
 # shellcheck source=tools/bench-sets.sh
 source tools/bench-sets.sh
 
-# mean SET RUN [ag-run flags]: runs the set's maps through the set's store,
-# exports their labels to $OUT/SET/RUN and prints the mean MCC.
+# mean SET RUN [ag-run flags]: the set's mean MCC with those flags; labels
+# in $OUT/SET/RUN.
 mean() {
-  local set=$1 run=$2 dir=$OUT/$1/$2 map
+  local set=$1 run=$2
   shift 2
-  mkdir -p "$dir"
-  "$BIN/ag-run" --store "$OUT/$set.db" --jobs "$JOBS" "$@" "$OUT/$set.tsv" >"$dir.log" 2>&1 ||
-    echo "bench-ablation: $set, $run: $(grep -c failed "$dir.log") failed (see $dir.log)" >&2
-  tail -n +2 "$OUT/$set.tsv" | cut -f2 | while read -r map; do
-    # A failed export is tried once more before the map counts as missing.
-    "$BIN/ag-export" --store "$OUT/$set.db" --map "$map" --format labels --out "$dir/$map.png" \
-      </dev/null >/dev/null 2>&1 ||
-      "$BIN/ag-export" --store "$OUT/$set.db" --map "$map" --format labels --out "$dir/$map.png" \
-        </dev/null >/dev/null 2>"$dir.export-errors" ||
-      echo "bench-ablation: no result for $set $map: $(cat "$dir.export-errors")" >&2
-  done
-  read -r gt flags <"$OUT/$set.eval"
-  # shellcheck disable=SC2086
-  { "$BIN/ag-eval" --dataset --results "$dir" --gt "$gt" --mcc-variant maoris $flags 2>/dev/null ||
-      true; } | awk -F'|' '/\*\*mean\*\*/ { gsub(/[ *]/, "", $3); print $3 }'
+  score_part "$set" "$OUT/$set/$run" "$BIN" "$@"
 }
 
 sets=()

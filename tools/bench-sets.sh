@@ -36,3 +36,31 @@ set_manifest() {
     *) echo "$(basename "$0" .sh): unknown set '$set'" >&2; exit 2 ;;
   esac
 }
+
+# score_part SET DIR BIN [ag-run flags]: runs the set's maps (set_manifest
+# SET first) with BIN's ag-run in a new store DIR.db, exports their labels to
+# DIR/<map>.png and prints the set's mean MCC (ag-eval, maoris). The store is
+# new each time because match reads a map's earlier Area Graph: a store that
+# holds another run's results scores differently. Expects JOBS set.
+score_part() {
+  local set=$1 dir=$2 bin=$3 map gt flags
+  shift 3
+  local store=$dir.db
+  rm -rf "$dir" "$store" "$store-wal" "$store-shm"
+  mkdir -p "$dir"
+  "$bin/ag-run" --store "$store" --jobs "$JOBS" "$@" "$OUT/$set.tsv" >"$dir.log" 2>&1 ||
+    echo "$(basename "$0" .sh): $set: $(grep -c failed "$dir.log") failed (see $dir.log)" >&2
+  tail -n +2 "$OUT/$set.tsv" | cut -f2 | while read -r map; do
+    # A failed export is tried once more before the map counts as missing.
+    "$bin/ag-export" --store "$store" --map "$map" --format labels --out "$dir/$map.png" \
+      </dev/null >/dev/null 2>&1 ||
+      "$bin/ag-export" --store "$store" --map "$map" --format labels --out "$dir/$map.png" \
+        </dev/null >/dev/null 2>"$dir.export-errors" ||
+      echo "$(basename "$0" .sh): no result for $set $map: $(cat "$dir.export-errors")" >&2
+  done
+  rm -f "$store" "$store-wal" "$store-shm"
+  read -r gt flags <"$OUT/$set.eval"
+  # shellcheck disable=SC2086 # flags holds several words
+  { "$bin/ag-eval" --dataset --results "$dir" --gt "$gt" --mcc-variant maoris $flags 2>/dev/null ||
+      true; } | awk -F'|' '$2 ~ /mean/ { gsub(/[ *]/, "", $3); print $3 }'
+}

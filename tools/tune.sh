@@ -200,26 +200,13 @@ score() {
   id=$(printf '%s ' "$part" "$bin" "${flags[@]}" | md5sum | cut -c1-16)
   if [ ! -e "$OUT/scores/$id" ]; then
     echo "tune: scoring $part ${flags[*]} ($bin)" >&2
-    local store=$OUT/$part.db labels=$OUT/labels-$part
-    rm -rf "$labels" "$store" "$store-wal" "$store-shm"
-    mkdir -p "$labels"
-    "$bin/ag-run" --store "$store" --jobs "$JOBS" "${flags[@]}" "$OUT/$part.tsv" \
-      >"$OUT/$part.log" 2>&1 || true
-    tail -n +2 "$OUT/$part.tsv" | cut -f2 | while read -r map; do
-      "$bin/ag-export" --store "$store" --map "$map" --format labels \
-        --out "$labels/$map.png" >/dev/null 2>&1 || true
-    done
-    local gt eval_flags
-    read -r gt eval_flags <"$OUT/$part.eval"
-    # shellcheck disable=SC2086 # eval_flags holds several words
-    "$bin/ag-eval" --dataset --results "$labels" --gt "$gt" $eval_flags --mcc-variant maoris \
-      2>/dev/null | awk -F'|' '$2 ~ /mean/ { gsub(/[ *]/, "", $3); print $3 }' >"$OUT/scores/$id"
+    score_part "$part" "$OUT/labels-$part" "$bin" "${flags[@]}" >"$OUT/scores/$id"
   fi
   local mean
   mean=$(cat "$OUT/scores/$id")
   if [ -z "$mean" ]; then
     rm -f "$OUT/scores/$id"
-    echo "tune: no score for $part with ${flags[*]} ($bin); see $OUT/$part.log" >&2
+    echo "tune: no score for $part with ${flags[*]} ($bin); see $OUT/labels-$part.log" >&2
     exit 1
   fi
   echo "$mean"
