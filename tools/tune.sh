@@ -200,7 +200,9 @@ score() {
   id=$(printf '%s ' "$part" "$bin" "${flags[@]}" | md5sum | cut -c1-16)
   if [ ! -e "$OUT/scores/$id" ]; then
     echo "tune: scoring $part ${flags[*]} ($bin)" >&2
-    score_part "$part" "$OUT/labels-$part" "$bin" "${flags[@]}" >"$OUT/scores/$id"
+    # Written aside and renamed: a run stopped halfway leaves no score behind.
+    score_part "$part" "$OUT/labels-$part" "$bin" "${flags[@]}" >"$OUT/scores/$id.part"
+    mv "$OUT/scores/$id.part" "$OUT/scores/$id"
   fi
   local mean
   mean=$(cat "$OUT/scores/$id")
