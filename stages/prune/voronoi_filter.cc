@@ -84,7 +84,6 @@ PlainVoronoi::PlainVoronoi(const proto::VoronoiDiagram& diagram)
                });
 }
 
-
 PlainVoronoi PlainVoronoiOf(const proto::VoronoiDiagram& diagram) {
   proto::VoronoiDiagram converted;
   return PlainVoronoi(PackedVoronoi(diagram, &converted));
