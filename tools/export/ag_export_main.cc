@@ -3,6 +3,7 @@
 // preview, GeoJSON, osmAG XML or JSON, or the whole run as an HTML viewer.
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -36,11 +37,51 @@ void RequireFormatFor(const CLI::App& app, const std::string& format_name,
   }
 }
 
+// Writes the newest Area Graph of every map of `store` into `folder` as
+// <map><suffix> (a map named with folders gets them). The maps without an
+// Area Graph are named on one line of stderr and make the status 1, as a
+// failed map does in ag-run.
+int ExportEveryMap(areagraph::ArtifactStore& store, areagraph::ExportSettings settings,
+                   const std::string& store_path, const std::string& folder) {
+  if (areagraph::IsStandardOutput(folder)) {
+    throw areagraph::OptionsError("--all writes a file per map: give --out a folder");
+  }
+  const std::vector<areagraph::MapRecord> maps = store.ReadAllMaps();
+  if (maps.empty()) throw areagraph::InputError("the store '" + store_path + "' holds no maps");
+  std::vector<std::string> missing;
+  for (const areagraph::MapRecord& map : maps) {
+    const std::optional<std::string> graph_key = areagraph::NewestGraphKey(store, map.name);
+    if (!graph_key) {
+      missing.push_back(map.name);
+      continue;
+    }
+    const auto graph =
+        areagraph::ReadArtifactAs<areagraph::proto::AreaGraph>(store, map.name, *graph_key);
+    settings.map_name = map.name;
+    const std::filesystem::path target =
+        std::filesystem::path(folder) / (map.name + areagraph::ExportFileSuffix(settings.format));
+    std::error_code error;
+    std::filesystem::create_directories(target.parent_path(), error);
+    if (error) {
+      throw areagraph::InputError("cannot create the folder '" + target.parent_path().string() +
+                                  "': " + error.message());
+    }
+    areagraph::WriteOutputFile(target.string(), areagraph::ExportAreaGraph(graph, settings));
+    std::cout << "wrote " << target.string() << "\n";
+  }
+  if (missing.empty()) return 0;
+  std::string names;
+  for (const std::string& name : missing) names += (names.empty() ? "" : ", ") + name;
+  std::cerr << "ag-export: " << missing.size() << " of " << maps.size()
+            << " maps have no Area Graph (run ag-merge first): " << names << "\n";
+  return 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{
-      "Writes the Area Graph of one map in another format.\n"
+      "Writes the Area Graph of one map (or, with --all, of every map) in another format.\n"
       "  labels     16-bit PNG the size of the map: 0 = no area, area id + 1 inside each area\n"
       "  kinds      TSV of each label's kind (room, corridor, dead_end), for ag-eval\n"
       "  preview    colour PNG to look at: areas filled, passages red\n"
@@ -57,11 +98,19 @@ int main(int argc, char** argv) {
   areagraph::GeoAnchor anchor;
   areagraph::ExportSettings settings;
   app.add_option("--store", store_path, "SQLite artifact store")->capture_default_str();
-  app.add_option("--map", map_name, "name of the map in the store")->required();
+  bool all_maps = false;
+  auto* map_option = app.add_option("--map", map_name, "name of the map in the store");
+  app.add_flag("--all", all_maps,
+               "every map of the store, each into the folder --out as <map> + .png (labels), "
+               ".kinds.tsv, .preview.png, .geojson, .osm, .json or .pb.json (protojson); exit "
+               "status 1 when a map has no Area Graph")
+      ->excludes(map_option);
   app.add_option("--format", format_name,
                  "labels, kinds, preview, geojson, osmag, json, protojson or html")
       ->required();
-  app.add_option("--out", out_path, "file to write, or - for standard output")->required();
+  app.add_option("--out", out_path,
+                 "file to write, or - for standard output; with --all, the folder to write into")
+      ->required();
   app.add_option("--anchor-lat", anchor.lat_deg,
                  "geojson, osmag: latitude of the map's world origin in degrees (osmag without "
                  "it: 31.17947)");
@@ -81,7 +130,14 @@ int main(int argc, char** argv) {
                  "html: show the run behind this artifact key (prefix; default: heads)");
   app.add_option("--compare", compare_key, "html: a second key of the map to compare with");
   return areagraph::RunCommand("ag-export", app, argc, argv, [&] {
+    if (!all_maps && map_name.empty()) {
+      throw areagraph::OptionsError("give --map NAME, or --all for every map of the store");
+    }
     if (format_name == "html") {
+      if (all_maps) {
+        throw areagraph::OptionsError(
+            "--all does not go with --format html (ag-run --report DIR writes every map's page)");
+      }
       const int status =
           areagraph::ExportViewerPage(store_path, map_name, key, compare_key, out_path);
       if (status == 0 && !areagraph::IsStandardOutput(out_path)) {
@@ -108,6 +164,7 @@ int main(int argc, char** argv) {
                                     areagraph::FormatNumber(areagraph::kMaxOptionLengthM) + "]");
     }
     auto store = areagraph::OpenArtifactStore(store_path, areagraph::StoreMode::kReadOnly);
+    if (all_maps) return ExportEveryMap(*store, settings, store_path, out_path);
     const std::optional<std::string> graph_key = areagraph::NewestGraphKey(*store, map_name);
     if (!graph_key) {
       throw areagraph::InputError(

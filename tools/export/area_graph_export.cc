@@ -27,6 +27,26 @@ ExportFormat ParseExportFormat(const std::string& name) {
                      "'; use labels, kinds, preview, geojson, osmag, json, protojson or html");
 }
 
+std::string ExportFileSuffix(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::kLabels:
+      return ".png";
+    case ExportFormat::kKinds:
+      return ".kinds.tsv";
+    case ExportFormat::kPreview:
+      return ".preview.png";
+    case ExportFormat::kGeoJson:
+      return ".geojson";
+    case ExportFormat::kOsmAg:
+      return ".osm";
+    case ExportFormat::kJson:
+      return ".json";
+    case ExportFormat::kProtoJson:
+      return ".pb.json";
+  }
+  return ".out";
+}
+
 std::string AreaKindsTsv(const proto::AreaGraph& graph) {
   std::string tsv = "label\tkind\n";
   for (const proto::Area& area : graph.areas()) {

@@ -31,6 +31,11 @@ enum class ExportFormat {
 // OptionsError otherwise.
 ExportFormat ParseExportFormat(const std::string& name);
 
+// What a map's file of this format ends with when ag-export --all names it:
+// ".png" for labels and ".kinds.tsv" for kinds, the names ag-eval --dataset
+// pairs; ".preview.png", ".geojson", ".osm", ".json" and ".pb.json" else.
+std::string ExportFileSuffix(ExportFormat format);
+
 struct ExportSettings {
   ExportFormat format = ExportFormat::kJson;
   std::string map_name;

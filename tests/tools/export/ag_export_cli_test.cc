@@ -341,5 +341,53 @@ TEST_F(AgExportCli, MissingMergeArtifactNamesTheStageToRun) {
   EXPECT_NE(run.err.find("nowhere"), std::string::npos) << run.err;
 }
 
+// --all writes each map's file into the folder under the map's name (folders
+// of a name included), byte for byte what --map writes; a map without an Area
+// Graph is named on one line of stderr and makes the status 1.
+TEST_F(AgExportCli, AllWritesEveryMapIntoTheFolder) {
+  {
+    std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
+    StageInputs inputs;
+    inputs.digests = {"cut-artifact-digest"};
+    RunCachedStage(*store, "wing/floor_2", StageOf(kMergeStage), {}, inputs,
+                   [] { return std::make_unique<proto::AreaGraph>(testing::TwoRoomAreaGraph()); });
+  }
+  ASSERT_EQ(Export("kinds", dir_.File("house.kinds.tsv")).exit_code, 0);
+  auto run = RunTool("ag-export", {"--store", store_path_, "--all", "--format", "kinds", "--out",
+                                   dir_.File("all")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(ReadFile(dir_.File("all/house.kinds.tsv")), ReadFile(dir_.File("house.kinds.tsv")));
+  EXPECT_EQ(ReadFile(dir_.File("all/wing/floor_2.kinds.tsv")),
+            ReadFile(dir_.File("house.kinds.tsv")));
+  EXPECT_EQ(CountLines(run.out), 2) << run.out;
+
+  {
+    std::unique_ptr<ArtifactStore> store = OpenArtifactStore(store_path_);
+    StageInputs inputs;
+    inputs.digests = {"source"};
+    RunCachedStage(*store, "imported_only", StageOf(kImportStage), {}, inputs,
+                   [] { return std::make_unique<proto::GridMap>(); });
+  }
+  run = RunTool("ag-export", {"--store", store_path_, "--all", "--format", "labels", "--out",
+                              dir_.File("labels")});
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("1 of 3 maps have no Area Graph"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find("imported_only"), std::string::npos) << run.err;
+  EXPECT_TRUE(cv::imread(dir_.File("labels/house.png"), cv::IMREAD_UNCHANGED).type() == CV_16U);
+
+  for (const std::vector<std::string>& wrong :
+       {std::vector<std::string>{"--all", "--map", "house", "--format", "json", "--out", "x"},
+        {"--format", "json", "--out", "x"},
+        {"--all", "--format", "html", "--out", "x"},
+        {"--all", "--format", "json", "--out", "-"}}) {
+    std::vector<std::string> args = {"--store", store_path_};
+    args.insert(args.end(), wrong.begin(), wrong.end());
+    run = RunTool("ag-export", args);
+    EXPECT_EQ(run.exit_code, 2) << wrong[1];
+    EXPECT_EQ(CountLines(run.err), 1) << run.err;
+  }
+}
+
 }  // namespace
 }  // namespace areagraph
