@@ -100,14 +100,12 @@ run() {
   local store=$outdir.db
   "$BIN/ag-run" --store "$store" --jobs "$JOBS" "$@" "$manifest" >"$outdir.log" 2>&1 ||
     grep -i "failed" "$outdir.log" | grep -v " 0 failed" >&2 || true
-  tail -n +2 "$manifest" | cut -f2 | while read -r name; do
-    "$BIN/ag-export" --store "$store" --map "$name" --format labels --out "$outdir/$name.png" \
-      >/dev/null 2>&1 || echo "bench-quality: no result for $name" >&2
-    if [ "$KINDS" = 1 ]; then
-      "$BIN/ag-export" --store "$store" --map "$name" --format kinds \
-        --out "$outdir/$name.kinds.tsv" >/dev/null 2>&1 || true
-    fi
-  done
+  # A map without an Area Graph gets no file (ag-export names it).
+  "$BIN/ag-export" --store "$store" --all --format labels --out "$outdir" >/dev/null ||
+    echo "bench-quality: $outdir: a map has no result" >&2
+  if [ "$KINDS" = 1 ]; then
+    "$BIN/ag-export" --store "$store" --all --format kinds --out "$outdir" >/dev/null 2>&1 || true
+  fi
   rm -f "$store" "$store-wal" "$store-shm"
 }
 

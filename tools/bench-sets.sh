@@ -43,21 +43,18 @@ set_manifest() {
 # new each time because match reads a map's earlier Area Graph: a store that
 # holds another run's results scores differently. Expects JOBS set.
 score_part() {
-  local set=$1 dir=$2 bin=$3 map gt flags
+  local set=$1 dir=$2 bin=$3 gt flags
   shift 3
   local store=$dir.db
   rm -rf "$dir" "$store" "$store-wal" "$store-shm"
   mkdir -p "$dir"
   "$bin/ag-run" --store "$store" --jobs "$JOBS" "$@" "$OUT/$set.tsv" >"$dir.log" 2>&1 ||
     echo "$(basename "$0" .sh): $set: $(grep -c failed "$dir.log") failed (see $dir.log)" >&2
-  tail -n +2 "$OUT/$set.tsv" | cut -f2 | while read -r map; do
-    # A failed export is tried once more before the map counts as missing.
-    "$bin/ag-export" --store "$store" --map "$map" --format labels --out "$dir/$map.png" \
-      </dev/null >/dev/null 2>&1 ||
-      "$bin/ag-export" --store "$store" --map "$map" --format labels --out "$dir/$map.png" \
-        </dev/null >/dev/null 2>"$dir.export-errors" ||
-      echo "$(basename "$0" .sh): no result for $set $map: $(cat "$dir.export-errors")" >&2
-  done
+  # Tried twice before a map counts as missing (ag-export names it).
+  "$bin/ag-export" --store "$store" --all --format labels --out "$dir" >/dev/null 2>&1 ||
+    "$bin/ag-export" --store "$store" --all --format labels --out "$dir" >/dev/null \
+      2>"$dir.export-errors" ||
+    echo "$(basename "$0" .sh): $set: $(cat "$dir.export-errors")" >&2
   rm -f "$store" "$store-wal" "$store-shm"
   read -r gt flags <"$OUT/$set.eval"
   # shellcheck disable=SC2086 # flags holds several words
