@@ -41,13 +41,15 @@ set_manifest() {
 # SET first) with BIN's ag-run in a new store DIR.db, exports their labels to
 # DIR/<map>.png and prints the set's mean MCC (ag-eval, maoris). The store is
 # new each time because match reads a map's earlier Area Graph: a store that
-# holds another run's results scores differently. Expects JOBS set.
+# holds another run's results scores differently. With SEED_STORE set, the
+# store starts as a copy of that one (see upstream_store). Expects JOBS set.
 score_part() {
   local set=$1 dir=$2 bin=$3 gt flags
   shift 3
   local store=$dir.db
   rm -rf "$dir" "$store" "$store-wal" "$store-shm"
   mkdir -p "$dir"
+  [ -z "${SEED_STORE:-}" ] || cp "$SEED_STORE" "$store"
   "$bin/ag-run" --store "$store" --jobs "$JOBS" "$@" "$OUT/$set.tsv" >"$dir.log" 2>&1 ||
     echo "$(basename "$0" .sh): $set: $(grep -c failed "$dir.log") failed (see $dir.log)" >&2
   # Tried twice before a map counts as missing (ag-export names it).
@@ -60,4 +62,22 @@ score_part() {
   # shellcheck disable=SC2086 # flags holds several words
   { "$bin/ag-eval" --dataset --results "$dir" --gt "$gt" --mcc-variant maoris $flags 2>/dev/null ||
       true; } | awk -F'|' '$2 ~ /mean/ { gsub(/[ *]/, "", $3); print $3 }'
+}
+
+# upstream_store SET BIN -> $OUT/SET-upstream.db, made once: the set's maps
+# through import, clean, voronoi and prune only (no Area Graph, so nothing for
+# match to read). A run seeded with it (SEED_STORE) computes only cut, merge
+# and match, and scores as a new store does when its binaries and options
+# compute the same first four stages.
+upstream_store() {
+  local set=$1 bin=$2 stage store=$OUT/$1-upstream.db
+  if [ ! -e "$store" ]; then
+    rm -f "$store.part" "$store.part-wal" "$store.part-shm"
+    for stage in import clean voronoi prune; do
+      "$bin/ag-run" --store "$store.part" --jobs "$JOBS" --only "$stage" "$OUT/$set.tsv" \
+        >/dev/null 2>&1 || true
+    done
+    mv "$store.part" "$store"
+  fi
+  echo "$store"
 }

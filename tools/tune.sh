@@ -189,6 +189,26 @@ config_flags() {  # config_flags CHANGE... -> the --set flags, one per line
   return 0
 }
 
+# Whether no change can alter the stages before cut: options of cut, merge
+# and match, and constants of their folders that no earlier stage's folder
+# (nor geometry's or common's) includes. Such runs start from the part's
+# upstream store and compute only cut, merge and match.
+upstream_unchanged() {
+  local change kind key
+  for change in "$@"; do
+    read -r kind key _ <<<"${change%=*}"
+    case "$kind:$key" in
+      option:cut.* | option:merge.* | option:match.*) ;;
+      constant:stages/cut/* | constant:stages/merge/* | constant:stages/match/*)
+        if grep -rqF "\"$key\"" stages/import stages/clean stages/voronoi stages/prune \
+          stages/geometry stages/common; then
+          return 1
+        fi ;;
+      *) return 1 ;;
+    esac
+  done
+}
+
 # score PART CHANGE... -> the part's mean MCC with those changes, computed
 # once per part and configuration.
 score() {
@@ -200,8 +220,11 @@ score() {
   id=$(printf '%s ' "$part" "$bin" "${flags[@]}" | md5sum | cut -c1-16)
   if [ ! -e "$OUT/scores/$id" ]; then
     echo "tune: scoring $part ${flags[*]} ($bin)" >&2
+    local seed=
+    if upstream_unchanged "$@"; then seed=$(upstream_store "$part" "$BIN"); fi
     # Written aside and renamed: a run stopped halfway leaves no score behind.
-    score_part "$part" "$OUT/labels-$part" "$bin" "${flags[@]}" >"$OUT/scores/$id.part"
+    SEED_STORE=$seed score_part "$part" "$OUT/labels-$part" "$bin" "${flags[@]}" \
+      >"$OUT/scores/$id.part"
     mv "$OUT/scores/$id.part" "$OUT/scores/$id"
   fi
   local mean
