@@ -13,7 +13,8 @@
 # bormann/ plain and furnished (20 each), and the generated tuning and
 # held-out floors (30 each). Every run has a new store: match undoes joins
 # against a map's earlier Area Graph, so a store kept across the runs would
-# let one run's result change the next one's.
+# let one run's result change the next one's. The runs that change only cut,
+# merge or match start from a copy of the set's store of the first four stages.
 #
 #   tools/bench-ablation.sh [--data DIR] [--out DIR] [--build DIR] [--sets LIST]
 #                           [--passes LIST] [--jobs N]
@@ -84,11 +85,15 @@ mkdir -p "$OUT"
 source tools/bench-sets.sh
 
 # mean SET RUN [ag-run flags]: the set's mean MCC with those flags; labels
-# in $OUT/SET/RUN.
+# in $OUT/SET/RUN. The defaults and the passes of cut, merge and match start
+# from the set's store of the first four stages, which they do not change.
 mean() {
-  local set=$1 run=$2
+  local set=$1 run=$2 seed=
   shift 2
-  score_part "$set" "$OUT/$set/$run" "$BIN" "$@"
+  case "$run" in
+    defaults | cut.* | merge.* | match.*) seed=$(upstream_store "$set" "$BIN") ;;
+  esac
+  SEED_STORE=$seed score_part "$set" "$OUT/$set/$run" "$BIN" "$@"
 }
 
 sets=()
