@@ -42,14 +42,18 @@ RoomDisks::RoomDisks(PointList&& sites, double room_width_px, double small_width
   small_ = std::make_unique<SiteAlphaShape>(std::move(sites), small_width_px / 2);
   const int small_count =
       DropSmallRooms(small_width_px, small_->DetectRooms(inside_boundary), small_.get());
-  // The graph runs through every room: a small room holds a big one when
-  // some point of the graph lies in both.
+  // The graph runs through every room, and a room of the big disk lies in
+  // one room of the small disk: one point of it answers for the room.
   std::vector<bool> holds_big(small_count, false);
+  std::vector<bool> placed(room_count_, false);
   for (const proto::GraphEdge& edge : topology.edges()) {
     for (const proto::Point2& point : edge.path()) {
       const Eigen::Vector2d p(point.x(), point.y());
+      const int big = big_.RoomAt(p);
+      if (big < 0 || placed[big]) continue;
+      placed[big] = true;
       const int small = small_->RoomAt(p);
-      if (small >= 0 && !holds_big[small] && big_.RoomAt(p) >= 0) holds_big[small] = true;
+      if (small >= 0) holds_big[small] = true;
     }
   }
   // The small disk's rooms take ids after the big disk's; -1 for those
