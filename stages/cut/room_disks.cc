@@ -9,8 +9,7 @@
 
 namespace areagraph {
 
-double SmallRoomWidthM(const proto::CutOptions& options,
-                       const proto::RoomWidthEstimate& estimate) {
+double SmallRoomWidthM(const proto::CutOptions& options, const proto::RoomWidthEstimate& estimate) {
   if (!estimate.automatic() || estimate.doors_size() == 0) return 0;
   if (!RunsCutPass(options, proto::CutOptions::SMALL_ROOM_DISK)) return 0;
   // The estimate's doors are widest first.

@@ -32,9 +32,10 @@ floorplan::FloorPlan CorridorWithHallsAndOffices() {
   for (double x : {4.5, 7.5, 10.5, 13.5}) floorplan::DrawRoom(plan, {x, 6.2, 3, 3});
   floorplan::DrawDoor(plan, 4.5, 4, 1.8, WallDirection::kHorizontal);
   floorplan::DrawDoor(plan, 12.5, 4, 1.8, WallDirection::kHorizontal);
-  for (double x : {6, 9, 12, 15}) floorplan::DrawDoor(plan, x, 6.2, 0.9, WallDirection::kHorizontal);
-  floorplan::DrawFurniture(plan, {kOffice.x + 0.05, kOffice.y + kOffice.height - 1.3,
-                                  kOffice.width - 0.1, 1.25});
+  for (double x : {6, 9, 12, 15})
+    floorplan::DrawDoor(plan, x, 6.2, 0.9, WallDirection::kHorizontal);
+  floorplan::DrawFurniture(
+      plan, {kOffice.x + 0.05, kOffice.y + kOffice.height - 1.3, kOffice.width - 0.1, 1.25});
   return plan;
 }
 
