@@ -16,6 +16,7 @@
 #include "stages/cut/mouth_sites.h"
 #include "stages/cut/narrow_tails.h"
 #include "stages/cut/openings.h"
+#include "stages/cut/room_disks.h"
 #include "stages/cut/room_width.h"
 #include "stages/cut/structure_sites.h"
 #include "stages/geometry/cell_grid.h"
@@ -40,20 +41,6 @@ void CheckTopology(const proto::TopologyGraph& topology) {
   if (topology.edges_size() == 0) {
     throw InputError("the Topology Graph has no edges; run ag-prune again");
   }
-}
-
-// A room must at least hold the disk of diameter W; smaller ones are slivers
-// where a corridor about W wide bulges a little.
-void DropSmallRooms(double room_width_px, SiteAlphaShape* shape, int* room_count) {
-  const double min_area = M_PI * room_width_px * room_width_px / 4;
-  const std::vector<double> areas = shape->RoomAreas();
-  std::vector<int> renumber(*room_count, -1);
-  int kept = 0;
-  for (int room = 0; room < *room_count; ++room) {
-    if (room < static_cast<int>(areas.size()) && areas[room] >= min_area) renumber[room] = kept++;
-  }
-  shape->RenumberRooms(renumber);
-  *room_count = kept;
 }
 
 // Edges per range of WallGapSites' tasks (about 2 M instructions at 8 x 8).
@@ -222,9 +209,10 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   const ClosedLines closed_lines(in.closing, grid.resolution_m());
   const ClosedLines* kept_tips =
       RunsCutPass(options, proto::CutOptions::KEEP_CLOSED_ROOM_TIPS) ? &closed_lines : nullptr;
-  SiteAlphaShape shape(std::move(in.sites), room_width_px / 2);
-  int room_count = shape.DetectRooms(inside_boundary);
-  DropSmallRooms(room_width_px, &shape, &room_count);
+  RoomDisks shape(std::move(in.sites), room_width_px,
+                  SmallRoomWidthM(options, room_width) / grid.resolution_m(), inside_boundary,
+                  topology);
+  const int room_count = shape.room_count();
   auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };
 
   proto::CutGraph out;

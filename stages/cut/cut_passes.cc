@@ -29,6 +29,10 @@ std::vector<CutPass> MakeTable() {
       {Options::CLOSE_MOUTHS, CutStep::kClosing, "MouthOpenings (mouth_sites.h)",
        "beside the doors and gaps: a mouth is a whole open side, which neither finds",
        [](const Options& o) -> const Message* { return &o.mouths(); }},
+      {Options::SMALL_ROOM_DISK, CutStep::kRoomDisk, "RoomDisks (room_disks.h)",
+       "after every closing: both disks meet the same closed openings, and the rooms it adds "
+       "are what the edge cuts read",
+       nullptr},
       {Options::KEEP_CLOSED_ROOM_TIPS, CutStep::kEdgeCuts, "PlanEdgeCuts (cut_planning.h)",
        "after the room disk: it reads where the closing sites lie on the edges", nullptr},
       {Options::CUT_NARROW_TAILS, CutStep::kEdgeCuts, "CutNarrowTails (narrow_tails.h)",

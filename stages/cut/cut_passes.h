@@ -17,6 +17,7 @@ enum class CutStep {
   kRoomWidth,  // W (stages/cut/room_width.h)
   kSites,      // the obstacle sites that stop the room disk
   kClosing,    // the openings closed for the room disk by sites on their line
+  kRoomDisk,   // the rooms the disk finds (stages/cut/room_disks.h)
   kEdgeCuts,   // where each Topology Graph edge is cut (stages/cut/cut_planning.h)
 };
 

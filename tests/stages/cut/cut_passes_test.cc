@@ -38,6 +38,8 @@ const std::map<Pass, const char*>& CaseOfEachPass() {
        "LocalDoorsTest.DoorWiderThanItsCorridorDividesOfficeFromCorridor"},
       {proto::CutOptions::CLOSE_MOUTHS,
        "this file, CloseMouthsTest.TheRoomDiskStopsAtTheBaysMouth"},
+      {proto::CutOptions::SMALL_ROOM_DISK,
+       "room_disks_test.cc SmallRoomDiskTest.TheFurnishedOfficeIsOneRoom"},
       {proto::CutOptions::KEEP_CLOSED_ROOM_TIPS,
        "pipeline/small_closed_rooms_test.cc "
        "SmallClosedRoomsTest.AClosetBehindAClosedDoorIsAnAreaOfItsOwn"},
