@@ -61,7 +61,8 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // Also in cut 15: a wall gap's thin wall end runs on for kJambRunM only (no quarter of the gap).
 // Also in cut 15: islands are as thick as merge's, kMinFurnitureThicknessM (0.3 m, was 0.8 m).
 // Also in cut 15: a narrow tail is kCorridorWidthRatio (1.3, was 2) times narrower than its room.
-inline constexpr StageInfo kCutStage{"cut", 15};
+// cut 16: the CutGraph carries cut.islands.max_length_m on to merge (its furniture islands).
+inline constexpr StageInfo kCutStage{"cut", 16};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
