@@ -107,7 +107,8 @@ std::vector<MergePass> MakeTable() {
       "corridor; it measures the plan again after every round of joins",
       nullptr,
       [](const MergeInput& in, const PlanModel&, AreaPlan* plan) {
-        JoinSplitCorridors(in.graph, in.grid.resolution_m(), in.closed, plan, {}, &in.grid);
+        JoinSplitCorridors(in.graph, in.grid.resolution_m(), in.map.robot_width_m(), in.closed,
+                           plan, {}, &in.grid);
       },
       nullptr,
   });

@@ -21,10 +21,6 @@ struct SplitCorridorParams {
   // runs along the line between the two centroids within this angle: such a
   // room lies across that piece.
   double bend_deg = 30;
-  // Both pieces are at least this wide (median free width, metres): rows of
-  // cluttered cubicles 0.9 m wide with a gap in their partition are no
-  // corridor.
-  double min_width_m = 1.0;
   // With a grid given: an opening narrower than kCorridorOpeningShare
   // (vertex_openings.h) of the wider piece's median free width joins anyway
   // when it is one-sided (a flat wall on one side,
@@ -36,7 +32,10 @@ struct SplitCorridorParams {
 
 // Joins pairs of areas (rooms or room-less pieces) that meet at a graph
 // vertex that is not `closed` (ClosedVertices), where the two are pieces of
-// one corridor by the constants above (and do not narrow where they meet,
+// one corridor by the constants above, both at least twice `robot_width_m`
+// wide (median free width; CleanedMap.robot_width_m, a body's width: two
+// people pass each other in a corridor, and rows of cluttered cubicles 0.9 m
+// wide with a gap in their partition are no corridor) (and do not narrow where they meet,
 // kCorridorOpeningShare) and together are shaped like a corridor
 // (IsCorridorShaped of the two as one: the wider typical and widest width,
 // the sum of their sizes), or belong to a chain of such pairs that is (a
@@ -50,7 +49,7 @@ struct SplitCorridorParams {
 // `grid`, when given, lets one-sided narrowings join (see
 // one_sided_opening_share). The plan changes while the pass runs: each round
 // measures it again (MeasurePlan).
-void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
+void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, double robot_width_m,
                         const std::vector<bool>& closed, AreaPlan* plan,
                         const SplitCorridorParams& params = {}, const CellGrid* grid = nullptr);
 
