@@ -46,7 +46,7 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, doubl
           const VertexOpening& narrowest =
               a->second.width_px <= b->second.width_px ? a->second : b->second;
           const double opening = narrowest.width_px;
-          if (opening < kCorridorOpeningShare * wide) {
+          if (NarrowsCorridor(opening, wide)) {
             if (grid == nullptr || opening < params.one_sided_opening_share * wide ||
                 !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
               continue;

@@ -21,8 +21,8 @@ struct SplitCorridorParams {
   // runs along the line between the two centroids within this angle: such a
   // room lies across that piece.
   double bend_deg = 30;
-  // With a grid given: an opening narrower than kCorridorOpeningShare
-  // (vertex_openings.h) of the wider piece's median free width joins anyway
+  // With a grid given: an opening that narrows the wider piece's median free
+  // width (NarrowsCorridor, stages/geometry/corridor_shape.h) joins anyway
   // when it is one-sided (a flat wall on one side,
   // stages/merge/one_sided_narrowing.h) and at least this share of that
   // width. Half: a cabinet 0.6 m deep against one wall of a corridor 1.2 m
@@ -36,7 +36,7 @@ struct SplitCorridorParams {
 // wide (median free width; CleanedMap.robot_width_m, a body's width: two
 // people pass each other in a corridor, and rows of cluttered cubicles 0.9 m
 // wide with a gap in their partition are no corridor) (and do not narrow where they meet,
-// kCorridorOpeningShare) and together are shaped like a corridor
+// NarrowsCorridor, stages/geometry/corridor_shape.h) and together are shaped like a corridor
 // (IsCorridorShaped of the two as one: the wider typical and widest width,
 // the sum of their sizes), or belong to a chain of such pairs that is (a
 // corridor that W split into three or four short pieces is long only as a
