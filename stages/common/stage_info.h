@@ -108,7 +108,8 @@ inline constexpr StageInfo kCutStage{"cut", 16};
 // within ag-cut's door reach (1.5 m) instead of two of the bay's widths.
 // merge 22: the AreaGraph carries the CleanedMap's robot_width_m on to match.
 // merge 23: a corridor narrows below its median width over kCorridorWidthRatio (1 / 1.3 = 0.77) in
-// corridor piece joining (was 0.75), split corridor and stem joining (was 0.8).
+// corridor piece joining (was 0.75), split corridor and stem joining (was 0.8). Also in merge 23:
+// rows need no least solidity, a one-sided narrowing no least share of the corridor's width.
 inline constexpr StageInfo kMergeStage{"merge", 23};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).

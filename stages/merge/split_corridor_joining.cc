@@ -47,8 +47,7 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, doubl
               a->second.width_px <= b->second.width_px ? a->second : b->second;
           const double opening = narrowest.width_px;
           if (NarrowsCorridor(opening, wide)) {
-            if (grid == nullptr || opening < params.one_sided_opening_share * wide ||
-                !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
+            if (grid == nullptr || !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
               continue;
             }
           }

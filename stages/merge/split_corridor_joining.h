@@ -21,13 +21,6 @@ struct SplitCorridorParams {
   // runs along the line between the two centroids within this angle: such a
   // room lies across that piece.
   double bend_deg = 30;
-  // With a grid given: an opening that narrows the wider piece's median free
-  // width (NarrowsCorridor, stages/geometry/corridor_shape.h) joins anyway
-  // when it is one-sided (a flat wall on one side,
-  // stages/merge/one_sided_narrowing.h) and at least this share of that
-  // width. Half: a cabinet 0.6 m deep against one wall of a corridor 1.2 m
-  // wide or wider.
-  double one_sided_opening_share = 0.5;
 };
 
 // Joins pairs of areas (rooms or room-less pieces) that meet at a graph
@@ -46,8 +39,10 @@ struct SplitCorridorParams {
 // falls into room-shaped pieces; room-less pieces stay apart where a side
 // corridor or a doorway's stub forks off (JoinCorridorPieces joins only two
 // uniform pieces). A joined area keeps the kind and room of its first piece.
-// `grid`, when given, lets one-sided narrowings join (see
-// one_sided_opening_share). The plan changes while the pass runs: each round
+// `grid`, when given, lets an opening that narrows the wider piece's median
+// free width join anyway when it is one-sided (a flat wall on one side,
+// stages/merge/one_sided_narrowing.h: a cabinet against one wall of a
+// corridor). The plan changes while the pass runs: each round
 // measures it again (MeasurePlan).
 void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, double robot_width_m,
                         const std::vector<bool>& closed, AreaPlan* plan,
