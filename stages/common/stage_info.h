@@ -63,7 +63,8 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // Also in cut 15: a narrow tail is kCorridorWidthRatio (1.3, was 2) times narrower than its room.
 // cut 16: with an estimated W, a space the room disk finds no room in is one room when the disk of
 // the typical door (median door + 0.1 m) finds it holding no room of W's (pass SMALL_ROOM_DISK).
-inline constexpr StageInfo kCutStage{"cut", 16};
+// cut 17: the CutGraph carries cut.islands.max_length_m on to merge (its furniture islands).
+inline constexpr StageInfo kCutStage{"cut", 17};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
@@ -108,7 +109,10 @@ inline constexpr StageInfo kCutStage{"cut", 16};
 // corridor stem has no least width of its own, a row no greatest length; a bay's mouth is measured
 // within ag-cut's door reach (1.5 m) instead of two of the bay's widths.
 // merge 22: the AreaGraph carries the CleanedMap's robot_width_m on to match.
-inline constexpr StageInfo kMergeStage{"merge", 22};
+// merge 23: a corridor narrows below its median width over kCorridorWidthRatio (1 / 1.3 = 0.77) in
+// corridor piece joining (was 0.75), split corridor and stem joining (was 0.8). Also in merge 23:
+// rows need no least solidity, a one-sided narrowing no least share of the corridor's width.
+inline constexpr StageInfo kMergeStage{"merge", 23};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

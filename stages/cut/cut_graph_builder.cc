@@ -224,6 +224,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   out.set_dropped_parts(topology.dropped_parts());
   out.set_dropped_area_m2(topology.dropped_area_m2());
   out.set_min_clearance_m(topology.min_clearance_m());
+  out.set_island_max_length_m(options.islands().max_length_m());
   *out.mutable_vertices() = topology.vertices();
   *out.mutable_room_width() = room_width;
 

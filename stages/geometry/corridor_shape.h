@@ -20,10 +20,20 @@ inline constexpr double kMaxCorridorWidthM = 4.0;
 // narrowest offices; a corridor runs past several of them.
 inline constexpr double kCorridorElongation = 4.0;
 // One corridor is about as wide everywhere: the median free widths of two
-// pieces of it differ by at most this factor (a cabinet or a pillar narrows
-// it by a fifth or so; a side branch or a room off it is clearly narrower or
-// wider).
+// pieces of it differ by at most this factor, and no width along it or where
+// its pieces meet is narrower than its median over this factor (a cabinet
+// or a pillar narrows it by a fifth or so; a side branch, a room off it or a
+// door is clearly narrower or wider).
 inline constexpr double kCorridorWidthRatio = 1.3;
+
+// Whether a free width `width` narrows a corridor whose median free width is
+// `median`: it is narrower than one corridor's width varies
+// (kCorridorWidthRatio). Nothing narrows along a piece of corridor, and two
+// pieces of one corridor, or a branch and its corridor, do not narrow where
+// they meet; a door is narrower than the corridor or room it opens from.
+inline bool NarrowsCorridor(double width, double median) {
+  return width * kCorridorWidthRatio < median;
+}
 
 // How many squares of `width` a space of `area` covers (0 without a width).
 inline double Elongation(double width, double area) {

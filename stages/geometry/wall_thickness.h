@@ -34,4 +34,11 @@ inline constexpr double kMinFurnitureThicknessM = 0.3;
 // stands clearly thicker.
 inline constexpr double kFurnitureWallRatio = 2.0;
 
+// A scan misses at most this share of a wall's cells (a few cells here and
+// there); a frontier of unknown space runs along a whole side instead. So a
+// room's walls face unknown cells along at most this share
+// (stages/merge/closed_rooms.h), and a flat wall face shows in all but this
+// share of the points along it (stages/merge/one_sided_narrowing.h).
+inline constexpr double kMissedWallShare = 0.1;
+
 }  // namespace areagraph

@@ -117,6 +117,10 @@ proto::AreaGraph BuildAreaGraph(const proto::CutGraph& graph, const proto::Clean
         "the CutGraph holds no clearance (written by cut 13 or older): run ag-prune "
         "and ag-cut again");
   }
+  if (!graph.has_island_max_length_m()) {
+    throw InputError(
+        "the CutGraph holds no island length (written by cut 15 or older): run ag-cut again");
+  }
   CheckOutlineTolerance(options, graph.room_width().room_width_m());
   const double cell_m2 = grid.resolution_m() * grid.resolution_m();
 

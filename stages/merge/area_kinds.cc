@@ -16,7 +16,7 @@ void SetAreaKinds(const proto::CutGraph& graph, const AreaRaster& raster, double
   }
   for (int k = 0; k < area_count; ++k) {
     AreaPlan::Area& area = plan->areas[k];
-    if (!RasterShape(raster, k, resolution_m, furniture).corridor) {
+    if (!RasterShape(raster, k, resolution_m, graph.island_max_length_m(), furniture).corridor) {
       area.kind = proto::AREA_ROOM;
     } else if (exits[k] >= 2) {
       area.kind = proto::AREA_CORRIDOR;

@@ -71,7 +71,7 @@ std::vector<AreaShape> MeasureAreaShapes(const proto::CutGraph& graph, const Are
   return shapes;
 }
 
-AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m,
+AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m, double island_max_m,
                       const cv::Mat& furniture) {
   AreaShape shape;
   if (k >= static_cast<int>(raster.boxes.size()) || raster.boxes[k].area() == 0) return shape;
@@ -97,7 +97,7 @@ AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m,
       }
     }
   }
-  FillEnclosedPockets(kMaxFurnitureIslandM / resolution_m, &mask);
+  FillEnclosedPockets(island_max_m / resolution_m, &mask);
   const cv::Mat depth = ExactDistanceTransform(mask);
   std::vector<double> widths;
   for (int r = 1; r + 1 < depth.rows; ++r) {

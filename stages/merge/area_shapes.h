@@ -45,14 +45,15 @@ std::vector<AreaShape> MeasureAreaShapes(const proto::CutGraph& graph, const Are
                                          double resolution_m);
 
 // The shape of area k of the split free space (no moments): its cells with
-// the holes of a furniture island's size (kMaxFurnitureIslandM) filled, so
+// the holes of a furniture island's size (at most `island_max_m` long,
+// CutGraph.island_max_length_m, furniture_islands.h) filled, so
 // that desks and pillars do not narrow it while the block of rooms inside a
 // corridor loop stays out; the width profile is twice the distance to its
 // outline along its ridge (the cells at least as deep as their neighbours).
 // Cells where `furniture` (CV_8U, map size, optional) is non-zero count as
 // the area's too within its box: rows of seats (FurnitureRowCells) are
 // longer than an island, and the strips between them no corridor.
-AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m,
+AreaShape RasterShape(const AreaRaster& raster, int k, double resolution_m, double island_max_m,
                       const cv::Mat& furniture = cv::Mat());
 
 }  // namespace areagraph

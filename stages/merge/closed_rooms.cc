@@ -7,6 +7,7 @@
 
 #include "stages/geometry/distance_transform.h"
 #include "stages/geometry/region_boxes.h"
+#include "stages/geometry/wall_thickness.h"
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
@@ -21,7 +22,7 @@ double WidestInnerWidthPx(const AreaRaster& raster, int area, const cv::Rect& bo
   return 2 * DeepestDistance(LabelMaskInBox(raster.labels, area + 1, box));
 }
 
-// Whether at most kClosedRoomMaxUnknownShare of the faces between the cells
+// Whether at most kMissedWallShare of the faces between the cells
 // of `area` and non-free cells face unknown ones.
 bool WallsSeen(const cv::Mat& labels, const CellGrid& grid, int area, const cv::Rect& box) {
   int64_t non_free = 0, unknown = 0;
@@ -38,7 +39,7 @@ bool WallsSeen(const cv::Mat& labels, const CellGrid& grid, int area, const cv::
       }
     }
   }
-  return unknown <= kClosedRoomMaxUnknownShare * non_free;
+  return unknown <= kMissedWallShare * non_free;
 }
 
 // Thickness (m) of the obstacle behind `jamb`, seen from the other jamb

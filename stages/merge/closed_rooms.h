@@ -10,12 +10,6 @@
 
 namespace areagraph {
 
-// At most this share of the faces between the area's cells and non-free
-// cells may face unknown cells: a room's walls were seen; a piece that
-// borders unknown space is a scan's frontier or gap, not a room. A tenth
-// allows a few cells a scan missed; a frontier runs along a whole side (a
-// quarter of a square piece's faces).
-inline constexpr double kClosedRoomMaxUnknownShare = 0.1;
 // A jamb's thickness is measured this far beyond it on the opening's line:
 // more than a wall's end is rounded off by the scan, less than a cabinet's
 // depth (0.6 m, merge.small_closed_rooms.pocket_jamb_m).
@@ -30,8 +24,10 @@ inline constexpr double kJambDepthM = 0.25;
 // - its opening there is narrower than kOpenShare (a door) of its widest
 //   inner width (twice the largest distance from its cells to a cell
 //   outside it);
-// - at most kClosedRoomMaxUnknownShare of its faces towards non-free cells
-//   face unknown cells (cells off the map count as unknown);
+// - at most kMissedWallShare (stages/geometry/wall_thickness.h) of its faces
+//   towards non-free cells face unknown cells (cells off the map count as
+//   unknown): a room's walls were seen; a piece that borders unknown space is
+//   a scan's frontier or gap, not a room;
 // - unless `pocket_jamb_m` is 0, not both of its jambs are obstacles at
 //   least `pocket_jamb_m` thick kJambDepthM beyond the opening (across its
 //   line): a door's jambs are a wall's ends, thin with free space on both

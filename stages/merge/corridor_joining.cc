@@ -5,6 +5,7 @@
 #include <set>
 #include <vector>
 
+#include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/disjoint_sets.h"
 
 namespace areagraph {
@@ -16,7 +17,7 @@ bool IsUniform(const proto::GraphEdge& edge) {
   std::nth_element(clearance.begin(), clearance.begin() + clearance.size() / 2, clearance.end());
   const double median = clearance[clearance.size() / 2];
   const double smallest = *std::min_element(edge.clearance_px().begin(), edge.clearance_px().end());
-  return smallest >= kUniformClearanceShare * median;
+  return !NarrowsCorridor(smallest, median);
 }
 
 // The bit of corridor in front of a door that AssignAreas gave to a corridor

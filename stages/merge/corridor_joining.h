@@ -5,14 +5,10 @@
 
 namespace areagraph {
 
-// An edge is uniform when nothing along it narrows: its smallest clearance
-// is at least this share of its median clearance (a door on the way drops
-// the share to about door width / room width: a 0.9 m door in a corridor
-// 1.2 m wide to 0.75).
-inline constexpr double kUniformClearanceShare = 0.75;
-
 // Joins room-less areas (corridor pieces and dead ends) made of uniform
-// edges only (a stub in front of a door that a piece took over counts as
+// edges only (nothing along the edge narrows its median clearance,
+// NarrowsCorridor in stages/geometry/corridor_shape.h, as a door on the way
+// does; a stub in front of a door that a piece took over counts as
 // uniform: its narrowing is the door's) where exactly two of them meet at a
 // graph vertex (where three or more meet, corridors fork: a place of its own): the Voronoi graph
 // cuts a corridor into a piece per junction (every side door, every bend), which people see as one

@@ -15,7 +15,7 @@ namespace areagraph {
 // corridor, AreaShape.corridor) more than kCorridorWidthRatio times as wide
 // as the stem (one about as wide as the corridor is a room without a door or
 // the corridor's own end, as wide as the rest). The stem does not narrow at
-// its mouth (kCorridorOpeningShare of its own median free width: a closet or
+// its mouth (NarrowsCorridor against its own median free width: a closet or
 // a room is wider than its door), is shaped like a corridor and runs straight (kStraightAxisRatio).
 // A dead-end branch narrower than W gets no room, and JoinSplitCorridors keeps it apart from a
 // corridor more than kCorridorWidthRatio times as wide; a hall (wider than a corridor) keeps its

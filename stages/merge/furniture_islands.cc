@@ -150,14 +150,14 @@ cv::Mat ObstaclesBeforeCleaning(const proto::CleanedMap& map) {
   return obstacle;
 }
 
-std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fill_pockets_m,
-                                        double max_elongation,
+std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double max_length_m,
+                                        bool fill_outlines, double max_elongation,
                                         const std::vector<cv::Point>& cells) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const double resolution_m = map.frame().resolution_m();
   cv::Mat obstacle = ObstaclesBeforeCleaning(map);
-  if (fill_pockets_m > 0) FillEnclosedPockets(fill_pockets_m / resolution_m, &obstacle);
-  const double max_px = kMaxFurnitureIslandM / resolution_m;
+  const double max_px = max_length_m / resolution_m;
+  if (fill_outlines) FillEnclosedPockets(max_px, &obstacle);
   const cv::Rect inside(0, 0, width, height);
   std::vector<uint8_t> values(cells.size(), 0);
   double min_thickness_px = 0;
@@ -185,7 +185,7 @@ std::vector<uint8_t> FurnitureIslandsAt(const proto::CleanedMap& map, double fil
   return values;
 }
 
-cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m,
+cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double max_length_m, bool fill_outlines,
                              double max_elongation) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   std::vector<cv::Point> cells;
@@ -194,7 +194,7 @@ cv::Mat FurnitureIslandCells(const proto::CleanedMap& map, double fill_pockets_m
     for (int c = 0; c < width; ++c) cells.emplace_back(c, r);
   }
   const std::vector<uint8_t> values =
-      FurnitureIslandsAt(map, fill_pockets_m, max_elongation, cells);
+      FurnitureIslandsAt(map, max_length_m, fill_outlines, max_elongation, cells);
   return cv::Mat(height, width, CV_8U, const_cast<uint8_t*>(values.data())).clone();
 }
 

@@ -93,7 +93,6 @@ cv::Mat FurnitureRowCells(const proto::CleanedMap& map, double min_elongation) {
     const cv::RotatedRect rect = cv::minAreaRect(cells);
     const double longer = std::max(rect.size.width, rect.size.height) + 1;
     const double shorter = std::min(rect.size.width, rect.size.height) + 1;
-    if (!(static_cast<double>(cells.size()) >= kMinRowSolidity * longer * shorter)) continue;
     if (!(longer > min_elongation * shorter)) continue;
     if (!(2 * DeepestDistance(region) >= min_thickness_px)) continue;
     // The rectangle's angle is that of its `width` side.

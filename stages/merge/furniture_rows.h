@@ -16,17 +16,13 @@ inline constexpr double kMaxRowPitchM = 2.0;
 // Two rows of one stack stand side by side along at least this share of the
 // shorter one (measured along the first one's axis).
 inline constexpr double kRowSideBySideShare = 0.5;
-// Rows fill at least this share of their smallest enclosing rectangle: a
-// rough scan leaves a thin block ragged by a cell on either side (a third
-// of a row 0.5 m deep at 0.1 m), where an L or T of walls fills far less.
-inline constexpr double kMinRowSolidity = 0.5;
 // A stack has at least this many rows: two walls of a corridor, broken off
 // at doors on both ends, stand side by side too.
 inline constexpr int kMinStackRows = 3;
 
 // Which obstacle cells belong to a furniture row, as CV_8U the map's size
 // (1 on row cells): a free-standing obstacle region (touching no image
-// border), kMinRowSolidity solid and at least kMinFurnitureThicknessM thick
+// border) at least kMinFurnitureThicknessM thick
 // (furniture_islands.h), but more than `min_elongation` times as long as
 // wide, in a stack of at least kMinStackRows such regions (each beside the
 // next: side by side, within kMaxRowPitchM). Alone, such a block is no

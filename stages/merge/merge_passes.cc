@@ -51,7 +51,8 @@ std::vector<MergePass> MakeTable() {
         const proto::JoinFurnitureGapsOptions& options = in.options.furniture_gaps();
         // Islands are looked for only at the openings' jambs.
         const IslandsAt islands_at = [&](const std::vector<cv::Point>& cells) {
-          return FurnitureIslandsAt(in.map, kMaxFurnitureIslandM, options.max_elongation(), cells);
+          return FurnitureIslandsAt(in.map, in.graph.island_max_length_m(), true,
+                                    options.max_elongation(), cells);
         };
         JoinAreasAtFurnitureGaps(in.graph, model, in.closed, islands_at,
                                  in.options.corridor_pieces().below_m2(), plan);
@@ -106,7 +107,8 @@ std::vector<MergePass> MakeTable() {
       "corridor; it measures the plan again after every round of joins",
       nullptr,
       [](const MergeInput& in, const PlanModel&, AreaPlan* plan) {
-        JoinSplitCorridors(in.graph, in.grid.resolution_m(), in.closed, plan, {}, &in.grid);
+        JoinSplitCorridors(in.graph, in.grid.resolution_m(), in.map.robot_width_m(), in.closed,
+                           plan, {}, &in.grid);
       },
       nullptr,
   });

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "stages/geometry/wall_thickness.h"
+
 namespace areagraph {
 namespace {
 
@@ -28,7 +30,7 @@ bool FlatWallAt(const CellGrid& grid, const Eigen::Vector2d& side, const Eigen::
     ++samples;
     if (wall && open) ++face;
   }
-  return face >= kFlatWallShare * samples;
+  return face >= (1 - kMissedWallShare) * samples;
 }
 
 }  // namespace

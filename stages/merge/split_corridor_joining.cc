@@ -14,7 +14,7 @@
 #include "stages/merge/vertex_openings.h"
 
 namespace areagraph {
-void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
+void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, double robot_width_m,
                         const std::vector<bool>& closed, AreaPlan* plan,
                         const SplitCorridorParams& params, const CellGrid* grid) {
   const double bend_cos = std::cos(params.bend_deg * M_PI / 180);
@@ -42,13 +42,12 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
           const double narrow = std::min(shapes[i].typical_px, shapes[j].typical_px);
           const double wide = std::max(shapes[i].typical_px, shapes[j].typical_px);
           if (narrow <= 0 || wide > kCorridorWidthRatio * narrow) continue;
-          if (narrow < params.min_width_m / resolution_m) continue;
+          if (narrow < 2 * robot_width_m / resolution_m) continue;
           const VertexOpening& narrowest =
               a->second.width_px <= b->second.width_px ? a->second : b->second;
           const double opening = narrowest.width_px;
-          if (opening < kCorridorOpeningShare * wide) {
-            if (grid == nullptr || opening < params.one_sided_opening_share * wide ||
-                !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
+          if (NarrowsCorridor(opening, wide)) {
+            if (grid == nullptr || !OneSidedNarrowing(*grid, narrowest.left, narrowest.right)) {
               continue;
             }
           }

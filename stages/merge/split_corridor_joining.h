@@ -21,23 +21,15 @@ struct SplitCorridorParams {
   // runs along the line between the two centroids within this angle: such a
   // room lies across that piece.
   double bend_deg = 30;
-  // Both pieces are at least this wide (median free width, metres): rows of
-  // cluttered cubicles 0.9 m wide with a gap in their partition are no
-  // corridor.
-  double min_width_m = 1.0;
-  // With a grid given: an opening narrower than kCorridorOpeningShare
-  // (vertex_openings.h) of the wider piece's median free width joins anyway
-  // when it is one-sided (a flat wall on one side,
-  // stages/merge/one_sided_narrowing.h) and at least this share of that
-  // width. Half: a cabinet 0.6 m deep against one wall of a corridor 1.2 m
-  // wide or wider.
-  double one_sided_opening_share = 0.5;
 };
 
 // Joins pairs of areas (rooms or room-less pieces) that meet at a graph
 // vertex that is not `closed` (ClosedVertices), where the two are pieces of
-// one corridor by the constants above (and do not narrow where they meet,
-// kCorridorOpeningShare) and together are shaped like a corridor
+// one corridor by the constants above, both at least twice `robot_width_m`
+// wide (median free width; CleanedMap.robot_width_m, a body's width: two
+// people pass each other in a corridor, and rows of cluttered cubicles 0.9 m
+// wide with a gap in their partition are no corridor) (and do not narrow where they meet,
+// NarrowsCorridor, stages/geometry/corridor_shape.h) and together are shaped like a corridor
 // (IsCorridorShaped of the two as one: the wider typical and widest width,
 // the sum of their sizes), or belong to a chain of such pairs that is (a
 // corridor that W split into three or four short pieces is long only as a
@@ -47,10 +39,12 @@ struct SplitCorridorParams {
 // falls into room-shaped pieces; room-less pieces stay apart where a side
 // corridor or a doorway's stub forks off (JoinCorridorPieces joins only two
 // uniform pieces). A joined area keeps the kind and room of its first piece.
-// `grid`, when given, lets one-sided narrowings join (see
-// one_sided_opening_share). The plan changes while the pass runs: each round
+// `grid`, when given, lets an opening that narrows the wider piece's median
+// free width join anyway when it is one-sided (a flat wall on one side,
+// stages/merge/one_sided_narrowing.h: a cabinet against one wall of a
+// corridor). The plan changes while the pass runs: each round
 // measures it again (MeasurePlan).
-void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m,
+void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, double robot_width_m,
                         const std::vector<bool>& closed, AreaPlan* plan,
                         const SplitCorridorParams& params = {}, const CellGrid* grid = nullptr);
 

@@ -15,13 +15,6 @@ namespace areagraph {
 // (room joining, bay and corridor-piece folding, small closed rooms).
 inline constexpr double kOpenShare = 0.9;
 
-// Two pieces of one corridor, or a branch and its corridor, do not narrow
-// where they meet: the opening there is at least this share of the piece's
-// median free width. Measured against the median rather than the widest
-// width beside it (kOpenShare), so the share is lower: a door is narrower
-// than the corridor or room it opens from (0.85 lost tuning-extra 0.006).
-inline constexpr double kCorridorOpeningShare = 0.8;
-
 // An area's narrowest opening at a graph vertex: the two sites beside its
 // edge ends there (the jambs) and their distance.
 struct VertexOpening {

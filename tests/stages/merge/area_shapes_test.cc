@@ -19,6 +19,8 @@ namespace areagraph::testing {
 namespace {
 
 constexpr double kResolutionM = 0.05;
+// cut.islands.max_length_m's default, which the CutGraph carries to merge.
+constexpr double kIslandMaxM = 4.0;
 
 // A raster of `rects` (area k + 1 on rects[k]) at 0.05 m/px.
 AreaRaster RasterOf(const std::vector<cv::Rect>& rects) {
@@ -40,15 +42,15 @@ TEST(RasterShapeTest, CorridorsAreLongAgainstTheirWidestSpot) {
   raster.labels(cv::Rect(400, 90, 120, 30)).setTo(4);
   raster.cell_count.resize(4);
   CountAreaCells(&raster);
-  const AreaShape corridor = RasterShape(raster, 0, kResolutionM);
+  const AreaShape corridor = RasterShape(raster, 0, kResolutionM, kIslandMaxM);
   EXPECT_NEAR(corridor.typical_px, 40, 2);
   EXPECT_NEAR(corridor.widest_px, 40, 2);
   EXPECT_TRUE(corridor.corridor);
-  EXPECT_FALSE(RasterShape(raster, 1, kResolutionM).corridor);
-  const AreaShape hall = RasterShape(raster, 2, kResolutionM);
+  EXPECT_FALSE(RasterShape(raster, 1, kResolutionM, kIslandMaxM).corridor);
+  const AreaShape hall = RasterShape(raster, 2, kResolutionM, kIslandMaxM);
   EXPECT_GT(hall.typical_px * kResolutionM, kMaxCorridorWidthM);
   EXPECT_FALSE(hall.corridor);
-  EXPECT_TRUE(RasterShape(raster, 3, kResolutionM).corridor);
+  EXPECT_TRUE(RasterShape(raster, 3, kResolutionM, kIslandMaxM).corridor);
 }
 
 TEST(RasterShapeTest, DesksAreFilledTheRoomsInsideALoopAreNot) {
@@ -63,11 +65,11 @@ TEST(RasterShapeTest, DesksAreFilledTheRoomsInsideALoopAreNot) {
   labels(cv::Rect(240, 200, 320, 160)).setTo(0);
   raster.cell_count.resize(3);
   CountAreaCells(&raster);
-  const AreaShape room = RasterShape(raster, 0, kResolutionM);
+  const AreaShape room = RasterShape(raster, 0, kResolutionM, kIslandMaxM);
   EXPECT_NEAR(room.area_px, 160 * 120, 1);  // the desks count
   EXPECT_NEAR(room.widest_px, 120, 4);
   EXPECT_FALSE(room.corridor);
-  const AreaShape loop = RasterShape(raster, 1, kResolutionM);
+  const AreaShape loop = RasterShape(raster, 1, kResolutionM, kIslandMaxM);
   EXPECT_NEAR(loop.area_px, 400 * 400 - 320 * 320, 1);  // the block does not
   EXPECT_NEAR(loop.typical_px, 40, 2);
   EXPECT_LT(loop.widest_px, 60);
@@ -125,7 +127,7 @@ TEST(FurnitureIslandsTest, DesksAreIslandsWallPiecesAndSpecksAreNot) {
   const cv::Mat islands = FurnitureIslandCells(
       WalledMap(
           {{20, 20, 32, 16}, {80, 20, 60, 3}, {30, 60, 2, 1}, {3, 90, 20, 10}, {20, 104, 100, 10}}),
-      /*fill_pockets_m=*/0, /*max_elongation=*/0);
+      kIslandMaxM, /*fill_outlines=*/false, /*max_elongation=*/0);
   EXPECT_EQ(islands.at<uint8_t>(25, 30), 1);
   EXPECT_EQ(islands.at<uint8_t>(21, 100), 0);
   EXPECT_EQ(islands.at<uint8_t>(60, 30), 0);
@@ -144,16 +146,16 @@ TEST(FurnitureIslandsTest, ADeskDrawnAsAnOutlineIsAnIslandOnceFilled) {
   }
   cv::rectangle(cells, cv::Rect(40, 40, 32, 16), cv::Scalar(proto::CELL_OCCUPIED));
   const proto::CleanedMap map = CleanedMapOfCells(cells);
-  EXPECT_EQ(FurnitureIslandCells(map, 0, 0).at<uint8_t>(40, 50), 0);
-  EXPECT_EQ(FurnitureIslandCells(map, kMaxFurnitureIslandM, 0).at<uint8_t>(40, 50), 1);
+  EXPECT_EQ(FurnitureIslandCells(map, kIslandMaxM, false, 0).at<uint8_t>(40, 50), 0);
+  EXPECT_EQ(FurnitureIslandCells(map, kIslandMaxM, true, 0).at<uint8_t>(40, 50), 1);
 }
 
 TEST(FurnitureIslandsTest, WithAnElongationLimitAThickPieceOfWallIsNoIsland) {
   // A piece of wall 2.4 x 0.4 m (6 times as long as wide; lab_d's is 2.5 x
   // 0.3 m) and a desk 1.6 x 0.8 m.
   const proto::CleanedMap map = WalledMap({{20, 20, 48, 8}, {20, 60, 32, 16}});
-  const cv::Mat any_shape = FurnitureIslandCells(map, 0, 0);
-  const cv::Mat limited = FurnitureIslandCells(map, 0, 5);
+  const cv::Mat any_shape = FurnitureIslandCells(map, kIslandMaxM, false, 0);
+  const cv::Mat limited = FurnitureIslandCells(map, kIslandMaxM, false, 5);
   EXPECT_EQ(any_shape.at<uint8_t>(24, 40), 1);
   EXPECT_EQ(limited.at<uint8_t>(24, 40), 0);
   EXPECT_EQ(any_shape.at<uint8_t>(68, 30), 1);

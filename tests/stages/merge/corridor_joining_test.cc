@@ -116,8 +116,9 @@ TEST(CorridorJoiningTest, OneNarrowingEdgeMakesTheWholeAreaStayApart) {
   ExpectPlan(plan, {{AREA_CORRIDOR, -1, {0, 1}}, {AREA_CORRIDOR, -1, {2}}}, {0, 0, 1});
 }
 
-TEST(CorridorJoiningTest, UniformMeansAtLeastThreeQuartersOfTheMedian) {
-  for (const auto& [lowest, joined] : {std::pair{7.5, true}, std::pair{7.4, false}}) {
+TEST(CorridorJoiningTest, UniformMeansNothingBelowTheMedianOverTheCorridorWidthRatio) {
+  // Median 10: the least clearance that is no narrowing is 10 / 1.3 = 7.69.
+  for (const auto& [lowest, joined] : {std::pair{7.7, true}, std::pair{7.6, false}}) {
     const AreaPlan plan =
         JoinTwoPieces(VERTEX_JUNCTION, VERTEX_JUNCTION, AREA_CORRIDOR, {10, lowest, 10, 12});
     EXPECT_EQ(plan.areas.size(), joined ? 1u : 2u) << "lowest clearance " << lowest;

@@ -16,6 +16,8 @@ namespace areagraph::testing {
 namespace {
 
 constexpr double kResolutionM = 0.05;
+// cut.islands.max_length_m's default, which the CutGraph carries to merge.
+constexpr double kIslandMaxM = 4.0;
 
 // Walls round a 220 x 170 map, thin inner walls, and blocks of every size:
 // desks, specks, long pieces of wall, blocks against walls and touching
@@ -45,7 +47,7 @@ void MarkReference(const cv::Mat& mask, const cv::Mat& depth, double min_thickne
                    double max_elongation, uint8_t value, cv::Mat* out) {
   cv::Mat labels, stats, centroids;
   const int count = cv::connectedComponentsWithStats(mask, labels, stats, centroids, 8, CV_32S);
-  const double max_px = kMaxFurnitureIslandM / kResolutionM;
+  const double max_px = kIslandMaxM / kResolutionM;
   for (int k = 1; k < count; ++k) {
     const cv::Rect box(stats.at<int>(k, cv::CC_STAT_LEFT), stats.at<int>(k, cv::CC_STAT_TOP),
                        stats.at<int>(k, cv::CC_STAT_WIDTH), stats.at<int>(k, cv::CC_STAT_HEIGHT));
@@ -95,7 +97,7 @@ TEST(FurnitureIslandsTest, EveryCellAsTheWholeMapReferenceHasIt) {
     const proto::CleanedMap map = ClutteredMap(seed);
     for (const double elongation : {0.0, 5.0}) {
       const cv::Mat expected = ReferenceIslands(map, elongation);
-      const cv::Mat all = FurnitureIslandCells(map, 0, elongation);
+      const cv::Mat all = FurnitureIslandCells(map, kIslandMaxM, false, elongation);
       ASSERT_EQ(cv::countNonZero(all != expected), 0) << seed << " " << elongation;
       islands += cv::countNonZero(expected == 1);
       // A few cells asked in a random order, some outside the map: the
@@ -114,7 +116,8 @@ TEST(FurnitureIslandsTest, EveryCellAsTheWholeMapReferenceHasIt) {
         cells.emplace_back(std::uniform_int_distribution<int>(-2, expected.cols + 1)(random),
                            std::uniform_int_distribution<int>(-2, expected.rows + 1)(random));
       }
-      const std::vector<uint8_t> values = FurnitureIslandsAt(map, 0, elongation, cells);
+      const std::vector<uint8_t> values =
+          FurnitureIslandsAt(map, kIslandMaxM, false, elongation, cells);
       for (size_t i = 0; i < cells.size(); ++i) {
         const bool inside = cv::Rect(0, 0, expected.cols, expected.rows).contains(cells[i]);
         EXPECT_EQ(values[i], inside ? expected.at<uint8_t>(cells[i]) : 0) << cells[i];

@@ -23,6 +23,8 @@ namespace {
 
 using Pass = proto::MergeOptions::Pass;
 constexpr double kResolutionM = 0.05;
+// clean.robot_width_m's default, which the CleanedMap carries.
+constexpr double kRobotWidthM = 0.5;
 
 TEST(MergePassTableTest, EveryPassOnceWithAReason) {
   const std::vector<MergePass>& table = MergePassTable();
@@ -142,14 +144,14 @@ TEST(JoinSplitCorridorsTest, TwoPiecesOfOneCorridorJoin) {
   const proto::CutGraph graph = SplitCorridor(false);
   AreaPlan plan = AssignAreas(graph);
   ASSERT_EQ(plan.areas.size(), 2u);
-  JoinSplitCorridors(graph, kResolutionM, ClosedVertices(graph), &plan);
+  JoinSplitCorridors(graph, kResolutionM, kRobotWidthM, ClosedVertices(graph), &plan);
   ExpectPlan(plan, {{AREA_ROOM, 0, {0, 1}}}, {0, 0});
 }
 
 TEST(JoinSplitCorridorsTest, PiecesStayApartAtAClosedCutOrANarrowing) {
   const proto::CutGraph closed = SplitCorridor(true);
   AreaPlan plan = AssignAreas(closed);
-  JoinSplitCorridors(closed, kResolutionM, ClosedVertices(closed), &plan);
+  JoinSplitCorridors(closed, kResolutionM, kRobotWidthM, ClosedVertices(closed), &plan);
   EXPECT_EQ(plan.areas.size(), 2u);
   // A door 20 px wide between the two: a room behind a door in line.
   proto::CutGraph door = SplitCorridor(false);
@@ -161,7 +163,7 @@ TEST(JoinSplitCorridorsTest, PiecesStayApartAtAClosedCutOrANarrowing) {
     right->set_y(-10);
   }
   AreaPlan door_plan = AssignAreas(door);
-  JoinSplitCorridors(door, kResolutionM, ClosedVertices(door), &door_plan);
+  JoinSplitCorridors(door, kResolutionM, kRobotWidthM, ClosedVertices(door), &door_plan);
   EXPECT_EQ(door_plan.areas.size(), 2u);
 }
 

@@ -97,6 +97,13 @@ TEST(AreaStagesBadInputTest, CorruptArtifactsAreInputErrors) {
               BuildAreaGraph(stages.cut, old_clean, {});
             }).find("the CleanedMap holds no robot width"),
             std::string::npos);
+
+  proto::CutGraph old_cut = stages.cut;
+  old_cut.clear_island_max_length_m();
+  EXPECT_NE(ErrorOf<InputError>([&] {
+              BuildAreaGraph(old_cut, map, {});
+            }).find("the CutGraph holds no island length"),
+            std::string::npos);
 }
 
 TEST(AreaStagesBadInputTest, AbsurdPruneOptionsAreOptionsErrors) {
