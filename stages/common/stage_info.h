@@ -61,7 +61,9 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // Also in cut 15: a wall gap's thin wall end runs on for kJambRunM only (no quarter of the gap).
 // Also in cut 15: islands are as thick as merge's, kMinFurnitureThicknessM (0.3 m, was 0.8 m).
 // Also in cut 15: a narrow tail is kCorridorWidthRatio (1.3, was 2) times narrower than its room.
-inline constexpr StageInfo kCutStage{"cut", 15};
+// cut 16: the narrowest door (wall gaps, mouths, the least W) is clean.robot_width_m from the
+// CleanedMap (was kMinGapM, 0.5 m, the default: a different body width now moves cut).
+inline constexpr StageInfo kCutStage{"cut", 16};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
