@@ -63,7 +63,9 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // Also in cut 15: a narrow tail is kCorridorWidthRatio (1.3, was 2) times narrower than its room.
 // cut 16: the narrowest door (wall gaps, mouths, the least W) is clean.robot_width_m from the
 // CleanedMap (was kMinGapM, 0.5 m, the default: a different body width now moves cut).
-inline constexpr StageInfo kCutStage{"cut", 16};
+// cut 17: a block is continued end-on by an obstacle at most kCorridorWidthRatio (1.3, was 1.5)
+// times as wide: the shape model's "about as wide".
+inline constexpr StageInfo kCutStage{"cut", 17};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
