@@ -65,7 +65,9 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // CleanedMap (was kMinGapM, 0.5 m, the default: a different body width now moves cut).
 // cut 17: a block is continued end-on by an obstacle at most kCorridorWidthRatio (1.3, was 1.5)
 // times as wide: the shape model's "about as wide".
-inline constexpr StageInfo kCutStage{"cut", 17};
+// cut 18: a narrow tail begins within SteadyWidthSpreadM (0.1 m or 10 %) of its median width, the
+// width estimate's steady corridor width (was a factor of 1.15 of its median clearance).
+inline constexpr StageInfo kCutStage{"cut", 18};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

@@ -264,7 +264,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     std::vector<EdgePiece>& plan = plans[edge_index];
     plan = PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
     if (RunsCutPass(options, proto::CutOptions::CUT_NARROW_TAILS))
-      CutNarrowTails(track, source_dead, target_dead, &plan);
+      CutNarrowTails(track, source_dead, target_dead, grid.resolution_m(), &plan);
     for (const EdgePiece& piece : plan) {
       if (piece.room >= 0) room_ids.emplace(piece.room, static_cast<int>(room_ids.size()));
     }

@@ -112,7 +112,7 @@ void FindCorridors(const std::vector<WidthProfile>& profiles,
                    std::vector<proto::DetectedWidth>* corridors) {
   for (const WidthProfile& p : profiles) {
     const size_t n = p.width_m.size();
-    SteadyRuns runs(p.width_m, kPaperWidthMarginM, 0.1);
+    SteadyRuns runs(p.width_m, SteadyWidthSpreadM);
     size_t i = 0;
     while (i < n) {
       const size_t j = runs.EndFrom(static_cast<int>(i));

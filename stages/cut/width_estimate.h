@@ -1,5 +1,6 @@
 #pragma once
 
+#include <algorithm>
 #include <vector>
 
 #include "proto/artifacts.pb.h"
@@ -15,7 +16,7 @@ namespace areagraph {
 //   relative) on both sides within that reach, looking past the edge's ends
 //   into the edges that meet there: a constriction between wider spaces;
 // - a corridor is a stretch of at least kCorridorMinLengthM along one edge
-//   whose width stays within kPaperWidthMarginM (or 10 %) of its narrowest
+//   whose width stays within SteadyWidthSpreadM of its narrowest
 //   point.
 // Returns the doors (one per place, widest first) and corridors found, the
 // widest door (the 90th percentile, so that one stray wide gap between
@@ -53,6 +54,13 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
 // than this count as the same width (the door against the corridor, the
 // width along a corridor).
 inline constexpr double kPaperWidthMarginM = 0.1;
+
+// How far a width may stray and still be the same steady width (a corridor
+// along its length, with scan noise on its walls): kPaperWidthMarginM, or
+// 10 % of `width_m` where that is more (FindCorridors' runs).
+inline double SteadyWidthSpreadM(double width_m) {
+  return std::max(kPaperWidthMarginM, 0.1 * width_m);
+}
 
 inline constexpr double kDoorRiseM = 0.25;
 inline constexpr double kDoorRiseRatio = 0.25;
