@@ -64,7 +64,13 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // cut 16: with an estimated W, a space the room disk finds no room in is one room when the disk of
 // the typical door (median door + 0.1 m) finds it holding no room of W's (pass SMALL_ROOM_DISK).
 // cut 17: the CutGraph carries cut.islands.max_length_m on to merge (its furniture islands).
-inline constexpr StageInfo kCutStage{"cut", 17};
+// cut 18: the narrowest door (wall gaps, mouths, the least W) is clean.robot_width_m from the
+// CleanedMap (was kMinGapM, 0.5 m, the default: a different body width now moves cut).
+// cut 19: a block is continued end-on by an obstacle at most kCorridorWidthRatio (1.3, was 1.5)
+// times as wide: the shape model's "about as wide".
+// cut 20: a narrow tail begins within SteadyWidthSpreadM (0.1 m or 10 %) of its median width, the
+// width estimate's steady corridor width (was a factor of 1.15 of its median clearance).
+inline constexpr StageInfo kCutStage{"cut", 20};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).

@@ -66,6 +66,8 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   CutInputs in;
   const int width = grid.width(), height = grid.height();
   const double resolution_m = grid.resolution_m();
+  // The narrowest door: the width of the body the map is segmented for.
+  const double robot_width_m = map.robot_width_m();
   const double island_max_m = IslandMaxLengthM(options);
   const double gap_max_m = WallGapMaxWidthM(options);
   // Door jambs are the building's structure: obstacles longer than any island.
@@ -87,23 +89,22 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   // fill the caller's wait. OpenCV labels serially inside a task (its
   // parallel loops do not nest) but the same labels. ChooseRoomWidth is
   // also the first that may throw.
-  RunTasks({
-               [&] { in.room_width = ChooseRoomWidth(options, map.frame(), topology); },
-               [&] {
-                 in.inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
-                                          cv::Size(width, height));
-               },
-               [&] {
-                 if (islands)
-                   island_depth = IslandDepthOf(map.cells(), width, height, resolution_m);
-               },
-               [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
-               [&] {
-                 if (islands || closes_lines)
-                   obstacles = LabelObstacles(map.cells(), width, height);
-               },
-           },
-           /*on_caller=*/2);
+  RunTasks(
+      {
+          [&] { in.room_width = ChooseRoomWidth(options, map.frame(), topology, robot_width_m); },
+          [&] {
+            in.inside = BoundaryMask(topology.part_boundaries(), topology.boundary(),
+                                     cv::Size(width, height));
+          },
+          [&] {
+            if (islands) island_depth = IslandDepthOf(map.cells(), width, height, resolution_m);
+          },
+          [&] { site_cells = ObstacleSiteCells(map.cells(), width, height); },
+          [&] {
+            if (islands || closes_lines) obstacles = LabelObstacles(map.cells(), width, height);
+          },
+      },
+      /*on_caller=*/2);
   // The estimate's scratch is gone; the rasters below come from new mappings.
   if (between_steps) between_steps();
   in.sites = StructureSitesFrom(site_cells, island_depth, width, resolution_m, island_max_m,
@@ -120,8 +121,9 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   // The door sites beside the gap sites' edge ranges.
   std::unique_ptr<WallGapFinder> gap_finder;
   if (finds_gaps) {
-    gap_finder = std::make_unique<WallGapFinder>(topology, obstacles, resolution_m, structure_m,
-                                                 gap_max_m, /*short_tips=*/true, spaces);
+    gap_finder =
+        std::make_unique<WallGapFinder>(topology, obstacles, resolution_m, structure_m,
+                                        robot_width_m, gap_max_m, /*short_tips=*/true, spaces);
   }
   const size_t edge_count = static_cast<size_t>(topology.edges_size());
   const int gap_ranges = gap_finder ? ParallelRangeCount(edge_count, kGapEdgesPerRange) : 0;
@@ -134,7 +136,10 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
               NarrowingOpenings(in.room_width, obstacles, resolution_m, structure_m, spaces);
         }
       },
-      [&] { mouths = MouthOpenings(obstacles, resolution_m, structure_m, mouth_max_m, spaces); }};
+      [&] {
+        mouths =
+            MouthOpenings(obstacles, resolution_m, structure_m, robot_width_m, mouth_max_m, spaces);
+      }};
   for (int range = 0; range < gap_ranges; ++range) {
     tasks.push_back([&, range] {
       gaps[range] = gap_finder->Openings(
@@ -151,7 +156,7 @@ CutInputs GatherCutInputs(const proto::TopologyGraph& topology, const proto::Cle
   in.sites.insert(in.sites.end(), in.closing.begin(), in.closing.end());
   if (in.room_width.automatic() && options.room_width_open_doors()) {
     KeepWidthAboveOpenDoors(in.openings, ClosedLines(in.closing, resolution_m), options,
-                            &in.room_width);
+                            robot_width_m, &in.room_width);
   }
   return in;
 }
@@ -199,6 +204,10 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   if (between_steps) between_steps();
   const CellGrid grid(map);
   CheckTopology(topology);
+  if (!map.has_robot_width_m()) {
+    throw InputError(
+        "the CleanedMap holds no robot width (written by clean 4 or older): run ag-clean again");
+  }
   CutInputs in = GatherCutInputs(topology, map, options, grid, between_steps);
   const proto::RoomWidthEstimate& room_width = in.room_width;
   const double room_width_px = room_width.room_width_m() / grid.resolution_m();
@@ -244,7 +253,7 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
     std::vector<EdgePiece>& plan = plans[edge_index];
     plan = PlanEdgeCuts(track, source_dead, target_dead, room_width_px, room_at, kept_tips);
     if (RunsCutPass(options, proto::CutOptions::CUT_NARROW_TAILS))
-      CutNarrowTails(track, source_dead, target_dead, &plan);
+      CutNarrowTails(track, source_dead, target_dead, grid.resolution_m(), &plan);
     for (const EdgePiece& piece : plan) {
       if (piece.room >= 0) room_ids.emplace(piece.room, static_cast<int>(room_ids.size()));
     }

@@ -106,7 +106,8 @@ bool WidensOnOneSide(const proto::TopologyGraph& topology, const EdgeArcs& arcs,
 
 struct WallGapFinder::Impl {
   Impl(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles, double resolution_m,
-       double structure_m, double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
+       double structure_m, double min_gap_m, double max_gap_m, bool short_tips,
+       const cv::Mat* free_spaces)
       : topology(topology),
         resolution_m(resolution_m),
         walls(obstacles, structure_m / resolution_m, free_spaces),
@@ -117,7 +118,7 @@ struct WallGapFinder::Impl {
         rise_px(kDoorRiseM / resolution_m),
         max_thickness_px(kMaxTipWallM / resolution_m),
         max_gap_px(max_gap_m / resolution_m + 1),
-        min_gap_px(kMinGapM / resolution_m + 1),
+        min_gap_px(min_gap_m / resolution_m + 1),
         min_tip_px(kMinWallPieceM / resolution_m) {}
 
   // The wall gap of segment `s` of edge `e` (sites a and b), if it is one;
@@ -133,10 +134,10 @@ struct WallGapFinder::Impl {
 };
 
 WallGapFinder::WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                             double resolution_m, double structure_m, double max_gap_m,
-                             bool short_tips, const cv::Mat* free_spaces)
-    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, structure_m, max_gap_m,
-                                   short_tips, free_spaces)) {}
+                             double resolution_m, double structure_m, double min_gap_m,
+                             double max_gap_m, bool short_tips, const cv::Mat* free_spaces)
+    : impl_(std::make_unique<Impl>(topology, obstacles, resolution_m, structure_m, min_gap_m,
+                                   max_gap_m, short_tips, free_spaces)) {}
 
 WallGapFinder::~WallGapFinder() = default;
 
@@ -220,11 +221,11 @@ std::vector<Opening> WallGapFinder::Openings(int begin, int end) const {
 }
 
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double structure_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces) {
+                       double resolution_m, double structure_m, double min_gap_m, double max_gap_m,
+                       bool short_tips, const cv::Mat* free_spaces) {
   if (max_gap_m <= 0) return PointList();
-  return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, structure_m, max_gap_m,
-                                    short_tips, free_spaces)
+  return ClosingSites(WallGapFinder(topology, obstacles, resolution_m, structure_m, min_gap_m,
+                                    max_gap_m, short_tips, free_spaces)
                           .Openings(0, topology.edges_size()));
 }
 

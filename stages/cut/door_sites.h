@@ -41,7 +41,8 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // Openings found from the jambs alone, for doors that the width estimate
 // misses because the space beyond them does not widen on both sides. Every
 // segment of the Topology Graph's edges whose two sites (the nearest
-// obstacle cells on its left and right) are at least kMinGapM apart, and
+// obstacle cells on its left and right) are at least `min_gap_m` apart
+// (clean.robot_width_m: a gap the body does not pass is no door), and
 // whose bisector crosses the line between them within the segment, is a
 // candidate; both sites must line up with a wall (as above) and one at
 // least be wall structure. Consecutive segments of one edge that pass make
@@ -62,8 +63,8 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 //   a room.
 // `free_spaces` as for NarrowingOpenings.
 PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                       double resolution_m, double structure_m, double max_gap_m, bool short_tips,
-                       const cv::Mat* free_spaces = nullptr);
+                       double resolution_m, double structure_m, double min_gap_m, double max_gap_m,
+                       bool short_tips, const cv::Mat* free_spaces = nullptr);
 
 // WallGapSites' openings edge range by edge range, for callers that run
 // ranges as tasks: the openings of all ranges in edge order are
@@ -71,8 +72,8 @@ PointList WallGapSites(const proto::TopologyGraph& topology, const ObstacleLabel
 class WallGapFinder {
  public:
   WallGapFinder(const proto::TopologyGraph& topology, const ObstacleLabels& obstacles,
-                double resolution_m, double structure_m, double max_gap_m, bool short_tips,
-                const cv::Mat* free_spaces = nullptr);
+                double resolution_m, double structure_m, double min_gap_m, double max_gap_m,
+                bool short_tips, const cv::Mat* free_spaces = nullptr);
   ~WallGapFinder();
   // The openings found on edges [begin, end).
   std::vector<Opening> Openings(int begin, int end) const;

@@ -9,7 +9,7 @@
 namespace areagraph {
 
 std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resolution_m,
-                                   double structure_m, double max_mouth_m,
+                                   double structure_m, double min_mouth_m, double max_mouth_m,
                                    const cv::Mat* free_spaces) {
   std::vector<Opening> mouths;
   if (max_mouth_m <= 0) return mouths;
@@ -18,7 +18,7 @@ std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resol
   const double long_run_px = 2 * kMaxTipWallM / resolution_m;
   const double depth_px = kDoorReachM / resolution_m;
   const double max_thickness_px = kMaxTipWallM / resolution_m;
-  const double min_px = kMinGapM / resolution_m + 1, max_px = max_mouth_m / resolution_m + 1;
+  const double min_px = min_mouth_m / resolution_m + 1, max_px = max_mouth_m / resolution_m + 1;
   const int width = obstacles.labels.cols, height = obstacles.labels.rows;
   // Each mouth once, from its jamb with the smaller coordinate.
   const Eigen::Vector2d axes[] = {{1, 0}, {0, 1}};

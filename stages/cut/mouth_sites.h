@@ -12,7 +12,8 @@ namespace areagraph {
 // side to the space in front of them (a bay on a wide corridor, a room open
 // to a lobby), each as a closed opening from jamb to jamb. A mouth runs from
 // a jamb along a straight wall line across free cells to the first obstacle
-// cell, at least kMinGapM and at most `max_mouth_m` wide, along a grid axis
+// cell, at least `min_mouth_m` (clean.robot_width_m) and at most
+// `max_mouth_m` wide, along a grid axis
 // (the finder reads the map's rows and columns). Both jambs are the
 // building's wall structure (regions at least `structure_m` long, as for
 // NarrowingOpenings); the wall line runs on past both (kJambRunM) and
@@ -24,7 +25,7 @@ namespace areagraph {
 // on the side walls' side, is no corridor (CorridorBehind). `free_spaces` as
 // for NarrowingOpenings (stages/cut/door_sites.h).
 std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resolution_m,
-                                   double structure_m, double max_mouth_m,
+                                   double structure_m, double min_mouth_m, double max_mouth_m,
                                    const cv::Mat* free_spaces = nullptr);
 
 }  // namespace areagraph

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "stages/cut/width_estimate.h"
 #include "stages/geometry/corridor_shape.h"
 
 namespace areagraph {
@@ -31,7 +32,7 @@ std::vector<Sample> SamplesOf(const EdgeTrack& track, const EdgePiece& piece) {
 
 // Where the tail of a piece begins, with `samples` running from the room to
 // the dead end; -1 when the piece has no narrow tail.
-int TailStart(const std::vector<Sample>& samples, const NarrowTailParams& params) {
+int TailStart(const std::vector<Sample>& samples, double resolution_m) {
   const int n = static_cast<int>(samples.size());
   double widest = 0;
   for (const Sample& s : samples) widest = std::max(widest, s.clearance);
@@ -43,13 +44,15 @@ int TailStart(const std::vector<Sample>& samples, const NarrowTailParams& params
   for (int k = first; k < n; ++k) tail.push_back(samples[k].clearance);
   std::nth_element(tail.begin(), tail.begin() + tail.size() / 2, tail.end());
   const double typical = tail[tail.size() / 2];
+  // Clearances (px) are half the free width.
+  const double spread = SteadyWidthSpreadM(2 * typical * resolution_m) / (2 * resolution_m);
   int start = first;
-  while (start < n && samples[start].clearance > params.width_tolerance * typical) ++start;
+  while (start < n && samples[start].clearance > typical + spread) ++start;
   if (start >= n - 1) return -1;
   // The free space goes on past the dead end by about its clearance.
   const double length =
       std::abs(samples[n - 1].arc - samples[start].arc) + samples[n - 1].clearance;
-  // Long like a corridor; the tail keeps within width_tolerance of its
+  // Long like a corridor; the tail keeps within the steady spread of its
   // typical width, which stands for its widest.
   if (Elongation(2 * typical, length * 2 * typical) < kCorridorElongation) return -1;
   return start;
@@ -58,10 +61,10 @@ int TailStart(const std::vector<Sample>& samples, const NarrowTailParams& params
 }  // namespace
 
 void CutNarrowTails(const EdgeTrack& track, bool source_is_dead_end, bool target_is_dead_end,
-                    std::vector<EdgePiece>* pieces, const NarrowTailParams& params) {
+                    double resolution_m, std::vector<EdgePiece>* pieces) {
   if (target_is_dead_end && pieces->back().room >= 0) {
     const std::vector<Sample> samples = SamplesOf(track, pieces->back());
-    const int start = TailStart(samples, params);
+    const int start = TailStart(samples, resolution_m);
     if (start >= 0) {
       const PathPosition cut = samples[start].position;
       pieces->back().end = cut;
@@ -71,7 +74,7 @@ void CutNarrowTails(const EdgeTrack& track, bool source_is_dead_end, bool target
   if (source_is_dead_end && pieces->front().room >= 0) {
     std::vector<Sample> samples = SamplesOf(track, pieces->front());
     std::reverse(samples.begin(), samples.end());
-    const int start = TailStart(samples, params);
+    const int start = TailStart(samples, resolution_m);
     if (start >= 0) {
       const PathPosition cut = samples[start].position;
       pieces->front().begin = cut;

@@ -11,12 +11,10 @@ namespace areagraph {
 // The tail is the stretch before the dead end where the clearance stays at
 // most the room's widest clearance on the edge over kCorridorWidthRatio
 // (stages/geometry/corridor_shape.h): clearly narrower than the room, as a
-// side branch is than its corridor.
-struct NarrowTailParams {
-  // The tail begins where the clearance first comes within this factor of
-  // the tail's median clearance (scan noise on its walls).
-  double width_tolerance = 1.15;
-};
+// side branch is than its corridor. It begins where the free width first
+// comes within SteadyWidthSpreadM of the tail's median width
+// (stages/cut/width_estimate.h: a corridor's steady width, with scan noise
+// on its walls).
 
 // Where a room's piece of an edge runs on into a dead end through a narrow
 // tail (a corridor narrower than the room but wider than W, so the room
@@ -26,7 +24,8 @@ struct NarrowTailParams {
 // becomes a room-less piece: its own area, as a corridor narrower than W
 // would be. `pieces` is PlanEdgeCuts' plan of `track`; only pieces at a
 // dead end are looked at. The paper has no such cut.
+// `resolution_m`: metres per pixel of the track.
 void CutNarrowTails(const EdgeTrack& track, bool source_is_dead_end, bool target_is_dead_end,
-                    std::vector<EdgePiece>* pieces, const NarrowTailParams& params = {});
+                    double resolution_m, std::vector<EdgePiece>* pieces);
 
 }  // namespace areagraph

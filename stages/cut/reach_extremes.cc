@@ -135,8 +135,8 @@ double WidestFromEnd(const EndMaxima& maxima, const std::vector<double>& value,
   return first == value.size() ? widest : std::max(widest, maxima.from_end[first]);
 }
 
-SteadyRuns::SteadyRuns(const std::vector<double>& value, double tolerance, double ratio)
-    : value_(value), tolerance_(tolerance), ratio_(ratio), max_(value, true), min_(value, false) {}
+SteadyRuns::SteadyRuns(const std::vector<double>& value, double (*spread)(double min))
+    : value_(value), spread_(spread), max_(value, true), min_(value, false) {}
 
 int SteadyRuns::EndFrom(int start) {
   max_.DropBefore(start), min_.DropBefore(start);
@@ -148,7 +148,7 @@ int SteadyRuns::EndFrom(int start) {
   for (; end_ < n; ++end_) {
     const double low = std::min(min_.Front(), value_[end_]);
     const double high = std::max(max_.Front(), value_[end_]);
-    if (high - low > std::max(tolerance_, ratio_ * low)) break;
+    if (high - low > spread_(low)) break;
     max_.Push(end_), min_.Push(end_);
   }
   return end_;

@@ -57,18 +57,18 @@ double WidestFromEnd(const EndMaxima& maxima, const std::vector<double>& value,
 
 // Runs of steady values: from a start i, the end (exclusive) of the run
 // value[i..j) that grows while the spread max - min of the samples taken
-// stays within max(`tolerance`, `ratio` * min), as FindCorridors grows it one
-// sample at a time. Starts must not decrease between calls: a run from a later
-// start holds at least the samples of one from an earlier start (less spread,
-// more tolerance), so the end only moves on.
+// stays within `spread`(min), as FindCorridors grows it one sample at a time.
+// `spread` must not decrease as min grows. Starts must not decrease between
+// calls: a run from a later start holds at least the samples of one from an
+// earlier start (less spread, more tolerance), so the end only moves on.
 class SteadyRuns {
  public:
-  SteadyRuns(const std::vector<double>& value, double tolerance, double ratio);
+  SteadyRuns(const std::vector<double>& value, double (*spread)(double min));
   int EndFrom(int start);
 
  private:
   const std::vector<double>& value_;
-  const double tolerance_, ratio_;
+  double (*const spread_)(double);
   MonotoneQueue max_, min_;
   int end_ = 0;
 };

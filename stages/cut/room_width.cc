@@ -66,14 +66,15 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
 
 proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
                                          const proto::MapFrame& frame,
-                                         const proto::TopologyGraph& topology) {
+                                         const proto::TopologyGraph& topology,
+                                         double robot_width_m) {
   const double fixed = RoomWidthM(options, frame);
   const bool strategy = options.door_width_m() > 0 && options.corridor_width_m() > 0;
   proto::RoomWidthEstimate estimate;
   if (EstimatesRoomWidth(options) && !strategy) {
-    estimate = EstimateRoomWidth(topology, LongestPart(topology), frame.resolution_m(), fixed,
-                                 RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS),
-                                 kPaperWidthMarginM);
+    estimate = EstimateRoomWidth(
+        topology, LongestPart(topology), frame.resolution_m(), robot_width_m, fixed,
+        RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS), kPaperWidthMarginM);
     CheckFitsMap(estimate.room_width_m(), frame);
   } else {
     estimate.set_room_width_m(fixed);
@@ -83,7 +84,8 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
 }
 
 void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedLines& closed,
-                             const proto::CutOptions& options, proto::RoomWidthEstimate* estimate) {
+                             const proto::CutOptions& options, double robot_width_m,
+                             proto::RoomWidthEstimate* estimate) {
   std::vector<double> open;  // widest first, as the estimate's doors
   for (const Opening& opening : openings) {
     if (opening.kind != proto::Opening::NARROWING || opening.closed) continue;
@@ -96,9 +98,9 @@ void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedL
   const double door = WidestDoorM(open);
   estimate->set_widest_open_door_m(door);
   const double corridor = estimate->narrowest_corridor_m();
-  double width =
-      WidthRule(door, corridor, kPaperRoomWidthM,
-                RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS), kPaperWidthMarginM);
+  double width = WidthRule(door, corridor, kPaperRoomWidthM,
+                           RunsCutPass(options, proto::CutOptions::WIDTH_ABOVE_DOORS),
+                           kPaperWidthMarginM, robot_width_m);
   if (corridor > 0) width = std::max(width, corridor + kPaperWidthMarginM);
   estimate->set_room_width_m(std::min(estimate->room_width_m(), width));
 }

@@ -31,10 +31,12 @@ double RoomWidthM(const proto::CutOptions& options, const proto::MapFrame& frame
 // corridor widths are given or cut.room_width_m is a number, else
 // EstimateRoomWidth on the connected part of the Topology Graph with the
 // most edge length (falling back to kPaperRoomWidthM when it finds neither
-// doors nor corridors). Throws as RoomWidthM does.
+// doors nor corridors; never below MinRoomWidthM(robot_width_m), with
+// `robot_width_m` clean.robot_width_m). Throws as RoomWidthM does.
 proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
                                          const proto::MapFrame& frame,
-                                         const proto::TopologyGraph& topology);
+                                         const proto::TopologyGraph& topology,
+                                         double robot_width_m);
 
 // Local door decisions (cut.room_width_open_doors): an automatic W need
 // only stop the doors that no opening closes. The estimate's doors are the
@@ -44,8 +46,9 @@ proto::RoomWidthEstimate ChooseRoomWidth(const proto::CutOptions& options,
 // them, or none), kept above the narrowest corridor (corridors stay
 // room-less) and never above the estimate's W; the widest open door is
 // recorded. A building whose double doors all have wall jambs then gets W
-// from its single doors.
+// from its single doors. `robot_width_m` as for ChooseRoomWidth.
 void KeepWidthAboveOpenDoors(const std::vector<Opening>& openings, const ClosedLines& closed,
-                             const proto::CutOptions& options, proto::RoomWidthEstimate* estimate);
+                             const proto::CutOptions& options, double robot_width_m,
+                             proto::RoomWidthEstimate* estimate);
 
 }  // namespace areagraph

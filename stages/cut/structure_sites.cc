@@ -8,6 +8,7 @@
 #include "proto/artifacts.pb.h"
 #include "stages/cut/door_sites.h"
 #include "stages/geometry/cell_states.h"
+#include "stages/geometry/corridor_shape.h"
 #include "stages/geometry/furniture_shape.h"
 #include "stages/geometry/obstacle_regions.h"
 #include "stages/geometry/obstacle_sites.h"
@@ -29,8 +30,12 @@ double OtherObstacleWithin(const ObstacleRegions& regions, int region, const Eig
 
 // Whether, past one end of `region` along its axis (`direction` +1 or -1),
 // within `gap_px`, another obstacle continues the region's line end-on for
-// `run_px` and is about as wide as the region: a wall broken by a door, or a
-// row of blocks that divides a room, rather than furniture standing free.
+// `run_px` and is about as wide as the region (at most kCorridorWidthRatio
+// times, the shape model's "about as wide", stages/geometry/corridor_shape.h:
+// pieces of one wall keep its width as pieces of one corridor do): a wall
+// broken by a door, or a row of blocks that divides a room, rather than
+// furniture standing free. A desk's line ends in the face of a wall, which
+// is long across it.
 // The line is probed at `offset` px beside the region's centre line.
 bool ContinuedEndOnAt(const ObstacleRegions& regions, int region, int direction, double offset,
                       double gap_px, double run_px) {
@@ -52,7 +57,7 @@ bool ContinuedEndOnAt(const ObstacleRegions& regions, int region, int direction,
       extent += 1;
     }
   }
-  return extent <= kEndOnWidthRatio * shape.width;
+  return extent <= kCorridorWidthRatio * shape.width;
 }
 
 // ContinuedEndOnAt on the centre line, or on any line across the middle

@@ -51,12 +51,4 @@ PointList StructureSitesFrom(const std::vector<int>& site_cells, const IslandDep
                              double end_on_face_share, bool wall_piece_both_ends,
                              const ObstacleLabels& obstacles);
 
-// A region whose line another obstacle continues end-on past a gap of at
-// most kWallPieceGapM (a door), for kJambRunM (as a wall runs on past a
-// door's jamb, stages/cut/door_sites.h) and at most kEndOnWidthRatio times
-// as wide, is a piece of a wall (or of a row of blocks dividing a room), not
-// an island. A desk's line ends in the face of a wall, which is long across
-// it.
-inline constexpr double kEndOnWidthRatio = 1.5;
-
 }  // namespace areagraph

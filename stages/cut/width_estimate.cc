@@ -112,7 +112,7 @@ void FindCorridors(const std::vector<WidthProfile>& profiles,
                    std::vector<proto::DetectedWidth>* corridors) {
   for (const WidthProfile& p : profiles) {
     const size_t n = p.width_m.size();
-    SteadyRuns runs(p.width_m, kPaperWidthMarginM, 0.1);
+    SteadyRuns runs(p.width_m, SteadyWidthSpreadM);
     size_t i = 0;
     while (i < n) {
       const size_t j = runs.EndFrom(static_cast<int>(i));
@@ -170,17 +170,19 @@ double NarrowestCorridorM(const std::vector<proto::DetectedWidth>& corridors) {
 }  // namespace
 
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
-                                           double resolution_m, double fallback_m, bool above_doors,
+                                           double resolution_m, double robot_width_m,
+                                           double fallback_m, bool above_doors,
                                            double door_margin_m) {
   std::vector<int> all(topology.edges_size());
   std::iota(all.begin(), all.end(), 0);
-  return EstimateRoomWidth(topology, all, resolution_m, fallback_m, above_doors, door_margin_m);
+  return EstimateRoomWidth(topology, all, resolution_m, robot_width_m, fallback_m, above_doors,
+                           door_margin_m);
 }
 
 proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
                                            const std::vector<int>& edges, double resolution_m,
-                                           double fallback_m, bool above_doors,
-                                           double door_margin_m) {
+                                           double robot_width_m, double fallback_m,
+                                           bool above_doors, double door_margin_m) {
   std::vector<WidthProfile> profiles;
   std::vector<std::vector<int>> incident(topology.vertices_size());
   for (const int e : edges) {
@@ -206,7 +208,8 @@ proto::RoomWidthEstimate EstimateRoomWidth(const proto::TopologyGraph& topology,
   const double corridor = NarrowestCorridorM(corridors);
   estimate.set_widest_door_m(door);
   estimate.set_narrowest_corridor_m(corridor);
-  estimate.set_room_width_m(WidthRule(door, corridor, fallback_m, above_doors, door_margin_m));
+  estimate.set_room_width_m(
+      WidthRule(door, corridor, fallback_m, above_doors, door_margin_m, robot_width_m));
   return estimate;
 }
 
@@ -216,7 +219,7 @@ double WidestDoorM(const std::vector<double>& widths_widest_first) {
 }
 
 double WidthRule(double door_m, double corridor_m, double fallback_m, bool above_doors,
-                 double door_margin_m) {
+                 double door_margin_m, double robot_width_m) {
   double width = fallback_m;
   // Widths within the paper's margin count as equal, and then W stays above
   // the door: a disk that passes doors merges rooms, which costs far more
@@ -226,7 +229,7 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
   } else if (corridor_m > 0) {
     width = corridor_m - kPaperWidthMarginM;
   }
-  return std::max(width, MinRoomWidthM());
+  return std::max(width, MinRoomWidthM(robot_width_m));
 }
 
 }  // namespace areagraph

@@ -4,7 +4,6 @@
 #include <cstdio>
 
 #include "stages/common/map_frame.h"
-#include "stages/cut/width_estimate.h"
 #include "tools/export/area_polygons.h"
 #include "tools/export/svg_path.h"
 #include "tools/export/viewer_layers.h"
@@ -42,7 +41,8 @@ std::string RuleOf(const proto::RoomWidthEstimate& estimate, const proto::CutOpt
   if (corridor > 0 && Near(w, corridor - 0.1)) {
     return "estimated: narrowest corridor " + Metres(corridor) + " - 0.1 m";
   }
-  if (Near(w, MinRoomWidthM())) return "estimated, held at the minimum " + Metres(MinRoomWidthM());
+  // Neither case: held at the least W (clean.robot_width_m + 0.1 m).
+  if (door > 0 || corridor > 0) return "estimated, held at the minimum " + Metres(w);
   return "no door or corridor found: the fallback cut.room_width_m";
 }
 

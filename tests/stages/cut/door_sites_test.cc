@@ -92,7 +92,8 @@ PointList GapSites(const FloorPlan& plan, double max_gap_m, bool short_tips = tr
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const cv::Mat spaces = LabelFreeSpaces(map.cells(), width, height);
   return WallGapSites(stages.topology, LabelObstacles(map.cells(), width, height), kResolutionM,
-                      kStructureM, max_gap_m, short_tips, free_spaces ? &spaces : nullptr);
+                      kStructureM, map.robot_width_m(), max_gap_m, short_tips,
+                      free_spaces ? &spaces : nullptr);
 }
 
 // WallGapFinder's openings of a plan (short tips on, free spaces off).
@@ -101,8 +102,8 @@ std::vector<Opening> GapOpenings(const FloorPlan& plan, double max_gap_m) {
   const AreaStages stages = RunAreaStages(map);
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const ObstacleLabels obstacles = LabelObstacles(map.cells(), width, height);
-  return WallGapFinder(stages.topology, obstacles, kResolutionM, kStructureM, max_gap_m, true,
-                       nullptr)
+  return WallGapFinder(stages.topology, obstacles, kResolutionM, kStructureM, map.robot_width_m(),
+                       max_gap_m, true, nullptr)
       .Openings(0, stages.topology.edges_size());
 }
 

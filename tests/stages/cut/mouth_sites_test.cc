@@ -26,7 +26,7 @@ std::vector<Opening> Mouths(const FloorPlan& plan, double max_mouth_m) {
   const int width = map.frame().width_px(), height = map.frame().height_px();
   const cv::Mat spaces = LabelFreeSpaces(map.cells(), width, height);
   return MouthOpenings(LabelObstacles(map.cells(), width, height), kResolutionM, kStructureM,
-                       max_mouth_m, &spaces);
+                       map.robot_width_m(), max_mouth_m, &spaces);
 }
 
 // A 12 x 8 m hall with a bay of `bay_width_m` x 4 m above it, open along its

@@ -11,6 +11,9 @@
 namespace areagraph {
 namespace {
 
+// Metres per pixel of the constructed edges (the maps' usual).
+constexpr double kResolutionM = 0.05;
+
 // A room (clearance 40 px) up to x = `mouth` - 5, narrowing over 5 px to a
 // tail of clearance `tail` that runs to the edge's end at x = 100.
 std::function<double(double)> RoomWithTail(double mouth, double tail) {
@@ -29,7 +32,7 @@ size_t PiecesOf(const std::function<double(double)>& clearance, bool source_is_d
   const proto::GraphEdge edge = StraightEdge(clearance);
   const EdgeTrack track(edge);
   std::vector<EdgePiece> pieces = OneRoom(track);
-  CutNarrowTails(track, source_is_dead_end, target_is_dead_end, &pieces);
+  CutNarrowTails(track, source_is_dead_end, target_is_dead_end, kResolutionM, &pieces);
   return pieces.size();
 }
 
@@ -37,7 +40,7 @@ TEST(NarrowTailsTest, ALongNarrowTailAtADeadEndIsCutWhereItBegins) {
   const proto::GraphEdge edge = StraightEdge(RoomWithTail(35, 7));
   const EdgeTrack track(edge);
   std::vector<EdgePiece> pieces = OneRoom(track);
-  CutNarrowTails(track, false, true, &pieces);
+  CutNarrowTails(track, false, true, kResolutionM, &pieces);
   ASSERT_EQ(pieces.size(), 2u);
   EXPECT_EQ(pieces[0].room, 0);
   EXPECT_EQ(pieces[1].room, -1);
@@ -50,7 +53,7 @@ TEST(NarrowTailsTest, ATailAtTheSourceIsCutToo) {
   const proto::GraphEdge edge = StraightEdge([&](double x) { return tail(100 - x); });
   const EdgeTrack track(edge);
   std::vector<EdgePiece> pieces = OneRoom(track);
-  CutNarrowTails(track, true, false, &pieces);
+  CutNarrowTails(track, true, false, kResolutionM, &pieces);
   ASSERT_EQ(pieces.size(), 2u);
   EXPECT_EQ(pieces[0].room, -1);
   EXPECT_EQ(pieces[1].room, 0);
@@ -74,7 +77,7 @@ TEST(NarrowTailsTest, ARoomlessEndIsLeftAlone) {
   const proto::GraphEdge edge = StraightEdge(RoomWithTail(35, 7));
   const EdgeTrack track(edge);
   std::vector<EdgePiece> pieces{{track.Start(), track.End(), -1}};
-  CutNarrowTails(track, false, true, &pieces);
+  CutNarrowTails(track, false, true, kResolutionM, &pieces);
   ASSERT_EQ(pieces.size(), 1u);
   EXPECT_EQ(pieces[0].room, -1);
 }

@@ -96,7 +96,7 @@ TEST(SteadyRunsTest, EndsWhereGrowingEachRunEnds) {
   std::mt19937 random(16);
   for (int round = 0; round < 2000; ++round) {
     const Profile p = RandomProfile(random, 1 + random() % 60, false);
-    SteadyRuns runs(p.value, 0.1, 0.1);
+    SteadyRuns runs(p.value, [](double low) { return std::max(0.1, 0.1 * low); });
     // Starts as FindCorridors takes them: one on, or a jump to a run's end.
     for (size_t i = 0; i < p.value.size();) {
       const size_t end = runs.EndFrom(static_cast<int>(i));

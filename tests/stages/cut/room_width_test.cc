@@ -28,6 +28,8 @@ proto::MapFrame Frame(int width_px, int height_px, double resolution_m = 0.05) {
 
 // A map big enough for every W used here: 20 x 10 m.
 const proto::MapFrame kBigMap = Frame(400, 200);
+// clean.robot_width_m's default, which the CleanedMap carries to cut.
+const double kRobotWidthM = proto::CleanOptions().robot_width_m();
 
 proto::CutOptions Fixed(double room_width_m) {
   proto::CutOptions options;
@@ -139,8 +141,8 @@ TEST(RoomWidthTest, BadOptionsAreRefused) {
     const std::string fixed = OptionsErrorOf([&] { RoomWidthM(options, kBigMap); });
     EXPECT_NE(fixed.find(message), std::string::npos) << "'" << fixed << "' for " << message;
     // Also before any estimate.
-    const std::string chosen =
-        OptionsErrorOf([&] { ChooseRoomWidth(options, kBigMap, kCorridorWithADoor); });
+    const std::string chosen = OptionsErrorOf(
+        [&] { ChooseRoomWidth(options, kBigMap, kCorridorWithADoor, kRobotWidthM); });
     EXPECT_NE(chosen.find(message), std::string::npos) << "'" << chosen << "' for " << message;
   }
   // A corridor just over 0.1 m still gives a width, and a narrow door with it.
@@ -152,7 +154,8 @@ TEST(ChooseRoomWidthTest, FixedOrStrategyIsNotAutomatic) {
   // The strategy wins over an estimated W (room_width_m 0).
   const proto::CutOptions strategy = Strategy(0.9, 1.6);
   for (const proto::CutOptions& options : {Fixed(1.1), strategy}) {
-    const proto::RoomWidthEstimate chosen = ChooseRoomWidth(options, kBigMap, kCorridorWithADoor);
+    const proto::RoomWidthEstimate chosen =
+        ChooseRoomWidth(options, kBigMap, kCorridorWithADoor, kRobotWidthM);
     EXPECT_FALSE(chosen.automatic());
     EXPECT_DOUBLE_EQ(chosen.room_width_m(), RoomWidthM(options, kBigMap));
     EXPECT_EQ(chosen.doors_size() + chosen.corridors_size(), 0);
@@ -162,7 +165,8 @@ TEST(ChooseRoomWidthTest, FixedOrStrategyIsNotAutomatic) {
 
 TEST(ChooseRoomWidthTest, AutomaticFollowsTheDoorsAndCorridorsFound) {
   proto::CutOptions options;  // auto, W above the doors, fallback 1.25 m
-  const proto::RoomWidthEstimate door = ChooseRoomWidth(options, kBigMap, kCorridorWithADoor);
+  const proto::RoomWidthEstimate door =
+      ChooseRoomWidth(options, kBigMap, kCorridorWithADoor, kRobotWidthM);
   EXPECT_TRUE(door.automatic());
   ASSERT_EQ(door.doors_size(), 1);
   EXPECT_NEAR(door.doors(0).position().x(), 60, 1e-9);
@@ -170,11 +174,22 @@ TEST(ChooseRoomWidthTest, AutomaticFollowsTheDoorsAndCorridorsFound) {
   EXPECT_NEAR(door.narrowest_corridor_m(), 1.95, 1e-9);
   EXPECT_NEAR(door.room_width_m(), 0.85 + kPaperWidthMarginM, 1e-9);
   // Without doors: corridor - 0.1 m.
-  const proto::RoomWidthEstimate corridor = ChooseRoomWidth(options, kBigMap, kCorridor);
+  const proto::RoomWidthEstimate corridor =
+      ChooseRoomWidth(options, kBigMap, kCorridor, kRobotWidthM);
   EXPECT_TRUE(corridor.automatic());
   EXPECT_EQ(corridor.doors_size(), 0);
   EXPECT_NEAR(corridor.narrowest_corridor_m(), 1.95, 1e-9);
   EXPECT_NEAR(corridor.room_width_m(), 1.85, 1e-9);
+}
+
+TEST(ChooseRoomWidthTest, WStaysAboveTheRobotsWidth) {
+  // The 0.85 m door gives W = 0.95 m for a body 0.5 m wide. A body 1 m wide
+  // passes no such door: W is held at its width and the paper's margin.
+  const proto::CutOptions options;
+  EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, kCorridorWithADoor, 0.5).room_width_m(), 0.95,
+              1e-9);
+  EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, kCorridorWithADoor, 1.0).room_width_m(),
+              1.0 + kPaperWidthMarginM, 1e-9);
 }
 
 TEST(ChooseRoomWidthTest, DoorWiderThanTheCorridorFollowsRoomWidthAboveDoors) {
@@ -185,14 +200,14 @@ TEST(ChooseRoomWidthTest, DoorWiderThanTheCorridorFollowsRoomWidthAboveDoors) {
     return x <= 90 ? 40.0 : 12.0;
   });
   proto::CutOptions options;
-  const proto::RoomWidthEstimate above = ChooseRoomWidth(options, kBigMap, graph);
+  const proto::RoomWidthEstimate above = ChooseRoomWidth(options, kBigMap, graph, kRobotWidthM);
   ASSERT_EQ(above.doors_size(), 1);
   EXPECT_NEAR(above.doors(0).position().x(), 45, 1e-9);
   EXPECT_NEAR(above.widest_door_m(), 1.45, 1e-9);
   EXPECT_NEAR(above.narrowest_corridor_m(), 1.15, 1e-9);
   EXPECT_NEAR(above.room_width_m(), 1.45 + kPaperWidthMarginM, 1e-9);
   options.add_skip_passes(proto::CutOptions::WIDTH_ABOVE_DOORS);  // the paper's rule
-  EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, graph).room_width_m(), 1.05, 1e-9);
+  EXPECT_NEAR(ChooseRoomWidth(options, kBigMap, graph, kRobotWidthM).room_width_m(), 1.05, 1e-9);
 }
 
 TEST(ChooseRoomWidthTest, AutomaticFallsBackToThePapersW) {
@@ -200,7 +215,7 @@ TEST(ChooseRoomWidthTest, AutomaticFallsBackToThePapersW) {
   // 1 m of constant width along one edge: too short for a corridor, no door.
   const proto::TopologyGraph short_edge = OneEdge(20, [](int) { return 10.0; });
   for (const proto::TopologyGraph& graph : {proto::TopologyGraph(), short_edge}) {
-    const proto::RoomWidthEstimate chosen = ChooseRoomWidth(options, kBigMap, graph);
+    const proto::RoomWidthEstimate chosen = ChooseRoomWidth(options, kBigMap, graph, kRobotWidthM);
     EXPECT_TRUE(chosen.automatic());
     EXPECT_EQ(chosen.doors_size(), 0);
     EXPECT_EQ(chosen.narrowest_corridor_m(), 0);
@@ -210,8 +225,8 @@ TEST(ChooseRoomWidthTest, AutomaticFallsBackToThePapersW) {
 
 TEST(ChooseRoomWidthTest, EstimateWiderThanTheMapIsRefused) {
   // 1.5 m square: the fallback of 1.25 m fits, the 1.85 m estimated does not.
-  const std::string error =
-      OptionsErrorOf([] { ChooseRoomWidth(proto::CutOptions(), Frame(30, 30), kCorridor); });
+  const std::string error = OptionsErrorOf(
+      [] { ChooseRoomWidth(proto::CutOptions(), Frame(30, 30), kCorridor, kRobotWidthM); });
   EXPECT_NE(error.find("W = 1.85 m is wider than the map"), std::string::npos) << error;
 }
 
@@ -227,7 +242,7 @@ TEST(ChooseRoomWidthTest, DrawnMapGetsItsDoorWidthPlusATenth) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   const AreaStages stages = RunAreaStages(map);
   const proto::RoomWidthEstimate chosen =
-      ChooseRoomWidth(proto::CutOptions(), map.frame(), stages.topology);
+      ChooseRoomWidth(proto::CutOptions(), map.frame(), stages.topology, kRobotWidthM);
   EXPECT_TRUE(chosen.automatic());
   EXPECT_EQ(chosen.doors_size(), 3);
   EXPECT_NEAR(chosen.room_width_m(), 0.9 + kPaperWidthMarginM, 0.1);
@@ -235,8 +250,9 @@ TEST(ChooseRoomWidthTest, DrawnMapGetsItsDoorWidthPlusATenth) {
   // What ag-cut stored is this choice.
   EXPECT_DOUBLE_EQ(stages.cut.room_width().room_width_m(), chosen.room_width_m());
   // The paper's strategy ignores the map.
-  EXPECT_NEAR(ChooseRoomWidth(Strategy(0.9, 1.6), map.frame(), stages.topology).room_width_m(), 1.0,
-              1e-12);
+  EXPECT_NEAR(ChooseRoomWidth(Strategy(0.9, 1.6), map.frame(), stages.topology, kRobotWidthM)
+                  .room_width_m(),
+              1.0, 1e-12);
 }
 
 }  // namespace
@@ -271,13 +287,13 @@ TEST(KeepWidthAboveOpenDoorsTest, ClosedDoubleDoorsLeaveWAboveTheSingleDoors) {
   options.set_room_width_open_doors(true);
   const ClosedLines none(PointList(), 0.05);
   DoorsAround doors({true, true, false, false, false});
-  KeepWidthAboveOpenDoors(doors.openings, none, options, &doors.estimate);
+  KeepWidthAboveOpenDoors(doors.openings, none, options, kRobotWidthM, &doors.estimate);
   EXPECT_DOUBLE_EQ(doors.estimate.widest_open_door_m(), 0.9);
   // 0.9 + 0.1 is below the corridor: W stays above the corridor (1.3 m).
   EXPECT_NEAR(doors.estimate.room_width_m(), 1.3, 1e-9);
   // One double door open: W stays above it, as before.
   DoorsAround one_open({false, true, false, false, false});
-  KeepWidthAboveOpenDoors(one_open.openings, none, options, &one_open.estimate);
+  KeepWidthAboveOpenDoors(one_open.openings, none, options, kRobotWidthM, &one_open.estimate);
   EXPECT_NEAR(one_open.estimate.room_width_m(), 1.9, 1e-9);
 }
 
@@ -285,10 +301,12 @@ TEST(KeepWidthAboveOpenDoorsTest, ADoorOnAClosedLineIsClosed) {
   proto::CutOptions options;
   const PointList line = {{100, -1}, {100, 0}, {100, 1}};  // across the second door
   DoorsAround doors({true, false, false, false, false});
-  KeepWidthAboveOpenDoors(doors.openings, ClosedLines(line, 0.05), options, &doors.estimate);
+  KeepWidthAboveOpenDoors(doors.openings, ClosedLines(line, 0.05), options, kRobotWidthM,
+                          &doors.estimate);
   EXPECT_DOUBLE_EQ(doors.estimate.widest_open_door_m(), 0.9);
   DoorsAround open({true, false, false, false, false});
-  KeepWidthAboveOpenDoors(open.openings, ClosedLines(PointList(), 0.05), options, &open.estimate);
+  KeepWidthAboveOpenDoors(open.openings, ClosedLines(PointList(), 0.05), options, kRobotWidthM,
+                          &open.estimate);
   EXPECT_DOUBLE_EQ(open.estimate.widest_open_door_m(), 1.8);
 }
 

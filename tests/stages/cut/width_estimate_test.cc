@@ -34,7 +34,8 @@ double FreeWidth(const FloorPlan& plan, double between_walls_m) {
 proto::RoomWidthEstimate Estimate(const FloorPlan& plan, bool above_doors = false) {
   const proto::CleanedMap map = CleanedMapFromImage(plan.image());
   const AreaStages stages = RunAreaStages(map);
-  return EstimateRoomWidth(stages.topology, 0.05, /*fallback_m=*/1.25, above_doors);
+  return EstimateRoomWidth(stages.topology, 0.05, map.robot_width_m(), /*fallback_m=*/1.25,
+                           above_doors);
 }
 
 TEST(WidthEstimateTest, DoorOf90CmIsFoundWithin10Cm) {
