@@ -219,8 +219,8 @@ proto::CutGraph BuildCutGraph(const proto::TopologyGraph& topology, const proto:
   const ClosedLines* kept_tips =
       RunsCutPass(options, proto::CutOptions::KEEP_CLOSED_ROOM_TIPS) ? &closed_lines : nullptr;
   RoomDisks shape(std::move(in.sites), room_width_px,
-                  SmallRoomWidthM(options, room_width) / grid.resolution_m(), inside_boundary,
-                  topology);
+                  SmallRoomWidthM(options, room_width, map.robot_width_m()) / grid.resolution_m(),
+                  inside_boundary, topology);
   const int room_count = shape.room_count();
   auto room_at = [&](const Eigen::Vector2d& p) { return shape.RoomAt(p); };
 

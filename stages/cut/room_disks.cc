@@ -9,12 +9,13 @@
 
 namespace areagraph {
 
-double SmallRoomWidthM(const proto::CutOptions& options, const proto::RoomWidthEstimate& estimate) {
+double SmallRoomWidthM(const proto::CutOptions& options, const proto::RoomWidthEstimate& estimate,
+                       double robot_width_m) {
   if (!estimate.automatic() || estimate.doors_size() == 0) return 0;
   if (!RunsCutPass(options, proto::CutOptions::SMALL_ROOM_DISK)) return 0;
   // The estimate's doors are widest first.
   const double typical_door = estimate.doors(estimate.doors_size() / 2).width_m();
-  return std::max(typical_door + kPaperWidthMarginM, MinRoomWidthM());
+  return std::max(typical_door + kPaperWidthMarginM, MinRoomWidthM(robot_width_m));
 }
 
 int DropSmallRooms(double width_px, int room_count, SiteAlphaShape* shape) {

@@ -52,8 +52,10 @@ class RoomDisks {
 // The small disk's width (metres): the W of the building's typical door,
 // its median door + kPaperWidthMarginM, as an estimated W is its widest
 // door + the margin. 0 (no small disk) for a fixed W, a map without doors
-// or with cut pass SMALL_ROOM_DISK skipped.
-double SmallRoomWidthM(const proto::CutOptions& options, const proto::RoomWidthEstimate& estimate);
+// or with cut pass SMALL_ROOM_DISK skipped; never below the least W for a
+// body `robot_width_m` wide (MinRoomWidthM).
+double SmallRoomWidthM(const proto::CutOptions& options, const proto::RoomWidthEstimate& estimate,
+                       double robot_width_m);
 
 // Drops the rooms too small to hold the disk of diameter `width_px`; returns
 // the number kept.

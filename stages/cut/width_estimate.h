@@ -55,11 +55,15 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
 // width along a corridor).
 inline constexpr double kPaperWidthMarginM = 0.1;
 
+// The share of a wide corridor's width that scan noise on its walls may
+// take from it or add along its length.
+inline constexpr double kSteadyWidthShare = 0.1;
+
 // How far a width may stray and still be the same steady width (a corridor
-// along its length, with scan noise on its walls): kPaperWidthMarginM, or
-// 10 % of `width_m` where that is more (FindCorridors' runs).
+// along its length): kPaperWidthMarginM, or kSteadyWidthShare of `width_m`
+// where that is more (FindCorridors' runs).
 inline double SteadyWidthSpreadM(double width_m) {
-  return std::max(kPaperWidthMarginM, 0.1 * width_m);
+  return std::max(kPaperWidthMarginM, kSteadyWidthShare * width_m);
 }
 
 inline constexpr double kDoorRiseM = 0.25;

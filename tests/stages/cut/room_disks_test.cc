@@ -87,12 +87,12 @@ TEST(SmallRoomDiskTest, OnlyForAnEstimatedWidth) {
   estimate.set_automatic(true);
   for (double width : {1.8, 1.8, 0.9, 0.9, 0.9, 0.9}) estimate.add_doors()->set_width_m(width);
   const proto::CutOptions defaults;
-  EXPECT_NEAR(SmallRoomWidthM(defaults, estimate), 1.0, 1e-9);
+  EXPECT_NEAR(SmallRoomWidthM(defaults, estimate, 0.5), 1.0, 1e-9);
   proto::CutOptions skipped;
   skipped.add_skip_passes(proto::CutOptions::SMALL_ROOM_DISK);
-  EXPECT_EQ(SmallRoomWidthM(skipped, estimate), 0);
+  EXPECT_EQ(SmallRoomWidthM(skipped, estimate, 0.5), 0);
   estimate.set_automatic(false);
-  EXPECT_EQ(SmallRoomWidthM(defaults, estimate), 0);
+  EXPECT_EQ(SmallRoomWidthM(defaults, estimate, 0.5), 0);
 }
 
 }  // namespace
