@@ -34,12 +34,16 @@ int DropSmallRooms(double width_px, int room_count, SiteAlphaShape* shape) {
 
 RoomDisks::RoomDisks(PointList&& sites, double room_width_px, double small_width_px,
                      const std::function<bool(const Eigen::Vector2d&)>& inside_boundary,
-                     const proto::TopologyGraph& topology)
-    : big_(small_width_px > 0 && small_width_px < room_width_px ? sites : std::move(sites),
-           room_width_px / 2) {
-  room_count_ = DropSmallRooms(room_width_px, big_.DetectRooms(inside_boundary), &big_);
-  if (!(small_width_px > 0 && small_width_px < room_width_px)) return;
-  small_ = std::make_unique<SiteAlphaShape>(std::move(sites), small_width_px / 2);
+                     const proto::TopologyGraph& topology) {
+  const bool small_disk = small_width_px > 0 && small_width_px < room_width_px;
+  SiteTriangulationPtr triangulation = TriangulateSites(std::move(sites));
+  // Each shape labels the faces: the small disk's takes a copy, cheaper
+  // than triangulating the sites again.
+  SiteTriangulationPtr copy = small_disk ? CopySiteTriangulation(*triangulation) : nullptr;
+  big_ = std::make_unique<SiteAlphaShape>(std::move(triangulation), room_width_px / 2);
+  room_count_ = DropSmallRooms(room_width_px, big_->DetectRooms(inside_boundary), big_.get());
+  if (!small_disk) return;
+  small_ = std::make_unique<SiteAlphaShape>(std::move(copy), small_width_px / 2);
   const int small_count =
       DropSmallRooms(small_width_px, small_->DetectRooms(inside_boundary), small_.get());
   // The graph runs through every room, and a room of the big disk lies in
@@ -49,7 +53,7 @@ RoomDisks::RoomDisks(PointList&& sites, double room_width_px, double small_width
   for (const proto::GraphEdge& edge : topology.edges()) {
     for (const proto::Point2& point : edge.path()) {
       const Eigen::Vector2d p(point.x(), point.y());
-      const int big = big_.RoomAt(p);
+      const int big = big_->RoomAt(p);
       if (big < 0 || placed[big]) continue;
       placed[big] = true;
       const int small = small_->RoomAt(p);
@@ -68,17 +72,17 @@ RoomDisks::RoomDisks(PointList&& sites, double room_width_px, double small_width
 RoomDisks::~RoomDisks() = default;
 
 int RoomDisks::RoomAt(const Eigen::Vector2d& point) {
-  const int big = big_.RoomAt(point);
+  const int big = big_->RoomAt(point);
   return big >= 0 || small_ == nullptr ? big : small_->RoomAt(point);
 }
 
 void RoomDisks::RenumberRooms(const std::vector<int>& new_ids) {
-  big_.RenumberRooms(new_ids);
+  big_->RenumberRooms(new_ids);
   if (small_ != nullptr) small_->RenumberRooms(new_ids);
 }
 
 std::vector<proto::Polygon> RoomDisks::RoomOutlines() {
-  std::vector<proto::Polygon> outlines = big_.RoomOutlines();
+  std::vector<proto::Polygon> outlines = big_->RoomOutlines();
   if (small_ == nullptr) return outlines;
   std::vector<proto::Polygon> small = small_->RoomOutlines();
   if (small.size() > outlines.size()) outlines.resize(small.size());

@@ -43,7 +43,7 @@ class RoomDisks {
   std::vector<proto::Polygon> RoomOutlines();
 
  private:
-  SiteAlphaShape big_;
+  std::unique_ptr<SiteAlphaShape> big_;
   std::unique_ptr<SiteAlphaShape> small_;
   // Rooms of the big disk first, then those of the small one.
   int room_count_ = 0;

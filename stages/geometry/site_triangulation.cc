@@ -65,6 +65,10 @@ void SiteTriangulationDeleter::operator()(SiteTriangulation* triangulation) cons
   delete triangulation;
 }
 
+SiteTriangulationPtr CopySiteTriangulation(const SiteTriangulation& triangulation) {
+  return SiteTriangulationPtr(new SiteTriangulation(triangulation));
+}
+
 size_t SiteTriangulationBytes(const SiteTriangulation& triangulation) {
   const auto& tds = triangulation.dt.tds();
   return tds.number_of_vertices() * sizeof(site_cgal::Tds::Vertex) +

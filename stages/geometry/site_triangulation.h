@@ -32,6 +32,11 @@ SiteTriangulationPtr TriangulateSites(const std::vector<Eigen::Vector2d>& sites)
 // 16 bytes a site, need not live beside the triangulation).
 SiteTriangulationPtr TriangulateSites(std::vector<Eigen::Vector2d>&& sites);
 
+// A copy of `triangulation` (the same faces in the same order): a second
+// alpha shape of the same sites without triangulating them again (a shape
+// writes its labels into the faces).
+SiteTriangulationPtr CopySiteTriangulation(const SiteTriangulation& triangulation);
+
 // Bytes the triangulation's vertices and faces take (what keeping it costs).
 size_t SiteTriangulationBytes(const SiteTriangulation& triangulation);
 
