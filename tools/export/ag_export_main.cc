@@ -23,6 +23,13 @@
 
 namespace {
 
+// "a, b, c" for `separator` ", ".
+std::string Join(const std::vector<std::string>& items, const std::string& separator) {
+  std::string joined;
+  for (const std::string& item : items) joined += (joined.empty() ? "" : separator) + item;
+  return joined;
+}
+
 // Throws OptionsError when one of `options` was given but the format is none of `formats`.
 void RequireFormatFor(const CLI::App& app, const std::string& format_name,
                       const std::vector<std::string>& formats,
@@ -30,9 +37,8 @@ void RequireFormatFor(const CLI::App& app, const std::string& format_name,
   if (std::find(formats.begin(), formats.end(), format_name) != formats.end()) return;
   for (const char* option : options) {
     if (app.count(option) > 0) {
-      std::string names;
-      for (const std::string& format : formats) names += (names.empty() ? "" : " or ") + format;
-      throw areagraph::OptionsError(std::string(option) + " goes with --format " + names);
+      throw areagraph::OptionsError(std::string(option) + " goes with --format " +
+                                    Join(formats, " or "));
     }
   }
 }
@@ -70,10 +76,8 @@ int ExportEveryMap(areagraph::ArtifactStore& store, areagraph::ExportSettings se
     std::cout << "wrote " << target.string() << "\n";
   }
   if (missing.empty()) return 0;
-  std::string names;
-  for (const std::string& name : missing) names += (names.empty() ? "" : ", ") + name;
   std::cerr << "ag-export: " << missing.size() << " of " << maps.size()
-            << " maps have no Area Graph (run ag-merge first): " << names << "\n";
+            << " maps have no Area Graph (run ag-merge first): " << Join(missing, ", ") << "\n";
   return 1;
 }
 

@@ -15,34 +15,37 @@
 
 namespace areagraph {
 
+namespace {
+
+// Each format's name (--format) and the end of its file's name (--all).
+struct FormatName {
+  ExportFormat format;
+  const char* name;
+  const char* suffix;
+};
+constexpr FormatName kFormatNames[] = {
+    {ExportFormat::kLabels, "labels", ".png"},
+    {ExportFormat::kKinds, "kinds", ".kinds.tsv"},
+    {ExportFormat::kPreview, "preview", ".preview.png"},
+    {ExportFormat::kGeoJson, "geojson", ".geojson"},
+    {ExportFormat::kOsmAg, "osmag", ".osm"},
+    {ExportFormat::kJson, "json", ".json"},
+    {ExportFormat::kProtoJson, "protojson", ".pb.json"},
+};
+
+}  // namespace
+
 ExportFormat ParseExportFormat(const std::string& name) {
-  if (name == "labels") return ExportFormat::kLabels;
-  if (name == "kinds") return ExportFormat::kKinds;
-  if (name == "preview") return ExportFormat::kPreview;
-  if (name == "geojson") return ExportFormat::kGeoJson;
-  if (name == "osmag") return ExportFormat::kOsmAg;
-  if (name == "json") return ExportFormat::kJson;
-  if (name == "protojson") return ExportFormat::kProtoJson;
+  for (const FormatName& entry : kFormatNames) {
+    if (name == entry.name) return entry.format;
+  }
   throw OptionsError("unknown export format '" + name +
                      "'; use labels, kinds, preview, geojson, osmag, json, protojson or html");
 }
 
 std::string ExportFileSuffix(ExportFormat format) {
-  switch (format) {
-    case ExportFormat::kLabels:
-      return ".png";
-    case ExportFormat::kKinds:
-      return ".kinds.tsv";
-    case ExportFormat::kPreview:
-      return ".preview.png";
-    case ExportFormat::kGeoJson:
-      return ".geojson";
-    case ExportFormat::kOsmAg:
-      return ".osm";
-    case ExportFormat::kJson:
-      return ".json";
-    case ExportFormat::kProtoJson:
-      return ".pb.json";
+  for (const FormatName& entry : kFormatNames) {
+    if (format == entry.format) return entry.suffix;
   }
   return ".out";
 }
