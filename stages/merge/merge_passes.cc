@@ -51,7 +51,7 @@ std::vector<MergePass> MakeTable() {
         const proto::JoinFurnitureGapsOptions& options = in.options.furniture_gaps();
         // Islands are looked for only at the openings' jambs.
         const IslandsAt islands_at = [&](const std::vector<cv::Point>& cells) {
-          return FurnitureIslandsAt(in.map, in.graph.island_max_length_m(), true,
+          return FurnitureIslandsAt(in.map, in.graph.island_max_length_m(), /*fill_outlines=*/true,
                                     options.max_elongation(), cells);
         };
         JoinAreasAtFurnitureGaps(in.graph, model, in.closed, islands_at,
