@@ -10,6 +10,7 @@
 #include "stages/common/map_frame.h"
 #include "stages/common/skipped_passes.h"
 #include "stages/geometry/polygon_split.h"
+#include "stages/match/border_rings.h"
 #include "stages/match/graph_assembly.h"
 #include "stages/match/passage_cutting.h"
 #include "stages/match/ring_pinches.h"
@@ -19,70 +20,17 @@ namespace {
 
 using Point = BorderPoint;
 
-Point ToPoint(const proto::Point2& p) { return {p.x(), p.y()}; }
-
-void SetPoint(const Point& p, proto::Point2* out) {
-  out->set_x(p.first);
-  out->set_y(p.second);
-}
-
-// The rings of a polygon (outer first), each without a repeated closing point.
-std::vector<std::vector<Point>> Rings(const proto::Polygon& polygon) {
-  std::vector<std::vector<Point>> rings;
-  auto add = [&](const proto::Ring& ring) {
-    std::vector<Point> points;
-    for (const proto::Point2& p : ring.points()) points.push_back(ToPoint(p));
-    while (points.size() > 1 && points.back() == points.front()) points.pop_back();
-    rings.push_back(std::move(points));
-  };
-  add(polygon.outer());
-  for (const proto::Ring& hole : polygon.holes()) add(hole);
-  return rings;
-}
-
-proto::Polygon ToPolygon(const std::vector<std::vector<Point>>& rings) {
-  proto::Polygon polygon;
-  for (size_t r = 0; r < rings.size(); ++r) {
-    proto::Ring* ring = r == 0 ? polygon.mutable_outer() : polygon.add_holes();
-    for (const Point& p : rings[r]) SetPoint(p, ring->add_points());
-  }
-  return polygon;
-}
-
-double Distance2(const Point& a, const Point& b) {
-  const double dx = a.first - b.first, dy = a.second - b.second;
-  return dx * dx + dy * dy;
-}
-
-// Distance from p to the nearest edge of the rings.
-double DistanceToRings(const Point& p, const std::vector<std::vector<Point>>& rings) {
-  double best = INFINITY;
-  for (const auto& ring : rings) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Point& u = ring[i];
-      const Point& v = ring[(i + 1) % ring.size()];
-      const double dx = v.first - u.first, dy = v.second - u.second;
-      const double length2 = dx * dx + dy * dy;
-      double t =
-          length2 > 0 ? ((p.first - u.first) * dx + (p.second - u.second) * dy) / length2 : 0;
-      t = std::clamp(t, 0.0, 1.0);
-      best = std::min(best, Distance2(p, {u.first + t * dx, u.second + t * dy}));
-    }
-  }
-  return std::sqrt(best);
-}
-
 // The length of a cut (`chain`) through an area with rings `joined`, leaving
 // out the stretches that run within `margin_m` of those rings all along:
 // where noise moved a wall by a cell, the previous border runs beside the
 // new one and the cut follows it, which is no longer opening.
-double CutLengthOffWalls(const std::vector<Point>& chain,
-                         const std::vector<std::vector<Point>>& joined, double margin_m) {
+double CutLengthOffWalls(const std::vector<Point>& chain, const std::vector<BorderRing>& joined,
+                         double margin_m) {
   double length = 0;
   for (size_t i = 0; i + 1 < chain.size(); ++i) {
     const Point& a = chain[i];
     const Point& b = chain[i + 1];
-    const double segment = std::sqrt(Distance2(a, b));
+    const double segment = std::sqrt(SquaredDistance(a, b));
     const int samples = 1 + static_cast<int>(std::ceil(segment / 0.025));
     bool along_wall = margin_m > 0;
     for (int k = 0; k <= samples && along_wall; ++k) {
@@ -95,54 +43,6 @@ double CutLengthOffWalls(const std::vector<Point>& chain,
   return length;
 }
 
-// Signed area and centroid of polygon rings (holes run against the outer ring).
-void AreaAndCentroid(const std::vector<std::vector<Point>>& rings, double* area_m2,
-                     proto::Point2* centroid) {
-  double twice_area = 0, cx = 0, cy = 0;
-  for (const std::vector<Point>& ring : rings) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Point& p = ring[i];
-      const Point& q = ring[(i + 1) % ring.size()];
-      const double cross = p.first * q.second - q.first * p.second;
-      twice_area += cross;
-      cx += (p.first + q.first) * cross;
-      cy += (p.second + q.second) * cross;
-    }
-  }
-  *area_m2 = std::abs(twice_area) / 2;
-  if (twice_area != 0) {
-    centroid->set_x(cx / (3 * twice_area));
-    centroid->set_y(cy / (3 * twice_area));
-  }
-}
-
-std::set<Point> Vertices(const std::vector<std::vector<Point>>& rings) {
-  std::set<Point> vertices;
-  for (const auto& ring : rings) vertices.insert(ring.begin(), ring.end());
-  return vertices;
-}
-
-// Whether two polygons share a border edge (vertex for vertex, as
-// neighbouring areas of one graph do).
-bool ShareBorder(const proto::Polygon& a, const proto::Polygon& b) {
-  std::set<std::pair<Point, Point>> edges;
-  for (const auto& ring : Rings(a)) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Point& p = ring[i];
-      const Point& q = ring[(i + 1) % ring.size()];
-      edges.insert({std::min(p, q), std::max(p, q)});
-    }
-  }
-  for (const auto& ring : Rings(b)) {
-    for (size_t i = 0; i < ring.size(); ++i) {
-      const Point& p = ring[i];
-      const Point& q = ring[(i + 1) % ring.size()];
-      if (edges.count({std::min(p, q), std::max(p, q)}) > 0) return true;
-    }
-  }
-  return false;
-}
-
 // Where a cut vertex p lies on the border edge u-v of the joined area.
 struct BorderInsertion {
   Point u, v, p;
@@ -151,8 +51,7 @@ struct BorderInsertion {
 // The longest stretch of shared border of two pieces: the edges of `a`
 // whose reverse `b` holds, chained in `a`'s direction (the two can share
 // more than one stretch where the cut runs along a wall).
-std::vector<Point> SharedChain(const std::vector<std::vector<Point>>& a,
-                               const std::vector<std::vector<Point>>& b) {
+std::vector<Point> SharedChain(const std::vector<BorderRing>& a, const std::vector<BorderRing>& b) {
   std::set<std::pair<Point, Point>> b_edges;
   for (const auto& ring : b) {
     for (size_t i = 0; i < ring.size(); ++i) b_edges.insert({ring[i], ring[(i + 1) % ring.size()]});
@@ -176,7 +75,7 @@ std::vector<Point> SharedChain(const std::vector<std::vector<Point>>& a,
     double length = 0;
     for (auto it = next.find(start); it != next.end() && chain.size() <= next.size();
          it = next.find(it->second)) {
-      length += std::sqrt(Distance2(chain.back(), it->second));
+      length += std::sqrt(SquaredDistance(chain.back(), it->second));
       chain.push_back(it->second);
     }
     if (length > longest_m) {
@@ -199,7 +98,7 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
   const auto rings_m = Rings(area->polygon_m());
   const auto rings_px = Rings(area->polygon_px());
   bool changed = false;
-  std::vector<std::vector<Point>> new_m, new_px;
+  std::vector<BorderRing> new_m, new_px;
   for (size_t r = 0; r < rings_m.size(); ++r) {
     const std::vector<Point>& ring = rings_m[r];
     std::vector<Point> out_m, out_px;
@@ -214,7 +113,7 @@ bool InsertCutVertices(const std::vector<BorderInsertion>& insertions,
       if (r >= rings_px.size() || rings_px[r].size() != ring.size()) return false;
       std::vector<Point> points = found->second;
       std::sort(points.begin(), points.end(), [&](const Point& a, const Point& b) {
-        return Distance2(a, from) < Distance2(b, from);
+        return SquaredDistance(a, from) < SquaredDistance(b, from);
       });
       for (const Point& p : points) {
         out_m.push_back(p);
@@ -271,7 +170,8 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     const proto::Passage& passage = passages[j];
     if (passage.area_a() != joined_index && passage.area_b() != joined_index) continue;
     for (int i = 0; i + 1 < passage.border_m_size(); ++i) {
-      const Point a = ToPoint(passage.border_m(i)), b = ToPoint(passage.border_m(i + 1));
+      const Point a = ToBorderPoint(passage.border_m(i)),
+                  b = ToBorderPoint(passage.border_m(i + 1));
       passage_edges[{a, b}] = static_cast<int>(j);
       passage_edges[{b, a}] = static_cast<int>(j);
     }
@@ -307,8 +207,8 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
       if (!InsertCutVertices(insertions, transform, &updated[j])) return false;
     }
   }
-  auto to_px = [&](const std::vector<std::vector<Point>>& rings) {
-    std::vector<std::vector<Point>> px = rings;
+  auto to_px = [&](const std::vector<BorderRing>& rings) {
+    std::vector<BorderRing> px = rings;
     for (auto& ring : px) {
       for (Point& p : ring) {
         const auto found = px_of.find(p);
@@ -352,15 +252,15 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     if (passage.area_a() != joined_index && passage.area_b() != joined_index) continue;
     bool in_piece = passage.border_m_size() > 0;
     for (const proto::Point2& p : passage.border_m()) {
-      in_piece = in_piece && inside_vertices.count(ToPoint(p)) > 0;
+      in_piece = in_piece && inside_vertices.count(ToBorderPoint(p)) > 0;
     }
     bool in_rest = passage.border_m_size() > 0;
     for (const proto::Point2& p : passage.border_m()) {
-      in_rest = in_rest && rest_vertices.count(ToPoint(p)) > 0;
+      in_rest = in_rest && rest_vertices.count(ToBorderPoint(p)) > 0;
     }
     if (passage.border_m_size() == 0) {
       // An older graph's passage: by the piece nearer to where it crosses.
-      const Point at = ToPoint(passage.point_m());
+      const Point at = ToBorderPoint(passage.point_m());
       in_piece = DistanceToRings(at, inside_m) < DistanceToRings(at, rest_m);
       in_rest = !in_piece;
     }
@@ -384,11 +284,11 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
   }();
   std::vector<Point> border = chain;
   if (!rest_counterclockwise) std::reverse(border.begin(), border.end());
-  for (const Point& p : border) SetPoint(p, between.add_border_m());
-  SetPoint(border.front(), between.mutable_segment_m()->mutable_a());
-  SetPoint(border.back(), between.mutable_segment_m()->mutable_b());
-  SetPoint(border[border.size() / 2], between.mutable_point_m());
-  between.set_width_m(std::sqrt(Distance2(border.front(), border.back())));
+  for (const Point& p : border) SetBorderPoint(p, between.add_border_m());
+  SetBorderPoint(border.front(), between.mutable_segment_m()->mutable_a());
+  SetBorderPoint(border.back(), between.mutable_segment_m()->mutable_b());
+  SetBorderPoint(border[border.size() / 2], between.mutable_point_m());
+  between.set_width_m(std::sqrt(SquaredDistance(border.front(), border.back())));
   // The previous passage between the two; the opening it was must not have
   // grown much (a wall removed is a real join, not noise).
   // Without a previous passage (UNDO_JOINS_WITHOUT_PASSAGE) the opening
@@ -402,7 +302,8 @@ bool SplitOne(const proto::AreaGraph& previous, int joined_index, int swallowed,
     between.set_width_m(old.width_m());
     double border_m = 0;
     for (int i = 0; i + 1 < old.border_m_size(); ++i) {
-      border_m += std::sqrt(Distance2(ToPoint(old.border_m(i)), ToPoint(old.border_m(i + 1))));
+      border_m += std::sqrt(
+          SquaredDistance(ToBorderPoint(old.border_m(i)), ToBorderPoint(old.border_m(i + 1))));
     }
     opening_m = std::max({old.width_m(), border_m, robot_width_m});
     break;
