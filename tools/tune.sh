@@ -16,8 +16,9 @@
 #   public buildings (public-tuning and public-held-out), the constants are
 #   chosen on the other four, and that set is scored with them (a mean of its
 #   parts' means).
-# Prints the table of every candidate on every part, the values chosen on the
-# tuning split, and the leave-one-set-out table (Markdown).
+# Prints the table of every candidate on every part, each constant's mean
+# over the tuning split for each of its values, the values chosen there, and
+# the leave-one-set-out table (Markdown).
 #
 #   tools/tune.sh [--only REGEX] [--build DIR] [--out DIR] [--data DIR] [--jobs N]
 #                 [--candidates FILE]
@@ -312,9 +313,29 @@ describe() {  # describe CHANGE... -> "name = value; ..."
 }
 
 echo
+echo "### Each constant on the tuning split (${TUNING_PARTS[*]}: the mean of the parts' means)"
+echo
+echo "| constant | default | other values | chosen |"
+echo "|---|---|---|---|"
+mapfile -t chosen < <(choose "${TUNING_PARTS[@]}")
+default_mean=$(mean_over no_changes "${TUNING_PARTS[@]}")
+for entry in "${SELECTED[@]}"; do
+  read -r kind _ _ default _ <<<"$entry"
+  [ "$kind" = option ] && read -r _ _ default _ <<<"$entry"
+  others=() pick=$default
+  for value in $(candidate_values "$entry"); do
+    [ "$value" = "$default" ] && continue
+    # shellcheck disable=SC2034 # read through mean_over's name reference
+    candidate=("$entry=$value")
+    others+=("$value: $(mean_over candidate "${TUNING_PARTS[@]}")")
+  done
+  for change in "${chosen[@]}"; do [ "${change%=*}" = "$entry" ] && pick=${change##*=}; done
+  printf '| %s | %s: %s | %s | %s |\n' "$(entry_name "$entry")" "$default" "$default_mean" \
+    "$(IFS=';'; echo "${others[*]}" | sed 's/;/; /g')" "$pick"
+done
+echo
 echo "### Chosen on the tuning split (${TUNING_PARTS[*]})"
 echo
-mapfile -t chosen < <(choose "${TUNING_PARTS[@]}")
 describe "${chosen[@]}"
 echo
 echo "### Leave one set out (each set scored with the constants chosen on the other four)"
