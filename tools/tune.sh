@@ -21,7 +21,7 @@
 # the leave-one-set-out table (Markdown).
 #
 #   tools/tune.sh [--only REGEX] [--build DIR] [--out DIR] [--data DIR] [--jobs N]
-#                 [--candidates FILE]
+#                 [--candidates FILE] [--no-loso]
 #   tools/tune.sh --check [--build DIR] [--candidates FILE]
 #
 # --only: tune only the candidates whose name matches REGEX (grep -E), e.g.
@@ -29,9 +29,11 @@
 # against the source and the options (each constant's declaration holds its
 # default, ag-run accepts each option candidate) and that every tunable
 # constant of tools/count-tunables.sh has candidates; prints their count.
-# --candidates: another candidates file than tools/tune-candidates.txt. The
-# first constant candidate builds a copy of the source under --out (keep it
-# inside the checkout's parent so that ccache hits: minutes without).
+# --no-loso: stop before the leave-one-set-out table (its choices need runs,
+# and builds, of their own). --candidates: another candidates file than
+# tools/tune-candidates.txt. The first constant candidate builds a copy of
+# the source under --out (keep it inside the checkout's parent so that
+# ccache hits: minutes without).
 set -euo pipefail
 shopt -s inherit_errexit  # a failed score inside $(...) stops the script
 cd "$(dirname "$0")/.."
@@ -41,6 +43,7 @@ BUILD=
 JOBS=2
 ONLY=.
 CHECK=0
+LOSO=1
 CANDIDATES_FILE=tools/tune-candidates.txt
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -50,6 +53,7 @@ while [ $# -gt 0 ]; do
     --data) DATA=$2; shift 2 ;;
     --jobs) JOBS=$2; shift 2 ;;
     --check) CHECK=1; shift ;;
+    --no-loso) LOSO=0; shift ;;
     --candidates) CANDIDATES_FILE=$2; shift 2 ;;
     -h|--help) awk 'NR > 1 && !/^#/ { exit } NR > 1' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "tune: unknown argument '$1' (see --help)" >&2; exit 2 ;;
@@ -337,6 +341,7 @@ echo
 echo "### Chosen on the tuning split (${TUNING_PARTS[*]})"
 echo
 describe "${chosen[@]}"
+[ "$LOSO" -eq 1 ] || exit 0
 echo
 echo "### Leave one set out (each set scored with the constants chosen on the other four)"
 echo
