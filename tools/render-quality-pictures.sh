@@ -2,9 +2,10 @@
 # Regenerates the pictures of docs/quality.md: for a few benchmark maps the
 # input (ag-render of the import), our result with the defaults (ag-render of
 # the Area Graph) and the ground truth as ag-eval reads it (ag-eval
-# --gt-picture), plus the maze and the RoboCup Rescue map of the Area Graph
-# paper (input and result; they have no ground truth). All drawn by the
-# project's tools from its own output; no dataset image is copied.
+# --gt-picture), a generated public building likewise, plus the maze and
+# the RoboCup Rescue map of the Area Graph paper (input and result; they have
+# no ground truth). All drawn by the project's tools from its own output; no
+# dataset image is copied.
 #
 #   tools/render-quality-pictures.sh [--data DIR] [--out DIR] [--build DIR] [--width PX]
 set -euo pipefail
@@ -19,7 +20,7 @@ while [ $# -gt 0 ]; do
     --out) OUT=$2; shift 2 ;;
     --build) BUILD=$2; shift 2 ;;
     --width) WIDTH=$2; shift 2 ;;
-    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     *) echo "render-quality-pictures: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -51,6 +52,14 @@ for name in freiburg_building52 sistD; do
 done
 for name in office_d lab_intel; do
   draw "$RM/Maps/$name.png" "$name" "$RM/GT/$name.png" --gt-style maoris-lines
+done
+# A generated public building (the project's own generator: its image may
+# be shipped), the first floor of the held-out part.
+"$BIN/ag-make-benchmark" --part public-held-out --count 1 "$WORK/public" >/dev/null
+for image in "$WORK"/public/maps/*.png; do
+  name=$(basename "$image" .png)
+  # Twice as wide: the building is 100-200 m across.
+  WIDTH=$((2 * WIDTH)) draw "$image" "$name" "$WORK/public/gt/$name.png" --gt-style labels
 done
 draw "$AG/mazes/maze.jpg" maze
 draw "$AG/mazes/singa.png" robocup_rescue
