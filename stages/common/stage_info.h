@@ -27,7 +27,9 @@ inline constexpr StageInfo kImportStage{"import", 1};
 // clean 4: furniture removal keeps pieces of wall standing between two doors
 // (clean pass KEEP_WALL_PIECES; scans whose short wall pieces looked like furniture).
 // clean 5: the CleanedMap carries clean.robot_width_m, which merge reads (robot_width_m).
-inline constexpr StageInfo kCleanStage{"clean", 5};
+// clean 6: the typical wall leaves out ridges over kMaxWallThicknessM, 0.6 m (was 1 m), the
+// thickest wall end cut allows beside a door: one greatest wall thickness.
+inline constexpr StageInfo kCleanStage{"clean", 6};
 // voronoi 2: edges in face order.
 // voronoi 3: the diagram as packed arrays (format 2), cheaper to write and read; same numbers.
 inline constexpr StageInfo kVoronoiStage{"voronoi", 3};
@@ -70,7 +72,10 @@ inline constexpr StageInfo kPruneStage{"prune", 5};
 // times as wide: the shape model's "about as wide".
 // cut 20: a narrow tail begins within SteadyWidthSpreadM (0.1 m or 10 %) of its median width, the
 // width estimate's steady corridor width (was a factor of 1.15 of its median clearance).
-inline constexpr StageInfo kCutStage{"cut", 20};
+// cut 21: one greatest wall thickness, kMaxWallThicknessM (0.6 m): a door's wall end as before
+// (was kMaxTipWallM), the typical wall, for the islands' least thickness, leaves out thicker
+// ridges (was 1 m).
+inline constexpr StageInfo kCutStage{"cut", 21};
 // merge 2: growth stops at narrow gaps, freed cells stay out, small areas fold.
 // merge 3: corridor pieces can be joined (merge.join_corridor_pieces).
 // merge 4: open bays fold into their room (merge.fold_open_bays).
@@ -118,7 +123,9 @@ inline constexpr StageInfo kCutStage{"cut", 20};
 // merge 23: a corridor narrows below its median width over kCorridorWidthRatio (1 / 1.3 = 0.77) in
 // corridor piece joining (was 0.75), split corridor and stem joining (was 0.8). Also in merge 23:
 // rows need no least solidity, a one-sided narrowing no least share of the corridor's width.
-inline constexpr StageInfo kMergeStage{"merge", 23};
+// merge 24: the typical wall, for furniture islands, leaves out ridges over kMaxWallThicknessM
+// (0.6 m, was 1 m), cut's thickest wall end: one greatest wall thickness.
+inline constexpr StageInfo kMergeStage{"merge", 24};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

@@ -8,6 +8,7 @@
 #include "stages/cut/wall_probes.h"
 #include "stages/cut/width_estimate.h"
 #include "stages/geometry/furniture_shape.h"
+#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 namespace {
@@ -116,7 +117,7 @@ struct WallGapFinder::Impl {
         run_px(kJambRunM / resolution_m),
         reach_px(kDoorReachM / resolution_m),
         rise_px(kDoorRiseM / resolution_m),
-        max_thickness_px(kMaxTipWallM / resolution_m),
+        max_thickness_px(kMaxWallThicknessM / resolution_m),
         max_gap_px(max_gap_m / resolution_m + 1),
         min_gap_px(min_gap_m / resolution_m + 1),
         min_tip_px(kMinWallPieceM / resolution_m) {}

@@ -49,7 +49,8 @@ PointList DoorClosingSites(const proto::RoomWidthEstimate& estimate,
 // one opening, closed along every segment's line.
 // - A wall gap (cut pass CLOSE_WALL_GAPS): at most `max_gap_m` wide, at
 //   least one site the end of a thin wall (from the site on, for kJambRunM,
-//   the non-free cells across the line span at most kMaxTipWallM, with free
+//   the non-free cells across the line span at most kMaxWallThicknessM
+//   (stages/geometry/wall_thickness.h), with free
 //   cells on both sides), both sites
 //   structure, and the free width along the edge growing clearly
 //   (IsConstriction's rise) within kDoorReachM on at least one side. A
@@ -82,9 +83,6 @@ class WallGapFinder {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
-
-// A wall end is at most this thick across the door's line (metres).
-inline constexpr double kMaxTipWallM = 0.6;
 
 // How far the wall must run on past each jamb along the door's line (m).
 inline constexpr double kJambRunM = 0.3;

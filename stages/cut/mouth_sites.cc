@@ -5,6 +5,7 @@
 #include "stages/cut/door_sites.h"
 #include "stages/cut/wall_probes.h"
 #include "stages/cut/width_estimate.h"
+#include "stages/geometry/wall_thickness.h"
 
 namespace areagraph {
 
@@ -15,9 +16,9 @@ std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resol
   if (max_mouth_m <= 0) return mouths;
   const WallStructure walls(obstacles, structure_m / resolution_m, free_spaces);
   const double run_px = kJambRunM / resolution_m;
-  const double long_run_px = 2 * kMaxTipWallM / resolution_m;
+  const double long_run_px = 2 * kMaxWallThicknessM / resolution_m;
   const double depth_px = kDoorReachM / resolution_m;
-  const double max_thickness_px = kMaxTipWallM / resolution_m;
+  const double max_thickness_px = kMaxWallThicknessM / resolution_m;
   const double min_px = min_mouth_m / resolution_m + 1, max_px = max_mouth_m / resolution_m + 1;
   const int width = obstacles.labels.cols, height = obstacles.labels.rows;
   // Each mouth once, from its jamb with the smaller coordinate.

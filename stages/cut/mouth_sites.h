@@ -18,12 +18,11 @@ namespace areagraph {
 // building's wall structure (regions at least `structure_m` long, as for
 // NarrowingOpenings); the wall line runs on past both (kJambRunM) and
 // past one of them for at least two thin walls' thickness (2 x
-// kMaxTipWallM), so a cross-section of a corridor between two doors, whose
-// walls are thin, is none; at both jambs a
-// side wall leaves the line on the same side for kDoorReachM, the wall line
-// being at most kMaxTipWallM thick on the other side; and the space behind,
-// on the side walls' side, is no corridor (CorridorBehind). `free_spaces` as
-// for NarrowingOpenings (stages/cut/door_sites.h).
+// kMaxWallThicknessM, stages/geometry/wall_thickness.h), so a cross-section of a corridor between
+// two doors, whose walls are thin, is none; at both jambs a side wall leaves the line on the same
+// side for kDoorReachM, the wall line being at most kMaxWallThicknessM thick on the other side; and
+// the space behind, on the side walls' side, is no corridor (CorridorBehind). `free_spaces` as for
+// NarrowingOpenings (stages/cut/door_sites.h).
 std::vector<Opening> MouthOpenings(const ObstacleLabels& obstacles, double resolution_m,
                                    double structure_m, double min_mouth_m, double max_mouth_m,
                                    const cv::Mat* free_spaces = nullptr);

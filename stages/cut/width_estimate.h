@@ -5,6 +5,7 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/geometry/door_reach.h"
+#include "stages/geometry/same_width.h"
 
 namespace areagraph {
 
@@ -55,15 +56,11 @@ double WidthRule(double door_m, double corridor_m, double fallback_m, bool above
 // width along a corridor).
 inline constexpr double kPaperWidthMarginM = 0.1;
 
-// The share of a wide corridor's width that scan noise on its walls may
-// take from it or add along its length.
-inline constexpr double kSteadyWidthShare = 0.1;
-
 // How far a width may stray and still be the same steady width (a corridor
-// along its length): kPaperWidthMarginM, or kSteadyWidthShare of `width_m`
+// along its length): kPaperWidthMarginM, or kSameWidthShare of `width_m`
 // where that is more (FindCorridors' runs).
 inline double SteadyWidthSpreadM(double width_m) {
-  return std::max(kPaperWidthMarginM, kSteadyWidthShare * width_m);
+  return std::max(kPaperWidthMarginM, kSameWidthShare * width_m);
 }
 
 inline constexpr double kDoorRiseM = 0.25;

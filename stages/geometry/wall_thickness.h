@@ -20,10 +20,12 @@ cv::Mat ObstacleDepth(const cv::Mat& obstacle);
 // space around the map). 0 when there is none.
 double TypicalWallThickness(const cv::Mat& depth, double max_wall_px);
 
-// Walls are thinner than this (metres): thicker ridges of non-free cells are
-// unknown space, not walls, when the typical wall thickness is measured.
-// Outer walls of old buildings reach 0.6-0.8 m; a metre is none.
-inline constexpr double kMaxWallThicknessM = 1.0;
+// A wall is at most this thick (metres): inner walls are 0.1-0.3 m, most
+// outer walls under half a metre. So a wall end beside a door or a mouth
+// (ag-cut) is at most this thick across the opening's line, and thicker
+// ridges of non-free cells are unknown space or blocks, not walls, when the
+// typical wall thickness is measured.
+inline constexpr double kMaxWallThicknessM = 0.6;
 
 // Furniture (desks, cabinets, shelves) is at least this thick (metres) and
 // kFurnitureWallRatio times the map's typical wall thickness; a lone piece of

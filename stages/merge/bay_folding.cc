@@ -64,8 +64,8 @@ void FoldOpenBays(const proto::CutGraph& graph, const PlanModel& model, AreaPlan
       const auto own = at.find(k);
       for (const auto& [other, width] : at) {
         const double mouth = std::min(own->second, width);
-        if (plan->areas[other].kind != proto::AREA_ROOM || mouth < kOpenShare * typical[k] ||
-            mouth <= widest) {
+        if (plan->areas[other].kind != proto::AREA_ROOM ||
+            mouth < (1 - kSameWidthShare) * typical[k] || mouth <= widest) {
           continue;
         }
         widest = mouth;

@@ -17,7 +17,7 @@ inline constexpr double kMaxBayLengthWidths = 3.0;
 // (the narrowest free width near the vertex where they meet, on both sides
 // and within kDoorReachM of it, stages/geometry/door_reach.h: the mouth and
 // the stretch in front of it, not the area's far end, is at least
-// kOpenShare of the area's typical free width): a bay of a room that the
+// 1 - kSameWidthShare of the area's typical free width): a bay of a room that the
 // room disk (W) could not reach, e.g. the strip between a row of tables and
 // the wall, is part of the room, while a corridor meets a room through a
 // door narrower than itself or is long. Of several such rooms the one with

@@ -100,7 +100,7 @@ std::vector<bool> SmallClosedRooms(const proto::CutGraph& graph, const AreaPlan&
     if (!closed[v]) continue;
     const auto own = openings[v].find(k);
     if (own == openings[v].end()) continue;
-    if (own->second.width_px >= kOpenShare * WidestInnerWidthPx(raster, k, boxes[k])) {
+    if (own->second.width_px >= (1 - kSameWidthShare) * WidestInnerWidthPx(raster, k, boxes[k])) {
       continue;
     }
     if (pocket_jamb_m > 0 &&

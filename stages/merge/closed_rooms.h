@@ -21,7 +21,7 @@ inline constexpr double kJambDepthM = 0.25;
 // - it meets the other areas at one graph vertex only, and one area there;
 // - that vertex is `closed` (ag-cut closed that passage on purpose,
 //   ClosedVertices);
-// - its opening there is narrower than kOpenShare (a door) of its widest
+// - its opening there is narrower than 1 - kSameWidthShare (a door) of its widest
 //   inner width (twice the largest distance from its cells to a cell
 //   outside it);
 // - at most kMissedWallShare (stages/geometry/wall_thickness.h) of its faces

@@ -29,7 +29,7 @@ void FoldCorridorPieces(const proto::CutGraph& graph, const PlanModel& model,
         if (other == k) continue;
         if (plan->areas[other].kind == proto::AREA_ROOM && !shapes[other].corridor) continue;
         const double opening = std::min(own.width_px, theirs.width_px);
-        if (opening < kOpenShare * shapes[k].typical_px) continue;
+        if (opening < (1 - kSameWidthShare) * shapes[k].typical_px) continue;
         ++wide_openings[k];
         if (opening <= widest[k]) continue;
         widest[k] = opening;

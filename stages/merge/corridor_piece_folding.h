@@ -15,7 +15,7 @@ inline constexpr int kMinWideOpenings = 2;
 
 // Folds room areas smaller than `max_m2` (their edges' polygons) that have
 // at least kMinWideOpenings openings (at graph vertices) into corridors at
-// least kOpenShare (vertex_openings.h) of their own typical free width wide, into the
+// least 1 - kSameWidthShare (vertex_openings.h) of their own typical free width wide, into the
 // corridor behind the widest one. A corridor here is a room-less area or a
 // room area shaped like a corridor (AreaShape.corridor). The room disk (W) fits at a corridor's
 // junction or wide spot and makes a small "room" there, which people see as part of the corridor; a

@@ -109,7 +109,7 @@ void JoinRoomsWithoutDoors(const proto::CutGraph& graph, const PlanModel& model,
         if (closed[vertex] && !(model.Corridor(a->first) && model.Corridor(b->first))) {
           continue;
         }
-        if (opening > kOpenShare * narrower_side) rooms.Union(a->first, b->first);
+        if (opening > (1 - kSameWidthShare) * narrower_side) rooms.Union(a->first, b->first);
       }
     }
   }

@@ -10,7 +10,7 @@
 namespace areagraph {
 
 // Joins room areas that meet at a graph vertex without a narrowing between
-// them: the opening there is not narrower than kOpenShare of the space on
+// them: the opening there is not narrower than 1 - kSameWidthShare of the space on
 // the narrower side (the widest within kDoorReachM of it, stages/geometry/door_reach.h: past a
 // door's depth and its stub, the space behind it has its own width, as ag-cut's door finding reads
 // it). The room disk stopped there (at a piece of furniture or a bend), but nothing divides the

@@ -5,15 +5,16 @@
 
 #include "proto/artifacts.pb.h"
 #include "stages/geometry/edge_polygon.h"
+#include "stages/geometry/same_width.h"
 #include "stages/merge/area_assignment.h"
 
 namespace areagraph {
 
-// An opening at least this share of the free width beside it is no door:
-// the space goes on through it, where a door is narrower than the room it
-// opens into. Every pass that tells a door from an open side asks this
-// (room joining, bay and corridor-piece folding, small closed rooms).
-inline constexpr double kOpenShare = 0.9;
+// An opening within kSameWidthShare (stages/geometry/same_width.h) of the
+// free width beside it, at least 1 - kSameWidthShare of it, is no door: the
+// space goes on through it, where a door is narrower than the room it opens
+// into. Every pass that tells a door from an open side asks this (room
+// joining, bay and corridor-piece folding, small closed rooms).
 
 // An area's narrowest opening at a graph vertex: the two sites beside its
 // edge ends there (the jambs) and their distance.
