@@ -118,7 +118,9 @@ inline constexpr StageInfo kCutStage{"cut", 20};
 // merge 23: a corridor narrows below its median width over kCorridorWidthRatio (1 / 1.3 = 0.77) in
 // corridor piece joining (was 0.75), split corridor and stem joining (was 0.8). Also in merge 23:
 // rows need no least solidity, a one-sided narrowing no least share of the corridor's width.
-inline constexpr StageInfo kMergeStage{"merge", 23};
+// merge 24: two rows stand side by side in a stack when they overlap at all along the axis (no
+// least share of the shorter one).
+inline constexpr StageInfo kMergeStage{"merge", 24};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.
