@@ -120,7 +120,9 @@ inline constexpr StageInfo kCutStage{"cut", 20};
 // rows need no least solidity, a one-sided narrowing no least share of the corridor's width.
 // merge 24: two rows stand side by side in a stack when they overlap at all along the axis (no
 // least share of the shorter one).
-inline constexpr StageInfo kMergeStage{"merge", 24};
+// merge 25: split corridor pieces need not run along the line between them (their centroids'
+// angle decides), and a corridor stem need not run straight (kStraightAxisRatio removed).
+inline constexpr StageInfo kMergeStage{"merge", 25};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.
