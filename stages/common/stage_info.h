@@ -125,7 +125,11 @@ inline constexpr StageInfo kCutStage{"cut", 21};
 // rows need no least solidity, a one-sided narrowing no least share of the corridor's width.
 // merge 24: the typical wall, for furniture islands, leaves out ridges over kMaxWallThicknessM
 // (0.6 m, was 1 m), cut's thickest wall end: one greatest wall thickness.
-inline constexpr StageInfo kMergeStage{"merge", 24};
+// merge 25: two rows stand side by side in a stack when they overlap at all along the axis (no
+// least share of the shorter one).
+// merge 26: split corridor pieces need not run along the line between them (their centroids'
+// angle decides), and a corridor stem need not run straight (kStraightAxisRatio removed).
+inline constexpr StageInfo kMergeStage{"merge", 26};
 // match 2: new pieces that noise split off an area fold back (match.fold_fragments_below_m2).
 // match 3: merge's joins of two previous areas are cut apart again (match.split_joins_below_m2).
 // match 4: joins cut across passages, at half inside, along moved walls, in rounds.

@@ -32,11 +32,6 @@ struct AreaShape {
   double Straightness() const;
 };
 
-// An area runs straight when its Straightness is at least this: a rectangle
-// at least 1.7 times as long as wide (the variances go with the squares of
-// length and width); a room is squarer.
-inline constexpr double kStraightAxisRatio = 3;
-
 // The shapes of every candidate area of `plan` (before the free space is
 // split), from the CutGraph: the width profile is the clearance along its
 // edges (twice each sample), its size its edges' polygons and what they

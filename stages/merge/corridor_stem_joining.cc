@@ -43,7 +43,7 @@ void JoinCorridorStems(const proto::CutGraph& graph, const PlanModel& model,
     if (area.kind != proto::AREA_DEAD_END || area.room_id >= 0 || corridor < 0) continue;
     const double w = shapes[stem].typical_px;
     if (NarrowsCorridor(mouth[stem], w)) continue;
-    if (!shapes[stem].corridor || shapes[stem].Straightness() < kStraightAxisRatio) continue;
+    if (!shapes[stem].corridor) continue;
     const AreaPlan::Area& into = plan->areas[corridor];
     const double corridor_width = shapes[corridor].typical_px;
     const bool corridor_shaped =

@@ -16,7 +16,7 @@ namespace areagraph {
 // as the stem (one about as wide as the corridor is a room without a door or
 // the corridor's own end, as wide as the rest). The stem does not narrow at
 // its mouth (NarrowsCorridor against its own median free width: a closet or
-// a room is wider than its door), is shaped like a corridor and runs straight (kStraightAxisRatio).
+// a room is wider than its door) and is shaped like a corridor.
 // A dead-end branch narrower than W gets no room, and JoinSplitCorridors keeps it apart from a
 // corridor more than kCorridorWidthRatio times as wide; a hall (wider than a corridor) keeps its
 // narrow tails, which cut pass CUT_NARROW_TAILS made areas of their own, apart. The constants were

@@ -23,7 +23,9 @@ struct RowCandidate {
   double length = 0;
 };
 
-// Whether two candidates stand side by side in one stack.
+// Whether two candidates stand side by side in one stack: within the pitch
+// across, overlapping along the first one's axis (blocks end to end, as a
+// wall broken by doors, do not overlap).
 bool InOneStack(const RowCandidate& a, const RowCandidate& b, double max_pitch_px) {
   const cv::Point2d offset = b.centre - a.centre;
   const double along = offset.dot(a.axis);
@@ -31,7 +33,7 @@ bool InOneStack(const RowCandidate& a, const RowCandidate& b, double max_pitch_p
   if (across > max_pitch_px) return false;
   const double overlap =
       std::min(a.length / 2, along + b.length / 2) - std::max(-a.length / 2, along - b.length / 2);
-  return overlap >= kRowSideBySideShare * std::min(a.length, b.length);
+  return overlap > 0;
 }
 
 // Whether the cell under a jamb, or one of its 8 neighbours, is a row's.

@@ -13,9 +13,6 @@ namespace areagraph {
 // seats about 1 m, the shelves of a library or store under 2 m. A piece of
 // wall between two doors has a room on either side instead.
 inline constexpr double kMaxRowPitchM = 2.0;
-// Two rows of one stack stand side by side along at least this share of the
-// shorter one (measured along the first one's axis).
-inline constexpr double kRowSideBySideShare = 0.5;
 // A stack has at least this many rows: two walls of a corridor, broken off
 // at doors on both ends, stand side by side too.
 inline constexpr int kMinStackRows = 3;
@@ -25,7 +22,7 @@ inline constexpr int kMinStackRows = 3;
 // border) at least kMinFurnitureThicknessM thick
 // (furniture_islands.h), but more than `min_elongation` times as long as
 // wide, in a stack of at least kMinStackRows such regions (each beside the
-// next: side by side, within kMaxRowPitchM). Alone, such a block is no
+// next: overlapping along its axis, within kMaxRowPitchM across). Alone, such a block is no
 // island (a thick piece of wall between two doors); a stack of them is the furniture of one room,
 // and the strips between them are no rooms. The map's wall thickness does not enter: rows of seats
 // are often no thicker than two walls.

@@ -61,13 +61,6 @@ void JoinSplitCorridors(const proto::CutGraph& graph, double resolution_m, doubl
           const Eigen::Vector2d ci = mi.Centroid(), cj = mj.Centroid();
           const double across = (ci - vertex_at).normalized().dot((cj - vertex_at).normalized());
           if (across > -bend_cos) continue;
-          bool aligned = true;
-          const Eigen::Vector2d line = (cj - ci).normalized();
-          for (const AreaMoments* m : {&mi, &mj}) {
-            const auto [axis, ratio] = m->Axis();
-            if (ratio >= kStraightAxisRatio && std::abs(axis.dot(line)) < bend_cos) aligned = false;
-          }
-          if (!aligned) continue;
           pairs.push_back({i, j, long_enough});
         }
       }

@@ -15,11 +15,7 @@ struct SplitCorridorParams {
   // How far a corridor bends between two of its pieces (degrees). Seen
   // from the vertex, the two pieces' centroids are at least 180 minus this
   // apart (a corridor goes on, bending little; a room across from a side
-  // corridor's end is off to the side, at about 90 degrees), and a piece
-  // that runs straight (kStraightAxisRatio, area_shapes.h; a ratio of 2
-  // took rooms opening off a corridor piece's side for corridor pieces)
-  // runs along the line between the two centroids within this angle: such a
-  // room lies across that piece.
+  // corridor's end is off to the side, at about 90 degrees).
   double bend_deg = 30;
 };
 

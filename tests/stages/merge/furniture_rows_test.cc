@@ -43,7 +43,7 @@ TEST(FurnitureRowsTest, BlocksWithRoomsBetweenThemAreNoStack) {
 
 TEST(FurnitureRowsTest, BlocksEndToEndAreNoStack) {
   // Three blocks on one line with 1 m gaps: a broken wall, not rows side by
-  // side (kRowSideBySideShare).
+  // side (they do not overlap along their axis).
   EXPECT_EQ(RowCells({{2, 8, 5, 0.5}, {8, 8, 5, 0.5}, {14, 8, 5, 0.5}}), 0);
 }
 
