@@ -12,7 +12,7 @@ namespace areagraph {
 
 // A jamb's thickness is measured this far beyond it on the opening's line:
 // more than a wall's end is rounded off by the scan, less than a cabinet's
-// depth (0.6 m, merge.small_closed_rooms.pocket_jamb_m).
+// depth (about 0.6 m).
 inline constexpr double kJambDepthM = 0.25;
 
 // Per area of `plan`: whether it is a small closed room that

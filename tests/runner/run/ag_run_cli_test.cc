@@ -332,7 +332,7 @@ TEST(AgRunInputTest, PrintOptionsPrintsEveryDefaultAndTheSets) {
   const CommandResult run = RunTool("ag-run", {"--print-options", "--set", "cut.room_width_m=1.1"});
   EXPECT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("room_width_m: 1.1\n"), std::string::npos) << run.out;
-  EXPECT_NE(run.out.find("pocket_jamb_m: 0.6\n"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("pocket_jamb_m: 0.45\n"), std::string::npos) << run.out;
   const CommandResult with_map = RunTool("ag-run", {"--print-options", dir.File("map.png")});
   EXPECT_EQ(with_map.exit_code, 2);
   EXPECT_EQ(with_map.err, "ag-run: --print-options takes no MAP\n");
