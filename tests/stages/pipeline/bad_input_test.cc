@@ -30,6 +30,11 @@ std::string PruneError(const proto::VoronoiDiagram& diagram, const proto::Cleane
   return ErrorOf<InputError>([&] { BuildTopologyGraph(diagram, map, options); });
 }
 
+// The merge stage alone, on a hand-made cut graph or cleaned map.
+std::string MergeInputError(const proto::CutGraph& cut, const proto::CleanedMap& map) {
+  return ErrorOf<InputError>([&] { BuildAreaGraph(cut, map, {}); });
+}
+
 TEST(AreaStagesBadInputTest, MapWithoutObstacleSitesHasNoTopologyGraph) {
   const std::string error = PruneError(proto::VoronoiDiagram(), OneRoomMap());
   EXPECT_NE(error.find("no Topology Graph: the map has 0 obstacle cells"), std::string::npos)
@@ -86,23 +91,17 @@ TEST(AreaStagesBadInputTest, CorruptArtifactsAreInputErrors) {
 
   proto::CutGraph cut = stages.cut;
   cut.clear_edges();
-  EXPECT_NE(ErrorOf<InputError>([&] {
-              BuildAreaGraph(cut, map, {});
-            }).find("no Area Graph: the cut graph has no edges"),
+  EXPECT_NE(MergeInputError(cut, map).find("no Area Graph: the cut graph has no edges"),
             std::string::npos);
 
   proto::CleanedMap old_clean = map;
   old_clean.clear_robot_width_m();
-  EXPECT_NE(ErrorOf<InputError>([&] {
-              BuildAreaGraph(stages.cut, old_clean, {});
-            }).find("the CleanedMap holds no robot width"),
+  EXPECT_NE(MergeInputError(stages.cut, old_clean).find("the CleanedMap holds no robot width"),
             std::string::npos);
 
   proto::CutGraph old_cut = stages.cut;
   old_cut.clear_island_max_length_m();
-  EXPECT_NE(ErrorOf<InputError>([&] {
-              BuildAreaGraph(old_cut, map, {});
-            }).find("the CutGraph holds no island length"),
+  EXPECT_NE(MergeInputError(old_cut, map).find("the CutGraph holds no island length"),
             std::string::npos);
 }
 
