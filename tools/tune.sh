@@ -328,7 +328,6 @@ for entry in "${SELECTED[@]}"; do
   [ "$kind" = option ] && read -r _ _ default _ <<<"$entry"
   others=() pick=$default
   for value in $(candidate_values "$entry"); do
-    [ "$value" = "$default" ] && continue
     # shellcheck disable=SC2034 # read through mean_over's name reference
     candidate=("$entry=$value")
     others+=("$value: $(mean_over candidate "${TUNING_PARTS[@]}")")
